@@ -22,7 +22,7 @@ struct ContactPatch {
   Eigen::ArrayXd half_length_m;  // (ny) a_j: strip j covers |x| < a_j; 0 = strip out of contact
   Eigen::ArrayXd strip_peak_Pa;  // (ny) p_j, the peak of strip j's semi-ellipse
   Eigen::ArrayXXd pressure_Pa;   // (nx x ny) mean over each full cell, 0 outside; column j = strip j
-  Eigen::ArrayXXd pressure_x_Pa;  // (nx x ny) mean over each full cell of x p / a_j (first moment)
+  Eigen::ArrayXXd pressure_moment_Pa_m;  // (nx x ny) mean over each full cell of x p (first moment)
   Eigen::ArrayXXd edge_pressure_Pa;  // (nx+1 x ny) p at the cell edges x_edge(i), 0 outside
 };
 
