@@ -24,6 +24,8 @@ struct ContactPatch {
   Eigen::ArrayXXd pressure_Pa;   // (nx x ny) mean over each full cell, 0 outside; column j = strip j
   Eigen::ArrayXXd pressure_moment_Pa_m;  // (nx x ny) mean over each full cell of x p (first moment)
   Eigen::ArrayXXd edge_pressure_Pa;  // (nx+1 x ny) p at the cell edges x_edge(i), 0 outside
+  Eigen::ArrayXd strip_xi_offset;  // (ny) Heathcote slip: xi(y_j) = xi + offset_j from the rolling
+                                   // radii varying across profiled bodies (PHYSICS.md §2); empty = none
 };
 
 // Fills the pressure fields of a patch from its strips (grid, half_length_m, strip_peak_Pa set).
