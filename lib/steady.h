@@ -6,7 +6,12 @@
 
 namespace contact {
 
+struct SteadyOptions {
+  bool fields = true;  // the fields on the grid; without them only strips and totals are filled
+};
+
 TangentialSolution solve_steady(const ContactPatch& patch, const TangentialProblem& problem,
-                                TangentialScheme scheme = TangentialScheme::Consistent);
+                                TangentialScheme scheme = TangentialScheme::Consistent,
+                                const SteadyOptions& options = {});
 
 }  // namespace contact
