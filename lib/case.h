@@ -5,6 +5,7 @@
 //   cases/paper.yaml:12:5: friction.mu: must be in [0, 10], got -1
 #pragma once
 
+#include <map>
 #include <stdexcept>
 #include <string>
 
@@ -47,6 +48,10 @@ struct OutputSection {
   bool fields = true;     // write the fields on the grid (fields.csv)
 };
 
+// key path -> "FILE:LINE:COL" of each value read from the file ("bodies.body1.Rx_m" ->
+// "cases/paper.yaml:6:17"), so that cross-key messages point at the file too
+using KeyLocations = std::map<std::string, std::string>;
+
 struct ContactCase {
   std::string path;  // the file it was read from
   std::string name;  // 'name:' or the file's stem
@@ -56,6 +61,7 @@ struct ContactCase {
   FrictionSection friction;
   SolverSection solver;
   OutputSection output;
+  KeyLocations locations;  // where each value was read; empty for a case built in code
 };
 
 // reads and validates; throws CaseError (file, line, key) on any problem

@@ -1,1 +1,171 @@
-// placeholder: filled in by the issue #2 work
+#include "lib/csv.h"
+
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+#include <stdexcept>
+#include <system_error>
+
+#include <spdlog/fmt/fmt.h>
+#include <spdlog/spdlog.h>
+
+namespace contact {
+namespace fs = std::filesystem;
+
+namespace {
+
+// one number, exact on reading back
+void put(std::string& out, double v) { fmt::format_to(std::back_inserter(out), "{:.17g}", v); }
+
+void check_shape(const char* what, Eigen::Index rows, Eigen::Index cols, Eigen::Index nx, Eigen::Index ny) {
+  if (rows != nx || cols != ny)
+    throw std::invalid_argument(fmt::format("csv: {} is {} x {}, the grid {} x {}", what, rows, cols, nx, ny));
+}
+void check_length(const char* what, Eigen::Index n, Eigen::Index ny) {
+  if (n != ny) throw std::invalid_argument(fmt::format("csv: {} has {} strips, the grid {}", what, n, ny));
+}
+
+fs::path temporary_path(const fs::path& path) {
+  fs::path tmp = path;
+  tmp += ".tmp." + std::to_string(::getpid());
+  return tmp;
+}
+
+// writes text to tmp; throws naming path (the file meant) on failure, leaving tmp for the caller
+void write_temporary(const fs::path& path, const fs::path& tmp, const std::string& text) {
+  if (path.has_parent_path()) {
+    std::error_code ec;
+    fs::create_directories(path.parent_path(), ec);
+    if (ec) throw std::runtime_error("cannot write " + path.string() + ": " + ec.message());
+  }
+  std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+  if (!out) throw std::runtime_error("cannot write " + path.string() + ": " + std::strerror(errno));
+  out.write(text.data(), static_cast<std::streamsize>(text.size()));
+  out.flush();
+  out.close();
+  if (!out) throw std::runtime_error("cannot write " + path.string() + ": " + std::strerror(errno));
+}
+
+void remove_quietly(const fs::path& p) {
+  std::error_code ignored;
+  fs::remove(p, ignored);
+}
+
+}  // namespace
+
+void write_files_atomic(const std::vector<OutputFile>& files) {
+  // every file to its temporary name first
+  std::vector<fs::path> written;
+  try {
+    for (const OutputFile& f : files) {
+      const fs::path tmp = temporary_path(f.path);
+      written.push_back(tmp);
+      write_temporary(f.path, tmp, f.text);
+    }
+  } catch (...) {
+    for (const fs::path& tmp : written) remove_quietly(tmp);
+    throw;
+  }
+
+  // then each over its final name
+  for (std::size_t k = 0; k < files.size(); ++k) {
+    std::error_code ec;
+    fs::rename(written[k], files[k].path, ec);
+    if (ec) {
+      for (std::size_t rest = k; rest < files.size(); ++rest) remove_quietly(written[rest]);
+      throw std::runtime_error("cannot write " + files[k].path.string() + ": " + ec.message());
+    }
+    spdlog::debug("wrote {} ({} bytes)", files[k].path.string(), files[k].text.size());
+  }
+}
+
+void write_file_atomic(const fs::path& path, const std::string& text) { write_files_atomic({{path, text}}); }
+
+std::string csv_text(const std::string& text) {
+  if (text.find_first_of(",\"\r\n") == std::string::npos) return text;
+  std::string quoted = "\"";
+  for (const char ch : text) {
+    if (ch == '"') quoted += '"';
+    quoted += ch;
+  }
+  return quoted + "\"";
+}
+
+std::string fields_csv(const ContactPatch& patch, const TangentialSolution& s) {
+  const Grid& g = patch.grid;
+  check_length("grid x_m", g.x_m.size(), g.nx);
+  check_length("grid y_m", g.y_m.size(), g.ny);
+  check_shape("pressure_Pa", patch.pressure_Pa.rows(), patch.pressure_Pa.cols(), g.nx, g.ny);
+  check_shape("tau_x_Pa", s.tau_x_Pa.rows(), s.tau_x_Pa.cols(), g.nx, g.ny);
+  check_shape("tau_y_Pa", s.tau_y_Pa.rows(), s.tau_y_Pa.cols(), g.nx, g.ny);
+  check_shape("slip_x_m_per_s", s.slip_x_m_per_s.rows(), s.slip_x_m_per_s.cols(), g.nx, g.ny);
+  check_shape("slip_y_m_per_s", s.slip_y_m_per_s.rows(), s.slip_y_m_per_s.cols(), g.nx, g.ny);
+  check_shape("power_W_per_m2", s.power_W_per_m2.rows(), s.power_W_per_m2.cols(), g.nx, g.ny);
+  check_shape("state", s.state.rows(), s.state.cols(), g.nx, g.ny);
+
+  std::string out = "x_m,y_m,pressure_Pa,tau_x_Pa,tau_y_Pa,slip_x_m_per_s,slip_y_m_per_s,power_W_per_m2,state\n";
+  out.reserve(out.size() + static_cast<std::size_t>(g.nx) * g.ny * 200);
+  for (int j = 0; j < g.ny; ++j) {
+    for (int i = 0; i < g.nx; ++i) {
+      for (const double v : {g.x_m(i), g.y_m(j), patch.pressure_Pa(i, j), s.tau_x_Pa(i, j), s.tau_y_Pa(i, j),
+                             s.slip_x_m_per_s(i, j), s.slip_y_m_per_s(i, j), s.power_W_per_m2(i, j)}) {
+        put(out, v);
+        out += ',';
+      }
+      fmt::format_to(std::back_inserter(out), "{}\n", s.state(i, j));
+    }
+  }
+  return out;
+}
+
+std::string strips_csv(const ContactPatch& patch, const TangentialSolution& s) {
+  const Grid& g = patch.grid;
+  check_length("grid y_m", g.y_m.size(), g.ny);
+  check_length("half_length_m", patch.half_length_m.size(), g.ny);
+  check_length("strip_peak_Pa", patch.strip_peak_Pa.size(), g.ny);
+  check_length("strip_force_x_N_per_m", s.strip_force_x_N_per_m.size(), g.ny);
+  check_length("strip_force_y_N_per_m", s.strip_force_y_N_per_m.size(), g.ny);
+  check_length("strip_power_W_per_m", s.strip_power_W_per_m.size(), g.ny);
+  check_length("strip_creep_power_W_per_m", s.strip_creep_power_W_per_m.size(), g.ny);
+  check_length("strip_trailing_W_per_m", s.strip_trailing_W_per_m.size(), g.ny);
+
+  std::string out =
+      "y_m,half_length_m,peak_pressure_Pa,force_x_N_per_m,force_y_N_per_m,power_W_per_m,"
+      "creep_power_W_per_m,trailing_W_per_m\n";
+  for (int j = 0; j < g.ny; ++j) {
+    const double row[] = {g.y_m(j),
+                          patch.half_length_m(j),
+                          patch.strip_peak_Pa(j),
+                          s.strip_force_x_N_per_m(j),
+                          s.strip_force_y_N_per_m(j),
+                          s.strip_power_W_per_m(j),
+                          s.strip_creep_power_W_per_m(j),
+                          s.strip_trailing_W_per_m(j)};
+    for (std::size_t k = 0; k < std::size(row); ++k) {
+      if (k > 0) out += ',';
+      put(out, row[k]);
+    }
+    out += '\n';
+  }
+  return out;
+}
+
+std::string summary_csv(const std::string& name, const ContactPatch& patch, const TangentialProblem& problem,
+                        const TangentialSolution& s, TangentialScheme scheme) {
+  std::string out =
+      "name,a_m,b_m,p0_Pa,approach_m,C11,C22,C23,C33,L_m_per_Pa,Fx_N,Fy_N,Mz_N_m,power_W,creep_work_W,"
+      "stick_fraction,scheme,nx,ny\n";
+  out += csv_text(name);
+  for (const double v : {patch.a_m, patch.b_m, patch.p0_Pa, patch.approach_m, problem.C.C11, problem.C.C22,
+                         problem.C.C23, problem.C.C33, problem.L_m_per_Pa, s.Fx_N, s.Fy_N, s.Mz_N_m, s.power_W,
+                         s.creep_work_W, s.stick_fraction}) {
+    out += ',';
+    put(out, v);
+  }
+  fmt::format_to(std::back_inserter(out), ",{},{},{}\n", to_string(scheme), patch.grid.nx, patch.grid.ny);
+  return out;
+}
+
+}  // namespace contact

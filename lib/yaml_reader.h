@@ -1,0 +1,259 @@
+// Reading a case file's mappings (STYLE.md, "Cases"). Every key a reader asks for is marked; a key
+// left over at any level is an error, so a typo never becomes a silent default. Every error throws
+// CaseError with the file, the line and column (1-based) and the key path:
+//   cases/paper.yaml:12:5: friction.mu: must be in [0, 10], got -1
+// A section is a few lines:
+//   m.section("friction", [&](YamlMap& s) { s.required("mu", c.friction.mu, in_closed(0, 10)); });
+// Values: double (.inf, -.inf, .nan as YAML spells them), int (decimal), bool, std::string. A check
+// returns "" when the value is fine, else what is required ("must be > 0 and finite"); the reader
+// appends the value as written.
+#pragma once
+
+#include <cerrno>
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <map>
+#include <memory>
+#include <set>
+#include <string>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+#include <spdlog/fmt/fmt.h>
+#include <yaml-cpp/yaml.h>
+
+#include "lib/case.h"
+
+namespace contact {
+
+// "FILE:LINE:COL" of a mark (1-based); "FILE:1:1" when yaml-cpp has none (an empty document)
+inline std::string yaml_location(const std::string& file, const YAML::Mark& mark) {
+  if (mark.is_null()) return file + ":1:1";
+  return fmt::format("{}:{}:{}", file, mark.line + 1, mark.column + 1);
+}
+
+// the whole file parsed; CaseError "FILE: cannot read: reason" or "FILE:LINE:COL: YAML syntax error: ..."
+inline YAML::Node load_yaml_file(const std::string& file) {
+  const std::unique_ptr<std::FILE, int (*)(std::FILE*)> f(std::fopen(file.c_str(), "rb"), &std::fclose);
+  if (!f) throw CaseError(file + ": cannot read: " + std::strerror(errno));
+  std::string text;
+  char buffer[1 << 16];
+  std::size_t n = 0;
+  while ((n = std::fread(buffer, 1, sizeof buffer, f.get())) > 0) text.append(buffer, n);
+  if (std::ferror(f.get())) throw CaseError(file + ": cannot read: " + std::strerror(errno));
+  try {
+    return YAML::Load(text);
+  } catch (const YAML::Exception& e) {
+    throw CaseError(yaml_location(file, e.mark) + ": YAML syntax error: " + e.msg);
+  }
+}
+
+// how a node reads in a message: 'text' for a scalar, else its kind
+inline std::string yaml_describe(const YAML::Node& node) {
+  switch (node.Type()) {
+    case YAML::NodeType::Scalar:  // a quoted scalar is a string, never a number or a bool
+      return node.Tag() == "!" ? "the quoted string '" + node.Scalar() + "'" : "'" + node.Scalar() + "'";
+    case YAML::NodeType::Sequence: return "a sequence";
+    case YAML::NodeType::Map: return "a mapping";
+    case YAML::NodeType::Null: return "nothing (null)";
+    case YAML::NodeType::Undefined: break;
+  }
+  return "nothing";
+}
+
+// scalar conversions: false when the node is not a value of the type
+namespace yaml_detail {
+
+// a quoted scalar is a string, never a number or a bool
+inline bool is_plain_scalar(const YAML::Node& n) { return n.IsScalar() && n.Tag() != "!"; }
+
+inline const char* expected(const double*) { return "a number"; }
+inline const char* expected(const int*) { return "an integer"; }
+inline const char* expected(const bool*) { return "true or false"; }
+inline const char* expected(const std::string*) { return "a string"; }
+
+inline bool parse(const YAML::Node& n, double& v) {
+  return is_plain_scalar(n) && YAML::convert<double>::decode(n, v);
+}
+inline bool parse(const YAML::Node& n, int& v) {  // decimal only: 010 is not 8
+  if (!is_plain_scalar(n)) return false;
+  const std::string& s = n.Scalar();
+  const char* first = s.data() + (!s.empty() && s[0] == '+' ? 1 : 0);
+  const char* last = s.data() + s.size();
+  const auto [end, ec] = std::from_chars(first, last, v);
+  return ec == std::errc() && end == last && first != last;
+}
+inline bool parse(const YAML::Node& n, bool& v) {
+  return is_plain_scalar(n) && YAML::convert<bool>::decode(n, v);
+}
+inline bool parse(const YAML::Node& n, std::string& v) {
+  if (!n.IsScalar()) return false;
+  v = n.Scalar();
+  return true;
+}
+
+// the value as written, quoted for strings
+template <class T>
+std::string shown(const YAML::Node& n) {
+  if constexpr (std::is_same_v<T, std::string>) return "'" + n.Scalar() + "'";
+  else return n.Scalar();
+}
+
+struct NoCheck {
+  template <class T>
+  std::string operator()(const T&) const { return {}; }
+};
+
+}  // namespace yaml_detail
+
+// checks shared by the sections
+inline std::string positive_finite(double v) { return v > 0 && std::isfinite(v) ? "" : "must be > 0 and finite"; }
+inline std::string nonnegative_finite(double v) { return v >= 0 && std::isfinite(v) ? "" : "must be >= 0 and finite"; }
+inline std::string finite(double v) { return std::isfinite(v) ? "" : "must be finite"; }
+inline auto in_closed(double lo, double hi) {  // [lo, hi]
+  return [lo, hi](double v) -> std::string {
+    return v >= lo && v <= hi ? "" : fmt::format("must be in [{}, {}]", lo, hi);
+  };
+}
+inline auto in_half_open(double lo, double hi) {  // [lo, hi)
+  return [lo, hi](double v) -> std::string {
+    return v >= lo && v < hi ? "" : fmt::format("must be in [{}, {})", lo, hi);
+  };
+}
+
+class YamlMap {
+ public:
+  // node must be a mapping (checked); path is its key path, "" for the document
+  YamlMap(const YAML::Node& node, std::string file, std::string path, KeyLocations* locations)
+      : node_(node), file_(std::move(file)), path_(std::move(path)), locations_(locations) {
+    if (!node_.IsMap()) fail_here("expected a mapping, got " + yaml_describe(node_));
+    std::map<std::string, YAML::Mark> seen;
+    for (auto it = node_.begin(); it != node_.end(); ++it) {
+      const std::string key = it->first.IsScalar() ? it->first.Scalar() : std::string();
+      if (!it->first.IsScalar())
+        throw CaseError(yaml_location(file_, it->first.Mark()) + ": " + key_path("?") +
+                        ": a key must be a plain name, got " + yaml_describe(it->first));
+      const auto [first, inserted] = seen.emplace(key, it->first.Mark());
+      if (!inserted)
+        throw CaseError(yaml_location(file_, it->first.Mark()) + ": " + key_path(key) +
+                        ": duplicate key (first at line " + std::to_string(first->second.line + 1) + ")");
+      entries_.push_back({key, it->first, it->second});
+    }
+  }
+
+  const std::string& file() const { return file_; }
+  const std::string& path() const { return path_; }
+  std::string key_path(const std::string& key) const { return path_.empty() ? key : path_ + "." + key; }
+  std::string location() const { return yaml_location(file_, node_.Mark()); }
+
+  // a value; a required key that is absent is an error at this mapping's position
+  template <class T, class Check = yaml_detail::NoCheck>
+  void required(const std::string& key, T& value, Check check = {}) { read(key, value, check, true); }
+  // a value; an absent key leaves the default
+  template <class T, class Check = yaml_detail::NoCheck>
+  void optional(const std::string& key, T& value, Check check = {}) { read(key, value, check, false); }
+
+  // a nested mapping, read by read_body(YamlMap&); its keys left over are errors
+  template <class ReadBody>
+  void section(const std::string& key, ReadBody read_body) { read_section(key, read_body, true); }
+  template <class ReadBody>
+  void optional_section(const std::string& key, ReadBody read_body) { read_section(key, read_body, false); }
+
+  // an error at the key's value (at this mapping when the key is absent)
+  [[noreturn]] void fail(const std::string& key, const std::string& what) const {
+    const Entry* e = find(key);
+    const std::string where = e ? yaml_location(file_, e->value.Mark()) : location();
+    throw CaseError(where + ": " + key_path(key) + ": " + what);
+  }
+  // an error about this mapping as a whole
+  [[noreturn]] void fail_here(const std::string& what) const {
+    throw CaseError(location() + ": " + (path_.empty() ? "" : path_ + ": ") + what);
+  }
+
+  // every key present must have been asked for
+  void check_all_read() const {
+    for (const Entry& e : entries_) {
+      if (asked_.count(e.key)) continue;
+      std::string valid;
+      for (const std::string& k : asked_) valid += (valid.empty() ? "" : ", ") + k;
+      throw CaseError(yaml_location(file_, e.key_node.Mark()) + ": " + key_path(e.key) + ": unknown key" +
+                      (valid.empty() ? std::string(" (this mapping takes no keys)")
+                                     : " (valid: " + valid + ")"));
+    }
+  }
+
+ private:
+  struct Entry {
+    std::string key;
+    YAML::Node key_node, value;
+  };
+
+  // marks the key as known whether present or not
+  const Entry* ask(const std::string& key) {
+    asked_.insert(key);
+    return find(key);
+  }
+  const Entry* find(const std::string& key) const {
+    for (const Entry& e : entries_)
+      if (e.key == key) return &e;
+    return nullptr;
+  }
+
+  template <class T, class Check>
+  void read(const std::string& key, T& value, const Check& check, bool is_required) {
+    const Entry* e = ask(key);
+    if (!e) {
+      if (is_required) fail_here_missing(key, "required key is missing");
+      return;
+    }
+    T parsed{};
+    if (!yaml_detail::parse(e->value, parsed))
+      fail(key, std::string("expected ") + yaml_detail::expected(&parsed) + ", got " + yaml_describe(e->value));
+    const std::string complaint = check(parsed);
+    if (!complaint.empty()) fail(key, complaint + ", got " + yaml_detail::shown<T>(e->value));
+    value = parsed;
+    if (locations_) (*locations_)[key_path(key)] = yaml_location(file_, e->value.Mark());
+  }
+
+  template <class ReadBody>
+  void read_section(const std::string& key, ReadBody& read_body, bool is_required) {
+    const Entry* e = ask(key);
+    if (!e) {
+      if (is_required) fail_here_missing(key, "required section is missing");
+      return;
+    }
+    if (!e->value.IsMap()) fail(key, "expected a mapping, got " + yaml_describe(e->value));
+    YamlMap sub(e->value, file_, key_path(key), locations_);
+    if (locations_) (*locations_)[sub.path()] = sub.location();
+    read_body(sub);
+    sub.check_all_read();
+  }
+
+  [[noreturn]] void fail_here_missing(const std::string& key, const std::string& what) const {
+    throw CaseError(location() + ": " + key_path(key) + ": " + what);
+  }
+
+  YAML::Node node_;
+  std::string file_;
+  std::string path_;
+  KeyLocations* locations_ = nullptr;
+  std::vector<Entry> entries_;
+  std::set<std::string> asked_;
+};
+
+// the document of a file as a mapping, read by read_body(YamlMap&); its keys left over are errors
+template <class ReadBody>
+void read_yaml_file(const std::string& file, KeyLocations* locations, ReadBody read_body) {
+  const YAML::Node doc = load_yaml_file(file);
+  if (!doc.IsMap())
+    throw CaseError(yaml_location(file, doc.Mark()) + ": expected a mapping of sections, got " +
+                    yaml_describe(doc));
+  YamlMap root(doc, file, "", locations);
+  read_body(root);
+  root.check_all_read();
+}
+
+}  // namespace contact
