@@ -1,1 +1,509 @@
-// placeholder: filled in by later work
+// Satran, the transient tangential solver (equations and schemes at the top of satran.h).
+//
+// Shift step. Node i of a strip receives the material that sat at node i+1 (or entered at the
+// leading edge) one step earlier; the interval between them is updated with the steady kernel
+// (lib/strip_march.h), whose integrals are those of the material's path through the interval. With
+// rates per rolled distance (w/V = creepages) and dq = dx the interval's dissipated energy is
+//   L dq [ -alpha Ix - (eta/L2) Iy - (phi/L3) Ixy + (|tau_hi|^2 - |tau_lo|^2)/2 ],
+// and summed over a strip the last term telescopes to E_start - E_end - (L dx/2)|tau(-a)|^2, with
+// E = (L dx/2) sum over interior nodes of |tau|^2: the balance of PHYSICS.md §4 to rounding.
+//
+// Upwind and Lax-Friedrichs steps update the interior nodes from the old values of their neighbours
+// (0 outside the contact) and clip to mu p at the node; see explicit_strip for their energy.
+#include "lib/satran.h"
+
+#include <spdlog/spdlog.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+#include "lib/kalker.h"
+
+namespace contact {
+
+std::string to_string(TransientScheme scheme) {
+  switch (scheme) {
+    case TransientScheme::Shift: return "shift";
+    case TransientScheme::Upwind: return "upwind";
+    case TransientScheme::LaxFriedrichs: return "lax-friedrichs";
+  }
+  return "unknown";
+}
+
+TransientScheme parse_transient_scheme(const std::string& name) {
+  if (name == "shift") return TransientScheme::Shift;
+  if (name == "upwind") return TransientScheme::Upwind;
+  if (name == "lax-friedrichs") return TransientScheme::LaxFriedrichs;
+  throw std::invalid_argument("unknown transient scheme '" + name + "' (valid: shift, upwind, lax-friedrichs)");
+}
+
+TransientState rest_state(const Grid& grid) {
+  TransientState s;
+  s.nx = grid.nx;
+  s.ny = grid.ny;
+  s.nodes.assign(static_cast<size_t>(grid.nx + 1) * grid.ny, StripNode{});
+  return s;
+}
+
+namespace {
+
+bool inside(const ContactPatch& p, int i, int j) {
+  const double x = p.grid.x_edge(i), a = p.half_length_m(j);
+  return x > -a && x < a;
+}
+
+double node_energy_sum(const TransientState& s) {  // sum of |tau|^2 over all nodes
+  double e = 0;
+  for (const StripNode& n : s.nodes) e += n.tx * n.tx + n.ty * n.ty;
+  return e;
+}
+
+void allocate_fields(StepResult& r, const Grid& g) {
+  r.tau_x_Pa = Eigen::ArrayXXd::Zero(g.nx, g.ny);
+  r.tau_y_Pa = Eigen::ArrayXXd::Zero(g.nx, g.ny);
+  r.slip_x_m_per_s = Eigen::ArrayXXd::Zero(g.nx, g.ny);
+  r.slip_y_m_per_s = Eigen::ArrayXXd::Zero(g.nx, g.ny);
+}
+
+// one strip, shift: returns (dissipated, creep, trailing) energies per unit width
+struct StripEnergy {
+  double dissipated = 0, creep = 0, trailing = 0, transport = 0, stick_length = 0;
+  double Fx = 0, Fy = 0, Mz = 0;
+};
+
+StripEnergy shift_strip(const ContactPatch& patch, const StripRates& r, int j, double L, const StepKinematics& k,
+                        TransientState& state, StepResult* fields) {
+  const Grid& g = patch.grid;
+  const double a = r.a_m, dq = k.dq_m;
+  StripEnergy e;
+  const int i_top = std::min(g.nx - 1, static_cast<int>(std::floor((a + g.half_x_m) / g.dx_m)));
+  const int i_bot = std::max(0, static_cast<int>(std::floor((-a + g.half_x_m) / g.dx_m)));
+  // from the trailing side up, so that node i+1 still holds the previous step's value when node i is updated
+  for (int i = i_bot; i <= i_top; ++i) {
+    IntervalGeometry geo;
+    geo.x_hi = std::min(g.x_edge(i + 1), a);
+    geo.x_lo = std::max(g.x_edge(i), -a);
+    if (!(geo.x_hi > geo.x_lo)) continue;
+    geo.bound_lo_Pa = geo.x_lo > -a ? r.mu * patch.edge_pressure_Pa(i, j) : 0.0;
+    geo.load_N_per_m = patch.pressure_Pa(i, j) * g.dx_m;
+    geo.moment_N = patch.pressure_moment_Pa_m(i, j) * g.dx_m;
+    const StripNode hi = geo.x_hi < a ? state.node(i + 1, j) : StripNode{};
+
+    IntervalSums sums;
+    const StripNode lo = march_interval(r, hi, geo, sums);
+
+    e.dissipated += L * dq * dissipation_per_VL(r, hi, lo, sums);
+    e.creep += L * dq * creep_power_per_VL(r, sums);
+    e.Fx += sums.Ix;
+    e.Fy += sums.Iy;
+    e.Mz += sums.Ixy - r.y_m * sums.Ix;
+    e.stick_length += sums.stick_length_m;
+    if (geo.x_lo > -a) {
+      state.node(i, j) = lo;
+    } else {
+      e.trailing = L * dq * (lo.tx * lo.tx + lo.ty * lo.ty) / 2;  // carried out of the contact
+    }
+    if (fields) {
+      const double h = geo.x_hi - geo.x_lo;
+      fields->tau_x_Pa(i, j) = sums.Ix / g.dx_m;
+      fields->tau_y_Pa(i, j) = sums.Iy / g.dx_m;
+      fields->slip_x_m_per_s(i, j) = L * dq / k.dt_s * sums.slip_x / h;
+      fields->slip_y_m_per_s(i, j) = L * dq / k.dt_s * sums.slip_y / h;
+    }
+  }
+  return e;
+}
+
+// one strip, upwind (lf = false) or Lax-Friedrichs (lf = true) at CFL = dq/dx, split in two:
+// transport tau^T = (1 - C) tau_i + C tau_{i+1} (upwind) or the Lax-Friedrichs average, which loses
+// energy by numerical diffusion and outflow (reported, not dissipated by slip), then creep and clip
+// tau* = tau^T - incr, tau = clip(tau*), delta = tau - tau*, with
+//   dissipated = -L dx sum (tau^T + tau)/2 . delta,   creep = -L dx sum (tau^T + tau)/2 . incr,
+// so that dissipated = creep - (E_end - E^T) exactly. At C = 0 (no rolling) there is no transport.
+StripEnergy explicit_strip(const ContactPatch& patch, const TangentialProblem& pb, int j, const StepKinematics& k,
+                           bool lf, TransientState& state, std::vector<StripNode>& old, StepResult* fields) {
+  const Grid& g = patch.grid;
+  const double L = pb.L_m_per_Pa, dx = g.dx_m, cfl = k.dq_m / dx;
+  const double y = g.y_m(j), mu = pb.mu;
+  const double offset = patch.strip_xi_offset.size() > j ? patch.strip_xi_offset(j) : 0.0;
+  // creep increments of tau over the step: c dt / L
+  const double inc_x = (k.slip_x_m + offset * k.dq_m) / pb.flex.L1_m_per_Pa - k.spin_rad * y / pb.flex.L3_m_per_Pa;
+  const double inc_y0 = k.slip_y_m / pb.flex.L2_m_per_Pa, inc_yx = k.spin_rad / pb.flex.L3_m_per_Pa;
+  StripEnergy e;
+  for (int i = 0; i <= g.nx; ++i) old[i] = state.node(i, j);
+  const StripNode zero{};
+  auto at = [&](int i) -> const StripNode& {
+    return (i >= 0 && i <= g.nx && inside(patch, i, j)) ? old[i] : zero;
+  };
+  double E_old = 0, E_transported = 0;
+  for (int i = 0; i <= g.nx; ++i) {
+    if (!inside(patch, i, j)) continue;
+    const double x = g.x_edge(i);
+    const StripNode& o = old[i];
+    E_old += o.tx * o.tx + o.ty * o.ty;
+
+    // transport
+    const StripNode& up = at(i + 1);
+    double Tx = o.tx + cfl * (up.tx - o.tx), Ty = o.ty + cfl * (up.ty - o.ty);
+    if (lf) {
+      const StripNode& dn = at(i - 1);
+      Tx = (up.tx + dn.tx) / 2 + cfl * (up.tx - dn.tx) / 2;
+      Ty = (up.ty + dn.ty) / 2 + cfl * (up.ty - dn.ty) / 2;
+    }
+    E_transported += Tx * Tx + Ty * Ty;
+
+    // creep, then the Coulomb bound
+    const double incx = inc_x, incy = inc_y0 + inc_yx * x;
+    const double px = Tx - incx, py = Ty - incy;
+    const double bound = mu * patch.edge_pressure_Pa(i, j);
+    const double n = std::sqrt(px * px + py * py);
+    const bool slip = n > bound;
+    StripNode nw{px, py, o.ex, o.ey, !slip};
+    if (slip) {
+      nw.ex = px / n;
+      nw.ey = py / n;
+      nw.tx = bound * nw.ex;
+      nw.ty = bound * nw.ey;
+    }
+    state.node(i, j) = nw;
+    const double mx = (Tx + nw.tx) / 2, my = (Ty + nw.ty) / 2;
+    e.dissipated += -L * dx * (mx * (nw.tx - px) + my * (nw.ty - py));
+    e.creep += -L * dx * (mx * incx + my * incy);
+    e.Fx += nw.tx * dx;
+    e.Fy += nw.ty * dx;
+    e.Mz += (x * nw.ty - y * nw.tx) * dx;
+    if (!slip) e.stick_length += dx;
+    if (fields && k.dt_s > 0) {
+      // node -> the two cells it borders, half to each
+      for (int c : {i - 1, i}) {
+        if (c < 0 || c >= g.nx) continue;
+        fields->tau_x_Pa(c, j) += nw.tx / 2;
+        fields->tau_y_Pa(c, j) += nw.ty / 2;
+        fields->slip_x_m_per_s(c, j) += L * (nw.tx - px) / k.dt_s / 2;
+        fields->slip_y_m_per_s(c, j) += L * (nw.ty - py) / k.dt_s / 2;
+      }
+    }
+  }
+  e.transport = L * dx / 2 * (E_old - E_transported);
+  return e;
+}
+
+}  // namespace
+
+StepResult satran_step(const ContactPatch& patch, const TangentialProblem& problem, const StepKinematics& k,
+                       TransientScheme scheme, TransientState& state, bool fields) {
+  const Grid& g = patch.grid;
+  if (state.nx != g.nx || state.ny != g.ny)
+    throw std::invalid_argument("satran: the state's grid (" + std::to_string(state.nx) + " x " +
+                                std::to_string(state.ny) + ") is not the contact's (" + std::to_string(g.nx) +
+                                " x " + std::to_string(g.ny) + ")");
+  const double dx = g.dx_m, L = problem.L_m_per_Pa;
+  const double cfl = k.dq_m / dx;
+  if (!(cfl >= 0) || cfl > 1 + 1e-12)
+    throw std::invalid_argument("satran: CFL number " + std::to_string(cfl) + " outside [0, 1] (dq " +
+                                std::to_string(k.dq_m) + " m, dx " + std::to_string(dx) + " m)");
+  StepResult r;
+  r.strip_energy_J_per_m = Eigen::ArrayXd::Zero(g.ny);
+  if (fields) allocate_fields(r, g);
+
+  // a new flexibility rescales tau = u/L with u carried
+  if (state.L_m_per_Pa > 0 && state.L_m_per_Pa != L) {
+    const double before = state.L_m_per_Pa * dx / 2 * node_energy_sum(state) * g.dy_m;
+    const double scale = state.L_m_per_Pa / L;
+    for (StripNode& n : state.nodes) {
+      n.tx *= scale;
+      n.ty *= scale;
+    }
+    r.flexibility_J = L * dx / 2 * node_energy_sum(state) * g.dy_m - before;
+  }
+  state.L_m_per_Pa = L;
+  // nodes outside the current contact carry no traction
+  for (int j = 0; j < g.ny; ++j)
+    for (int i = 0; i <= g.nx; ++i) {
+      StripNode& n = state.node(i, j);
+      if ((n.tx != 0 || n.ty != 0) && !inside(patch, i, j)) {
+        r.released_J += L * dx / 2 * (n.tx * n.tx + n.ty * n.ty) * g.dy_m;
+        n = StripNode{};
+      }
+    }
+  const double E_start = L * dx / 2 * node_energy_sum(state) * g.dy_m;
+
+  const bool exact_shift = scheme == TransientScheme::Shift && cfl == 1.0;
+  TangentialProblem rates_problem = problem;  // creepages per rolled distance for the shift kernel
+  if (exact_shift) rates_problem.creepages = {k.slip_x_m / k.dq_m, k.slip_y_m / k.dq_m, k.spin_rad / k.dq_m};
+  std::vector<StripNode> old(g.nx + 1);
+  double stick_area = 0, area = 0;
+  for (int j = 0; j < g.ny; ++j) {
+    if (!(patch.half_length_m(j) > 0)) continue;
+    const StripEnergy e =
+        exact_shift ? shift_strip(patch, strip_rates(patch, rates_problem, j), j, L, k, state, fields ? &r : nullptr)
+                    : explicit_strip(patch, problem, j, k, scheme == TransientScheme::LaxFriedrichs, state, old,
+                                     fields ? &r : nullptr);
+    r.strip_energy_J_per_m(j) = e.dissipated;
+    r.dissipated_J += e.dissipated * g.dy_m;
+    r.creep_work_J += e.creep * g.dy_m;
+    r.trailing_J += e.trailing * g.dy_m;
+    r.transport_J += e.transport * g.dy_m;
+    r.Fx_N += e.Fx * g.dy_m;
+    r.Fy_N += e.Fy * g.dy_m;
+    r.Mz_N_m += e.Mz * g.dy_m;
+    stick_area += e.stick_length * g.dy_m;
+    area += 2 * patch.half_length_m(j) * g.dy_m;
+  }
+  r.stick_fraction = area > 0 ? stick_area / area : 0;
+  r.elastic_change_J = L * dx / 2 * node_energy_sum(state) * g.dy_m - E_start;
+  r.balance_residual_J = r.dissipated_J - (r.creep_work_J - r.elastic_change_J - r.trailing_J - r.transport_J);
+  return r;
+}
+
+}  // namespace contact
+
+// ---- runs over a time history ----
+
+namespace contact {
+
+namespace {
+
+void check_run(const TransientCase& c) {
+  const TransientSettings& s = c.settings;
+  check_history(c.inputs.speed_m_per_s, "speed_m_per_s");
+  check_history(c.inputs.xi, "xi");
+  check_history(c.inputs.eta, "eta");
+  check_history(c.inputs.phi_per_m, "phi_per_m");
+  check_history(c.inputs.normal_load_N, "normal_load_N");
+  if (min_value(c.inputs.speed_m_per_s) < 0) throw std::invalid_argument("speed_m_per_s: must be >= 0");
+  if (min_value(c.inputs.normal_load_N) < 0) throw std::invalid_argument("normal_load_N: must be >= 0");
+  if (!(max_value(c.inputs.normal_load_N) > 0)) throw std::invalid_argument("normal_load_N: never positive");
+  if (!(s.t_end_s > 0) || !std::isfinite(s.t_end_s)) throw std::invalid_argument("t_end_s: must be positive");
+  if (!(s.dt_s >= 0) || !std::isfinite(s.dt_s)) throw std::invalid_argument("dt_s: must be >= 0");
+  if (s.scheme != TransientScheme::Shift && !(s.dt_s > 0))
+    throw std::invalid_argument("dt_s: the " + to_string(s.scheme) + " scheme needs a time step");
+  if (c.inertia) {
+    const RollerInertia& in = *c.inertia;
+    check_history(in.path_speed_m_per_s, "path_speed_m_per_s");
+    if (!(in.R1_m > 0) || !(in.J1_kg_m2 > 0))
+      throw std::invalid_argument("inertia: R1_m and J1_kg_m2 must be positive");
+    if (min_value(in.path_speed_m_per_s) < 0 || in.omega1_0_rad_per_s < 0)
+      throw std::invalid_argument("inertia: the path speed and the initial spin must be >= 0");
+    if (!(s.dt_s > 0)) throw std::invalid_argument("dt_s: an inertia run needs the longest step dt_s > 0");
+    if (s.scheme != TransientScheme::Shift) throw std::invalid_argument("scheme: an inertia run uses shift");
+  }
+}
+
+// the contact at load F on the run's grid; no contact at F = 0
+ContactPatch contact_at(const TransientCase& c, const Grid& grid, double F) {
+  if (F > 0) return hertz_patch(solve_hertz(c.bodies, c.materials, F), grid);
+  ContactPatch p;
+  p.grid = grid;
+  p.half_length_m = Eigen::ArrayXd::Zero(grid.ny);
+  p.strip_peak_Pa = Eigen::ArrayXd::Zero(grid.ny);
+  fill_strip_pressures(p);
+  const HertzContact h = solve_hertz(c.bodies, c.materials, 1.0);  // the shape, for Kalker's a/b
+  p.a_m = h.a_m;
+  p.b_m = h.b_m;
+  return p;
+}
+
+class PatchCache {
+ public:
+  PatchCache(const TransientCase& c, const Grid& g) : c_(c), g_(g) {}
+  const ContactPatch& at(double F) {
+    if (!valid_ || F != F_) {
+      patch_ = contact_at(c_, g_, F);
+      F_ = F;
+      valid_ = true;
+    }
+    return patch_;
+  }
+
+ private:
+  const TransientCase& c_;
+  const Grid& g_;
+  ContactPatch patch_;
+  double F_ = 0;
+  bool valid_ = false;
+};
+
+}  // namespace
+
+TransientResult run_transient(const TransientCase& c, const StepObserver& observe) {
+  check_run(c);
+  const TransientSettings& set = c.settings;
+  TransientResult res;
+  // the grid covers the largest contact of the run
+  const HertzContact largest = solve_hertz(c.bodies, c.materials, max_value(c.inputs.normal_load_N));
+  res.grid = make_grid(largest.a_m, largest.b_m, set.grid);
+  const Grid& g = res.grid;
+  const double dx = g.dx_m;
+  res.strip_energy_J_per_m = Eigen::ArrayXd::Zero(g.ny);
+  TransientState state = rest_state(g);
+  PatchCache patches(c, g);
+
+  // the CFL condition of the fixed-step schemes, checked before anything runs
+  int substeps = 1;
+  if (set.scheme != TransientScheme::Shift && !c.inertia) {
+    const double vmax = max_value(c.inputs.speed_m_per_s);
+    const double cfl = vmax * set.dt_s / dx;
+    if (cfl > 1 + 1e-12) {
+      if (!set.substep)
+        throw std::invalid_argument("dt_s: " + std::to_string(set.dt_s) + " s breaks the CFL condition (V dt/dx = " +
+                                    std::to_string(cfl) + " > 1 at V = " + std::to_string(vmax) +
+                                    " m/s, dx = " + std::to_string(dx) + " m); the largest allowed dt is " +
+                                    std::to_string(dx / vmax) + " s (or set substep: true)");
+      substeps = static_cast<int>(std::ceil(cfl - 1e-12));
+    }
+  }
+
+  std::vector<double> snaps = set.snapshot_times_s;
+  std::sort(snaps.begin(), snaps.end());
+  size_t next_snap = 0;
+  double t = 0, q = 0;
+  double omega1 = c.inertia ? c.inertia->omega1_0_rad_per_s : 0.0;
+  const double longest = set.dt_s > 0 ? set.dt_s : std::numeric_limits<double>::infinity();
+  int step = 0;
+  while (t < set.t_end_s * (1 - 1e-12)) {
+    const double left = set.t_end_s - t;
+    StepKinematics k;
+    TransientRecord rec;
+    StepResult r;
+    double V = 0;
+    double F = 0;
+    Creepages cr;
+    const bool want_fields = next_snap < snaps.size();
+    if (!c.inertia) {
+      // step length: one dx of rolling (shift), or the fixed step
+      if (set.scheme == TransientScheme::Shift) {
+        const double t_roll = time_to_accumulate(c.inputs.speed_m_per_s, t, dx);
+        k.dt_s = std::min({t_roll - t, longest, left});
+        k.dq_m = k.dt_s == t_roll - t ? dx : std::min(dx, integral(c.inputs.speed_m_per_s, t, t + k.dt_s));
+      } else {
+        k.dt_s = std::min(set.dt_s / substeps, left);
+        k.dq_m = std::min(dx, integral(c.inputs.speed_m_per_s, t, t + k.dt_s));
+      }
+      const double tm = t + k.dt_s / 2;
+      V = value_at(c.inputs.speed_m_per_s, tm);
+      F = value_at(c.inputs.normal_load_N, tm);
+      cr = {value_at(c.inputs.xi, tm), value_at(c.inputs.eta, tm), value_at(c.inputs.phi_per_m, tm)};
+      // rigid slip over the step: creepage x rolled distance
+      k.slip_x_m = cr.xi * k.dq_m;
+      k.slip_y_m = cr.eta * k.dq_m;
+      k.spin_rad = cr.phi_per_m * k.dq_m;
+      const ContactPatch& patch = patches.at(F);
+      const TangentialProblem pb = make_tangential_problem(patch, c.materials, cr, c.mu, V);
+      r = satran_step(patch, pb, k, set.scheme, state, want_fields);
+    } else {
+      // the roller's spin at the end of the step balances the creep torque over the step (implicit)
+      const RollerInertia& in = *c.inertia;
+      const double V2_now = value_at(in.path_speed_m_per_s, t);
+      const double V_now = (omega1 * in.R1_m + V2_now) / 2;
+      const double dt_guess = std::min({V_now > 0 ? dx / V_now : longest, longest, left});
+      const double V2 = value_at(in.path_speed_m_per_s, t + dt_guess / 2);
+      F = value_at(c.inputs.normal_load_N, t + dt_guess / 2);
+      const ContactPatch& patch = patches.at(F);
+      TransientState trial_state;
+      auto evaluate = [&](double omega_end, StepResult& out, StepKinematics& kk) {
+        const double omega_mid = (omega1 + omega_end) / 2;
+        const double Vm = std::max(0.0, (omega_mid * in.R1_m + V2) / 2);
+        kk.dt_s = std::min({Vm > 0 ? dx / Vm : longest, longest, left});
+        kk.dq_m = std::min(dx, Vm * kk.dt_s);
+        kk.slip_x_m = (V2 - omega_mid * in.R1_m) * kk.dt_s;
+        kk.slip_y_m = kk.spin_rad = 0;
+        // creepage ratio for the mean flexibility: only xi here
+        const Creepages ratio{1.0, 0.0, 0.0};
+        const TangentialProblem pb = make_tangential_problem(patch, c.materials, ratio, c.mu, Vm);
+        trial_state = state;
+        out = satran_step(patch, pb, kk, TransientScheme::Shift, trial_state, want_fields);
+        // J1 (omega_end - omega1) = (-R1 Fx - T_res) dt
+        return in.J1_kg_m2 * (omega_end - omega1) - (-in.R1_m * out.Fx_N - in.T_res_N_m) * kk.dt_s;
+      };
+      // bracket: the creep force is bounded by mu F
+      const double span = (c.mu * F * in.R1_m + std::abs(in.T_res_N_m)) * longest / in.J1_kg_m2 * 1.01 + 1e-12;
+      double lo = std::max(0.0, omega1 - span), hi = omega1 + span;
+      StepResult r_lo, r_hi;
+      StepKinematics k_lo, k_hi;
+      double f_lo = evaluate(lo, r_lo, k_lo), f_hi = evaluate(hi, r_hi, k_hi);
+      if (f_lo > 0) {  // cannot spin down below zero within the bracket: the roller stops
+        hi = lo;
+        f_hi = f_lo;
+      }
+      // Illinois regula falsi on the monotone balance
+      double omega_end = f_lo > 0 ? lo : (f_hi < 0 ? hi : omega1);
+      int side = 0;
+      for (int it = 0; it < 100 && f_lo <= 0 && f_hi >= 0; ++it) {
+        omega_end = (lo * f_hi - hi * f_lo) / (f_hi - f_lo);
+        if (!(omega_end > lo && omega_end < hi)) omega_end = (lo + hi) / 2;
+        StepResult rr;
+        StepKinematics kk;
+        const double f = evaluate(omega_end, rr, kk);
+        if (std::abs(hi - lo) <= 1e-13 * std::max(1.0, std::abs(omega_end)) || f == 0) break;
+        if (f < 0) {
+          lo = omega_end;
+          f_lo = f;
+          if (side == -1) f_hi /= 2;
+          side = -1;
+        } else {
+          hi = omega_end;
+          f_hi = f;
+          if (side == 1) f_lo /= 2;
+          side = 1;
+        }
+      }
+      evaluate(omega_end, r, k);
+      state = trial_state;
+      omega1 = omega_end;
+      V = k.dt_s > 0 ? k.dq_m / k.dt_s : 0;
+      cr.xi = V > 0 ? k.slip_x_m / k.dq_m : 0;
+    }
+
+    // record the step
+    // the forces of an exact shift step are averages over it, those of an explicit step end values
+    const bool averages = set.scheme == TransientScheme::Shift && k.dq_m == dx;
+    rec.step = ++step;
+    rec.t_s = t + (averages ? k.dt_s / 2 : k.dt_s);
+    rec.q_m = q + (averages ? k.dq_m / 2 : k.dq_m);
+    rec.dt_s = k.dt_s;
+    rec.speed_m_per_s = V;
+    rec.xi = cr.xi;
+    rec.eta = cr.eta;
+    rec.phi_per_m = cr.phi_per_m;
+    rec.normal_load_N = F;
+    rec.omega1_rad_per_s = omega1;
+    rec.Fx_N = r.Fx_N;
+    rec.Fy_N = r.Fy_N;
+    rec.Mz_N_m = r.Mz_N_m;
+    rec.power_W = k.dt_s > 0 ? r.dissipated_J / k.dt_s : 0;
+    rec.stick_fraction = r.stick_fraction;
+    rec.balance_residual_W = k.dt_s > 0 ? r.balance_residual_J / k.dt_s : 0;
+    rec.cfl = k.dq_m / dx;
+    t += k.dt_s;
+    q += k.dq_m;
+    res.strip_energy_J_per_m += r.strip_energy_J_per_m;
+    res.dissipated_J += r.dissipated_J;
+    if (observe) observe(rec, k.dt_s > 0 ? Eigen::ArrayXd(r.strip_energy_J_per_m / k.dt_s) : Eigen::ArrayXd::Zero(g.ny));
+    while (next_snap < snaps.size() && snaps[next_snap] <= t * (1 + 1e-12)) {
+      Snapshot s;
+      s.t_s = t;
+      s.pressure_Pa = patches.at(F).pressure_Pa;
+      s.tau_x_Pa = r.tau_x_Pa;
+      s.tau_y_Pa = r.tau_y_Pa;
+      s.slip_x_m_per_s = r.slip_x_m_per_s;
+      s.slip_y_m_per_s = r.slip_y_m_per_s;
+      res.snapshots.push_back(std::move(s));
+      ++next_snap;
+    }
+    SPDLOG_TRACE("satran step {}: t {:.6e} s, Fx {:.6e} N, P {:.6e} W", step, t, r.Fx_N, rec.power_W);
+    if (!(k.dt_s > 0)) break;  // nothing left to advance
+  }
+  res.steps = step;
+  res.t_end_s = t;
+  res.q_end_m = q;
+  res.final_state = std::move(state);
+  spdlog::debug("satran ({}): {} steps to t {:.6e} s, q {:.6e} m, dissipated {:.6e} J", to_string(set.scheme), step,
+                t, q, res.dissipated_J);
+  return res;
+}
+
+}  // namespace contact

@@ -1,1 +1,316 @@
-// placeholder: filled in by later work
+// Satran, the transient tangential solver: its steady state against the steady solver, start from
+// rest against the closed form of PHYSICS.md §4, the energy balance at every step, the CFL rules,
+// standstill, and the roller's inertia against the gross-sliding closed form (PHYSICS.md §5).
+#include "lib/satran.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <stdexcept>
+
+#include "lib/steady.h"
+
+namespace contact {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+TransientCase paper_case(double V, Creepages c, int n) {
+  TransientCase tc;
+  tc.bodies = {{0.020, 0.500}, {0.025, kFlat}};
+  tc.materials = {{210e9, 0.28}, {210e9, 0.28}};
+  tc.mu = 0.3;
+  tc.inputs.speed_m_per_s = constant_history(V);
+  tc.inputs.xi = constant_history(c.xi);
+  tc.inputs.eta = constant_history(c.eta);
+  tc.inputs.phi_per_m = constant_history(c.phi_per_m);
+  tc.inputs.normal_load_N = constant_history(1500);
+  tc.settings.grid = {n, n};
+  return tc;
+}
+
+std::vector<TransientRecord> run(const TransientCase& c) {
+  std::vector<TransientRecord> rows;
+  run_transient(c, [&](const TransientRecord& r, const Eigen::ArrayXd&) { rows.push_back(r); });
+  return rows;
+}
+
+// PHYSICS.md §4, start from rest, pure xi: |tau(x, q)| = min(k min(q, a - x), g(x)), g = mu p.
+// The strip force, integrated exactly piece by piece between the break points of the min.
+double strip_force_from_rest(double a, double p, double k, double mu, double q) {
+  const double G = mu * p;
+  auto g = [&](double x) { return G * std::sqrt(std::max(0.0, 1 - x * x / (a * a))); };
+  auto tau = [&](double x) { return std::min(k * std::min(q, a - x), g(x)); };
+  auto S = [&](double x) {
+    const double u = std::clamp(x / a, -1.0, 1.0);
+    return (u * std::sqrt(1 - u * u) + std::asin(u)) / 2;
+  };
+  // break points: a - q, the crossings of the line with g, and of the level k q with g
+  std::vector<double> b{-a, a};
+  if (q < 2 * a) b.push_back(a - q);
+  const double m = G / (k * a);
+  b.push_back(a * (1 - m * m) / (1 + m * m));
+  if (k * q < G) {
+    const double xc = a * std::sqrt(1 - (k * q / G) * (k * q / G));
+    b.push_back(xc);
+    b.push_back(-xc);
+  }
+  std::sort(b.begin(), b.end());
+  double F = 0;
+  for (size_t i = 1; i < b.size(); ++i) {
+    const double x0 = std::max(-a, b[i - 1]), x1 = std::min(a, b[i]);
+    if (!(x1 > x0)) continue;
+    const double xm = (x0 + x1) / 2, t = tau(xm);
+    if (t == g(xm)) F += G * a * (S(x1) - S(x0));                                          // slip: the bound
+    else if (xm >= a - q) F += k * ((a - x0) * (a - x0) - (a - x1) * (a - x1)) / 2;       // stick line
+    else F += k * q * (x1 - x0);                                                            // not yet strained past q
+  }
+  return F;
+}
+
+TEST(Satran, SteadyStateEqualsSteadySolverToRounding) {
+  const Creepages c{1e-3, 4e-4, 0.6};
+  TransientCase tc = paper_case(1.8, c, 40);
+  const ContactPatch p = solve_normal_hertz(tc.bodies, tc.materials, 1500, tc.settings.grid);
+  tc.settings.t_end_s = 3 * p.a_m / 1.8;  // steady by q = 2 a
+  TransientRecord last;
+  Eigen::ArrayXd last_strips;
+  run_transient(tc, [&](const TransientRecord& r, const Eigen::ArrayXd& strips) {
+    if (r.cfl == 1.0) {
+      last = r;
+      last_strips = strips;
+    }
+  });
+  const TangentialSolution s = solve_steady(p, make_tangential_problem(p, tc.materials, c, 0.3, 1.8));
+  constexpr double kRounding = 1e-12;
+  EXPECT_NEAR(last.Fx_N / s.Fx_N, 1, kRounding);
+  EXPECT_NEAR(last.Fy_N / s.Fy_N, 1, kRounding);
+  EXPECT_NEAR(last.Mz_N_m / s.Mz_N_m, 1, kRounding);
+  EXPECT_NEAR(last.power_W / s.power_W, 1, kRounding);
+  EXPECT_NEAR(last.stick_fraction, s.stick_fraction, kRounding);
+  for (int j = 0; j < 40; ++j)
+    EXPECT_NEAR(last_strips(j), s.strip_power_W_per_m(j), kRounding * s.strip_power_W_per_m.maxCoeff());
+}
+
+// Issue #3: |Fx(q) - Fx_closed_form(q)| within 0.5 % of |Fx_steady| for all q, 80 x 80. The
+// forces of a step are its path averages, reported at the middle of the step.
+TEST(Satran, StartFromRestFollowsClosedFormWithinHalfPercent) {
+  const double xi = 1e-3, V = 1.0;
+  TransientCase tc = paper_case(V, {xi, 0, 0}, 80);
+  const ContactPatch p = solve_normal_hertz(tc.bodies, tc.materials, 1500, tc.settings.grid);
+  tc.settings.t_end_s = 2.5 * p.a_m / V;
+  const TangentialProblem pb = make_tangential_problem(p, tc.materials, {xi, 0, 0}, 0.3, V);
+  const double k = xi / pb.flex.L1_m_per_Pa;
+  auto closed_form = [&](double q) {
+    double F = 0;
+    for (int j = 0; j < p.grid.ny; ++j)
+      F += strip_force_from_rest(p.half_length_m(j), p.strip_peak_Pa(j), k, 0.3, q) * p.grid.dy_m;
+    return -F;
+  };
+  const double F_steady = std::abs(solve_steady(p, pb).Fx_N);
+  double worst = 0;
+  for (const TransientRecord& r : run(tc)) worst = std::max(worst, std::abs(r.Fx_N - closed_form(r.q_m)) / F_steady);
+  RecordProperty("worst_start_from_rest_error", std::to_string(worst));
+  std::printf("  shift, 80 x 80: worst |Fx - closed form| / |Fx_steady| = %.3e\n", worst);
+  EXPECT_LT(worst, 0.005);
+}
+
+// The paper's scheme and upwind at CFL < 1 smear the start; the numbers are reported, and they
+// must still reach the steady force.
+TEST(Satran, UpwindAndLaxFriedrichsSmearTheStart) {
+  const double xi = 1e-3, V = 1.0;
+  for (const TransientScheme sch : {TransientScheme::Upwind, TransientScheme::LaxFriedrichs}) {
+    TransientCase tc = paper_case(V, {xi, 0, 0}, 80);
+    const ContactPatch p = solve_normal_hertz(tc.bodies, tc.materials, 1500, tc.settings.grid);
+    tc.settings.scheme = sch;
+    tc.settings.dt_s = 0.5 * p.grid.dx_m / V;  // CFL 0.5
+    tc.settings.t_end_s = 6 * p.a_m / V;
+    const TangentialProblem pb = make_tangential_problem(p, tc.materials, {xi, 0, 0}, 0.3, V);
+    const double k = xi / pb.flex.L1_m_per_Pa;
+    const double F_steady = std::abs(solve_steady(p, pb).Fx_N);
+    double worst = 0;
+    TransientRecord last;
+    for (const TransientRecord& r : run(tc)) {
+      double F = 0;
+      for (int j = 0; j < p.grid.ny; ++j)
+        F += strip_force_from_rest(p.half_length_m(j), p.strip_peak_Pa(j), k, 0.3, r.q_m) * p.grid.dy_m;
+      worst = std::max(worst, std::abs(r.Fx_N + F) / F_steady);
+      last = r;
+      EXPECT_NEAR(r.balance_residual_W, 0, 1e-9 * F_steady * V * xi) << to_string(sch) << " step " << r.step;
+    }
+    std::printf("  %s at CFL 0.5, 80 x 80: worst |Fx - closed form| / |Fx_steady| = %.3e, final Fx / steady - 1 = %.3e\n",
+                to_string(sch).c_str(), worst, last.Fx_N / -F_steady - 1);
+    EXPECT_GT(worst, 0.005);  // it does smear: that is why shift is the default
+    EXPECT_NEAR(last.Fx_N / -F_steady, 1, 0.05);
+  }
+}
+
+// PHYSICS.md §4: dissipated = creep work - dE - trailing (- the transport loss of fallback steps),
+// with changing load (contact size), creepages and speed, at every step.
+TEST(Satran, EnergyBalanceHoldsAtEveryStepWithChangingInputs) {
+  TransientCase tc = paper_case(1.0, {0, 0, 0}, 30);
+  tc.inputs.speed_m_per_s = {{0, 1e-4, 3e-4}, {0.0, 2.0, 0.5}};
+  tc.inputs.xi = ramp_history(0, 2e-3, 4e-4, -1e-3);
+  tc.inputs.eta = ramp_history(0, 0, 4e-4, 1e-3);
+  tc.inputs.phi_per_m = ramp_history(0, -0.5, 4e-4, 1.0);
+  tc.inputs.normal_load_N = {{0, 2e-4, 4e-4}, {800.0, 2000.0, 500.0}};
+  tc.settings.t_end_s = 4e-4;
+  tc.settings.dt_s = 3e-6;  // the longest step, so that the slow start takes time steps
+  double flex = 0;
+  int fallback = 0;
+  double scale = 0;
+  std::vector<TransientRecord> rows = run(tc);
+  for (const TransientRecord& r : rows) scale = std::max(scale, r.power_W);
+  for (const TransientRecord& r : rows) {
+    EXPECT_NEAR(r.balance_residual_W, 0, 1e-10 * scale) << "step " << r.step;
+    if (r.cfl < 1) ++fallback;
+    flex += r.normal_load_N;
+  }
+  EXPECT_GT(fallback, 0);  // the run covers slow rolling, where shift falls back to time steps
+  EXPECT_GT(rows.size(), 50u);
+}
+
+TEST(Satran, TractionStaysWithinTheBoundAndFinite) {
+  TransientCase tc = paper_case(1.0, {5e-3, -2e-3, 3.0}, 24);
+  tc.inputs.normal_load_N = ramp_history(0, 100, 2e-4, 3000);
+  tc.settings.t_end_s = 3e-4;
+  for (const TransientScheme sch : {TransientScheme::Shift, TransientScheme::Upwind, TransientScheme::LaxFriedrichs}) {
+    tc.settings.scheme = sch;
+    tc.settings.dt_s = sch == TransientScheme::Shift ? 0 : 2e-6;
+    const TransientResult res = run_transient(tc);
+    const ContactPatch p = hertz_patch(solve_hertz(tc.bodies, tc.materials, 3000), res.grid);
+    for (int j = 0; j < res.grid.ny; ++j)
+      for (int i = 0; i <= res.grid.nx; ++i) {
+        const StripNode& n = res.final_state.node(i, j);
+        ASSERT_TRUE(std::isfinite(n.tx) && std::isfinite(n.ty));
+        EXPECT_LE(std::hypot(n.tx, n.ty), 0.3 * p.edge_pressure_Pa(i, j) * (1 + 1e-12) + 1e-6) << to_string(sch);
+      }
+  }
+}
+
+TEST(Satran, TimeStepBreakingCflIsRefusedNamingTheLargestAllowed) {
+  TransientCase tc = paper_case(2.0, {1e-3, 0, 0}, 40);
+  tc.settings.scheme = TransientScheme::Upwind;
+  tc.settings.t_end_s = 1e-5;
+  const ContactPatch p = solve_normal_hertz(tc.bodies, tc.materials, 1500, tc.settings.grid);
+  const double allowed = p.grid.dx_m / 2.0;
+  tc.settings.dt_s = 1.5 * allowed;
+  try {
+    run_transient(tc);
+    FAIL() << "a CFL breach must be refused";
+  } catch (const std::invalid_argument& e) {
+    const std::string m = e.what();
+    EXPECT_NE(m.find("dt_s"), std::string::npos) << m;
+    EXPECT_NE(m.find("largest allowed dt"), std::string::npos) << m;
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%f", allowed);
+    EXPECT_NE(m.find(buf), std::string::npos) << m << " should name " << buf;
+  }
+  tc.settings.substep = true;
+  const std::vector<TransientRecord> rows = run(tc);
+  for (const TransientRecord& r : rows) EXPECT_LE(r.cfl, 1 + 1e-12);
+}
+
+TEST(Satran, StandstillAndPureSlidingNeedNoRolling) {
+  // V = 0 throughout: no transport, no creepage-defined slip, nothing happens, nothing divides by 0
+  TransientCase tc = paper_case(0.0, {1e-3, 0, 0}, 20);
+  tc.settings.t_end_s = 1e-4;
+  tc.settings.dt_s = 1e-5;
+  const std::vector<TransientRecord> rows = run(tc);
+  ASSERT_EQ(rows.size(), 10u);
+  for (const TransientRecord& r : rows) {
+    EXPECT_EQ(r.cfl, 0);
+    EXPECT_EQ(r.Fx_N, 0);
+    EXPECT_EQ(r.power_W, 0);
+  }
+}
+
+// ---- the roller's inertia ----
+
+TransientCase spinup_case(double J1, double dt) {
+  TransientCase tc = paper_case(0, {0, 0, 0}, 40);
+  RollerInertia in;
+  in.R1_m = 0.020;
+  in.J1_kg_m2 = J1;
+  in.path_speed_m_per_s = constant_history(1.0);
+  tc.inertia = in;
+  tc.settings.dt_s = dt;
+  return tc;
+}
+
+// While the roller slides over the whole contact, Fx = -mu F and omega1 = mu F R1 t / J1.
+TEST(SatranInertia, GrossSlidingSpinsUpLinearlyAtMuFR1OverJ1) {
+  const double J1 = 2e-5;  // heavy enough to slide for many steps
+  TransientCase tc = spinup_case(J1, 2e-6);
+  tc.settings.t_end_s = 2e-4;
+  const std::vector<TransientRecord> rows = run(tc);
+  const double rate = 0.3 * 1500 * 0.020 / J1;
+  int sliding = 0;
+  double t_end = 0;
+  for (const TransientRecord& r : rows) {
+    t_end += r.dt_s;
+    if (r.xi < 0.5) break;  // well inside gross sliding (xi = 2 at rest)
+    EXPECT_NEAR(r.Fx_N / (-0.3 * 1500), 1, 1e-3) << "step " << r.step;
+    EXPECT_NEAR(r.omega1_rad_per_s / (rate * t_end), 1, 1e-3) << "step " << r.step;
+    ++sliding;
+  }
+  EXPECT_GT(sliding, 20);
+}
+
+// omega1 at time t from the records, linearly interpolated
+double omega_at(const std::vector<TransientRecord>& rows, double t) {
+  double t_prev = 0, w_prev = rows.front().omega1_rad_per_s * 0;
+  double t_end = 0;
+  for (const TransientRecord& r : rows) {
+    t_end += r.dt_s;  // omega1 is the value at the end of the step
+    if (t_end >= t) return w_prev + (r.omega1_rad_per_s - w_prev) * (t - t_prev) / (t_end - t_prev);
+    t_prev = t_end;
+    w_prev = r.omega1_rad_per_s;
+  }
+  return w_prev;
+}
+
+// A light steel roller (40 mm x 20 mm: J1 = m R^2/2 = 3.9e-5 kg m^2) has a torsional period near
+// 67 us on this contact (PHYSICS.md §5). The implicit coupling must stay stable at steps larger
+// than period/pi (21 us) and converge as the step shrinks.
+TEST(SatranInertia, LightRollerStableAboveTorsionalPeriodAndConverges) {
+  const double R = 0.020, w = 0.020, rho = 7850;
+  const double J1 = kPi * R * R * w * rho * R * R / 2;
+  auto spinup = [&](int n, double dt) {
+    TransientCase tc = spinup_case(J1, dt);
+    tc.settings.grid = {n, n};
+    tc.settings.t_end_s = 1e-3;
+    return run(tc);
+  };
+  // 20 x 20: one shift step at V = 1 m/s is dx/V = 23 us
+  const std::vector<TransientRecord> coarse = spinup(20, 60e-6);
+  double biggest = 0;
+  for (const TransientRecord& r : coarse) {
+    ASSERT_TRUE(std::isfinite(r.omega1_rad_per_s));
+    EXPECT_LT(r.omega1_rad_per_s * R, 1.5);  // no runaway beyond the path speed
+    biggest = std::max(biggest, r.dt_s);
+  }
+  EXPECT_GT(biggest, 67e-6 / kPi);
+  EXPECT_NEAR(coarse.back().omega1_rad_per_s * R, 1.0, 0.02);  // it ends rolling
+  // convergence: the trajectory omega1(t) against a fine-step reference, same grid
+  const std::vector<TransientRecord> ref = spinup(20, 0.25e-6);
+  // the error shrinks with every halving, towards first order (backward Euler in omega1; the
+  // largest error sits where stick and slip switch); measured: 0.95, 0.79, 0.55, 0.31 rad/s
+  double prev = 0, first = 0;
+  for (double dt : {8e-6, 4e-6, 2e-6, 1e-6}) {
+    const std::vector<TransientRecord> rows = spinup(20, dt);
+    double err = 0;
+    for (double t = 5e-5; t <= 1e-3; t += 5e-5) err = std::max(err, std::abs(omega_at(rows, t) - omega_at(ref, t)));
+    std::printf("  longest step %.0e s: max |omega1 - omega1_ref| = %.4e rad/s\n", dt, err);
+    if (prev > 0) {
+      EXPECT_LT(err, prev);
+    } else {
+      first = err;
+    }
+    prev = err;
+  }
+  EXPECT_LT(prev, first / 2.5);
+}
+
+}  // namespace
+}  // namespace contact

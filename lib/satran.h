@@ -1,0 +1,175 @@
+// Satran: Kalker's simplified theory stepped in time (PHYSICS.md §3-4; the paper in
+// ../shared/reference/satran-paper.md). With u = L tau on every strip,
+//   du/dt - V du/dx = s - c,   c = L ( w_x/L1 - omega_z y/L3 ,  w_y/L2 + omega_z x/L3 ),
+// w = (w_x, w_y) = V (xi, eta) the rigid slip velocity and omega_z = V phi the spin rate, and the
+// Coulomb bound |tau| <= mu p. Built from w, c has no 0/0 at V = 0.
+//
+// Schemes (the state is the node tractions at the cell edges; the strip ends carry tau = 0 at the
+// leading edge and the bound, 0 for a semi-elliptic pressure, at the trailing edge):
+//   shift          steps of rolled distance dq = dx: material moves exactly one node, and the
+//                  interval update is the steady solver's (lib/strip_march.h) applied to the previous
+//                  step's upstream node. Its steady state is the steady solver's to rounding, and the
+//                  discrete energy balance of §4 holds to rounding at every step. Where rolling does
+//                  not cover dx within the longest allowed step (V = 0, standstill or sliding), the
+//                  step falls back to upwind at CFL = dq/dx < 1.
+//   upwind         fixed dt, CFL = V dt/dx <= 1: tau* = tau_i + CFL (tau_{i+1} - tau_i) - c dt/L.
+//   lax-friedrichs the paper's scheme: tau* = (tau_{i+1} + tau_{i-1})/2 + CFL (tau_{i+1} - tau_{i-1})/2 - c dt/L.
+// The last two clip tau* to the bound node by node; the slip is (tau - tau*) L / dt. They smear at
+// CFL < 1 and are kept for comparison.
+//
+// Energy over a step (per unit width, then summed over strips), E = (L dx/2) sum over interior nodes
+// of |tau|^2:
+//   dissipated = creep work - (E_end - E_start) - carried out at the trailing edge - transport loss,
+// with E_start taken after two changes at the start of the step, both reported: nodes that left
+// the contact (load decreased) release their energy, and a change of L (load, contact size or creepage ratio) rescales tau = u/L with u carried; the
+// energy that changes with it is reported as the flexibility term. For shift the balance is exact
+// to rounding with no transport loss; upwind and Lax-Friedrichs lose energy in their transport
+// (numerical diffusion), reported as its own term, not as dissipation by slip (which would wear).
+#pragma once
+
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "lib/elastic.h"
+#include "lib/hertz.h"
+#include "lib/history.h"
+#include "lib/strip_march.h"
+#include "lib/tangential.h"
+
+namespace contact {
+
+enum class TransientScheme { Shift, Upwind, LaxFriedrichs };
+
+std::string to_string(TransientScheme scheme);
+// throws std::invalid_argument naming the valid schemes
+TransientScheme parse_transient_scheme(const std::string& name);
+
+// rigid kinematics over one step
+struct StepKinematics {
+  double dt_s = 0;
+  double dq_m = 0;      // rolled distance, integral of V dt
+  double slip_x_m = 0;  // integral of w_x = v2 - v1 = V xi
+  double slip_y_m = 0;  // integral of w_y = V eta
+  double spin_rad = 0;  // integral of omega_z = V phi
+};
+
+// tractions at the nodes; lives across steps, owned by the caller
+struct TransientState {
+  int nx = 0, ny = 0;
+  std::vector<StripNode> nodes;  // (nx+1) x ny: node i of strip j sits at x_edge(i), index i + j (nx+1)
+  double L_m_per_Pa = 0;         // the flexibility the tractions refer to (u = L tau); 0 = not set yet
+
+  StripNode& node(int i, int j) { return nodes[i + j * (nx + 1)]; }
+  const StripNode& node(int i, int j) const { return nodes[i + j * (nx + 1)]; }
+};
+
+// the unloaded state (u = 0) on a grid
+TransientState rest_state(const Grid& grid);
+
+struct StepResult {
+  // exact shift steps: averages over the step (path integrals of the material crossing each
+  // interval); upwind, lax-friedrichs and fallback steps: at the end of the step
+  double Fx_N = 0, Fy_N = 0, Mz_N_m = 0;
+  double stick_fraction = 0;
+  Eigen::ArrayXd strip_energy_J_per_m;  // (ny) dissipated energy per unit width over the step
+
+  // energy over the step (J)
+  double dissipated_J = 0;
+  double creep_work_J = 0;       // -integral(tau . c) dt: the energy the rigid slip puts in
+  double elastic_change_J = 0;   // E_end - E_start (after the flexibility change)
+  double trailing_J = 0;         // carried out at the trailing edge
+  double released_J = 0;         // held by nodes that left the contact
+  double flexibility_J = 0;      // change of E when tau is rescaled for a new L (u carried)
+  double transport_J = 0;        // upwind, lax-friedrichs: energy lost by the transport's averaging
+                                 // (numerical diffusion and outflow); 0 for exact shift steps
+  double balance_residual_J = 0;  // dissipated - (creep - elastic change - trailing - transport)
+
+  // fields on the grid (only when asked for): step means per cell
+  Eigen::ArrayXXd tau_x_Pa, tau_y_Pa, slip_x_m_per_s, slip_y_m_per_s;
+};
+
+// One step on the contact `patch` with the flexibilities (L1, L2, L3, L) and friction of `problem`;
+// the rigid kinematics `k` drive it (problem.creepages and speed are not used). For shift, k.dq_m is
+// dx or less (less: an upwind step at CFL dq/dx). Throws std::invalid_argument for a CFL number
+// above 1 or a state on another grid.
+StepResult satran_step(const ContactPatch& patch, const TangentialProblem& problem, const StepKinematics& k,
+                       TransientScheme scheme, TransientState& state, bool fields = false);
+
+// ---- runs over a time history ----
+
+struct TransientInputs {
+  History speed_m_per_s = constant_history(1.0);  // rolling speed V(t) >= 0
+  History xi = constant_history(0.0);
+  History eta = constant_history(0.0);
+  History phi_per_m = constant_history(0.0);
+  History normal_load_N = constant_history(0.0);
+};
+
+// The roller's inertia (beyond the paper): the path's surface speed V2(t) is prescribed; the roller
+// (radius R1, polar moment J1, resisting torque T_res) spins up under the creep force,
+//   J1 d omega1/dt = -R1 Fx - T_res,  w_x = V2 - omega1 R1,  V = (omega1 R1 + V2)/2 (PHYSICS.md §5).
+// omega1 is advanced implicitly with the tractions: the end-of-step balance is solved for omega1.
+// Inertia runs use the shift scheme (with its fallback to time steps while rolling is slow).
+struct RollerInertia {
+  double R1_m = 0;
+  double J1_kg_m2 = 0;
+  double T_res_N_m = 0;
+  double omega1_0_rad_per_s = 0;
+  History path_speed_m_per_s = constant_history(0.0);  // V2(t)
+};
+
+struct TransientSettings {
+  TransientScheme scheme = TransientScheme::Shift;
+  double t_end_s = 0;
+  double dt_s = 0;        // upwind, lax-friedrichs: the step; shift: the longest step (0 = no limit)
+  bool substep = false;   // split a step that breaks CFL <= 1 instead of refusing it
+  GridSpec grid;
+  std::vector<double> snapshot_times_s;  // fields are recorded at the end of the step that reaches each
+};
+
+struct TransientCase {
+  Bodies bodies;
+  ElasticPair materials;
+  double mu = 0;
+  TransientInputs inputs;
+  std::optional<RollerInertia> inertia;
+  TransientSettings settings;
+};
+
+struct TransientRecord {  // one step
+  int step = 0;
+  double t_s = 0, q_m = 0;  // when the forces hold: mid-step for exact shift steps, else the step's end
+  double dt_s = 0;
+  double speed_m_per_s = 0, xi = 0, eta = 0, phi_per_m = 0, normal_load_N = 0;
+  double omega1_rad_per_s = 0;  // at the end of the step (inertia runs; 0 otherwise)
+  double Fx_N = 0, Fy_N = 0, Mz_N_m = 0;
+  double power_W = 0;  // dissipated energy over the step / dt
+  double stick_fraction = 0;
+  double balance_residual_W = 0;
+  double cfl = 0;
+};
+
+struct Snapshot {
+  double t_s = 0;  // end of the step
+  Eigen::ArrayXXd pressure_Pa, tau_x_Pa, tau_y_Pa, slip_x_m_per_s, slip_y_m_per_s;
+};
+
+struct TransientResult {
+  Grid grid;                             // covers the largest contact of the run
+  Eigen::ArrayXd strip_energy_J_per_m;  // (ny) dissipated energy per unit width, whole run
+  std::vector<Snapshot> snapshots;
+  TransientState final_state;
+  int steps = 0;
+  double t_end_s = 0, q_end_m = 0;
+  double dissipated_J = 0;
+};
+
+// called after every step with the record and the strip powers P_l(y_j) of the step (W/m)
+using StepObserver = std::function<void(const TransientRecord&, const Eigen::ArrayXd& strip_power_W_per_m)>;
+
+// throws std::invalid_argument for bad settings (naming the largest allowed dt for a CFL breach)
+TransientResult run_transient(const TransientCase& c, const StepObserver& observe = {});
+
+}  // namespace contact
