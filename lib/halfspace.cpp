@@ -1,1 +1,431 @@
-// placeholder: filled in by later work
+// The half-space normal problem (halfspace.h).
+//
+// Influence coefficients. A point load P on the surface displaces both surfaces together by
+// P / (pi E* r) (Boussinesq; 1/E* = (1-nu1^2)/E1 + (1-nu2^2)/E2). A rectangle [-c, c] x [-d, d]
+// (c = dx/2, d = dy/2) under unit pressure therefore displaces the point (x, y) by
+//   u(x, y) = (1/(pi E*)) integral of dA / sqrt(X^2 + Y^2),   X = x - x', Y = y - y',
+// and with G(X, Y) = X asinh(Y/|X|) + Y asinh(X/|Y|) (each term 0 when its divisor is 0), whose mixed
+// derivative d2G/dXdY = Y^2/r^3 + X^2/r^3 = 1/r for every sign of X and Y,
+//   u(x, y) = (1/(pi E*)) [G(x+c, y+d) - G(x+c, y-d) - G(x-c, y+d) + G(x-c, y-d)].
+// This is Love's (1929) closed form, written with asinh instead of logarithms of ratios so that it
+// keeps its digits on either side of the rectangle. K_ij = u(x_i - x_j, y_i - y_j).
+//
+// Convolution. K_ij depends on the offset of the cells only, so u = K p is a discrete convolution;
+// on a zero-padded (2nx x 2ny) grid with the kernel stored at offsets -(n-1)..(n-1) (wrapped, the
+// offset n unused) the cyclic convolution equals the linear one on the nx x ny block:
+//   u = IFFT( FFT(K) . FFT(p) ) / (4 nx ny).
+// The kernel is even in both offsets, so FFT(K) is real. The padded rows ny..2ny-1 of p are zero and
+// those of u are not wanted: r2c along x on the first ny rows, c2c along y on every column, and back
+// the same way (a quarter less work than the full 2-D transform). FFTW, planned once per solve
+// (FFTW_ESTIMATE: planning costs microseconds; the solve reuses the plans for every product).
+//
+// Polonsky & Keer (1999), "A numerical method for solving rough contact problems based on the
+// multi-level multi-summation and conjugate gradient techniques", Wear 231, 206-219, section 3.
+// The pressure minimises the complementary energy p.K p / 2 + p.h over p >= 0, sum p dx dy = F. Each
+// iteration, with Ic the loaded cells (p > 0):
+//   g = h + K p,  g -= mean_Ic g               (separation; the mean is the approach delta)
+//   G = sum_Ic g^2,  t = g + (G/G_old) t on Ic (t = g after a restart), t = 0 elsewhere
+//   r = K t,  r -= mean_Ic r,  tau = sum_Ic g t / sum_Ic r t
+//   p -= tau t on Ic,  p = max(p, 0)
+//   Iol = {p = 0, g < 0} (overlap outside the contact): p = -tau g there, and restart the direction
+//   p *= F / (sum p dx dy)                     (prescribed load)
+// The residual of halfspace.h is measured on g at the start of each iteration. When a step clips no
+// cell and loads no overlap, p_new = scale (p - tau t) and so K p_new = scale (K p - tau K t): the
+// next iteration needs no convolution for g. The final residual is always judged on a fresh K p.
+#include "lib/halfspace.h"
+
+#include <fftw3.h>
+#include <spdlog/fmt/fmt.h>
+#include <spdlog/spdlog.h>
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <mutex>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace contact {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// antiderivative of 1/r in X and Y (top of file)
+double love_antiderivative(double X, double Y) {
+  double G = 0;
+  if (X != 0) G += X * std::asinh(Y / std::abs(X));
+  if (Y != 0) G += Y * std::asinh(X / std::abs(Y));
+  return G;
+}
+
+// FFTW's planner keeps global state: plans are made and destroyed one at a time
+std::mutex& fftw_planner_mutex() {
+  static std::mutex m;
+  return m;
+}
+
+struct FftwFree {
+  void operator()(void* p) const { fftw_free(p); }
+};
+
+// the influence operator u = K p on one grid: plans, padded buffers and the kernel's spectrum
+struct HalfspaceWorkspace {
+  int nx, ny;      // grid
+  int mx, my;      // padded grid 2nx x 2ny, row-major for FFTW: row n (along y) holds mx values along x
+  int nk;          // mx/2 + 1 = nx + 1 complex values per row of the spectrum
+  std::unique_ptr<double, FftwFree> rows;           // (ny x mx): the rows that can be nonzero
+  std::unique_ptr<fftw_complex, FftwFree> spectrum;  // (my x nk)
+  std::vector<double> kernel_spectrum;              // (my x nk) FFT of the even kernel (real) / (mx my)
+  fftw_plan rows_forward = nullptr, columns_forward = nullptr;
+  fftw_plan columns_backward = nullptr, rows_backward = nullptr;
+
+  HalfspaceWorkspace(const Grid& g, double Estar_Pa)
+      : nx(g.nx), ny(g.ny), mx(2 * g.nx), my(2 * g.ny), nk(g.nx + 1),
+        rows(static_cast<double*>(fftw_malloc(sizeof(double) * mx * ny))),
+        spectrum(static_cast<fftw_complex*>(fftw_malloc(sizeof(fftw_complex) * my * nk))),
+        kernel_spectrum(static_cast<std::size_t>(my) * nk) {
+    if (!rows || !spectrum) throw std::bad_alloc();
+    std::unique_ptr<double, FftwFree> kernel(static_cast<double*>(fftw_malloc(sizeof(double) * mx * my)));
+    if (!kernel) throw std::bad_alloc();
+    fftw_plan kernel_forward = nullptr;
+    {
+      // the padded rows ny..my-1 of p are zero: transform only the first ny along x, all columns
+      // along y; back, all columns along y and only the first ny rows along x
+      const std::lock_guard<std::mutex> lock(fftw_planner_mutex());
+      rows_forward = fftw_plan_many_dft_r2c(1, &mx, ny, rows.get(), nullptr, 1, mx, spectrum.get(), nullptr, 1,
+                                            nk, FFTW_ESTIMATE);
+      columns_forward = fftw_plan_many_dft(1, &my, nk, spectrum.get(), nullptr, nk, 1, spectrum.get(), nullptr,
+                                           nk, 1, FFTW_FORWARD, FFTW_ESTIMATE);
+      columns_backward = fftw_plan_many_dft(1, &my, nk, spectrum.get(), nullptr, nk, 1, spectrum.get(), nullptr,
+                                            nk, 1, FFTW_BACKWARD, FFTW_ESTIMATE);
+      rows_backward = fftw_plan_many_dft_c2r(1, &mx, ny, spectrum.get(), nullptr, 1, nk, rows.get(), nullptr, 1,
+                                             mx, FFTW_ESTIMATE);
+      kernel_forward = fftw_plan_dft_r2c_2d(my, mx, kernel.get(), spectrum.get(), FFTW_ESTIMATE);
+    }
+    if (!rows_forward || !columns_forward || !columns_backward || !rows_backward || !kernel_forward) {
+      destroy_locked(kernel_forward);
+      destroy_plans();
+      throw std::runtime_error("halfspace: fftw_plan_many_dft / fftw_plan_dft_r2c_2d failed for " +
+                               std::to_string(mx) + " x " + std::to_string(my));
+    }
+
+    // kernel at the offsets of the first quadrant; even in both, wrapped onto the padded grid
+    Eigen::ArrayXXd quadrant(nx, ny);
+    for (int l = 0; l < ny; ++l)
+      for (int k = 0; k < nx; ++k)
+        quadrant(k, l) = rectangle_influence_m_per_Pa(k * g.dx_m, l * g.dy_m, g.dx_m, g.dy_m, Estar_Pa);
+    double* K = kernel.get();
+    for (int n = 0; n < my; ++n) {
+      const int l = n < ny ? n : my - n;  // |offset| along y; n = ny is the unused offset
+      for (int m = 0; m < mx; ++m) {
+        const int k = m < nx ? m : mx - m;
+        K[m + mx * n] = (k < nx && l < ny) ? quadrant(k, l) : 0.0;
+      }
+    }
+    fftw_execute(kernel_forward);
+    destroy_locked(kernel_forward);
+    const double scale = 1.0 / (static_cast<double>(mx) * my);
+    for (std::size_t q = 0; q < kernel_spectrum.size(); ++q) kernel_spectrum[q] = spectrum.get()[q][0] * scale;
+  }
+
+  ~HalfspaceWorkspace() { destroy_plans(); }
+  HalfspaceWorkspace(const HalfspaceWorkspace&) = delete;
+  HalfspaceWorkspace& operator=(const HalfspaceWorkspace&) = delete;
+
+  static void destroy(fftw_plan& plan) {
+    if (plan) fftw_destroy_plan(plan);
+    plan = nullptr;
+  }
+  static void destroy_locked(fftw_plan& plan) {
+    const std::lock_guard<std::mutex> lock(fftw_planner_mutex());
+    destroy(plan);
+  }
+  void destroy_plans() {
+    const std::lock_guard<std::mutex> lock(fftw_planner_mutex());
+    destroy(rows_forward);
+    destroy(columns_forward);
+    destroy(columns_backward);
+    destroy(rows_backward);
+  }
+
+  // u = K p: zero-padded cyclic convolution
+  void apply(const Eigen::ArrayXXd& p, Eigen::ArrayXXd& u) {
+    Eigen::Map<Eigen::ArrayXXd> padded(rows.get(), mx, ny);
+    padded.topRows(nx) = p;
+    padded.bottomRows(nx).setZero();
+    fftw_execute(rows_forward);
+    fftw_complex* S = spectrum.get();
+    double* S_values = reinterpret_cast<double*>(S);  // interleaved re, im
+    std::fill(S_values + 2 * ny * nk, S_values + 2 * my * nk, 0.0);
+    fftw_execute(columns_forward);
+    for (std::size_t q = 0; q < kernel_spectrum.size(); ++q) {
+      S[q][0] *= kernel_spectrum[q];
+      S[q][1] *= kernel_spectrum[q];
+    }
+    fftw_execute(columns_backward);
+    fftw_execute(rows_backward);
+    u = padded.topRows(nx);
+  }
+};
+
+void check_grid(const Grid& grid, const char* who) {
+  if (grid.nx < 1 || grid.ny < 1 || !(grid.dx_m > 0) || !(grid.dy_m > 0) || !std::isfinite(grid.dx_m) ||
+      !std::isfinite(grid.dy_m) || grid.x_m.size() != grid.nx || grid.y_m.size() != grid.ny)
+    throw std::invalid_argument(std::string(who) + ": the grid is empty or inconsistent (" +
+                                std::to_string(grid.nx) + " x " + std::to_string(grid.ny) + " cells)");
+}
+
+std::string size_text(Eigen::Index rows, Eigen::Index cols) {
+  return std::to_string(rows) + " x " + std::to_string(cols);
+}
+
+// where the loaded region ends beyond the centre of its outermost loaded cell, in cell widths, from
+// the values q at that cell and at its inner neighbour: q linear in the distance to the edge,
+// clamped to [0, 1] (the edge lies before the first unloaded cell's centre)
+double edge_beyond_centre(double q_out, double q_in) {
+  if (!(q_in > q_out)) return 1.0;
+  return std::clamp(q_out / (q_in - q_out), 0.0, 1.0);
+}
+
+}  // namespace
+
+double rectangle_influence_m_per_Pa(double x_m, double y_m, double dx_m, double dy_m, double Estar_Pa) {
+  const double c = dx_m / 2, d = dy_m / 2;
+  const double G = love_antiderivative(x_m + c, y_m + d) - love_antiderivative(x_m + c, y_m - d) -
+                   love_antiderivative(x_m - c, y_m + d) + love_antiderivative(x_m - c, y_m - d);
+  return G / (kPi * Estar_Pa);
+}
+
+HalfspaceSolution solve_halfspace(const Grid& grid, const Eigen::ArrayXXd& gap_m, double Estar_Pa,
+                                  double normal_load_N, const HalfspaceOptions& opt) {
+  check_grid(grid, "halfspace");
+  if (gap_m.rows() != grid.nx || gap_m.cols() != grid.ny)
+    throw std::invalid_argument("halfspace: gap is " + size_text(gap_m.rows(), gap_m.cols()) + ", grid is " +
+                                size_text(grid.nx, grid.ny));
+  if (!gap_m.allFinite()) throw std::invalid_argument("halfspace: gap has a non-finite value");
+  if (!(Estar_Pa > 0) || !std::isfinite(Estar_Pa))
+    throw std::invalid_argument("halfspace: E* must be positive and finite, got " + std::to_string(Estar_Pa) + " Pa");
+  if (!(normal_load_N > 0) || !std::isfinite(normal_load_N))
+    throw std::invalid_argument("halfspace: normal load must be positive and finite, got " +
+                                std::to_string(normal_load_N) + " N");
+  if (!(opt.tol > 0)) throw std::invalid_argument("halfspace: tol must be positive, got " + std::to_string(opt.tol));
+  if (opt.max_iterations < 1)
+    throw std::invalid_argument("halfspace: max_iterations must be at least 1, got " +
+                                std::to_string(opt.max_iterations));
+
+  const int nx = grid.nx, ny = grid.ny;
+  const double cell_m2 = grid.dx_m * grid.dy_m;
+  const double F = normal_load_N;
+  const Eigen::ArrayXXd& h = gap_m;
+  const double h_min = h.minCoeff();
+  HalfspaceWorkspace K(grid, Estar_Pa);
+
+  // start: the load spread evenly over the grid
+  Eigen::ArrayXXd p = Eigen::ArrayXXd::Constant(nx, ny, F / (nx * ny * cell_m2));
+  Eigen::ArrayXXd u(nx, ny), g(nx, ny), t = Eigen::ArrayXXd::Zero(nx, ny), Kt(nx, ny);
+  const Eigen::Index n_cells = p.size();
+  double* const P = p.data();
+  double* const U = u.data();
+  double* const S = g.data();
+  double* const T = t.data();
+  const double* const H = h.data();
+  const double* const R = Kt.data();
+
+  K.apply(p, u);
+  bool u_by_fft = true;  // u = K p from a convolution, not updated along the step
+  double G_old = 1, delta = 0, residual = 0, n_loaded = 0;
+  bool conjugate = false;
+  // separation s = h + u - delta for the current pressure; delta = its mean over the loaded cells
+  auto measure_separation = [&] {
+    double sum = 0;
+    n_loaded = 0;
+    for (Eigen::Index i = 0; i < n_cells; ++i) {
+      S[i] = H[i] + U[i];
+      if (P[i] > 0) {
+        sum += S[i];
+        n_loaded += 1;
+      }
+    }
+    delta = sum / n_loaded;
+    // complementarity: no gap under load, no overlap outside it
+    double violation = 0;
+    for (Eigen::Index i = 0; i < n_cells; ++i) {
+      S[i] -= delta;
+      violation = std::max(violation, P[i] > 0 ? std::abs(S[i]) : -S[i]);
+    }
+    residual = violation / (delta - h_min);
+  };
+
+  int it = 0;
+  HalfspaceSolution s;
+  for (;; ++it) {
+    measure_separation();
+    if ((residual <= opt.tol || it >= opt.max_iterations) && !u_by_fft) {
+      // judge the final pressure on a fresh convolution
+      K.apply(p, u);
+      u_by_fft = true;
+      measure_separation();
+    }
+    if (!std::isfinite(residual)) {
+      s.status.kind = SolveStatus::Kind::Failed;
+      s.status.message = fmt::format("residual is {} after {} iterations", residual, it);
+      break;
+    }
+    if (residual <= opt.tol) {
+      s.status.kind = SolveStatus::Kind::Converged;
+      s.status.message = fmt::format("residual {:.2g} <= tol {:.3g} after {} iterations", residual, opt.tol, it);
+      break;
+    }
+    if (it >= opt.max_iterations) {
+      s.status.kind = SolveStatus::Kind::MaxIterations;
+      s.status.message = fmt::format("residual {:.2g} > tol {:.3g} after {} iterations", residual, opt.tol, it);
+      break;
+    }
+
+    // conjugate direction on the loaded cells
+    double G = 0;
+    for (Eigen::Index i = 0; i < n_cells; ++i)
+      if (P[i] > 0) G += S[i] * S[i];
+    const double beta = conjugate ? G / G_old : 0.0;
+    for (Eigen::Index i = 0; i < n_cells; ++i) T[i] = P[i] > 0 ? S[i] + beta * T[i] : 0.0;
+    G_old = G;
+
+    // step length along it, for the part of K t that keeps the load (mean over the loaded cells removed)
+    K.apply(t, Kt);
+    double Kt_sum = 0, Kt_t = 0, s_t = 0;
+    for (Eigen::Index i = 0; i < n_cells; ++i) {
+      if (!(P[i] > 0)) continue;
+      Kt_sum += R[i];
+      Kt_t += R[i] * T[i];
+      s_t += S[i] * T[i];
+    }
+    double t_sum = 0;
+    for (Eigen::Index i = 0; i < n_cells; ++i) t_sum += T[i];
+    const double rt = Kt_t - Kt_sum / n_loaded * t_sum;
+    if (!(rt > 0)) {
+      s.status.kind = SolveStatus::Kind::Failed;
+      s.status.message = fmt::format("search direction lost (r.t = {:.3g}) with residual {:.2g} after {} iterations",
+                                     rt, residual, it);
+      break;
+    }
+    const double tau = s_t / rt;
+
+    // step, kept non-negative; overlap outside the loaded cells is loaded and restarts the direction
+    bool clipped = false, overlap = false;
+    double sum_p = 0;
+    for (Eigen::Index i = 0; i < n_cells; ++i) {
+      if (P[i] > 0) {
+        P[i] -= tau * T[i];
+        if (P[i] <= 0) {
+          P[i] = 0;
+          clipped = true;
+        }
+      }
+      if (P[i] == 0 && S[i] < 0) {
+        P[i] = -tau * S[i];
+        overlap = true;
+      }
+      sum_p += P[i];
+    }
+    conjugate = !overlap;
+
+    // prescribed load
+    const double scale = F / (sum_p * cell_m2);
+    p *= scale;
+
+    // displacement: along the step when no cell was clipped or added, K p = scale (u - tau K t)
+    if (clipped || overlap) {
+      K.apply(p, u);
+      u_by_fft = true;
+    } else {
+      u = scale * (u - tau * Kt);
+      u_by_fft = false;
+    }
+  }
+
+  s.pressure_Pa = std::move(p);
+  s.approach_m = delta;
+  s.contact_area_m2 = static_cast<double>((s.pressure_Pa > 0).count()) * cell_m2;
+  s.status.iterations = it;
+  s.status.residual = residual;
+
+  spdlog::debug("halfspace ({} x {}): {}; approach {:.6e} m, area {:.6e} m^2, p max {:.6e} Pa", nx, ny,
+                s.status.message, s.approach_m, s.contact_area_m2, s.pressure_Pa.maxCoeff());
+  if (!s.status.converged())
+    spdlog::warn("halfspace ({} x {}): not converged: {}", nx, ny, s.status.message);
+
+  // a contact cut by the grid's border misses the pressure outside it
+  const Eigen::ArrayXXd& ps = s.pressure_Pa;
+  if ((ps.row(0) > 0).any() || (ps.row(nx - 1) > 0).any() || (ps.col(0) > 0).any() || (ps.col(ny - 1) > 0).any())
+    spdlog::warn("halfspace ({} x {}): the contact reaches the grid's border (half-sizes {:.3e} m x {:.3e} m): "
+                 "enlarge the grid",
+                 nx, ny, grid.half_x_m, grid.half_y_m);
+  return s;
+}
+
+ContactPatch halfspace_patch(const HalfspaceSolution& s, const Grid& grid, double normal_load_N) {
+  check_grid(grid, "halfspace_patch");
+  const Eigen::ArrayXXd& P = s.pressure_Pa;
+  if (P.rows() != grid.nx || P.cols() != grid.ny)
+    throw std::invalid_argument("halfspace_patch: pressure is " + size_text(P.rows(), P.cols()) + ", grid is " +
+                                size_text(grid.nx, grid.ny));
+  if (!(normal_load_N > 0) || !std::isfinite(normal_load_N))
+    throw std::invalid_argument("halfspace_patch: normal load must be positive and finite, got " +
+                                std::to_string(normal_load_N) + " N");
+  const double dx = grid.dx_m, dy = grid.dy_m;
+  const double carried_N = P.sum() * dx * dy;
+  if (!(carried_N > 0) || !P.allFinite())
+    throw std::invalid_argument("halfspace_patch: the solution carries no load");
+  if (std::abs(carried_N - normal_load_N) > 1e-6 * carried_N)
+    throw std::invalid_argument(fmt::format("halfspace_patch: the solution carries {:.9g} N, not the {:.9g} N given",
+                                            carried_N, normal_load_N));
+  const double scale = normal_load_N / carried_N;
+
+  ContactPatch patch;
+  patch.grid = grid;
+  patch.normal_load_N = normal_load_N;
+  patch.approach_m = s.approach_m;
+  patch.half_length_m = Eigen::ArrayXd::Zero(grid.ny);
+  patch.strip_peak_Pa = Eigen::ArrayXd::Zero(grid.ny);
+  Eigen::ArrayXd strip_load_N_per_m = Eigen::ArrayXd::Zero(grid.ny);
+
+  for (int j = 0; j < grid.ny; ++j) {
+    // the strip's loaded cells, i0..i1
+    int i0 = 0, i1 = grid.nx - 1;
+    while (i0 < grid.nx && !(P(i0, j) > 0)) ++i0;
+    if (i0 == grid.nx) continue;
+    while (!(P(i1, j) > 0)) --i1;
+
+    // contact extent: square-root edges, p^2 linear in the distance to the edge
+    double x_lo = grid.x_m(i0) - dx / 2, x_hi = grid.x_m(i1) + dx / 2;  // single loaded cell
+    if (i1 > i0) {
+      x_lo = grid.x_m(i0) - dx * edge_beyond_centre(P(i0, j) * P(i0, j), P(i0 + 1, j) * P(i0 + 1, j));
+      x_hi = grid.x_m(i1) + dx * edge_beyond_centre(P(i1, j) * P(i1, j), P(i1 - 1, j) * P(i1 - 1, j));
+    }
+    const double a_j = std::min((x_hi - x_lo) / 2, grid.half_x_m);
+
+    // semi-ellipse carrying the strip's load
+    strip_load_N_per_m(j) = P.col(j).sum() * dx * scale;
+    patch.half_length_m(j) = a_j;
+    patch.strip_peak_Pa(j) = strip_load_N_per_m(j) / (kPi / 2 * a_j);
+  }
+
+  // equivalent ellipse: the longest strip, and the lateral extent with strip loads linear at its ends
+  int j0 = 0, j1 = grid.ny - 1;
+  while (!(strip_load_N_per_m(j0) > 0)) ++j0;
+  while (!(strip_load_N_per_m(j1) > 0)) --j1;
+  double y_lo = grid.y_m(j0) - dy / 2, y_hi = grid.y_m(j1) + dy / 2;
+  if (j1 > j0) {
+    y_lo = grid.y_m(j0) - dy * edge_beyond_centre(strip_load_N_per_m(j0), strip_load_N_per_m(j0 + 1));
+    y_hi = grid.y_m(j1) + dy * edge_beyond_centre(strip_load_N_per_m(j1), strip_load_N_per_m(j1 - 1));
+  }
+  patch.a_m = patch.half_length_m.maxCoeff();
+  patch.b_m = std::min((y_hi - y_lo) / 2, grid.half_y_m);
+  patch.p0_Pa = patch.strip_peak_Pa.maxCoeff();
+  fill_strip_pressures(patch);
+  return patch;
+}
+
+}  // namespace contact
