@@ -71,6 +71,7 @@ void allocate_fields(StepResult& r, const Grid& g) {
 // one strip, shift: returns (dissipated, creep, trailing) energies per unit width
 struct StripEnergy {
   double dissipated = 0, creep = 0, trailing = 0, transport = 0, stick_length = 0;
+  double E_start = 0, E_end = 0;  // sums of |tau|^2 over the interior nodes before and after the step
   double Fx = 0, Fy = 0, Mz = 0;
 };
 
@@ -81,6 +82,9 @@ StripEnergy shift_strip(const ContactPatch& patch, const StripRates& r, int j, d
   StripEnergy e;
   const int i_top = std::min(g.nx - 1, static_cast<int>(std::floor((a + g.half_x_m) / g.dx_m)));
   const int i_bot = std::max(0, static_cast<int>(std::floor((-a + g.half_x_m) / g.dx_m)));
+  // the integrals add up over the strip (per interval only for the fields)
+  IntervalSums strip;
+  double hi2 = 0, lo2 = 0, trail2 = 0;  // sums of |tau|^2 at the upstream, downstream, trailing nodes
   // from the trailing side up, so that node i+1 still holds the previous step's value when node i is updated
   for (int i = i_bot; i <= i_top; ++i) {
     IntervalGeometry geo;
@@ -92,28 +96,37 @@ StripEnergy shift_strip(const ContactPatch& patch, const StripRates& r, int j, d
     geo.moment_N = patch.pressure_moment_Pa_m(i, j) * g.dx_m;
     const StripNode hi = geo.x_hi < a ? state.node(i + 1, j) : StripNode{};
 
-    IntervalSums sums;
-    const StripNode lo = march_interval(r, hi, geo, sums);
-
-    e.dissipated += L * dq * dissipation_per_VL(r, hi, lo, sums);
-    e.creep += L * dq * creep_power_per_VL(r, sums);
-    e.Fx += sums.Ix;
-    e.Fy += sums.Iy;
-    e.Mz += sums.Ixy - r.y_m * sums.Ix;
-    e.stick_length += sums.stick_length_m;
+    IntervalSums cell;
+    const StripNode lo = march_interval(r, hi, geo, fields ? cell : strip);
+    hi2 += hi.tx * hi.tx + hi.ty * hi.ty;
+    lo2 += lo.tx * lo.tx + lo.ty * lo.ty;
     if (geo.x_lo > -a) {
       state.node(i, j) = lo;
     } else {
-      e.trailing = L * dq * (lo.tx * lo.tx + lo.ty * lo.ty) / 2;  // carried out of the contact
+      trail2 = lo.tx * lo.tx + lo.ty * lo.ty;  // carried out of the contact
     }
     if (fields) {
       const double h = geo.x_hi - geo.x_lo;
-      fields->tau_x_Pa(i, j) = sums.Ix / g.dx_m;
-      fields->tau_y_Pa(i, j) = sums.Iy / g.dx_m;
-      fields->slip_x_m_per_s(i, j) = L * dq / k.dt_s * sums.slip_x / h;
-      fields->slip_y_m_per_s(i, j) = L * dq / k.dt_s * sums.slip_y / h;
+      fields->tau_x_Pa(i, j) = cell.Ix / g.dx_m;
+      fields->tau_y_Pa(i, j) = cell.Iy / g.dx_m;
+      fields->slip_x_m_per_s(i, j) = L * dq / k.dt_s * cell.slip_x / h;
+      fields->slip_y_m_per_s(i, j) = L * dq / k.dt_s * cell.slip_y / h;
+      strip.Ix += cell.Ix;
+      strip.Iy += cell.Iy;
+      strip.Ixy += cell.Ixy;
+      strip.stick_length_m += cell.stick_length_m;
     }
   }
+  // energies of the strip: the per-interval formula summed (its last term telescopes)
+  e.creep = L * dq * creep_power_per_VL(r, strip);
+  e.dissipated = e.creep + L * dq * (hi2 - lo2) / 2;
+  e.E_start = hi2;  // the old interior nodes are the intervals' upstream nodes (the leading one is 0)
+  e.E_end = lo2 - trail2;  // the new ones their downstream nodes, but for the trailing edge's
+  e.trailing = L * dq * trail2 / 2;
+  e.Fx = strip.Ix;
+  e.Fy = strip.Iy;
+  e.Mz = strip.Ixy - r.y_m * strip.Ix;
+  e.stick_length = strip.stick_length_m;
   return e;
 }
 
@@ -188,6 +201,8 @@ StripEnergy explicit_strip(const ContactPatch& patch, const TangentialProblem& p
     }
   }
   e.transport = L * dx / 2 * (E_old - E_transported);
+  e.E_start = E_old;
+  for (int i = 0; i <= g.nx; ++i) e.E_end += state.node(i, j).tx * state.node(i, j).tx + state.node(i, j).ty * state.node(i, j).ty;
   return e;
 }
 
@@ -221,21 +236,27 @@ StepResult satran_step(const ContactPatch& patch, const TangentialProblem& probl
   }
   state.L_m_per_Pa = L;
   // nodes outside the current contact carry no traction
-  for (int j = 0; j < g.ny; ++j)
+  for (int j = 0; j < g.ny; ++j) {
+    const double a = patch.half_length_m(j);
     for (int i = 0; i <= g.nx; ++i) {
       StripNode& n = state.node(i, j);
-      if ((n.tx != 0 || n.ty != 0) && !inside(patch, i, j)) {
-        r.released_J += L * dx / 2 * (n.tx * n.tx + n.ty * n.ty) * g.dy_m;
-        n = StripNode{};
+      const double x = g.x_edge(i);
+      if (x > -a && x < a) {
+        i = std::max(i, static_cast<int>(std::ceil((a + g.half_x_m) / dx)) - 1);  // skip the interior
+        continue;
       }
+      const double n2 = n.tx * n.tx + n.ty * n.ty;
+      if (n2 == 0) continue;
+      r.released_J += L * dx / 2 * n2 * g.dy_m;
+      n = StripNode{};
     }
-  const double E_start = L * dx / 2 * node_energy_sum(state) * g.dy_m;
+  }
 
   const bool exact_shift = scheme == TransientScheme::Shift && cfl == 1.0;
   TangentialProblem rates_problem = problem;  // creepages per rolled distance for the shift kernel
   if (exact_shift) rates_problem.creepages = {k.slip_x_m / k.dq_m, k.slip_y_m / k.dq_m, k.spin_rad / k.dq_m};
   std::vector<StripNode> old(g.nx + 1);
-  double stick_area = 0, area = 0;
+  double stick_area = 0, area = 0, E_start = 0, E_end = 0;  // sums of |tau|^2 over interior nodes
   for (int j = 0; j < g.ny; ++j) {
     if (!(patch.half_length_m(j) > 0)) continue;
     const StripEnergy e =
@@ -247,6 +268,8 @@ StepResult satran_step(const ContactPatch& patch, const TangentialProblem& probl
     r.creep_work_J += e.creep * g.dy_m;
     r.trailing_J += e.trailing * g.dy_m;
     r.transport_J += e.transport * g.dy_m;
+    E_start += e.E_start;
+    E_end += e.E_end;
     r.Fx_N += e.Fx * g.dy_m;
     r.Fy_N += e.Fy * g.dy_m;
     r.Mz_N_m += e.Mz * g.dy_m;
@@ -254,7 +277,7 @@ StepResult satran_step(const ContactPatch& patch, const TangentialProblem& probl
     area += 2 * patch.half_length_m(j) * g.dy_m;
   }
   r.stick_fraction = area > 0 ? stick_area / area : 0;
-  r.elastic_change_J = L * dx / 2 * node_energy_sum(state) * g.dy_m - E_start;
+  r.elastic_change_J = L * dx / 2 * (E_end - E_start) * g.dy_m;
   r.balance_residual_J = r.dissipated_J - (r.creep_work_J - r.elastic_change_J - r.trailing_J - r.transport_J);
   return r;
 }
