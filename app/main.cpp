@@ -1,9 +1,17 @@
 // rollwear: the command line. Parse, load the case, run, write the results; nothing else.
 // One function per subcommand: add_<name>_command declares its options, run_<name> does the work.
 // Exit codes: 0 success, 2 bad input (case file, option, invalid argument), 1 any other failure.
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <csignal>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
+#include <limits>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -15,6 +23,7 @@
 #include "lib/case.h"
 #include "lib/csv.h"
 #include "lib/hertz.h"
+#include "lib/satran.h"
 #include "lib/steady.h"
 #include "lib/tangential.h"
 
@@ -69,8 +78,9 @@ CLI::App* add_contact_command(CLI::App& app, ContactOptions& opt, CommonOptions&
   return sub;
 }
 
-std::filesystem::path output_directory(const ContactOptions& opt, const ContactCase& c) {
-  if (!opt.output_directory.empty()) return opt.output_directory;
+// -o, else the case's output.directory, else out/<case name>
+std::filesystem::path output_directory(const std::string& option, const ContactCase& c) {
+  if (!option.empty()) return option;
   if (!c.output.directory.empty()) return c.output.directory;
   return std::filesystem::path("out") / c.name;
 }
@@ -93,16 +103,17 @@ void print_contact_summary(const ContactCase& c, const ContactPatch& patch, cons
 
 int run_contact(const ContactOptions& opt) {
   const ContactCase c = read_contact_case(opt.case_path);
+  validate_steady(c);  // constants only, no inertia
   const TangentialScheme scheme = parse_tangential_scheme(c.solver.tangential);
 
   // normal problem, then the steady tangential problem on its patch
-  const ContactPatch patch = solve_normal_hertz(bodies_of(c), materials_of(c), c.load.normal_load_N, grid_of(c));
-  const TangentialProblem problem = make_tangential_problem(patch, materials_of(c), creepages_of(c),
-                                                            c.friction.mu, c.kinematics.speed_m_per_s);
+  const ContactPatch patch = solve_normal_hertz(bodies_of(c), materials_of(c), normal_load_of(c), grid_of(c));
+  const TangentialProblem problem =
+      make_tangential_problem(patch, materials_of(c), creepages_of(c), c.friction.mu, speed_of(c));
   const TangentialSolution solution = solve_steady(patch, problem, scheme);
 
   // every output computed before anything is written
-  const std::filesystem::path dir = output_directory(opt, c);
+  const std::filesystem::path dir = output_directory(opt.output_directory, c);
   std::vector<OutputFile> files = {
       {dir / "summary.csv", summary_csv(c.name, patch, problem, solution, scheme)},
       {dir / "strips.csv", strips_csv(patch, solution)},
@@ -112,6 +123,233 @@ int run_contact(const ContactOptions& opt) {
   print_contact_summary(c, patch, problem, solution, scheme);
   write_files_atomic(files);
   spdlog::info("wrote {} files to {}", files.size(), dir.string());
+  return 0;
+}
+
+// ---- transient: the tangential problem stepped in time over the case's histories (Satran) ---------
+
+struct TransientOptions {
+  std::string case_path;
+  std::string output_directory;  // overrides output.directory
+  bool no_fields = false;
+  bool quiet = false;
+};
+
+CLI::App* add_transient_command(CLI::App& app, TransientOptions& opt, CommonOptions& common) {
+  CLI::App* sub = app.add_subcommand(
+      "transient",
+      "Transient rolling contact of one case (Satran): the tangential problem stepped in time over the "
+      "case's histories of load, speed and creepages, or with the roller's inertia. Needs a transient: "
+      "section. Writes timeseries.csv, strip_power.csv, strip_energy.csv, snapshot_<k>.csv, summary.csv.");
+  sub->footer(
+      "Outputs (in the output directory; SI units, numbers at full precision):\n"
+      "  timeseries.csv    one row per step: step,t_s,q_m,dt_s,speed_m_per_s,xi,eta,phi_per_m,normal_load_N,\n"
+      "                    omega1_rad_per_s,Fx_N,Fy_N,Mz_N_m,power_W,stick_fraction,balance_residual_W,cfl\n"
+      "                    (t_s, q_m: where the forces hold, the middle of a whole shift step, else its end)\n"
+      "  strip_power.csv   step,t_s,y_m,power_W_per_m: one row per strip and step\n"
+      "  strip_energy.csv  y_m,energy_J_per_m: each strip's power integrated over the run\n"
+      "  snapshot_<k>.csv  x_m,y_m,pressure_Pa,tau_x_Pa,tau_y_Pa,slip_x_m_per_s,slip_y_m_per_s,t_s: the fields\n"
+      "                    for the k-th time of transient.snapshots_s (k from 1), at the end of the step that\n"
+      "                    reached it; t_s is that step's end\n"
+      "  summary.csv       name,scheme,nx,ny,steps,t_end_s,q_end_m,dissipated_J, then the last step's\n"
+      "                    Fx_N,Fy_N,Mz_N_m,power_W,stick_fraction,omega1_rad_per_s, and sliding_end_s (t_s of\n"
+      "                    the first step with stick; nan if none)\n"
+      "The time series stream to temporary files during the run; every file is renamed into place at the\n"
+      "end, so a failed or interrupted run leaves no partial file.\n"
+      "Progress: on a terminal one line redrawn in place; otherwise an info line every 5 s.\n"
+      "Exit status: 0 success, 2 bad input (case file, options, a step that breaks CFL), 1 any other failure.");
+  sub->add_option("case", opt.case_path, "Case file (YAML) with a transient: section, e.g. cases/paper-startup.yaml")
+      ->required();
+  sub->add_option("-o,--output", opt.output_directory,
+                  "Output directory (default: the case's output.directory, else out/<case name>)");
+  sub->add_flag("--no-fields", opt.no_fields,
+                "Do not write the snapshot_<k>.csv fields (and do not compute them)");
+  sub->add_flag("-q,--quiet", opt.quiet,
+                "No progress line on stderr (the summary still goes to stdout, log messages by --log-level)");
+  add_log_level_option(*sub, common);
+  return sub;
+}
+
+// Temporary files of the streamed output, removed if the run is interrupted (SIGINT, SIGTERM,
+// SIGHUP); the handler only unlinks (async-signal-safe) and re-raises the signal.
+namespace interrupted {
+constexpr int kMaxFiles = 4;
+char g_paths[kMaxFiles][4096];
+volatile std::sig_atomic_t g_count = 0;
+
+void on_signal(int sig) {
+  for (int k = 0; k < g_count; ++k) ::unlink(g_paths[k]);
+  std::signal(sig, SIG_DFL);
+  std::raise(sig);
+}
+
+void remove_on_signal(const std::filesystem::path& tmp) {
+  const std::string p = tmp.string();
+  if (g_count >= kMaxFiles || p.size() >= sizeof g_paths[0]) return;
+  std::memcpy(g_paths[g_count], p.c_str(), p.size() + 1);
+  if (g_count == 0)
+    for (const int sig : {SIGINT, SIGTERM, SIGHUP}) std::signal(sig, on_signal);
+  g_count = g_count + 1;
+}
+
+void forget() { g_count = 0; }  // the files were renamed into place
+}  // namespace interrupted
+
+// The progress of a long run on stderr. On a terminal: one line redrawn in place with '\r', from
+// 1 s into the run, at most 5 times a second. Otherwise: a plain info line at most every 5 s.
+// Nothing when quiet.
+class Progress {
+  using Clock = std::chrono::steady_clock;
+
+ public:
+  Progress(double t_end_s, bool quiet)
+      : t_end_s_(t_end_s), quiet_(quiet), terminal_(::isatty(STDERR_FILENO) == 1), start_(Clock::now()),
+        last_(start_) {}
+  ~Progress() { clear(); }
+
+  void update(int step, double t_s) {
+    if (quiet_) return;
+    const Clock::time_point now = Clock::now();
+    const double elapsed_s = seconds(now - start_);
+    if (terminal_ ? elapsed_s < 1.0 || seconds(now - last_) < 0.2 : seconds(now - last_) < 5.0) return;
+    last_ = now;
+    const double done = std::min(1.0, t_s / t_end_s_);
+    const std::string line = fmt::format("step {}, t {:.4e} / {:.4e} s ({:.0f} %), ETA {}", step, t_s, t_end_s_,
+                                         100 * done, eta(done > 0 ? elapsed_s * (1 - done) / done : -1));
+    if (terminal_) {
+      std::fprintf(stderr, "\r%s\033[K", line.c_str());
+      std::fflush(stderr);
+      drawn_ = true;
+    } else {
+      spdlog::info("transient: {}", line);
+    }
+  }
+
+  // removes the line from the terminal (before the summary is printed)
+  void clear() {
+    if (!drawn_) return;
+    std::fprintf(stderr, "\r\033[K");
+    std::fflush(stderr);
+    drawn_ = false;
+  }
+
+ private:
+  static double seconds(Clock::duration d) { return std::chrono::duration<double>(d).count(); }
+  static std::string eta(double s) {
+    if (s < 0) return "unknown";
+    if (s < 60) return fmt::format("{:.0f} s", s);
+    return fmt::format("{:.0f} min {:02.0f} s", std::floor(s / 60), std::fmod(s, 60));
+  }
+
+  double t_end_s_;
+  bool quiet_, terminal_, drawn_ = false;
+  Clock::time_point start_, last_;
+};
+
+// what the stdout summary needs from the steps
+struct RunLog {
+  TransientRecord last;
+  std::optional<TransientRecord> last_full;  // the last step of a whole dx (CFL 1)
+  double t_s = 0;                                                   // end of the last step
+  double sliding_end_s = std::numeric_limits<double>::quiet_NaN();  // t_s of the first step with stick
+  int sliding_end_step = 0;
+};
+
+void print_transient_summary(const ContactCase& c, const TransientCase& t, const TransientResult& res,
+                             const RunLog& log) {
+  const TransientRecord& r = log.last;
+  fmt::print("case {} ({}), {} x {} grid, {} scheme{}\n", c.name, c.path, res.grid.nx, res.grid.ny,
+             to_string(t.settings.scheme), t.inertia ? ", roller inertia" : "");
+  fmt::print("  steps           {}\n", res.steps);
+  fmt::print("  end             t  = {:.6g} s, rolled q = {:.6g} mm\n", res.t_end_s, res.q_end_m * 1e3);
+  fmt::print("  last step       V  = {:.6g} m/s, xi = {:.6g}, F = {:.6g} N\n", r.speed_m_per_s, r.xi,
+             r.normal_load_N);
+  fmt::print("  creep forces    Fx = {:.6g} N, Fy = {:.6g} N, Mz = {:.6g} N m\n", r.Fx_N, r.Fy_N, r.Mz_N_m);
+  fmt::print("  dissipated      P  = {:.6g} W (last step), E = {:.6g} J over the run\n", r.power_W,
+             res.dissipated_J);
+  fmt::print("  stick fraction     {:.4f}\n", r.stick_fraction);
+  // a shift run ends with a partial step (an upwind step at CFL < 1) to land on t_end_s; its end
+  // values are not those of the exact steps before it
+  if (t.settings.scheme == TransientScheme::Shift && !t.inertia && r.cfl < 1 && log.last_full) {
+    const TransientRecord& f = *log.last_full;
+    fmt::print("  last whole step P  = {:.6g} W, Fx = {:.6g} N, stick {:.4f} at t = {:.6g} s (the last step "
+               "covers {:.3f} dx to end at t_end_s)\n",
+               f.power_W, f.Fx_N, f.stick_fraction, f.t_s, r.cfl);
+  }
+  if (t.inertia) {
+    fmt::print("  roller spin     omega1 = {:.6g} rad/s, omega1 R1 = {:.6g} m/s (path {:.6g} m/s)\n",
+               r.omega1_rad_per_s, r.omega1_rad_per_s * t.inertia->R1_m,
+               value_at(t.inertia->path_speed_m_per_s, res.t_end_s));
+    if (log.sliding_end_step > 0)
+      fmt::print("  gross sliding   ended at t = {:.6g} s (step {}: first stick)\n", log.sliding_end_s,
+                 log.sliding_end_step);
+    else
+      fmt::print("  gross sliding   throughout (no step with stick)\n");
+  }
+  for (std::size_t k = 0; k < res.snapshots.size(); ++k)
+    fmt::print("  snapshot {}      t  = {:.6g} s\n", k + 1, res.snapshots[k].t_s);
+}
+
+int run_transient_command(const TransientOptions& opt) {
+  const ContactCase c = read_contact_case(opt.case_path);
+  TransientCase t = transient_case_of(c);
+  const bool fields = c.output.fields && !opt.no_fields;
+  if (!fields) t.settings.snapshot_times_s.clear();  // not computed either
+  const std::filesystem::path dir = output_directory(opt.output_directory, c);
+
+  // the strips the run puts the contact on, to label the streamed strip powers (checked at the end)
+  const Eigen::ArrayXd y_m = transient_grid(t).y_m;
+
+  // every step streams to the temporary files; the files open with the first step, so a run refused
+  // before it starts writes nothing
+  std::optional<StreamedFile> timeseries, strip_power;
+  RunLog log;
+  Progress progress(t.settings.t_end_s, opt.quiet);
+  const StepObserver observe = [&](const TransientRecord& r, const Eigen::ArrayXd& power_W_per_m) {
+    if (!timeseries) {
+      timeseries.emplace(dir / "timeseries.csv");
+      interrupted::remove_on_signal(timeseries->temporary_path());
+      timeseries->append(transient_header());
+      strip_power.emplace(dir / "strip_power.csv");
+      interrupted::remove_on_signal(strip_power->temporary_path());
+      strip_power->append(strip_power_header());
+    }
+    timeseries->append(transient_row(r));
+    strip_power->append(strip_power_rows(r, y_m, power_W_per_m));
+    log.last = r;
+    if (r.cfl == 1) log.last_full = r;
+    log.t_s += r.dt_s;
+    if (log.sliding_end_step == 0 && r.stick_fraction > 0) {
+      log.sliding_end_step = r.step;
+      log.sliding_end_s = r.t_s;
+    }
+    progress.update(r.step, log.t_s);
+  };
+
+  TransientResult res;
+  try {
+    res = run_transient(t, observe);
+  } catch (const std::invalid_argument& e) {  // the settings refused: the key and its line
+    throw transient_error(c, e);
+  }
+  progress.clear();
+  if (!timeseries) throw std::logic_error("transient: the run took no step");
+  if (res.grid.ny != y_m.size() || (res.grid.y_m != y_m).any())
+    throw std::logic_error("transient: the run's strips differ from transient_grid's");
+  if (res.snapshots.size() != t.settings.snapshot_times_s.size())
+    spdlog::warn("transient: {} of {} snapshots recorded", res.snapshots.size(), t.settings.snapshot_times_s.size());
+
+  // the tables of the whole run, then every file into place at once
+  std::vector<OutputFile> files = {{dir / "strip_energy.csv", strip_energy_csv(res.grid, res.strip_energy_J_per_m)}};
+  for (std::size_t k = 0; k < res.snapshots.size(); ++k)
+    files.push_back({dir / fmt::format("snapshot_{}.csv", k + 1), snapshot_csv(res.grid, res.snapshots[k])});
+  files.push_back({dir / "summary.csv", transient_summary_csv(c.name, t.settings.scheme, res, log.last,
+                                                              log.sliding_end_s)});
+
+  print_transient_summary(c, t, res, log);
+  write_files_atomic(files, {&*timeseries, &*strip_power});
+  interrupted::forget();
+  spdlog::info("wrote {} files to {}", files.size() + 2, dir.string());
   return 0;
 }
 
@@ -127,7 +365,7 @@ void print_error(const std::string& message) {
 
 int main(int argc, char** argv) {
   CLI::App app{"rollwear: wear of bodies in rolling contact (Hertz normal problem, Kalker's simplified "
-               "theory for the tangential one).",
+               "theory for the tangential one, steady or transient).",
                "rollwear"};
   app.footer("Exit status: 0 success, 2 bad input (case file, options), 1 any other failure.\n"
              "Run 'rollwear SUBCOMMAND --help' for a subcommand's options.");
@@ -138,6 +376,8 @@ int main(int argc, char** argv) {
   add_log_level_option(app, common);  // accepted before the subcommand as well
   ContactOptions contact_opt;
   CLI::App* contact_cmd = add_contact_command(app, contact_opt, common);
+  TransientOptions transient_opt;
+  CLI::App* transient_cmd = add_transient_command(app, transient_opt, common);
 
   try {
     app.parse(argc, argv);
@@ -151,6 +391,7 @@ int main(int argc, char** argv) {
   try {
     set_up_logging(common.log_level);
     if (contact_cmd->parsed()) return run_contact(contact_opt);
+    if (transient_cmd->parsed()) return run_transient_command(transient_opt);
     print_error("no subcommand ran");
     return kExitBadInput;
   } catch (const CaseError& e) {

@@ -2,9 +2,12 @@
 // cross-key checks of validate(). The generic machinery (marking keys, locations) is yaml_reader.h.
 #include "lib/case.h"
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include <spdlog/spdlog.h>
 
@@ -33,11 +36,119 @@ void read_body(YamlMap& m, BodySection& b) {
   m.required("nu", b.nu, in_half_open(0, 0.5));
 }
 
+// ---- time histories ----
+
+constexpr const char* kHistoryForms = "a number, { ramp: [t0_s, v0, t1_s, v1] } or { table: [[t_s, value], ...] }";
+
+// the shortest spelling that reads back the same double, for messages
+std::string number(double v) { return fmt::format("{}", v); }
+
+// "1 element", "3 elements"
+std::string count_of_elements(std::size_t n) { return std::to_string(n) + (n == 1 ? " element" : " elements"); }
+
+// { ramp: [t0_s, v0, t1_s, v1] }: linear from (t0, v0) to (t1, v1), held outside
+template <class Check>
+History read_ramp(const YamlValue& r, const Check& check_value) {
+  const std::vector<YamlValue> e = r.elements("[t0_s, v0, t1_s, v1]");
+  if (e.size() != 4) r.fail("expected [t0_s, v0, t1_s, v1], got " + count_of_elements(e.size()));
+  const double t0 = e[0].as<double>(finite, "t0_s");
+  const double v0 = e[1].as<double>(check_value, "v0");
+  const double t1 = e[2].as<double>(finite, "t1_s");
+  const double v1 = e[3].as<double>(check_value, "v1");
+  if (!(t1 > t0)) e[2].fail("t1_s must be after t0_s = " + number(t0) + ", got " + e[2].node().Scalar());
+  return ramp_history(t0, v0, t1, v1);
+}
+
+// { table: [[t_s, value], ...] }: linear between rows, held outside; times strictly increasing
+template <class Check>
+History read_table(const YamlValue& tv, const Check& check_value) {
+  const std::vector<YamlValue> rows = tv.elements("a list of [t_s, value] rows");
+  if (rows.empty()) tv.fail("expected at least one [t_s, value] row, got none");
+  History h;
+  for (std::size_t k = 0; k < rows.size(); ++k) {
+    const std::string row = "row " + std::to_string(k + 1);
+    if (!rows[k].node().IsSequence() || rows[k].node().size() != 2)
+      rows[k].fail(row + ": expected [t_s, value], got " +
+                   (rows[k].node().IsSequence() ? count_of_elements(rows[k].node().size())
+                                                : yaml_describe(rows[k].node())));
+    const std::vector<YamlValue> cells = rows[k].elements();
+    const double t = cells[0].as<double>(finite, row + ": t_s");
+    const double v = cells[1].as<double>(check_value, row + ": value");
+    if (k > 0 && !(t > h.t_s.back()))
+      cells[0].fail(row + ": t_s must be after row " + std::to_string(k) + "'s " + number(h.t_s.back()) +
+                    " (times strictly increasing), got " + cells[0].node().Scalar());
+    h.t_s.push_back(t);
+    h.value.push_back(v);
+  }
+  return h;
+}
+
+// a history in any of its forms; check_value applies to every value
+template <class Check>
+History read_history(const YamlValue& v, const Check& check_value) {
+  if (v.node().IsScalar()) return constant_history(v.as<double>(check_value));
+  if (!v.node().IsMap()) v.fail(std::string("expected ") + kHistoryForms + ", got " + yaml_describe(v.node()));
+  History h;
+  int forms = 0;
+  v.mapping([&](YamlMap& m) {
+    forms += m.optional_value("ramp", [&](const YamlValue& r) { h = read_ramp(r, check_value); });
+    forms += m.optional_value("table", [&](const YamlValue& t) { h = read_table(t, check_value); });
+  });
+  if (forms != 1) v.fail(forms == 0 ? std::string("expected ") + kHistoryForms + ", got an empty mapping"
+                                    : "give one of 'ramp' and 'table', not both");
+  try {
+    check_history(h, v.path().c_str());
+  } catch (const std::invalid_argument& e) {
+    throw CaseError(v.location() + ": " + e.what());
+  }
+  return h;
+}
+
+// the normal load: a constant > 0, or a history >= 0 that is positive at some time
+History read_load(const YamlValue& v) {
+  if (v.node().IsScalar()) return constant_history(v.as<double>(positive_finite));
+  const History h = read_history(v, nonnegative_finite);
+  if (!(max_value(h) > 0)) v.fail("must be positive at some time, got 0 throughout");
+  return h;
+}
+
 void read_kinematics(YamlMap& m, KinematicsSection& k) {
-  m.optional("speed_m_per_s", k.speed_m_per_s, nonnegative_finite);
-  m.optional("xi", k.xi, finite);
-  m.optional("eta", k.eta, finite);
-  m.optional("phi_per_m", k.phi_per_m, finite);
+  m.optional_value("speed_m_per_s", [&](const YamlValue& v) { k.speed_m_per_s = read_history(v, nonnegative_finite); });
+  m.optional_value("xi", [&](const YamlValue& v) { k.xi = read_history(v, finite); });
+  m.optional_value("eta", [&](const YamlValue& v) { k.eta = read_history(v, finite); });
+  m.optional_value("phi_per_m", [&](const YamlValue& v) { k.phi_per_m = read_history(v, finite); });
+}
+
+void read_transient(YamlMap& m, TransientSection& t) {
+  m.optional("scheme", t.scheme);
+  try {
+    parse_transient_scheme(t.scheme);
+  } catch (const std::invalid_argument& e) {
+    m.fail("scheme", e.what());
+  }
+  m.required("t_end_s", t.t_end_s, positive_finite);
+  m.optional("dt_s", t.dt_s, nonnegative_finite);
+  m.optional("substep", t.substep);
+  m.optional_value("snapshots_s", [&](const YamlValue& v) {
+    const std::vector<YamlValue> e = v.elements("a list of times, e.g. [1.0e-4, 2.0e-4]");
+    for (std::size_t k = 0; k < e.size(); ++k) {
+      const std::string element = "element " + std::to_string(k + 1);
+      const double t_s = e[k].as<double>(nonnegative_finite, element);
+      if (k > 0 && !(t_s > t.snapshots_s.back()))
+        e[k].fail(element + " must be after element " + std::to_string(k) + "'s " + number(t.snapshots_s.back()) +
+                  " (times strictly increasing), got " + e[k].node().Scalar());
+      t.snapshots_s.push_back(t_s);
+    }
+  });
+}
+
+void read_inertia(YamlMap& m, InertiaSection& in) {
+  m.required("R1_m", in.R1_m, positive_finite);
+  m.required("J1_kg_m2", in.J1_kg_m2, positive_finite);
+  m.optional("T_res_N_m", in.T_res_N_m, finite);
+  m.optional("omega1_0_rad_per_s", in.omega1_0_rad_per_s, nonnegative_finite);
+  m.required_value("path_speed_m_per_s",
+                   [&](const YamlValue& v) { in.path_speed_m_per_s = read_history(v, nonnegative_finite); });
 }
 
 void read_solver(YamlMap& m, SolverSection& s) {
@@ -51,11 +162,47 @@ void read_solver(YamlMap& m, SolverSection& s) {
   m.optional("ny", s.ny, in_closed(1, 4096));
 }
 
-// "LOCATION: " of the first key that was read from a file, else "PATH: " (or nothing)
-std::string where(const ContactCase& c, const std::string& key) {
-  const auto it = c.locations.find(key);
-  if (it != c.locations.end()) return it->second + ": ";
+// "LOCATION: " of the key if it was read from a file, else of its closest enclosing section that was,
+// else "PATH: " (or nothing for a case built in code)
+std::string where(const ContactCase& c, std::string key) {
+  for (;;) {
+    const auto it = c.locations.find(key);
+    if (it != c.locations.end()) return it->second + ": ";
+    const std::size_t dot = key.rfind('.');
+    if (dot == std::string::npos) break;
+    key.erase(dot);
+  }
   return c.path.empty() ? std::string() : c.path + ": ";
+}
+
+bool given(const ContactCase& c, const std::string& key) { return c.locations.count(key) > 0; }
+
+// the constant of a history the steady command needs
+double steady_value(const ContactCase& c, const History& h, const std::string& key) {
+  if (h.value.empty() || !is_constant(h))
+    throw CaseError(where(c, key) + key + ": the steady 'contact' command needs a constant; histories are for "
+                    "'transient'");
+  return h.value.front();
+}
+
+// with inertia, the roller's spin sets the rolling speed and the longitudinal creepage
+void check_inertia_kinematics(const ContactCase& c) {
+  std::vector<std::string> keys;
+  for (const char* k : {"kinematics.speed_m_per_s", "kinematics.xi"})
+    if (given(c, k)) keys.push_back(k);
+  if (!keys.empty()) {
+    std::string names;
+    for (const std::string& k : keys) names += (names.empty() ? "" : ", ") + k;
+    throw CaseError(where(c, keys.front()) + names + ", inertia: with inertia the rolling speed and xi follow "
+                    "from the roller's spin (V = (omega1 R1 + V2)/2, xi = (V2 - omega1 R1)/V); remove " +
+                    (keys.size() > 1 ? "them" : "it") + " and give inertia.path_speed_m_per_s");
+  }
+  // the inertia run carries longitudinal creep only (lib/satran.h)
+  for (const auto& [key, h] : {std::pair<const char*, const History*>{"kinematics.eta", &c.kinematics.eta},
+                               {"kinematics.phi_per_m", &c.kinematics.phi_per_m}})
+    if (!h->value.empty() && (min_value(*h) != 0 || max_value(*h) != 0))
+      throw CaseError(where(c, key) + key + ", inertia: an inertia run models longitudinal creep only; " +
+                      "lateral and spin creepage must be 0");
 }
 
 // Hertz needs a positive relative curvature along each axis (hertz.h)
@@ -84,10 +231,14 @@ ContactCase read_contact_case(const std::string& path) {
       s.section("body1", [&](YamlMap& b) { read_body(b, c.bodies.body1); });
       s.section("body2", [&](YamlMap& b) { read_body(b, c.bodies.body2); });
     });
-    m.section("load", [&](YamlMap& s) { s.required("normal_load_N", c.load.normal_load_N, positive_finite); });
+    m.section("load", [&](YamlMap& s) {
+      s.required_value("normal_load_N", [&](const YamlValue& v) { c.load.normal_load_N = read_load(v); });
+    });
     m.optional_section("kinematics", [&](YamlMap& s) { read_kinematics(s, c.kinematics); });
     m.section("friction", [&](YamlMap& s) { s.required("mu", c.friction.mu, in_closed(0, 10)); });
     m.optional_section("solver", [&](YamlMap& s) { read_solver(s, c.solver); });
+    m.optional_section("transient", [&](YamlMap& s) { read_transient(s, c.transient.emplace()); });
+    m.optional_section("inertia", [&](YamlMap& s) { read_inertia(s, c.inertia.emplace()); });
     m.optional_section("output", [&](YamlMap& s) {
       s.optional("directory", c.output.directory);
       s.optional("fields", c.output.fields);
@@ -102,6 +253,47 @@ void validate(const ContactCase& c) {
   // a point contact: both relative curvatures positive
   check_curvature(c, "Rx_m", "A", c.bodies.body1.Rx_m, c.bodies.body2.Rx_m);
   check_curvature(c, "Ry_m", "B", c.bodies.body1.Ry_m, c.bodies.body2.Ry_m);
+
+  // the run: snapshots within it, a time step for the fixed-step schemes
+  if (c.transient) {
+    const TransientSection& t = *c.transient;
+    if (!t.snapshots_s.empty() && t.snapshots_s.back() > t.t_end_s)
+      throw CaseError(where(c, "transient.snapshots_s") + "transient.snapshots_s, transient.t_end_s: snapshot at " +
+                      number(t.snapshots_s.back()) + " s is after the end of the run, t_end_s = " +
+                      number(t.t_end_s) + " s");
+    if (t.scheme != "shift" && !(t.dt_s > 0))
+      throw CaseError(where(c, "transient.dt_s") + "transient.dt_s, transient.scheme: the " + t.scheme +
+                      " scheme needs a time step dt_s > 0");
+  }
+
+  // the roller's inertia: its spin sets V and xi; the run is a shift run with a longest step
+  if (c.inertia) {
+    check_inertia_kinematics(c);
+    if (c.transient && c.transient->scheme != "shift")
+      throw CaseError(where(c, "transient.scheme") + "transient.scheme, inertia: an inertia run uses the shift "
+                      "scheme, got '" + c.transient->scheme + "'");
+    if (c.transient && !(c.transient->dt_s > 0))
+      throw CaseError(where(c, "transient.dt_s") + "transient.dt_s, inertia: an inertia run needs the longest "
+                      "step dt_s > 0 (the spin-up is stiff; e.g. 2.0e-6 s)");
+  }
+}
+
+void validate_steady(const ContactCase& c) {
+  steady_value(c, c.load.normal_load_N, "load.normal_load_N");
+  steady_value(c, c.kinematics.speed_m_per_s, "kinematics.speed_m_per_s");
+  steady_value(c, c.kinematics.xi, "kinematics.xi");
+  steady_value(c, c.kinematics.eta, "kinematics.eta");
+  steady_value(c, c.kinematics.phi_per_m, "kinematics.phi_per_m");
+  if (c.inertia)
+    throw CaseError(where(c, "inertia") + "inertia: the steady 'contact' command has no roller inertia; "
+                    "inertia is for 'transient'");
+}
+
+void validate_transient(const ContactCase& c) {
+  if (!c.transient)
+    throw CaseError((c.path.empty() ? std::string() : c.path + ": ") +
+                    "transient: the 'transient' command needs a transient: section, e.g. "
+                    "transient: { scheme: shift, t_end_s: 4.0e-4 }");
 }
 
 Bodies bodies_of(const ContactCase& c) {
@@ -118,19 +310,98 @@ ElasticPair materials_of(const ContactCase& c) {
   return pair;
 }
 
-Creepages creepages_of(const ContactCase& c) {
-  Creepages k;
-  k.xi = c.kinematics.xi;
-  k.eta = c.kinematics.eta;
-  k.phi_per_m = c.kinematics.phi_per_m;
-  return k;
-}
-
 GridSpec grid_of(const ContactCase& c) {
   GridSpec g;
   g.nx = c.solver.nx;
   g.ny = c.solver.ny;
   return g;
+}
+
+double normal_load_of(const ContactCase& c) { return steady_value(c, c.load.normal_load_N, "load.normal_load_N"); }
+
+double speed_of(const ContactCase& c) {
+  return steady_value(c, c.kinematics.speed_m_per_s, "kinematics.speed_m_per_s");
+}
+
+Creepages creepages_of(const ContactCase& c) {
+  Creepages k;
+  k.xi = steady_value(c, c.kinematics.xi, "kinematics.xi");
+  k.eta = steady_value(c, c.kinematics.eta, "kinematics.eta");
+  k.phi_per_m = steady_value(c, c.kinematics.phi_per_m, "kinematics.phi_per_m");
+  return k;
+}
+
+TransientCase transient_case_of(const ContactCase& c) {
+  validate_transient(c);
+  TransientCase t;
+  t.bodies = bodies_of(c);
+  t.materials = materials_of(c);
+  t.mu = c.friction.mu;
+  t.inputs.normal_load_N = c.load.normal_load_N;
+  t.inputs.speed_m_per_s = c.kinematics.speed_m_per_s;
+  t.inputs.xi = c.kinematics.xi;
+  t.inputs.eta = c.kinematics.eta;
+  t.inputs.phi_per_m = c.kinematics.phi_per_m;
+  if (c.inertia) {
+    RollerInertia in;
+    in.R1_m = c.inertia->R1_m;
+    in.J1_kg_m2 = c.inertia->J1_kg_m2;
+    in.T_res_N_m = c.inertia->T_res_N_m;
+    in.omega1_0_rad_per_s = c.inertia->omega1_0_rad_per_s;
+    in.path_speed_m_per_s = c.inertia->path_speed_m_per_s;
+    t.inertia = in;
+  }
+  const TransientSection& s = *c.transient;
+  t.settings.scheme = parse_transient_scheme(s.scheme);
+  t.settings.t_end_s = s.t_end_s;
+  t.settings.dt_s = s.dt_s;
+  t.settings.substep = s.substep;
+  t.settings.grid = grid_of(c);
+  t.settings.snapshot_times_s = s.snapshots_s;
+  return t;
+}
+
+Grid transient_grid(const TransientCase& t) {
+  const HertzContact largest = solve_hertz(t.bodies, t.materials, max_value(t.inputs.normal_load_N));
+  return make_grid(largest.a_m, largest.b_m, t.settings.grid);
+}
+
+CaseError transient_error(const ContactCase& c, const std::invalid_argument& e) {
+  const std::string message = e.what();
+  // run_transient names its setting first ("dt_s: ..."): the key it was read from
+  static const std::pair<const char*, const char*> kKeys[] = {
+      {"dt_s", "transient.dt_s"},
+      {"t_end_s", "transient.t_end_s"},
+      {"scheme", "transient.scheme"},
+      {"speed_m_per_s", "kinematics.speed_m_per_s"},
+      {"xi", "kinematics.xi"},
+      {"eta", "kinematics.eta"},
+      {"phi_per_m", "kinematics.phi_per_m"},
+      {"normal_load_N", "load.normal_load_N"},
+      {"path_speed_m_per_s", "inertia.path_speed_m_per_s"},
+      {"inertia", "inertia"},
+  };
+  const std::size_t colon = message.find(": ");
+  const std::string head = colon == std::string::npos ? std::string() : message.substr(0, colon);
+  for (const auto& [name, key] : kKeys) {
+    if (head != name) continue;
+    std::string what = message.substr(colon + 2);
+    // a CFL breach of a fixed-step scheme: the numbers at full precision, the largest allowed step
+    if (head == "dt_s" && what.find("CFL") != std::string::npos && c.transient) {
+      const TransientCase t = transient_case_of(c);
+      const double dx = transient_grid(t).dx_m, vmax = max_value(t.inputs.speed_m_per_s);
+      // dx / V rounded down to the six digits shown, so that the step named runs
+      const double scale = std::pow(10.0, std::floor(std::log10(dx / vmax)) - 5);
+      const double dt_max = std::floor(dx / vmax / scale) * scale;
+      what = fmt::format("{} s breaks the CFL condition of the {} scheme (V dt/dx = {:.9g} > 1 at the largest "
+                         "speed V = {} m/s, dx = {:.6g} m); the largest allowed dt_s is {:.6g} s (or set "
+                         "substep: true)",
+                         number(t.settings.dt_s), to_string(t.settings.scheme), vmax * t.settings.dt_s / dx,
+                         number(vmax), dx, dt_max);
+    }
+    return CaseError(where(c, key) + key + ": " + what);
+  }
+  return CaseError((c.path.empty() ? std::string() : c.path + ": ") + "transient: " + message);
 }
 
 }  // namespace contact

@@ -3,15 +3,30 @@
 // error, so a typo never becomes a silent default. Errors throw CaseError, whose message names the
 // file, the line and column, and the key path:
 //   cases/paper.yaml:12:5: friction.mu: must be in [0, 10], got -1
+//
+// Time histories. The load, the kinematics and the path speed of the roller's inertia are read as
+// contact::History (lib/history.h), in one of three forms:
+//   speed_m_per_s: 1.8                                   # a constant
+//   speed_m_per_s: { ramp: [0, 0, 1.0e-4, 1.8] }         # [t0_s, v0, t1_s, v1]: linear, held outside
+//   speed_m_per_s: { table: [[0, 0], [1.0e-4, 1.8]] }    # [t_s, value] rows: linear, held outside
+// The steady 'contact' command takes constants only (validate_steady); the 'transient' command
+// needs a transient: section and takes the histories as they are (transient_case_of):
+//   transient: { scheme: shift, t_end_s: 4.0e-4, dt_s: 0, substep: false, snapshots_s: [1.0e-4] }
+//   inertia:   { R1_m: 0.020, J1_kg_m2: 3.946e-5, T_res_N_m: 0, omega1_0_rad_per_s: 0,
+//                path_speed_m_per_s: 1.0 }    # then kinematics.speed_m_per_s and xi follow from the spin
 #pragma once
 
 #include <map>
+#include <optional>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "lib/elastic.h"
 #include "lib/grid.h"
 #include "lib/hertz.h"
+#include "lib/history.h"
+#include "lib/satran.h"
 #include "lib/tangential.h"
 
 namespace contact {
@@ -30,11 +45,13 @@ struct BodiesSection {
   BodySection body2;  // lower body (path)
 };
 struct LoadSection {
-  double normal_load_N = 0;  // required, > 0
+  History normal_load_N = constant_history(0.0);  // required: a constant > 0, or values >= 0, positive somewhere
 };
-struct KinematicsSection {
-  double speed_m_per_s = 1.0;  // rolling speed V >= 0
-  double xi = 0, eta = 0, phi_per_m = 0;
+struct KinematicsSection {  // histories; the steady command takes constants only
+  History speed_m_per_s = constant_history(1.0);  // rolling speed V >= 0
+  History xi = constant_history(0.0);             // longitudinal creepage, (v2 - v1)/V
+  History eta = constant_history(0.0);            // lateral creepage
+  History phi_per_m = constant_history(0.0);      // spin creepage
 };
 struct FrictionSection {
   double mu = 0;  // required, >= 0
@@ -42,6 +59,20 @@ struct FrictionSection {
 struct SolverSection {
   std::string tangential = "consistent";  // consistent | classic
   int nx = 80, ny = 80;
+};
+struct TransientSection {  // the 'transient' command's run (lib/satran.h)
+  std::string scheme = "shift";     // shift | upwind | lax-friedrichs
+  double t_end_s = 0;               // required, > 0
+  double dt_s = 0;                  // upwind, lax-friedrichs: the step; shift: the longest step (0 = no limit)
+  bool substep = false;             // split a step that breaks CFL <= 1 instead of refusing it
+  std::vector<double> snapshots_s;  // increasing, in [0, t_end_s]: fields at the end of the step reaching each
+};
+struct InertiaSection {  // the roller spins up under the creep force (lib/satran.h, RollerInertia)
+  double R1_m = 0;                // required, > 0: the roller's rolling radius
+  double J1_kg_m2 = 0;            // required, > 0: its polar moment of inertia
+  double T_res_N_m = 0;           // resisting torque on the roller
+  double omega1_0_rad_per_s = 0;  // spin at t = 0, >= 0
+  History path_speed_m_per_s = constant_history(0.0);  // required: V2(t) >= 0, the path's surface speed
 };
 struct OutputSection {
   std::string directory;  // default: out/<case name>, relative to the working directory
@@ -60,6 +91,8 @@ struct ContactCase {
   KinematicsSection kinematics;
   FrictionSection friction;
   SolverSection solver;
+  std::optional<TransientSection> transient;  // present when the file has a transient: section
+  std::optional<InertiaSection> inertia;      // present when the file has an inertia: section
   OutputSection output;
   KeyLocations locations;  // where each value was read; empty for a case built in code
 };
@@ -67,13 +100,32 @@ struct ContactCase {
 // reads and validates; throws CaseError (file, line, key) on any problem
 ContactCase read_contact_case(const std::string& path);
 
-// cross-key checks; throws CaseError naming every key involved
+// cross-key checks of any case (read_contact_case runs them); throws CaseError naming every key involved
 void validate(const ContactCase& c);
+// what the steady 'contact' command needs besides: every history constant, no inertia
+void validate_steady(const ContactCase& c);
+// what the 'transient' command needs besides: a transient: section
+void validate_transient(const ContactCase& c);
 
 // conversions to the solvers' inputs
 Bodies bodies_of(const ContactCase& c);
 ElasticPair materials_of(const ContactCase& c);
-Creepages creepages_of(const ContactCase& c);
 GridSpec grid_of(const ContactCase& c);
+// the steady values: throw CaseError naming the key if its history is not a constant
+double normal_load_of(const ContactCase& c);
+double speed_of(const ContactCase& c);
+Creepages creepages_of(const ContactCase& c);
+
+// the transient run of the case: validate_transient, then bodies, materials, mu, histories,
+// inertia and settings (solver.nx, ny as the grid; snapshots in the file's order)
+TransientCase transient_case_of(const ContactCase& c);
+
+// the grid run_transient puts the contact on: it covers the largest contact of the run
+// (lib/satran.cpp); callers use it to label per-strip output while the run streams
+Grid transient_grid(const TransientCase& t);
+
+// run_transient's refusal of the settings (std::invalid_argument "dt_s: ...") as a CaseError at the
+// key and line it names: "FILE:LINE:COL: transient.dt_s: ... the largest allowed dt_s is ... s"
+CaseError transient_error(const ContactCase& c, const std::invalid_argument& e);
 
 }  // namespace contact

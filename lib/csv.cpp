@@ -27,7 +27,7 @@ void check_length(const char* what, Eigen::Index n, Eigen::Index ny) {
   if (n != ny) throw std::invalid_argument(fmt::format("csv: {} has {} strips, the grid {}", what, n, ny));
 }
 
-fs::path temporary_path(const fs::path& path) {
+fs::path temporary_for(const fs::path& path) {
   fs::path tmp = path;
   tmp += ".tmp." + std::to_string(::getpid());
   return tmp;
@@ -55,12 +55,41 @@ void remove_quietly(const fs::path& p) {
 
 }  // namespace
 
-void write_files_atomic(const std::vector<OutputFile>& files) {
-  // every file to its temporary name first
+StreamedFile::StreamedFile(fs::path path) : path_(std::move(path)), tmp_(temporary_for(path_)) {
+  write_temporary(path_, tmp_, "");  // creates the parent directories and an empty temporary file
+  out_.open(tmp_, std::ios::binary | std::ios::app);
+  if (!out_) {
+    remove_quietly(tmp_);
+    throw std::runtime_error("cannot write " + path_.string() + ": " + std::strerror(errno));
+  }
+}
+
+StreamedFile::~StreamedFile() {
+  if (committed_) return;
+  out_.close();
+  remove_quietly(tmp_);
+}
+
+void StreamedFile::append(const std::string& text) {
+  out_.write(text.data(), static_cast<std::streamsize>(text.size()));
+  if (!out_) throw std::runtime_error("cannot write " + path_.string() + ": " + std::strerror(errno));
+}
+
+void StreamedFile::close() {
+  if (!out_.is_open()) return;
+  out_.flush();
+  out_.close();
+  if (!out_) throw std::runtime_error("cannot write " + path_.string() + ": " + std::strerror(errno));
+}
+
+void write_files_atomic(const std::vector<OutputFile>& files, const std::vector<StreamedFile*>& streamed) {
+  // the streamed files complete, then every other file to its temporary name
+  // (on failure the streamed files' temporaries go with their owners)
+  for (StreamedFile* s : streamed) s->close();
   std::vector<fs::path> written;
   try {
     for (const OutputFile& f : files) {
-      const fs::path tmp = temporary_path(f.path);
+      const fs::path tmp = temporary_for(f.path);
       written.push_back(tmp);
       write_temporary(f.path, tmp, f.text);
     }
@@ -70,6 +99,16 @@ void write_files_atomic(const std::vector<OutputFile>& files) {
   }
 
   // then each over its final name
+  for (StreamedFile* s : streamed) {
+    std::error_code ec;
+    fs::rename(s->tmp_, s->path_, ec);
+    if (ec) {
+      for (const fs::path& tmp : written) remove_quietly(tmp);
+      throw std::runtime_error("cannot write " + s->path_.string() + ": " + ec.message());
+    }
+    s->committed_ = true;
+    spdlog::debug("wrote {}", s->path_.string());
+  }
   for (std::size_t k = 0; k < files.size(); ++k) {
     std::error_code ec;
     fs::rename(written[k], files[k].path, ec);
@@ -165,6 +204,102 @@ std::string summary_csv(const std::string& name, const ContactPatch& patch, cons
     put(out, v);
   }
   fmt::format_to(std::back_inserter(out), ",{},{},{}\n", to_string(scheme), patch.grid.nx, patch.grid.ny);
+  return out;
+}
+
+}  // namespace contact
+
+namespace contact {
+
+std::string transient_header() {
+  return "step,t_s,q_m,dt_s,speed_m_per_s,xi,eta,phi_per_m,normal_load_N,omega1_rad_per_s,Fx_N,Fy_N,Mz_N_m,"
+         "power_W,stick_fraction,balance_residual_W,cfl\n";
+}
+
+std::string transient_row(const TransientRecord& r) {
+  std::string out = std::to_string(r.step);
+  for (const double v : {r.t_s, r.q_m, r.dt_s, r.speed_m_per_s, r.xi, r.eta, r.phi_per_m, r.normal_load_N,
+                         r.omega1_rad_per_s, r.Fx_N, r.Fy_N, r.Mz_N_m, r.power_W, r.stick_fraction,
+                         r.balance_residual_W, r.cfl}) {
+    out += ',';
+    put(out, v);
+  }
+  out += '\n';
+  return out;
+}
+
+std::string strip_power_header() { return "step,t_s,y_m,power_W_per_m\n"; }
+
+std::string strip_power_rows(const TransientRecord& r, const Eigen::ArrayXd& y_m, const Eigen::ArrayXd& power) {
+  check_length("strip power", power.size(), y_m.size());
+  std::string out;
+  out.reserve(static_cast<std::size_t>(y_m.size()) * 64);
+  std::string head = std::to_string(r.step) + ',';
+  put(head, r.t_s);
+  head += ',';
+  for (Eigen::Index j = 0; j < y_m.size(); ++j) {
+    out += head;
+    put(out, y_m(j));
+    out += ',';
+    put(out, power(j));
+    out += '\n';
+  }
+  return out;
+}
+
+std::string strip_energy_csv(const Grid& g, const Eigen::ArrayXd& energy_J_per_m) {
+  check_length("grid y_m", g.y_m.size(), g.ny);
+  check_length("strip_energy_J_per_m", energy_J_per_m.size(), g.ny);
+  std::string out = "y_m,energy_J_per_m\n";
+  for (int j = 0; j < g.ny; ++j) {
+    put(out, g.y_m(j));
+    out += ',';
+    put(out, energy_J_per_m(j));
+    out += '\n';
+  }
+  return out;
+}
+
+std::string snapshot_csv(const Grid& g, const Snapshot& s) {
+  check_length("grid x_m", g.x_m.size(), g.nx);
+  check_length("grid y_m", g.y_m.size(), g.ny);
+  check_shape("pressure_Pa", s.pressure_Pa.rows(), s.pressure_Pa.cols(), g.nx, g.ny);
+  check_shape("tau_x_Pa", s.tau_x_Pa.rows(), s.tau_x_Pa.cols(), g.nx, g.ny);
+  check_shape("tau_y_Pa", s.tau_y_Pa.rows(), s.tau_y_Pa.cols(), g.nx, g.ny);
+  check_shape("slip_x_m_per_s", s.slip_x_m_per_s.rows(), s.slip_x_m_per_s.cols(), g.nx, g.ny);
+  check_shape("slip_y_m_per_s", s.slip_y_m_per_s.rows(), s.slip_y_m_per_s.cols(), g.nx, g.ny);
+
+  std::string out = "x_m,y_m,pressure_Pa,tau_x_Pa,tau_y_Pa,slip_x_m_per_s,slip_y_m_per_s,t_s\n";
+  out.reserve(out.size() + static_cast<std::size_t>(g.nx) * g.ny * 180);
+  std::string t;
+  put(t, s.t_s);
+  for (int j = 0; j < g.ny; ++j) {
+    for (int i = 0; i < g.nx; ++i) {
+      for (const double v : {g.x_m(i), g.y_m(j), s.pressure_Pa(i, j), s.tau_x_Pa(i, j), s.tau_y_Pa(i, j),
+                             s.slip_x_m_per_s(i, j), s.slip_y_m_per_s(i, j)}) {
+        put(out, v);
+        out += ',';
+      }
+      out += t;
+      out += '\n';
+    }
+  }
+  return out;
+}
+
+std::string transient_summary_csv(const std::string& name, TransientScheme scheme, const TransientResult& res,
+                                  const TransientRecord& last, double sliding_end_s) {
+  std::string out =
+      "name,scheme,nx,ny,steps,t_end_s,q_end_m,dissipated_J,Fx_N,Fy_N,Mz_N_m,power_W,stick_fraction,"
+      "omega1_rad_per_s,sliding_end_s\n";
+  out += csv_text(name);
+  fmt::format_to(std::back_inserter(out), ",{},{},{},{}", to_string(scheme), res.grid.nx, res.grid.ny, res.steps);
+  for (const double v : {res.t_end_s, res.q_end_m, res.dissipated_J, last.Fx_N, last.Fy_N, last.Mz_N_m,
+                         last.power_W, last.stick_fraction, last.omega1_rad_per_s, sliding_end_s}) {
+    out += ',';
+    put(out, v);
+  }
+  out += '\n';
   return out;
 }
 

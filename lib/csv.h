@@ -3,10 +3,13 @@
 #pragma once
 
 #include <filesystem>
+#include <fstream>
 #include <string>
 #include <vector>
 
+#include "lib/grid.h"
 #include "lib/patch.h"
+#include "lib/satran.h"
 #include "lib/tangential.h"
 
 namespace contact {
@@ -20,9 +23,36 @@ struct OutputFile {
   std::filesystem::path path;
   std::string text;
 };
+// A file written piece by piece while a run streams its results (a time series): the pieces go to a
+// temporary file next to path (path + ".tmp.<pid>", opened, with the parent directories, by the
+// constructor); write_files_atomic renames it over path at the end. Destroyed before that (an
+// error), it removes the temporary file: a failed or killed run never leaves a torn path.
+// Throws std::runtime_error naming path when the file cannot be opened or written.
+class StreamedFile {
+ public:
+  explicit StreamedFile(std::filesystem::path path);
+  ~StreamedFile();
+  StreamedFile(const StreamedFile&) = delete;
+  StreamedFile& operator=(const StreamedFile&) = delete;
+
+  void append(const std::string& text);
+  const std::filesystem::path& path() const { return path_; }
+  const std::filesystem::path& temporary_path() const { return tmp_; }
+  bool committed() const { return committed_; }
+
+ private:
+  friend void write_files_atomic(const std::vector<OutputFile>&, const std::vector<StreamedFile*>&);
+  void close();  // flushes and closes; throws naming path on failure
+
+  std::filesystem::path path_, tmp_;
+  std::ofstream out_;
+  bool committed_ = false;
+};
+
 // Several files: all temporary files are written first, then renamed one by one, so a failure while
-// writing (disk full, no permission) replaces none of them.
-void write_files_atomic(const std::vector<OutputFile>& files);
+// writing (disk full, no permission) replaces none of them. Streamed files are closed first and
+// renamed with the others.
+void write_files_atomic(const std::vector<OutputFile>& files, const std::vector<StreamedFile*>& streamed = {});
 
 // fields.csv: one row per grid cell, strip by strip (j outer, i inner):
 //   x_m,y_m,pressure_Pa,tau_x_Pa,tau_y_Pa,slip_x_m_per_s,slip_y_m_per_s,power_W_per_m2,state
@@ -39,6 +69,39 @@ std::string strips_csv(const ContactPatch& patch, const TangentialSolution& solu
 //   stick_fraction,scheme,nx,ny
 std::string summary_csv(const std::string& name, const ContactPatch& patch, const TangentialProblem& problem,
                         const TangentialSolution& solution, TangentialScheme scheme);
+
+// ---- the transient run (lib/satran.h) ----
+
+// timeseries.csv: the header, then one row per step (transient_row):
+//   step,t_s,q_m,dt_s,speed_m_per_s,xi,eta,phi_per_m,normal_load_N,omega1_rad_per_s,Fx_N,Fy_N,Mz_N_m,
+//   power_W,stick_fraction,balance_residual_W,cfl
+// t_s and q_m are where the forces hold (TransientRecord): mid-step for exact shift steps.
+std::string transient_header();
+std::string transient_row(const TransientRecord& r);
+
+// strip_power.csv, long format: the header, then per step one row per strip (strip_power_rows):
+//   step,t_s,y_m,power_W_per_m
+// y_m: the strips of the run's grid; power_W_per_m: the step's dissipated energy per width / dt.
+std::string strip_power_header();
+std::string strip_power_rows(const TransientRecord& r, const Eigen::ArrayXd& y_m,
+                             const Eigen::ArrayXd& power_W_per_m);
+
+// strip_energy.csv: y_m,energy_J_per_m, one row per strip (the run's time integral of the strip power)
+std::string strip_energy_csv(const Grid& grid, const Eigen::ArrayXd& energy_J_per_m);
+
+// snapshot_<k>.csv: the fields at the end of the step that reached the k-th snapshot time, one row
+// per grid cell, strip by strip (j outer, i inner), with that step's end time in the last column:
+//   x_m,y_m,pressure_Pa,tau_x_Pa,tau_y_Pa,slip_x_m_per_s,slip_y_m_per_s,t_s
+// Throws std::invalid_argument if the shapes disagree.
+std::string snapshot_csv(const Grid& grid, const Snapshot& s);
+
+// summary.csv of a transient run: a header and one row:
+//   name,scheme,nx,ny,steps,t_end_s,q_end_m,dissipated_J,Fx_N,Fy_N,Mz_N_m,power_W,stick_fraction,
+//   omega1_rad_per_s,sliding_end_s
+// Fx_N ... omega1_rad_per_s: the last step's record; sliding_end_s: t_s of the first step with
+// stick_fraction > 0 (the end of gross sliding), nan if no step had stick.
+std::string transient_summary_csv(const std::string& name, TransientScheme scheme, const TransientResult& result,
+                                  const TransientRecord& last, double sliding_end_s);
 
 // a text field quoted as RFC 4180 wants when it holds a comma, a quote or a line break
 std::string csv_text(const std::string& text);

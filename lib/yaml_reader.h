@@ -6,7 +6,9 @@
 //   m.section("friction", [&](YamlMap& s) { s.required("mu", c.friction.mu, in_closed(0, 10)); });
 // Values: double (.inf, -.inf, .nan as YAML spells them), int (decimal), bool, std::string. A check
 // returns "" when the value is fine, else what is required ("must be > 0 and finite"); the reader
-// appends the value as written.
+// appends the value as written. A value of a form of its own (a time history: a number or a
+// mapping; a list) is read from a YamlValue, which fails at its own node:
+//   s.required_value("normal_load_N", [&](const YamlValue& v) { c.load.normal_load_N = read_load(v); });
 #pragma once
 
 #include <cerrno>
@@ -124,6 +126,56 @@ inline auto in_half_open(double lo, double hi) {  // [lo, hi)
   };
 }
 
+class YamlMap;
+
+// One value of a case file with the key path that names it, for values that are more than a plain
+// scalar (a time history, a list). Errors throw CaseError at this node: "FILE:LINE:COL: path: what".
+class YamlValue {
+ public:
+  YamlValue(YAML::Node node, std::string file, std::string path, KeyLocations* locations)
+      : node_(std::move(node)), file_(std::move(file)), path_(std::move(path)), locations_(locations) {}
+
+  const YAML::Node& node() const { return node_; }
+  const std::string& file() const { return file_; }
+  const std::string& path() const { return path_; }
+  std::string location() const { return yaml_location(file_, node_.Mark()); }
+
+  [[noreturn]] void fail(const std::string& what) const { throw CaseError(location() + ": " + path_ + ": " + what); }
+
+  // the node read as a T and checked; `label` names the part of a larger value in the messages
+  // ("row 3: t_s must be finite, got .nan")
+  template <class T, class Check = yaml_detail::NoCheck>
+  T as(Check check = {}, const std::string& label = "") const {
+    T parsed{};
+    if (!yaml_detail::parse(node_, parsed))
+      fail((label.empty() ? "" : label + ": ") + "expected " + yaml_detail::expected(&parsed) + ", got " +
+           yaml_describe(node_));
+    const std::string complaint = check(parsed);
+    if (!complaint.empty())
+      fail((label.empty() ? "" : label + " ") + complaint + ", got " + yaml_detail::shown<T>(node_));
+    return parsed;
+  }
+
+  // the elements of a sequence, each under this key path (the caller's labels name the element);
+  // `what` says what was expected when the node is not a sequence ("a list of times")
+  std::vector<YamlValue> elements(const std::string& what = "a sequence") const {
+    if (!node_.IsSequence()) fail("expected " + what + ", got " + yaml_describe(node_));
+    std::vector<YamlValue> out;
+    for (const YAML::Node& element : node_) out.emplace_back(element, file_, path_, locations_);
+    return out;
+  }
+
+  // the node as a mapping under this key path, read by read_body(YamlMap&); its keys left over are errors
+  template <class ReadBody>
+  void mapping(ReadBody read_body) const;
+
+ private:
+  YAML::Node node_;
+  std::string file_;
+  std::string path_;
+  KeyLocations* locations_ = nullptr;
+};
+
 class YamlMap {
  public:
   // node must be a mapping (checked); path is its key path, "" for the document
@@ -155,6 +207,13 @@ class YamlMap {
   // a value; an absent key leaves the default
   template <class T, class Check = yaml_detail::NoCheck>
   void optional(const std::string& key, T& value, Check check = {}) { read(key, value, check, false); }
+
+  // a value of a form of its own, read by read_value(const YamlValue&); optional_value returns
+  // whether the key is present
+  template <class ReadValue>
+  void required_value(const std::string& key, ReadValue read_value) { read_value_at(key, read_value, true); }
+  template <class ReadValue>
+  bool optional_value(const std::string& key, ReadValue read_value) { return read_value_at(key, read_value, false); }
 
   // a nested mapping, read by read_body(YamlMap&); its keys left over are errors
   template <class ReadBody>
@@ -209,13 +268,20 @@ class YamlMap {
       if (is_required) fail_here_missing(key, "required key is missing");
       return;
     }
-    T parsed{};
-    if (!yaml_detail::parse(e->value, parsed))
-      fail(key, std::string("expected ") + yaml_detail::expected(&parsed) + ", got " + yaml_describe(e->value));
-    const std::string complaint = check(parsed);
-    if (!complaint.empty()) fail(key, complaint + ", got " + yaml_detail::shown<T>(e->value));
-    value = parsed;
+    value = YamlValue(e->value, file_, key_path(key), locations_).as<T>(check);
     if (locations_) (*locations_)[key_path(key)] = yaml_location(file_, e->value.Mark());
+  }
+
+  template <class ReadValue>
+  bool read_value_at(const std::string& key, ReadValue& read_value, bool is_required) {
+    const Entry* e = ask(key);
+    if (!e) {
+      if (is_required) fail_here_missing(key, "required key is missing");
+      return false;
+    }
+    if (locations_) (*locations_)[key_path(key)] = yaml_location(file_, e->value.Mark());
+    read_value(YamlValue(e->value, file_, key_path(key), locations_));
+    return true;
   }
 
   template <class ReadBody>
@@ -243,6 +309,13 @@ class YamlMap {
   std::vector<Entry> entries_;
   std::set<std::string> asked_;
 };
+
+template <class ReadBody>
+void YamlValue::mapping(ReadBody read_body) const {
+  YamlMap m(node_, file_, path_, locations_);
+  read_body(m);
+  m.check_all_read();
+}
 
 // the document of a file as a mapping, read by read_body(YamlMap&); its keys left over are errors
 template <class ReadBody>

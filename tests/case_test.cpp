@@ -3,12 +3,19 @@
 #include "lib/case.h"
 
 #include <gtest/gtest.h>
+#include <spdlog/fmt/fmt.h>
 #include <unistd.h>
 
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <vector>
+
+#include "lib/grid.h"
+#include "lib/hertz.h"
+#include "lib/history.h"
+#include "lib/satran.h"
 
 namespace contact {
 namespace {
@@ -72,11 +79,11 @@ TEST_F(CaseReader, ReadsPaperCase) {
   EXPECT_EQ(c.bodies.body2.E_Pa, 210.0e9);
   EXPECT_EQ(c.bodies.body1.nu, 0.28);
   EXPECT_EQ(c.bodies.body2.nu, 0.28);
-  EXPECT_EQ(c.load.normal_load_N, 1500);
-  EXPECT_EQ(c.kinematics.speed_m_per_s, 1.0);
-  EXPECT_EQ(c.kinematics.xi, 0.001);
-  EXPECT_EQ(c.kinematics.eta, 0);
-  EXPECT_EQ(c.kinematics.phi_per_m, 0);
+  EXPECT_EQ(normal_load_of(c), 1500);
+  EXPECT_EQ(speed_of(c), 1.0);
+  EXPECT_EQ(c.kinematics.xi.value, std::vector<double>{0.001});
+  EXPECT_EQ(c.kinematics.eta.value, std::vector<double>{0});
+  EXPECT_EQ(c.kinematics.phi_per_m.value, std::vector<double>{0});
   EXPECT_EQ(c.friction.mu, 0.3);
   EXPECT_EQ(c.solver.tangential, "consistent");
   EXPECT_EQ(c.solver.nx, 80);
@@ -89,8 +96,10 @@ TEST_F(CaseReader, OptionalSectionsTakeDefaultsAndNameIsFileStem) {
   const ContactCase c = read_contact_case(write(kMinimalCase, "roller_on_path.yaml"));
   const ContactCase defaults;
   EXPECT_EQ(c.name, "roller_on_path");
-  EXPECT_EQ(c.kinematics.speed_m_per_s, defaults.kinematics.speed_m_per_s);
-  EXPECT_EQ(c.kinematics.xi, 0);
+  EXPECT_EQ(speed_of(c), speed_of(defaults));
+  EXPECT_EQ(creepages_of(c).xi, 0);
+  EXPECT_FALSE(c.transient);
+  EXPECT_FALSE(c.inertia);
   EXPECT_EQ(c.solver.tangential, "consistent");
   EXPECT_EQ(c.solver.nx, defaults.solver.nx);
   EXPECT_EQ(c.solver.ny, defaults.solver.ny);
@@ -145,7 +154,8 @@ TEST_F(CaseReader, UnknownKeyReportsKeyAndLine) {
             path() + ":6:5: bodies.body2.Rz_m: unknown key (valid: E_Pa, Rx_m, Ry_m, nu)");
   // a section that does not exist (yet)
   EXPECT_EQ(error_of(kMinimalCase + "wear: { law: archard }\n"),  // 6
-            path() + ":6:1: wear: unknown key (valid: bodies, friction, kinematics, load, name, output, solver)");
+            path() + ":6:1: wear: unknown key (valid: bodies, friction, inertia, kinematics, load, name, output, "
+                      "solver, transient)");
 }
 
 TEST_F(CaseReader, MissingKeyReportsKey) {
@@ -305,6 +315,273 @@ TEST_F(CaseReader, ValidateNamesKeysOfACaseBuiltInCode) {
               "bodies.body1.Ry_m, bodies.body2.Ry_m: conforming contact (relative curvature B = -0.25 1/m "
               "<= 0): Hertz cannot treat it");
   }
+}
+
+// ---- time histories, the transient and inertia sections ----
+
+TEST_F(CaseReader, HistoryFormsReadAsConstantRampAndTable) {
+  const ContactCase c = read_contact_case(write(kMinimalCase +
+                                                "kinematics:\n"                                                 // 6
+                                                "  speed_m_per_s: { ramp: [0, 0, 1.0e-4, 1.8] }\n"              // 7
+                                                "  xi: { table: [[0, 0.001], [2.0e-4, 0.002], [3.0e-4, 0]] }\n"  // 8
+                                                "  eta: -0.0004\n"));                                           // 9
+  const History& V = c.kinematics.speed_m_per_s;
+  EXPECT_EQ(V.t_s, (std::vector<double>{0, 1.0e-4}));
+  EXPECT_EQ(V.value, (std::vector<double>{0, 1.8}));
+  EXPECT_DOUBLE_EQ(value_at(V, 0.5e-4), 0.9);  // linear inside
+  EXPECT_EQ(value_at(V, 1.0), 1.8);            // held outside
+  EXPECT_EQ(c.kinematics.xi.t_s, (std::vector<double>{0, 2.0e-4, 3.0e-4}));
+  EXPECT_EQ(c.kinematics.xi.value, (std::vector<double>{0.001, 0.002, 0}));
+  EXPECT_TRUE(is_constant(c.kinematics.eta));
+  EXPECT_EQ(value_at(c.kinematics.eta, 1.0), -0.0004);
+  EXPECT_TRUE(is_constant(c.kinematics.phi_per_m));  // the default
+  EXPECT_EQ(c.locations.at("kinematics.speed_m_per_s"), path() + ":7:18");
+  // the load as a history: >= 0 everywhere, positive somewhere
+  const ContactCase ramped = read_contact_case(write(
+      "bodies:\n"                                                                   // 1
+      "  body1: { Rx_m: 0.020, Ry_m: 0.500, E_Pa: 210.0e9, nu: 0.28 }\n"             // 2
+      "  body2: { Rx_m: 0.025, Ry_m: .inf, E_Pa: 210.0e9, nu: 0.28 }\n"              // 3
+      "load: { normal_load_N: { table: [[0, 0], [1.0e-4, 1500], [2.0e-4, 0]] } }\n"  // 4
+      "friction: { mu: 0.3 }\n"));                                                  // 5
+  EXPECT_EQ(ramped.load.normal_load_N.value, (std::vector<double>{0, 1500, 0}));
+}
+
+TEST_F(CaseReader, HistoryErrorsReportFileLineAndKey) {
+  // a ramp is four numbers, times increasing, values in the key's range
+  EXPECT_EQ(error_of(kMinimalCase + "kinematics: { speed_m_per_s: { ramp: [0, 0, 1.0e-4] } }\n"),  // 6
+            path() + ":6:38: kinematics.speed_m_per_s.ramp: expected [t0_s, v0, t1_s, v1], got 3 elements");
+  EXPECT_EQ(error_of(kMinimalCase + "kinematics: { speed_m_per_s: { ramp: [1.0e-4, 0, 1.0e-4, 1.8] } }\n"),  // 6
+            path() + ":6:50: kinematics.speed_m_per_s.ramp: t1_s must be after t0_s = 0.0001, got 1.0e-4");
+  EXPECT_EQ(error_of(kMinimalCase + "kinematics: { speed_m_per_s: { ramp: [0, 0, 1.0e-4, -1] } }\n"),  // 6
+            path() + ":6:53: kinematics.speed_m_per_s.ramp: v1 must be >= 0 and finite, got -1");
+  // a table: rows of [t_s, value], times strictly increasing, at least one row
+  EXPECT_EQ(error_of(kMinimalCase + "kinematics: { xi: { table: [[0, 0.001], [2.0e-4, 0.002], [1.0e-4, 0]] } }\n"),
+            path() + ":6:59: kinematics.xi.table: row 3: t_s must be after row 2's 0.0002 (times strictly "
+                     "increasing), got 1.0e-4");
+  EXPECT_EQ(error_of(kMinimalCase + "kinematics: { xi: { table: [[0, 0.001], [2.0e-4]] } }\n"),  // 6
+            path() + ":6:41: kinematics.xi.table: row 2: expected [t_s, value], got 1 element");
+  EXPECT_EQ(error_of(kMinimalCase + "kinematics: { xi: { table: [] } }\n"),  // 6
+            path() + ":6:28: kinematics.xi.table: expected at least one [t_s, value] row, got none");
+  EXPECT_EQ(error_of(kMinimalCase + "kinematics: { xi: { table: [[0, .nan]] } }\n"),  // 6
+            path() + ":6:33: kinematics.xi.table: row 1: value must be finite, got .nan");
+  // the forms themselves
+  EXPECT_EQ(error_of(kMinimalCase + "kinematics: { xi: { tabel: [[0, 1]] } }\n"),  // 6
+            path() + ":6:21: kinematics.xi.tabel: unknown key (valid: ramp, table)");
+  EXPECT_EQ(error_of(kMinimalCase + "kinematics: { xi: { ramp: [0, 0, 1, 1], table: [[0, 1]] } }\n"),  // 6
+            path() + ":6:19: kinematics.xi: give one of 'ramp' and 'table', not both");
+  EXPECT_EQ(error_of(kMinimalCase + "kinematics: { xi: [0, 0.001] }\n"),  // 6
+            path() + ":6:19: kinematics.xi: expected a number, { ramp: [t0_s, v0, t1_s, v1] } or "
+                     "{ table: [[t_s, value], ...] }, got a sequence");
+  EXPECT_EQ(error_of(kMinimalCase + "kinematics: { xi: {} }\n"),  // 6
+            path() + ":6:19: kinematics.xi: expected a number, { ramp: [t0_s, v0, t1_s, v1] } or "
+                     "{ table: [[t_s, value], ...] }, got an empty mapping");
+  // a load history that never loads
+  EXPECT_EQ(error_of("bodies:\n"                                                        // 1
+                     "  body1: { Rx_m: 0.020, Ry_m: 0.500, E_Pa: 210.0e9, nu: 0.28 }\n"  // 2
+                     "  body2: { Rx_m: 0.025, Ry_m: .inf, E_Pa: 210.0e9, nu: 0.28 }\n"   // 3
+                     "load: { normal_load_N: { ramp: [0, 0, 1.0e-4, 0] } }\n"           // 4
+                     "friction: { mu: 0.3 }\n"),                                        // 5
+            path() + ":4:24: load.normal_load_N: must be positive at some time, got 0 throughout");
+}
+
+TEST_F(CaseReader, TransientAndInertiaSectionsConvertToTheRun) {
+  const ContactCase c = read_contact_case(write(
+      kMinimalCase +
+      "kinematics: { speed_m_per_s: { ramp: [0, 0, 1.0e-4, 1.8] }, xi: 0.001 }\n"                      // 6
+      "solver: { nx: 20, ny: 30 }\n"                                                                    // 7
+      "transient: { scheme: upwind, t_end_s: 4.0e-4, dt_s: 2.0e-6, substep: true,\n"                     // 8
+      "             snapshots_s: [1.0e-4, 4.0e-4] }\n"));                                               // 9
+  ASSERT_TRUE(c.transient);
+  EXPECT_EQ(c.transient->scheme, "upwind");
+  EXPECT_EQ(c.transient->snapshots_s, (std::vector<double>{1.0e-4, 4.0e-4}));
+  const TransientCase t = transient_case_of(c);
+  EXPECT_EQ(t.settings.scheme, TransientScheme::Upwind);
+  EXPECT_EQ(t.settings.t_end_s, 4.0e-4);
+  EXPECT_EQ(t.settings.dt_s, 2.0e-6);
+  EXPECT_TRUE(t.settings.substep);
+  EXPECT_EQ(t.settings.grid.nx, 20);
+  EXPECT_EQ(t.settings.grid.ny, 30);
+  EXPECT_EQ(t.settings.snapshot_times_s, (std::vector<double>{1.0e-4, 4.0e-4}));
+  EXPECT_EQ(t.mu, 0.3);
+  EXPECT_EQ(t.bodies.body2.Ry_m, kFlat);
+  EXPECT_EQ(t.materials.body1.E_Pa, 210.0e9);
+  EXPECT_EQ(t.inputs.speed_m_per_s.value, (std::vector<double>{0, 1.8}));
+  EXPECT_EQ(t.inputs.xi.value, std::vector<double>{0.001});
+  EXPECT_EQ(t.inputs.normal_load_N.value, std::vector<double>{1500});
+  EXPECT_FALSE(t.inertia);
+
+  // defaults: shift without a step limit, no substeps, no snapshots; with the roller's inertia
+  const ContactCase spin = read_contact_case(write(
+      kMinimalCase +
+      "transient: { t_end_s: 1.0e-3, dt_s: 2.0e-6 }\n"                                                  // 6
+      "inertia: { R1_m: 0.020, J1_kg_m2: 3.9458e-5, omega1_0_rad_per_s: 10,\n"                          // 7
+      "           path_speed_m_per_s: { ramp: [0, 0, 1.0e-4, 1.0] } }\n"));                             // 8
+  const TransientCase ts = transient_case_of(spin);
+  EXPECT_EQ(ts.settings.scheme, TransientScheme::Shift);
+  EXPECT_FALSE(ts.settings.substep);
+  EXPECT_TRUE(ts.settings.snapshot_times_s.empty());
+  ASSERT_TRUE(ts.inertia);
+  EXPECT_EQ(ts.inertia->R1_m, 0.020);
+  EXPECT_EQ(ts.inertia->J1_kg_m2, 3.9458e-5);
+  EXPECT_EQ(ts.inertia->T_res_N_m, 0);
+  EXPECT_EQ(ts.inertia->omega1_0_rad_per_s, 10);
+  EXPECT_EQ(ts.inertia->path_speed_m_per_s.value, (std::vector<double>{0, 1.0}));
+}
+
+TEST_F(CaseReader, TransientSectionErrorsReportKeyAndLine) {
+  EXPECT_EQ(error_of(kMinimalCase + "transient: { scheme: shift }\n"),  // 6
+            path() + ":6:12: transient.t_end_s: required key is missing");
+  EXPECT_EQ(error_of(kMinimalCase + "transient: { t_end_s: 1.0e-3, snapshots_s: [2.0e-4, 1.0e-4] }\n"),  // 6
+            path() + ":6:53: transient.snapshots_s: element 2 must be after element 1's 0.0002 (times strictly "
+                     "increasing), got 1.0e-4");
+  EXPECT_EQ(error_of(kMinimalCase + "transient: { t_end_s: 1.0e-3, snapshots_s: [-1] }\n"),  // 6
+            path() + ":6:45: transient.snapshots_s: element 1 must be >= 0 and finite, got -1");
+  EXPECT_EQ(error_of(kMinimalCase + "transient: { t_end_s: 1.0e-3, snapshots_s: 1.0e-4 }\n"),  // 6
+            path() + ":6:44: transient.snapshots_s: expected a list of times, e.g. [1.0e-4, 2.0e-4], got '1.0e-4'");
+  // cross-key: a snapshot after the end; a fixed-step scheme without its step
+  EXPECT_EQ(error_of(kMinimalCase + "transient: { t_end_s: 1.0e-3, snapshots_s: [1.0e-4, 2.0e-3] }\n"),  // 6
+            path() + ":6:44: transient.snapshots_s, transient.t_end_s: snapshot at 0.002 s is after the end of "
+                     "the run, t_end_s = 0.001 s");
+  EXPECT_EQ(error_of(kMinimalCase + "transient: { scheme: upwind, t_end_s: 1.0e-3 }\n"),  // 6
+            path() + ":6:12: transient.dt_s, transient.scheme: the upwind scheme needs a time step dt_s > 0");
+}
+
+TEST_F(CaseReader, UnknownTransientSchemeListsValidOnes) {
+  const std::string message = error_of(kMinimalCase + "transient: { scheme: crank-nicolson, t_end_s: 1 }\n");  // 6
+  EXPECT_EQ(message.rfind(path() + ":6:22: transient.scheme: ", 0), 0u) << message;
+  for (const char* word : {"crank-nicolson", "shift", "upwind", "lax-friedrichs"})
+    EXPECT_NE(message.find(word), std::string::npos) << word << " missing from: " << message;
+}
+
+TEST_F(CaseReader, InertiaForbidsSpeedAndXiNamingThem) {
+  const std::string inertia =
+      "inertia: { R1_m: 0.020, J1_kg_m2: 3.9458e-5, path_speed_m_per_s: 1.0 }\n"  // 7
+      "transient: { t_end_s: 1.0e-3, dt_s: 2.0e-6 }\n";                          // 8
+  EXPECT_EQ(error_of(kMinimalCase + "kinematics: { speed_m_per_s: 1.0, xi: 0.001 }\n" + inertia),  // 6
+            path() + ":6:30: kinematics.speed_m_per_s, kinematics.xi, inertia: with inertia the rolling speed "
+                     "and xi follow from the roller's spin (V = (omega1 R1 + V2)/2, xi = (V2 - omega1 R1)/V); "
+                     "remove them and give inertia.path_speed_m_per_s");
+  EXPECT_EQ(error_of(kMinimalCase + "kinematics: { xi: 0.001 }\n" + inertia),  // 6
+            path() + ":6:19: kinematics.xi, inertia: with inertia the rolling speed and xi follow from the "
+                     "roller's spin (V = (omega1 R1 + V2)/2, xi = (V2 - omega1 R1)/V); remove it and give "
+                     "inertia.path_speed_m_per_s");
+  // the inertia run carries longitudinal creep only: a lateral creepage would be ignored
+  EXPECT_EQ(error_of(kMinimalCase + "kinematics: { eta: 0.001 }\n" + inertia),  // 6
+            path() + ":6:20: kinematics.eta, inertia: an inertia run models longitudinal creep only; lateral "
+                     "and spin creepage must be 0");
+  // its own keys; a shift run with a longest step
+  EXPECT_EQ(error_of(kMinimalCase + "\ninertia: { R1_m: 0.020, J1_kg_m2: 3.9458e-5 }\n"),  // 7
+            path() + ":7:10: inertia.path_speed_m_per_s: required key is missing");
+  EXPECT_EQ(error_of(kMinimalCase +
+                     "transient: { scheme: upwind, t_end_s: 1.0e-3, dt_s: 2.0e-6 }\n"               // 6
+                     "inertia: { R1_m: 0.020, J1_kg_m2: 3.9458e-5, path_speed_m_per_s: 1.0 }\n"),  // 7
+            path() + ":6:22: transient.scheme, inertia: an inertia run uses the shift scheme, got 'upwind'");
+  EXPECT_EQ(error_of(kMinimalCase +
+                     "transient: { t_end_s: 1.0e-3 }\n"                                            // 6
+                     "inertia: { R1_m: 0.020, J1_kg_m2: 3.9458e-5, path_speed_m_per_s: 1.0 }\n"),  // 7
+            path() + ":6:12: transient.dt_s, inertia: an inertia run needs the longest step dt_s > 0 (the "
+                     "spin-up is stiff; e.g. 2.0e-6 s)");
+}
+
+TEST_F(CaseReader, SteadyCommandRefusesAHistory) {
+  const ContactCase c = read_contact_case(write(kMinimalCase +
+                                                "kinematics:\n"                                     // 6
+                                                "  speed_m_per_s: { ramp: [0, 0, 1.0e-4, 1.8] }\n"  // 7
+                                                "transient: { t_end_s: 1.0e-3 }\n"));               // 8
+  const std::string expected = path() +
+                               ":7:18: kinematics.speed_m_per_s: the steady 'contact' command needs a constant; "
+                               "histories are for 'transient'";
+  try {
+    validate_steady(c);
+    FAIL() << "the steady command took a ramp";
+  } catch (const CaseError& e) {
+    EXPECT_EQ(std::string(e.what()), expected);
+  }
+  EXPECT_THROW(speed_of(c), CaseError);  // the conversion guards itself too
+  EXPECT_NO_THROW(transient_case_of(c));
+
+  // a table that holds one value is a constant
+  const ContactCase flat = read_contact_case(write(kMinimalCase + "kinematics: { xi: { table: [[0, 0.002], [1, 0.002]] } }\n"));
+  EXPECT_NO_THROW(validate_steady(flat));
+  EXPECT_EQ(creepages_of(flat).xi, 0.002);
+
+  // and the roller's inertia is for the transient command only
+  const ContactCase spin = read_contact_case(write(
+      kMinimalCase + "inertia: { R1_m: 0.020, J1_kg_m2: 3.9458e-5, path_speed_m_per_s: 1.0 }\n"));  // 6
+  try {
+    validate_steady(spin);
+    FAIL() << "the steady command took the roller's inertia";
+  } catch (const CaseError& e) {
+    EXPECT_EQ(std::string(e.what()), path() + ":6:10: inertia: the steady 'contact' command has no roller "
+                                              "inertia; inertia is for 'transient'");
+  }
+}
+
+TEST_F(CaseReader, TransientCommandNeedsItsSection) {
+  const std::string paper = std::string(ROLLWEAR_SOURCE_DIR) + "/cases/paper.yaml";
+  const ContactCase c = read_contact_case(paper);
+  try {
+    transient_case_of(c);
+    FAIL() << "converted a case without a transient: section";
+  } catch (const CaseError& e) {
+    EXPECT_EQ(std::string(e.what()), paper + ": transient: the 'transient' command needs a transient: section, "
+                                             "e.g. transient: { scheme: shift, t_end_s: 4.0e-4 }");
+  }
+}
+
+TEST_F(CaseReader, CflBreachNamesDtAndLargestAllowedStep) {
+  const ContactCase c = read_contact_case(write(kMinimalCase +
+                                                "kinematics: { speed_m_per_s: 1.8, xi: 0.001 }\n"                // 6
+                                                "solver: { nx: 20, ny: 20 }\n"                                   // 7
+                                                "transient: { scheme: upwind, t_end_s: 2.0e-4, dt_s: 5.0e-5 }\n"));  // 8
+  const TransientCase t = transient_case_of(c);
+  try {
+    run_transient(t);
+    FAIL() << "ran at a CFL number above 1";
+  } catch (const std::invalid_argument& e) {
+    const std::string message = transient_error(c, e).what();
+    EXPECT_EQ(message.rfind(path() + ":8:53: transient.dt_s: 5e-05 s breaks the CFL condition of the upwind "
+                                     "scheme",
+                            0),
+              0u)
+        << message;
+    // the largest allowed step: dx / V on the grid of the run (Hertz a = 0.230 mm: dx = 2a/20)
+    const HertzContact h = solve_hertz(t.bodies, t.materials, 1500);
+    const double dt_max = make_grid(h.a_m, h.b_m, {20, 20}).dx_m / 1.8;
+    const std::string key = "the largest allowed dt_s is ";
+    const std::size_t at = message.find(key);
+    ASSERT_NE(at, std::string::npos) << message;
+    const double named = std::strtod(message.c_str() + at + key.size(), nullptr);
+    EXPECT_LE(named, dt_max);  // it runs
+    EXPECT_NEAR(named / dt_max, 1, 1e-5) << message;
+  }
+}
+
+TEST_F(CaseReader, ShippedTransientCasesRead) {
+  const ContactCase startup = read_contact_case(std::string(ROLLWEAR_SOURCE_DIR) + "/cases/paper-startup.yaml");
+  const TransientCase s = transient_case_of(startup);
+  EXPECT_EQ(s.settings.scheme, TransientScheme::Shift);
+  EXPECT_EQ(s.settings.t_end_s, 4.0e-4);
+  EXPECT_EQ(s.settings.grid.nx, 80);
+  EXPECT_EQ(s.settings.grid.ny, 80);
+  EXPECT_EQ(s.settings.snapshot_times_s, (std::vector<double>{5.0e-5, 1.0e-4, 2.0e-4, 4.0e-4}));
+  EXPECT_EQ(value_at(s.inputs.speed_m_per_s, 0), 0);
+  EXPECT_EQ(value_at(s.inputs.speed_m_per_s, 1.0e-4), 1.8);
+  EXPECT_EQ(value_at(s.inputs.xi, 0), 0.001);
+  EXPECT_THROW(validate_steady(startup), CaseError);
+
+  const ContactCase spinup = read_contact_case(std::string(ROLLWEAR_SOURCE_DIR) + "/cases/roller-spinup.yaml");
+  const TransientCase r = transient_case_of(spinup);
+  ASSERT_TRUE(r.inertia);
+  // a steel disc 40 mm x 20 mm: J1 = pi R^4 w rho / 2
+  const double R = 0.020, w = 0.020, rho = 7850;
+  constexpr double kPi = 3.14159265358979323846;
+  EXPECT_NEAR(r.inertia->J1_kg_m2 / (kPi * R * R * R * R * w * rho / 2), 1, 1e-4);
+  EXPECT_EQ(r.inertia->R1_m, R);
+  EXPECT_EQ(value_at(r.inertia->path_speed_m_per_s, 0), 1.0);
+  EXPECT_EQ(r.settings.dt_s, 2.0e-6);
+  EXPECT_EQ(r.settings.t_end_s, 1.0e-3);
+  EXPECT_EQ(r.settings.grid.nx, 40);
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -14,6 +15,8 @@
 #include <vector>
 
 #include "lib/grid.h"
+#include "lib/hertz.h"
+#include "lib/satran.h"
 
 namespace contact {
 namespace {
@@ -133,6 +136,33 @@ TEST_F(AtomicWrite, SeveralFilesAreAllWrittenOrNone) {
   EXPECT_EQ(std::distance(fs::directory_iterator(dir_), fs::directory_iterator()), 1);
 }
 
+TEST_F(AtomicWrite, StreamedFileAppearsWholeOnlyWhenCommitted) {
+  const fs::path p = dir_ / "run" / "timeseries.csv";
+  {
+    StreamedFile f(p);
+    f.append("step\n");
+    f.append("1\n");
+    EXPECT_FALSE(fs::exists(p));  // only the temporary file while the run streams
+    EXPECT_TRUE(fs::exists(f.temporary_path()));
+    write_files_atomic({{dir_ / "run" / "summary.csv", "s\n"}}, {&f});
+    EXPECT_TRUE(f.committed());
+    EXPECT_FALSE(fs::exists(f.temporary_path()));
+  }
+  EXPECT_EQ(read_text(p), "step\n1\n");
+  EXPECT_EQ(read_text(dir_ / "run" / "summary.csv"), "s\n");
+
+  // a run that fails: the temporary file goes, the previous file stays
+  fs::path tmp;
+  {
+    StreamedFile f(p);
+    f.append("torn");
+    tmp = f.temporary_path();
+  }
+  EXPECT_FALSE(fs::exists(tmp));
+  EXPECT_EQ(read_text(p), "step\n1\n");
+  EXPECT_EQ(std::distance(fs::directory_iterator(dir_ / "run"), fs::directory_iterator()), 2);
+}
+
 // a 3 x 2 patch and solution with distinct values in every cell
 struct SmallResult {
   ContactPatch patch;
@@ -203,6 +233,46 @@ TEST(CsvOutput, ShapeMismatchThrows) {
   EXPECT_THROW(fields_csv(r.patch, r.solution), std::invalid_argument);
   r.solution.strip_power_W_per_m = Eigen::ArrayXd::Zero(3);
   EXPECT_THROW(strips_csv(r.patch, r.solution), std::invalid_argument);
+}
+
+TEST(CsvOutput, TransientTablesHaveTheirColumnsAtFullPrecision) {
+  TransientRecord r;
+  r.step = 7;
+  r.t_s = 1.0 / 3.0 * 1e-4;
+  r.Fx_N = -449.78;
+  r.cfl = 1;
+  const std::vector<std::string> rows = lines_of(transient_header() + transient_row(r));
+  ASSERT_EQ(rows.size(), 2u);
+  EXPECT_TRUE(is_numeric_table(rows,
+                               "step,t_s,q_m,dt_s,speed_m_per_s,xi,eta,phi_per_m,normal_load_N,omega1_rad_per_s,"
+                               "Fx_N,Fy_N,Mz_N_m,power_W,stick_fraction,balance_residual_W,cfl"));
+  const std::vector<std::string> cells = split(rows[1]);
+  EXPECT_EQ(cells[0], "7");
+  EXPECT_EQ(std::strtod(cells[1].c_str(), nullptr), r.t_s);  // reads back exactly
+  EXPECT_EQ(cells[10], "-449.77999999999997");
+
+  const Eigen::ArrayXd y = (Eigen::ArrayXd(2) << -1e-3, 1e-3).finished();
+  const Eigen::ArrayXd power = (Eigen::ArrayXd(2) << 0.25, 0.5).finished();
+  const std::vector<std::string> strips = lines_of(strip_power_header() + strip_power_rows(r, y, power));
+  ASSERT_EQ(strips.size(), 3u);
+  EXPECT_TRUE(is_numeric_table(strips, "step,t_s,y_m,power_W_per_m"));
+  EXPECT_EQ(strips[2].substr(strips[2].size() - 10), ",0.001,0.5");
+  EXPECT_THROW(strip_power_rows(r, y, Eigen::ArrayXd::Zero(3)), std::invalid_argument);
+
+  // a snapshot: one row per cell, the step's end time last
+  const Grid g = make_grid(1e-3, 2e-3, GridSpec{3, 2});
+  Snapshot snap;
+  snap.t_s = 2e-4;
+  for (Eigen::ArrayXXd* a : {&snap.pressure_Pa, &snap.tau_x_Pa, &snap.tau_y_Pa, &snap.slip_x_m_per_s,
+                             &snap.slip_y_m_per_s})
+    *a = Eigen::ArrayXXd::Zero(3, 2);
+  const std::vector<std::string> cells_csv = lines_of(snapshot_csv(g, snap));
+  ASSERT_EQ(cells_csv.size(), 3u * 2u + 1u);
+  EXPECT_TRUE(is_numeric_table(cells_csv,
+                               "x_m,y_m,pressure_Pa,tau_x_Pa,tau_y_Pa,slip_x_m_per_s,slip_y_m_per_s,t_s"));
+  EXPECT_EQ(split(cells_csv.back()).back(), "0.00020000000000000001");
+  snap.tau_y_Pa = Eigen::ArrayXXd::Zero(2, 3);
+  EXPECT_THROW(snapshot_csv(g, snap), std::invalid_argument);
 }
 
 // ---- command line -----------------------------------------------------------------------------------
@@ -331,6 +401,172 @@ TEST_F(CommandLine, VersionPrintsVersion) {
   const ProcessResult r = rollwear("--version", dir_);
   EXPECT_EQ(r.exit_code, 0);
   EXPECT_EQ(r.out.rfind("rollwear ", 0), 0u) << r.out;
+}
+
+// ---- transient --------------------------------------------------------------------------------------
+
+// cases/paper-startup.yaml made small: 20 x 20, to 2e-4 s (the ramp and 1e-4 s at 1.8 m/s), two snapshots
+std::string small_startup_case() {
+  std::string text = read_text(kSource / "cases" / "paper-startup.yaml");
+  const std::pair<std::string, std::string> edits[] = {
+      {"{ nx: 80, ny: 80 }", "{ nx: 20, ny: 20 }"},
+      {"t_end_s: 4.0e-4", "t_end_s: 2.0e-4"},
+      {"snapshots_s: [5.0e-5, 1.0e-4, 2.0e-4, 4.0e-4]", "snapshots_s: [5.0e-5, 2.0e-4]"},
+  };
+  for (const auto& [from, to] : edits) {
+    const std::size_t at = text.find(from);
+    if (at == std::string::npos) return "cases/paper-startup.yaml lacks " + from;  // fails to read
+    text.replace(at, from.size(), to);
+  }
+  return text;
+}
+
+// the cells of a column of a table, as numbers
+std::vector<double> column(const std::vector<std::string>& lines, std::size_t k) {
+  std::vector<double> out;
+  for (std::size_t r = 1; r < lines.size(); ++r) out.push_back(std::strtod(split(lines[r])[k].c_str(), nullptr));
+  return out;
+}
+
+TEST_F(CommandLine, TransientOnSmallStartupWritesEveryTable) {
+  const fs::path case_path = dir_ / "startup.yaml";
+  std::ofstream(case_path) << small_startup_case();
+  const fs::path out = dir_ / "startup";
+  const ProcessResult r = rollwear("transient " + quoted(case_path) + " -o " + quoted(out) + " --log-level warn", dir_);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.err, "");
+  for (const char* word : {"steps", "Fx =", " W ", " J ", "stick fraction", "snapshot 2"})
+    EXPECT_NE(r.out.find(word), std::string::npos) << "summary lacks '" << word << "':\n" << r.out;
+
+  // summary.csv: the run's totals
+  const std::vector<std::string> summary = lines_of(read_text(out / "summary.csv"));
+  ASSERT_EQ(summary.size(), 2u);
+  EXPECT_TRUE(is_numeric_table(summary,
+                               "name,scheme,nx,ny,steps,t_end_s,q_end_m,dissipated_J,Fx_N,Fy_N,Mz_N_m,power_W,"
+                               "stick_fraction,omega1_rad_per_s,sliding_end_s",
+                               {0, 1}));
+  const std::vector<std::string> totals = split(summary[1]);
+  EXPECT_EQ(totals[0], "paper-startup");  // the file's name:
+  EXPECT_EQ(totals[1], "shift");
+  EXPECT_EQ(totals[2], "20");
+  const int steps = std::atoi(totals[4].c_str());
+  const double t_end_s = std::strtod(totals[5].c_str(), nullptr);
+  const double dissipated_J = std::strtod(totals[7].c_str(), nullptr);
+  EXPECT_NEAR(t_end_s, 2.0e-4, 1e-16);
+  // 0.9e-4 m rolled in the ramp and 1.8e-4 m after it, one step per dx = 2a/20 = 23 um, and a last partial one
+  EXPECT_GE(steps, 12);
+  EXPECT_LE(steps, 13);
+
+  // timeseries.csv: one row per step, steps in order, their durations adding up to the run
+  const std::vector<std::string> series = lines_of(read_text(out / "timeseries.csv"));
+  ASSERT_EQ(series.size(), static_cast<std::size_t>(steps) + 1);
+  EXPECT_TRUE(is_numeric_table(series,
+                               "step,t_s,q_m,dt_s,speed_m_per_s,xi,eta,phi_per_m,normal_load_N,omega1_rad_per_s,"
+                               "Fx_N,Fy_N,Mz_N_m,power_W,stick_fraction,balance_residual_W,cfl"));
+  const std::vector<double> step = column(series, 0), dt = column(series, 3), power = column(series, 13);
+  double t = 0, energy = 0;
+  for (int k = 0; k < steps; ++k) {
+    EXPECT_EQ(step[k], k + 1);
+    t += dt[k];
+    energy += power[k] * dt[k];
+  }
+  EXPECT_NEAR(t / t_end_s, 1, 1e-12);
+  EXPECT_NEAR(energy / dissipated_J, 1, 1e-9);  // power_W is the step's dissipated energy over dt
+
+  // strip_power.csv: a row per strip and step; strip_energy.csv: its time integral
+  const std::vector<std::string> strip_power = lines_of(read_text(out / "strip_power.csv"));
+  EXPECT_EQ(strip_power.size(), static_cast<std::size_t>(steps) * 20 + 1);
+  EXPECT_TRUE(is_numeric_table(strip_power, "step,t_s,y_m,power_W_per_m"));
+  const std::vector<std::string> strip_energy = lines_of(read_text(out / "strip_energy.csv"));
+  ASSERT_EQ(strip_energy.size(), 20u + 1u);
+  EXPECT_TRUE(is_numeric_table(strip_energy, "y_m,energy_J_per_m"));
+  const std::vector<double> y = column(strip_energy, 0), e = column(strip_energy, 1);
+  double across = 0;
+  for (std::size_t j = 0; j < y.size(); ++j) across += e[j] * (y[1] - y[0]);
+  EXPECT_NEAR(across / dissipated_J, 1, 1e-9);
+
+  // a snapshot per time asked for, at the end of the step that reached it
+  for (const auto& [k, asked_s] : {std::pair<int, double>{1, 5.0e-5}, {2, 2.0e-4}}) {
+    const std::vector<std::string> cells = lines_of(read_text(out / ("snapshot_" + std::to_string(k) + ".csv")));
+    ASSERT_EQ(cells.size(), 20u * 20u + 1u) << k;
+    EXPECT_TRUE(is_numeric_table(cells, "x_m,y_m,pressure_Pa,tau_x_Pa,tau_y_Pa,slip_x_m_per_s,slip_y_m_per_s,t_s"));
+    const double at_s = column(cells, 7).front();
+    EXPECT_GE(at_s, asked_s * (1 - 1e-12)) << k;
+    EXPECT_LT(at_s, asked_s + 3e-5) << k;  // within one step
+  }
+
+  // nothing else: no temporary files left behind
+  EXPECT_EQ(std::distance(fs::directory_iterator(out), fs::directory_iterator()), 6);
+
+  // --no-fields: no snapshots
+  const fs::path bare = dir_ / "bare";
+  const ProcessResult nf =
+      rollwear("transient " + quoted(case_path) + " -o " + quoted(bare) + " --no-fields --quiet --log-level off", dir_);
+  ASSERT_EQ(nf.exit_code, 0) << nf.err;
+  EXPECT_FALSE(fs::exists(bare / "snapshot_1.csv"));
+  EXPECT_EQ(std::distance(fs::directory_iterator(bare), fs::directory_iterator()), 4);
+}
+
+TEST_F(CommandLine, TransientCflBreachExitsTwoNamingDtAndAllowedStep) {
+  const fs::path case_path = dir_ / "breach.yaml";
+  std::ofstream(case_path) << "bodies:\n"                                                        // 1
+                              "  body1: { Rx_m: 0.020, Ry_m: 0.500, E_Pa: 210.0e9, nu: 0.28 }\n"  // 2
+                              "  body2: { Rx_m: 0.025, Ry_m: .inf, E_Pa: 210.0e9, nu: 0.28 }\n"   // 3
+                              "load: { normal_load_N: 1500 }\n"                                  // 4
+                              "kinematics: { speed_m_per_s: 1.8, xi: 0.001 }\n"                  // 5
+                              "friction: { mu: 0.3 }\n"                                          // 6
+                              "solver: { nx: 20, ny: 20 }\n"                                     // 7
+                              "transient: { scheme: upwind, t_end_s: 2.0e-4, dt_s: 5.0e-5 }\n";  // 8
+  const fs::path out = dir_ / "breach";
+  const ProcessResult r = rollwear("transient " + quoted(case_path) + " -o " + quoted(out), dir_);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.out, "");
+  EXPECT_EQ(lines_of(r.err).size(), 1u) << r.err;
+  EXPECT_EQ(r.err.rfind("rollwear: error: " + case_path.string() + ":8:53: transient.dt_s: 5e-05 s breaks the CFL "
+                                                                   "condition",
+                        0),
+            0u)
+      << r.err;
+  // dx / V on the run's grid (Hertz: dx = 2a/20)
+  const HertzContact h = solve_hertz({{0.020, 0.500}, {0.025, kFlat}}, {{210e9, 0.28}, {210e9, 0.28}}, 1500);
+  const double dt_max = make_grid(h.a_m, h.b_m, {20, 20}).dx_m / 1.8;
+  const std::string key = "the largest allowed dt_s is ";
+  const std::size_t at = r.err.find(key);
+  ASSERT_NE(at, std::string::npos) << r.err;
+  EXPECT_NEAR(std::strtod(r.err.c_str() + at + key.size(), nullptr) / dt_max, 1, 1e-5) << r.err;
+  EXPECT_FALSE(fs::exists(out));  // refused before the first step: nothing written
+}
+
+TEST_F(CommandLine, EachCommandRefusesTheOthersCase) {
+  // the steady command and a history
+  const fs::path startup = dir_ / "startup.yaml";
+  std::ofstream(startup) << small_startup_case();
+  const ProcessResult steady = rollwear("contact " + quoted(startup) + " -o " + quoted(dir_ / "out"), dir_);
+  EXPECT_EQ(steady.exit_code, 2);
+  EXPECT_NE(steady.err.find(": kinematics.speed_m_per_s: the steady 'contact' command needs a constant; "
+                            "histories are for 'transient'"),
+            std::string::npos)
+      << steady.err;
+  // the transient command and a case without a transient: section
+  const fs::path paper = kSource / "cases" / "paper.yaml";
+  const ProcessResult transient = rollwear("transient " + quoted(paper) + " -o " + quoted(dir_ / "out"), dir_);
+  EXPECT_EQ(transient.exit_code, 2);
+  EXPECT_EQ(transient.err.rfind("rollwear: error: " + paper.string() + ": transient: the 'transient' command "
+                                                                       "needs a transient: section",
+                                0),
+            0u)
+      << transient.err;
+  EXPECT_FALSE(fs::exists(dir_ / "out"));
+}
+
+TEST_F(CommandLine, TransientHelpListsItsOptions) {
+  const ProcessResult app = rollwear("--help", dir_);
+  EXPECT_NE(app.out.find("transient"), std::string::npos) << app.out;
+  const ProcessResult help = rollwear("transient --help", dir_);
+  EXPECT_EQ(help.exit_code, 0);
+  for (const char* word : {"case", "-o,--output", "--no-fields", "-q,--quiet", "--log-level", "trace", "--help",
+                           "timeseries.csv", "strip_power.csv", "snapshot_"})
+    EXPECT_NE(help.out.find(word), std::string::npos) << word << " missing from:\n" << help.out;
 }
 
 }  // namespace

@@ -43,9 +43,9 @@ const PaperCase& paper() {
       const ContactCase file = read_contact_case(path);
       p.bodies = bodies_of(file);
       p.pair = materials_of(file);
-      p.normal_load_N = file.load.normal_load_N;
+      p.normal_load_N = normal_load_of(file);
       p.mu = file.friction.mu;
-      p.speed_m_per_s = file.kinematics.speed_m_per_s;
+      p.speed_m_per_s = speed_of(file);
     } else {
       p.bodies.body1 = {0.020, 0.500};
       p.bodies.body2 = {0.025, kFlat};
