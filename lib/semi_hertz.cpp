@@ -1,1 +1,685 @@
-// placeholder: filled in by later work
+// Semi-Hertzian normal problem: Kik-Piotrowski with an equivalent-ellipse correction (equations at
+// the top of semi_hertz.h; the choice and its accuracy in docs/semi-hertz.md).
+//
+// Penetration ratio. Johnson (Contact Mechanics, 1985, section 4.2), for the ellipse with major
+// semi-axis a_J, minor b_J, k = b_J/a_J, e^2 = 1 - k^2: the curvature along the major axis is
+// C_maj = (p0 b_J / (E* e^2 a_J^2)) (K - E), along the minor C_min = (p0 b_J / (E* e^2 a_J^2))
+// ((1/k^2) E - K), and delta = p0 b_J K / E*. Hence, with rho = C_min / C_maj >= 1,
+//   rho = ((1/k^2) E - K) / (K - E),   eps_major = C_maj a_J^2 / delta = (K - E) / (e^2 K),
+// and C_maj a_J^2 + C_min b_J^2 = delta (so eps_x + eps_y = 1), all explicit in k: a table over k
+// gives eps_major and K against log(rho) without solving for k; it also gives Hertz's approach for
+// the first guess of the root find (EllipseTable::approach).
+//
+// Quadrature of the Boussinesq integral: per patch [l, r], cells uniform in theta with
+// y = (l + r)/2 + (r - l)/2 sin(theta), so that the sqrt edges of a(y) and p(y) become smooth. On a
+// cell, p/p0 and a vary slowly (on the scale of the patch's width) and are taken at the cell's centre;
+// the strip kernel, which varies on the scale a and is log-singular at the reference point, is
+// integrated exactly through its tabulated antiderivative Psi (KernelTable below).
+//
+// Strips: the line load (pi/2) p(y) a(y) is proportional to g_+(y), piecewise linear, so each grid
+// row's load is integrated exactly; p_j = row load / ((pi/2) a_j dy), a_j = a(y_j).
+#include "lib/semi_hertz.h"
+
+#include <spdlog/spdlog.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "lib/hertz.h"
+
+namespace contact {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+std::string num(double v) {
+  char buf[40];
+  std::snprintf(buf, sizeof buf, "%.6g", v);
+  return buf;
+}
+
+// Hertz's ellipse against log(rho), rho = larger/smaller curvature >= 1: eps of the major semi-axis
+// and K(e), so that with C the smaller curvature
+//   delta = 3 F K / (2 pi E* major),  major^2 = eps delta / C
+//   =>  delta = (3 F K sqrt(C) / (2 pi E* sqrt(eps)))^(2/3).
+struct EllipseTable {
+  std::vector<double> log_rho, eps, K;
+  EllipseTable() {
+    constexpr double kPiHalf = 1.5707963267948966;
+    log_rho.push_back(0);  // circle: eps = 1/2, K = pi/2
+    eps.push_back(0.5);
+    K.push_back(kPiHalf);
+    constexpr int kN = 4000;
+    const double lk_hi = std::log(1 - 1e-3), lk_lo = std::log(1e-6);
+    for (int i = 0; i < kN; ++i) {  // k from near 1 down to 1e-6: rho increases
+      const double k = std::exp(lk_hi + (lk_lo - lk_hi) * i / (kN - 1));
+      const double e2 = 1 - k * k, e = std::sqrt(e2);
+      const double Kk = std::comp_ellint_1(e), E = std::comp_ellint_2(e);
+      log_rho.push_back(std::log((E / (k * k) - Kk) / (Kk - E)));
+      eps.push_back((Kk - E) / (e2 * Kk));
+      K.push_back(Kk);
+    }
+  }
+  // linear interpolation of column c at log(rho) = lr >= 0 (clamped to the table)
+  double at(const std::vector<double>& c, double lr) const {
+    if (lr <= 0) return c.front();
+    if (lr >= log_rho.back()) return c.back();
+    const std::size_t i = static_cast<std::size_t>(std::upper_bound(log_rho.begin(), log_rho.end(), lr) - log_rho.begin());
+    const double t = (lr - log_rho[i - 1]) / (log_rho[i] - log_rho[i - 1]);
+    return c[i - 1] + t * (c[i] - c[i - 1]);
+  }
+  // eps_y = B b^2 / delta for curvatures A (x) and B (y)
+  double eps_y(double A, double B) const {
+    const double lr = std::log(A / B);
+    return lr >= 0 ? at(eps, lr) : 1 - at(eps, -lr);
+  }
+  double approach(double A, double B, double F, double Estar) const {
+    const double lr = std::abs(std::log(A / B)), C = std::min(A, B);
+    return std::cbrt(std::pow(3 * F * at(K, lr) / (2 * kPi * Estar), 2) * C / at(eps, lr));
+  }
+};
+
+const EllipseTable& ellipse_table() {
+  static const EllipseTable table;
+  return table;
+}
+
+double curvature_per_m(double R_m, const char* name) {
+  if (R_m == 0 || std::isnan(R_m))
+    throw std::invalid_argument(std::string("semi-Hertz: ") + name + " must be nonzero (inf for flat), got " + num(R_m));
+  return std::isinf(R_m) ? 0.0 : 1 / R_m;
+}
+
+// the undeformed gap, piecewise linear on the union of the profiles' nodes over their overlap
+struct Gap {
+  std::vector<double> y, h;  // h >= 0, min 0 at node imin
+  double h_shift_m = 0;      // min of z1 + z2, subtracted
+  std::size_t imin = 0;
+};
+
+// a profile's z at increasing positions y (inside its extent), marching a segment index from the
+// segment holding y[0]
+void sample_profile(const Profile& pr, const double* y, std::size_t n, double* z) {
+  if (n == 0) return;
+  const double* ys = pr.y_m.data();
+  const Eigen::Index last = pr.y_m.size() - 2;
+  Eigen::Index s = std::clamp<Eigen::Index>(std::upper_bound(ys, ys + last + 2, y[0]) - ys - 1, 0, last);
+  for (std::size_t k = 0; k < n; ++k) {
+    while (s < last && ys[s + 1] < y[k]) ++s;
+    const double t = (y[k] - ys[s]) / (ys[s + 1] - ys[s]);
+    z[k] = (1 - t) * pr.z_m(s) + t * pr.z_m(s + 1);
+  }
+}
+
+// Merges the two profiles' nodes over their overlap. At a node of one profile that profile's z is
+// exact and the other's is interpolated on its current segment: one pass over both.
+Gap make_gap(const Profiles& p) {
+  const Profile &p1 = p.body1, &p2 = p.body2;
+  const Eigen::Index n1 = p1.y_m.size(), n2 = p2.y_m.size();
+  const double *y1 = p1.y_m.data(), *y2 = p2.y_m.data(), *z1 = p1.z_m.data(), *z2 = p2.z_m.data();
+  const double lo = std::max(y1[0], y2[0]), hi = std::min(y1[n1 - 1], y2[n2 - 1]);
+  if (!(hi > lo))
+    throw std::invalid_argument("semi-Hertz: the profiles do not overlap laterally: " + p1.source + " spans [" +
+                                num(y1[0]) + ", " + num(y1[n1 - 1]) + "] m, " + p2.source + " [" + num(y2[0]) +
+                                ", " + num(y2[n2 - 1]) + "] m");
+  // i, j: the first node of each profile beyond the current position; the segments [i-1, i], [j-1, j]
+  Eigen::Index i = std::upper_bound(y1, y1 + n1, lo) - y1, j = std::upper_bound(y2, y2 + n2, lo) - y2;
+  auto interp = [](const double* y, const double* z, Eigen::Index k, double at) {
+    const double t = (at - y[k - 1]) / (y[k] - y[k - 1]);
+    return (1 - t) * z[k - 1] + t * z[k];
+  };
+  Gap g;
+  const std::size_t cap = static_cast<std::size_t>((n1 - i) + (n2 - j) + 2);
+  g.y.reserve(cap);
+  g.h.reserve(cap);
+  auto add = [&g](double y, double h) {
+    g.y.push_back(y);
+    g.h.push_back(h);
+  };
+  // the overlap's start: a node of the profile that starts later (i or j >= 1 there)
+  add(lo, (i == 0 ? z1[0] : interp(y1, z1, std::min(i, n1 - 1), lo)) +
+              (j == 0 ? z2[0] : interp(y2, z2, std::min(j, n2 - 1), lo)));
+  while (i < n1 && j < n2) {
+    const double y = std::min(y1[i], y2[j]);
+    if (y >= hi) break;
+    if (y1[i] == y2[j]) add(y, z1[i++] + z2[j++]);
+    else if (y1[i] < y2[j]) add(y, z1[i++] + interp(y2, z2, j, y));
+    else add(y, interp(y1, z1, i, y) + z2[j++]);
+  }
+  add(hi, interp(y1, z1, std::clamp<Eigen::Index>(i, 1, n1 - 1), hi) +
+              interp(y2, z2, std::clamp<Eigen::Index>(j, 1, n2 - 1), hi));
+  g.imin = static_cast<std::size_t>(std::min_element(g.h.begin(), g.h.end()) - g.h.begin());
+  g.h_shift_m = g.h[g.imin];
+  for (double& v : g.h) v -= g.h_shift_m;
+  return g;
+}
+
+// integral of the positive part of the linear g over [y0, y1] (I0) and its first moment (I1)
+inline void positive_segment(double y0, double y1, double g0, double g1, double& I0, double& I1) {
+  if (g0 >= 0 && g1 >= 0) {
+    const double d = y1 - y0;
+    I0 += d * (g0 + g1) / 2;
+    I1 += d * (g0 * (2 * y0 + y1) + g1 * (y0 + 2 * y1)) / 6;
+  } else if (g0 > 0) {  // g1 < 0
+    const double yc = y0 + (y1 - y0) * g0 / (g0 - g1), d = yc - y0;
+    I0 += d * g0 / 2;
+    I1 += d * g0 * (2 * y0 + yc) / 6;
+  } else if (g1 > 0) {  // g0 < 0
+    const double yc = y0 + (y1 - y0) * g0 / (g0 - g1), d = y1 - yc;
+    I0 += d * g1 / 2;
+    I1 += d * g1 * (yc + 2 * y1) / 6;
+  }
+}
+
+// integral of sqrt(g_+) over a segment where g is linear
+inline double sqrt_segment(double y0, double y1, double g0, double g1) {
+  if (g0 <= 0 && g1 <= 0) return 0;
+  if (g0 > 0 && g1 > 0) {
+    const double s0 = std::sqrt(g0), s1 = std::sqrt(g1);
+    return (y1 - y0) * (2.0 / 3) * (g0 + s0 * s1 + g1) / (s0 + s1);
+  }
+  const double yc = y0 + (y1 - y0) * g0 / (g0 - g1);
+  return g0 > 0 ? (2.0 / 3) * std::sqrt(g0) * (yc - y0) : (2.0 / 3) * std::sqrt(g1) * (y1 - yc);
+}
+
+// The strip kernel I(a, eta) = integral over |x| < a of sqrt(1 - x^2/a^2) / sqrt(x^2 + eta^2) dx
+// = I(1, eta/a) = 2 sqrt(1 + s^2) (K(k) - E(k)), s = eta/a, k = 1/sqrt(1 + s^2); K - E = K sum 2^(n-1) c_n^2
+// by the arithmetic-geometric mean (no cancellation at either end).
+double strip_kernel(double s) {
+  const double r = std::sqrt(1 + s * s);
+  double an = 1, gn = std::abs(s) / r, weight = 0.5, sum = 0.5 / (r * r);
+  while (an - gn > 1e-15 * an) {
+    const double cn = (an - gn) / 2, g_next = std::sqrt(an * gn);
+    an = (an + gn) / 2;
+    gn = g_next;
+    weight *= 2;
+    sum += weight * cn * cn;
+  }
+  return 2 * r * (kPi / (2 * an)) * sum;
+}
+
+// Psi(s) = integral of I(1, sigma) d sigma from 0 to s (odd in s), so that the integral of I(a, eta)
+// over eta in [eta_l, eta_r] is a (Psi(eta_r/a) - Psi(eta_l/a)), log singularity included.
+//   s -> 0:   I = 2 (ln(4/s) - 1) + O(s^2 ln s),  Psi = 2 s ln(4/s)
+//   s -> inf: I = pi/(2s) + O(s^-3),              Psi = Psi(s1) + (pi/2) ln(s/s1)
+// Tabulated in u = ln s with the exact slope dPsi/du = s I(1, s); cubic Hermite in between.
+struct KernelTable {
+  static constexpr int kN = 1201;
+  static constexpr double kUmin = -13.815510557964274, kUmax = 13.815510557964274;  // ln 1e-6, ln 1e6
+  static constexpr double kDu = (kUmax - kUmin) / (kN - 1);
+  std::vector<double> psi, slope;
+  KernelTable() : psi(kN), slope(kN) {
+    // 8-point Gauss-Legendre on each step, in u
+    static const double x[4] = {0.1834346424956498, 0.5255324099163290, 0.7966664774136267, 0.9602898564975363};
+    static const double w[4] = {0.3626837833783620, 0.3137066638691861, 0.2223810344533745, 0.1012285362903763};
+    const double s0 = std::exp(kUmin);
+    psi[0] = 2 * s0 * std::log(4 / s0);
+    slope[0] = s0 * strip_kernel(s0);
+    for (int i = 1; i < kN; ++i) {
+      const double um = kUmin + (i - 0.5) * kDu;
+      double step = 0;
+      for (int q = 0; q < 4; ++q)
+        for (double sign : {-1.0, 1.0}) {
+          const double s = std::exp(um + sign * x[q] * kDu / 2);
+          step += w[q] * s * strip_kernel(s);
+        }
+      const std::size_t k = static_cast<std::size_t>(i);
+      const double s = std::exp(kUmin + i * kDu);
+      psi[k] = psi[k - 1] + step * kDu / 2;
+      slope[k] = s * strip_kernel(s);
+    }
+  }
+  double operator()(double s) const {
+    const double m = std::abs(s);
+    if (m <= 0) return 0;
+    const double u = std::log(m);
+    double v;
+    if (u < kUmin) {
+      v = 2 * m * std::log(4 / m);
+    } else if (u >= kUmax) {
+      v = psi.back() + kPi / 2 * (u - kUmax);
+    } else {
+      const double f = (u - kUmin) / kDu;
+      const std::size_t i = std::min(static_cast<std::size_t>(f), static_cast<std::size_t>(kN - 2));
+      const double t = f - static_cast<double>(i), t2 = t * t, t3 = t2 * t;
+      v = (2 * t3 - 3 * t2 + 1) * psi[i] + (t3 - 2 * t2 + t) * kDu * slope[i] + (-2 * t3 + 3 * t2) * psi[i + 1] +
+          (t3 - t2) * kDu * slope[i + 1];
+    }
+    return s < 0 ? -v : v;
+  }
+};
+
+struct ContactRun {  // a patch: nodes i0..i1 have g > 0; edges l, r exact
+  std::size_t i0 = 0, i1 = 0;
+  double l = 0, r = 0;
+  double I0 = 0, I1 = 0;  // integral of g_+ and of y g_+ over the patch
+};
+
+struct Evaluation {
+  double delta = 0, eps = 0.5, t = 0, B_e = 0, A_mod = 0;
+  double G1 = 0;          // integral of g_+ over all patches
+  double y0 = 0, h0 = 0;  // reference point and the gap there
+  double J = 0;           // integral of (p/p0) / r dA
+  double S = 0;           // integral of p/p0 dA
+  double p0 = 0, F = 0;
+  std::vector<ContactRun> runs;
+  bool reaches_edge = false;
+};
+
+class Solver {
+ public:
+  Solver(const Gap& gap, double A, double Estar, int cells, double kp_epsilon)
+      : gap_(gap), A_(A), Estar_(Estar), cells_(cells), kp_epsilon_(kp_epsilon) {
+    const std::size_t segments = gap.y.size() - 1;
+    for (std::size_t s = 0; s < segments; s += kBlock) {
+      const auto first = gap.h.begin() + static_cast<std::ptrdiff_t>(s);
+      const auto last = gap.h.begin() + static_cast<std::ptrdiff_t>(std::min(s + kBlock, segments) + 1);
+      block_min_.push_back(*std::min_element(first, last));
+    }
+  }
+
+  // eps = f(eps): B_e from the interpenetration at eps delta, eps of B_e's ellipse; secant steps on
+  // f(eps) - eps (a contraction: plain steps also converge, slower). Returns B_e; eps in and out.
+  double equivalent_ellipse(double delta, double& eps) {
+    const EllipseTable& table = ellipse_table();
+    double eps_prev = 0, phi_prev = 0, B_e = 0;
+    for (int it = 0; it < 50; ++it) {
+      const double t = eps * delta;
+      const double be = 0.75 * positive_integral(t) / t;
+      B_e = t / (be * be);
+      const double phi = table.eps_y(A_, B_e) - eps;
+      if (std::abs(phi) <= 1e-12) break;
+      const double next = it > 0 && phi != phi_prev ? eps - phi * (eps - eps_prev) / (phi - phi_prev) : eps + phi;
+      eps_prev = eps;
+      phi_prev = phi;
+      eps = std::clamp(next, 0.01, 0.99);
+    }
+    return B_e;
+  }
+
+  // everything at approach delta; eps_start: the last evaluation's eps (fixed point warm start)
+  Evaluation evaluate(double delta, double eps_start) {
+    Evaluation ev;
+    ev.delta = delta;
+    double eps = eps_start;
+    ev.B_e = equivalent_ellipse(delta, eps);
+    if (kp_epsilon_ > 0) eps = kp_epsilon_;  // Kik-Piotrowski as published: a = sqrt((eps delta - h)/A)
+    ev.eps = eps;
+    ev.t = eps * delta;
+    ev.A_mod = kp_epsilon_ > 0 ? A_ : A_ * eps / (1 - eps);
+    find_runs(ev);
+    // reference point: centroid of g_+ over the patch holding the gap's minimum
+    const ContactRun* ref = &ev.runs.front();
+    for (const ContactRun& run : ev.runs)
+      if (run.i0 <= gap_.imin && gap_.imin <= run.i1) ref = &run;
+    ev.y0 = ref->I1 / ref->I0;
+    std::size_t seg = ref->i0 == 0 ? 1 : ref->i0;
+    while (seg + 1 < gap_.y.size() && gap_.y[seg] < ev.y0) ++seg;
+    ev.h0 = ev.t - g_on_segment(ev.t, seg, ev.y0);
+    ev.J = boussinesq_integral(ev);
+    ev.S = kPi / 2 * ev.G1 / std::sqrt(ev.t * ev.A_mod);
+    ev.p0 = kPi * Estar_ * (ev.delta - ev.h0) / ev.J;
+    ev.F = ev.p0 * ev.S;
+    return ev;
+  }
+
+  // g = t - h at y on the segment [s-1, s]
+  double g_on_segment(double t, std::size_t s, double y) const {
+    const double w = (y - gap_.y[s - 1]) / (gap_.y[s] - gap_.y[s - 1]);
+    return t - (gap_.h[s - 1] + w * (gap_.h[s] - gap_.h[s - 1]));
+  }
+
+  // Marches increasing positions y through the gap: the integral of g_+ from the first node to y,
+  // and g at y. Queries must not decrease.
+  class March {
+   public:
+    March(const Gap& gap, double t) : gap_(gap), t_(t) {}
+    double integral_to(double y) {
+      const std::vector<double>& ys = gap_.y;
+      while (s_ + 2 < ys.size() && ys[s_ + 1] <= y) {
+        double I1 = 0;
+        positive_segment(ys[s_], ys[s_ + 1], t_ - gap_.h[s_], t_ - gap_.h[s_ + 1], acc_, I1);
+        ++s_;
+      }
+      double part = acc_, I1 = 0;
+      positive_segment(ys[s_], y, t_ - gap_.h[s_], g_at(y), part, I1);
+      return part;
+    }
+    double g_at(double y) {
+      const std::vector<double>& ys = gap_.y;
+      while (s_ + 2 < ys.size() && ys[s_ + 1] <= y) {
+        double I1 = 0;
+        positive_segment(ys[s_], ys[s_ + 1], t_ - gap_.h[s_], t_ - gap_.h[s_ + 1], acc_, I1);
+        ++s_;
+      }
+      const double w = (y - ys[s_]) / (ys[s_ + 1] - ys[s_]);
+      return t_ - (gap_.h[s_] + w * (gap_.h[s_ + 1] - gap_.h[s_]));
+    }
+
+   private:
+    const Gap& gap_;
+    double t_;
+    std::size_t s_ = 0;  // segment [s_, s_ + 1]
+    double acc_ = 0;     // integral of g_+ up to node s_
+  };
+
+ private:
+  // integral of g_+ = (t - h)_+ over the whole gap, skipping blocks of segments where h >= t
+  double positive_integral(double t) const {
+    double I0 = 0, I1 = 0;
+    const std::vector<double>& y = gap_.y;
+    const std::vector<double>& h = gap_.h;
+    for (std::size_t b = 0; b < block_min_.size(); ++b) {
+      if (block_min_[b] >= t) continue;
+      const std::size_t end = std::min((b + 1) * kBlock, y.size() - 1);
+      for (std::size_t s = b * kBlock; s < end; ++s)
+        if (h[s] < t || h[s + 1] < t) positive_segment(y[s], y[s + 1], t - h[s], t - h[s + 1], I0, I1);
+    }
+    return I0;
+  }
+
+  void find_runs(Evaluation& ev) const {
+    const std::vector<double>& y = gap_.y;
+    const std::vector<double>& h = gap_.h;
+    const double t = ev.t;
+    ev.G1 = 0;
+    for (std::size_t i = 0; i < y.size(); ++i) {
+      if (i % kBlock == 0 && i / kBlock < block_min_.size() && block_min_[i / kBlock] >= t) {
+        i += kBlock - 1;
+        continue;
+      }
+      if (h[i] >= t) continue;
+      ContactRun run;
+      run.i0 = i;
+      while (i + 1 < y.size() && h[i + 1] < t) ++i;
+      run.i1 = i;
+      const std::size_t i0 = run.i0, i1 = run.i1;
+      // exact edges, where g crosses zero on the neighbouring segments
+      run.l = i0 == 0 ? y[0] : y[i0 - 1] + (y[i0] - y[i0 - 1]) * (t - h[i0 - 1]) / (h[i0] - h[i0 - 1]);
+      run.r = i1 + 1 == y.size() ? y[i1] : y[i1] + (y[i1 + 1] - y[i1]) * (h[i1] - t) / (h[i1] - h[i1 + 1]);
+      if (i0 == 0 || i1 + 1 == y.size()) ev.reaches_edge = true;
+      const std::size_t s0 = i0 == 0 ? 0 : i0 - 1, s1 = std::min(i1 + 1, y.size() - 1);
+      for (std::size_t s = s0; s < s1; ++s) positive_segment(y[s], y[s + 1], t - h[s], t - h[s + 1], run.I0, run.I1);
+      ev.G1 += run.I0;
+      ev.runs.push_back(run);
+    }
+  }
+
+  // J = integral of sqrt(g/t) sqrt(1 - x^2/a^2) / sqrt(x^2 + (y - y0)^2) dA: on each cell the slowly
+  // varying w = sqrt(g/t) and a are taken at the centre, the kernel integrated exactly (Psi)
+  double boussinesq_integral(const Evaluation& ev) const {
+    static const KernelTable psi;
+    double width = 0;
+    for (const ContactRun& run : ev.runs) width += run.r - run.l;
+    double J = 0;
+    for (const ContactRun& run : ev.runs) {
+      const int n = std::max(4, static_cast<int>(std::lround(cells_ * (run.r - run.l) / width)));
+      const double mid = (run.l + run.r) / 2, half = (run.r - run.l) / 2;
+      // sin and cos of theta by rotation, theta from -pi/2 in steps of pi/(2n): edges and centres
+      const double c_step = std::cos(kPi / (2 * n)), s_step = std::sin(kPi / (2 * n));
+      double sn = -1, cs = 0;
+      double y_left = run.l;
+      std::size_t seg = std::max<std::size_t>(run.i0, 1);  // segment [seg-1, seg] holds y_c
+      for (int c = 0; c < n; ++c) {
+        const double sn_c = sn * c_step + cs * s_step, cs_c = cs * c_step - sn * s_step;
+        sn = sn_c * c_step + cs_c * s_step;
+        cs = cs_c * c_step - sn_c * s_step;
+        const double y_c = mid + half * sn_c;
+        const double y_right = c + 1 == n ? run.r : mid + half * sn;
+        while (seg + 1 < gap_.y.size() && gap_.y[seg] < y_c) ++seg;
+        const double g = g_on_segment(ev.t, seg, y_c);
+        if (g > 0) {
+          const double w = std::sqrt(g / ev.t), a = std::sqrt(g / ev.A_mod);
+          J += w * a * (psi((y_right - ev.y0) / a) - psi((y_left - ev.y0) / a));
+        }
+        y_left = y_right;
+      }
+    }
+    return J;
+  }
+
+  const Gap& gap_;
+  double A_, Estar_;
+  int cells_;
+  double kp_epsilon_;  // > 0: fixed eps, no equivalent-ellipse correction
+  // min of h over the nodes kBlock b ... kBlock (b + 1) (segments kBlock b ... kBlock (b + 1) - 1)
+  static constexpr std::size_t kBlock = 16;
+  std::vector<double> block_min_;
+};
+
+}  // namespace
+
+double hertz_lateral_epsilon(double A_per_m, double B_per_m) {
+  if (!(A_per_m > 0) || !(B_per_m > 0))
+    throw std::invalid_argument("hertz_lateral_epsilon: curvatures must be positive, got A " + num(A_per_m) +
+                                " 1/m, B " + num(B_per_m) + " 1/m");
+  return ellipse_table().eps_y(A_per_m, B_per_m);
+}
+
+Eigen::ArrayXd heathcote_xi_offset(const Profiles& profiles, double Rx1_m, double Rx2_m, const Eigen::ArrayXd& y_m,
+                                   double reference_y_m) {
+  const double c1 = curvature_per_m(Rx1_m, "Rx1"), c2 = curvature_per_m(Rx2_m, "Rx2");
+  const double z1_ref = profile_z(profiles.body1, reference_y_m), z2_ref = profile_z(profiles.body2, reference_y_m);
+  const std::size_t n = static_cast<std::size_t>(y_m.size());
+  Eigen::ArrayXd z1(y_m.size()), z2(y_m.size());
+  const bool increasing = n < 2 || (y_m.tail(y_m.size() - 1) > y_m.head(y_m.size() - 1)).all();
+  if (increasing && n > 0) {  // march (after profile_z has checked both ends against the extents)
+    for (const Profile* p : {&profiles.body1, &profiles.body2}) {
+      profile_z(*p, y_m(0));
+      profile_z(*p, y_m(y_m.size() - 1));
+    }
+    sample_profile(profiles.body1, y_m.data(), n, z1.data());
+    sample_profile(profiles.body2, y_m.data(), n, z2.data());
+  } else {
+    for (Eigen::Index j = 0; j < y_m.size(); ++j) {
+      z1(j) = profile_z(profiles.body1, y_m(j));
+      z2(j) = profile_z(profiles.body2, y_m(j));
+    }
+  }
+  return (z1 - z1_ref) * c1 - (z2 - z2_ref) * c2;
+}
+
+SemiHertzResult solve_semi_hertz(const Profiles& profiles, double Rx1_m, double Rx2_m, const ElasticPair& pair,
+                                 double normal_load_N, const GridSpec& spec, const SemiHertzOptions& options) {
+  check_material(pair.body1, "body1");
+  check_material(pair.body2, "body2");
+  if (!(normal_load_N > 0) || !std::isfinite(normal_load_N))
+    throw std::invalid_argument("semi-Hertz: normal load must be positive and finite, got " + num(normal_load_N) + " N");
+  if (spec.nx < 1 || spec.ny < 1)
+    throw std::invalid_argument("semi-Hertz: nx and ny must be at least 1, got " + std::to_string(spec.nx) + " x " +
+                                std::to_string(spec.ny));
+  if (!(options.kp_epsilon == 0 || (options.kp_epsilon > 0 && options.kp_epsilon < 1)))
+    throw std::invalid_argument("semi-Hertz: kp_epsilon must be 0 (equivalent-ellipse correction) or in (0, 1), got " +
+                                num(options.kp_epsilon));
+  if (options.quadrature_cells < 4)
+    throw std::invalid_argument("semi-Hertz: quadrature_cells must be at least 4, got " +
+                                std::to_string(options.quadrature_cells));
+  const double A = (curvature_per_m(Rx1_m, "Rx1") + curvature_per_m(Rx2_m, "Rx2")) / 2;
+  if (!(A > 0))
+    throw std::invalid_argument("semi-Hertz: rolling curvature A = (1/Rx1 + 1/Rx2)/2 = " + num(A) +
+                                " 1/m must be positive (Rx1 " + num(Rx1_m) + " m, Rx2 " + num(Rx2_m) + " m)");
+  validate_profile(profiles.body1);
+  validate_profile(profiles.body2);
+  const double Estar = effective_modulus_Pa(pair), F = normal_load_N;
+
+  // the gap on the union of the profiles' nodes
+  const Gap gap = make_gap(profiles);
+  Solver solver(gap, A, Estar, options.quadrature_cells, options.kp_epsilon);
+
+  // approach from the load: secant in (log delta, log F), kept inside the bracket [lo, hi]
+  double delta = options.initial_approach_m, eps = 0.5;
+  if (!(delta > 0)) {
+    // Hertz's ellipse with the equivalent curvature B_e of the gap, found at the approach of Hertz's
+    // circle with curvature A (exact on constant curvature, a good start otherwise)
+    const double R = 1 / (2 * A), a = std::cbrt(3 * F * R / (4 * Estar));
+    const double B_e = solver.equivalent_ellipse(a * a / R, eps);
+    delta = ellipse_table().approach(A, B_e, F, Estar);
+  }
+  double lo = 0, hi = std::numeric_limits<double>::infinity();
+  double prev_ld = 0, prev_lf = 0, residual = std::numeric_limits<double>::infinity();
+  Evaluation ev;
+  int it = 0;
+  bool converged = false;
+  while (it < options.max_iterations) {
+    ev = solver.evaluate(delta, eps);
+    ++it;
+    eps = ev.eps;
+    residual = ev.F / F - 1;
+    SPDLOG_TRACE("semi-Hertz: delta {:.9e} m -> F {:.9e} N (eps {:.6f})", delta, ev.F, ev.eps);
+    if (std::abs(residual) <= options.load_rtol) {
+      converged = true;
+      break;
+    }
+    if (ev.F < F) lo = delta; else hi = delta;
+    if (hi / lo - 1 < 1e-15) break;
+    const double ld = std::log(delta), lf = std::log(ev.F);
+    double slope = 1.5;  // Hertz: F ~ delta^(3/2)
+    if (it > 1 && ld != prev_ld) slope = std::clamp((lf - prev_lf) / (ld - prev_ld), 0.5, 4.0);
+    prev_ld = ld;
+    prev_lf = lf;
+    double next = delta * std::exp((std::log(F) - lf) / slope);
+    if (!(next > lo && next < hi)) next = std::isinf(hi) ? 4 * lo : (lo > 0 ? std::sqrt(lo * hi) : hi / 4);
+    delta = next;
+  }
+
+  SemiHertzResult res;
+  res.approach_m = ev.delta;
+  res.epsilon = ev.eps;
+  res.equivalent_B_per_m = ev.B_e;
+  res.reference_y_m = ev.y0;
+  res.patches = static_cast<int>(ev.runs.size());
+  res.reaches_edge = ev.reaches_edge;
+  res.contact_y_min_m = ev.runs.front().l;
+  res.contact_y_max_m = ev.runs.back().r;
+  res.status.iterations = it;
+  res.status.residual = std::abs(residual);
+  char msg[200];
+  std::snprintf(msg, sizeof msg, "load residual %.1e %s tol %.1e after %d evaluations", std::abs(residual),
+                converged ? "<=" : ">", options.load_rtol, it);
+  res.status.message = msg;
+  res.status.kind = converged ? SolveStatus::Kind::Converged : SolveStatus::Kind::MaxIterations;
+  if (!converged) spdlog::warn("semi-Hertz: approach not found: {}", res.status.message);
+  if (ev.reaches_edge) {
+    res.status.kind = SolveStatus::Kind::Failed;
+    res.status.message = "contact [" + num(res.contact_y_min_m) + ", " + num(res.contact_y_max_m) +
+                         "] m reaches the edge of the profiles' overlap [" + num(gap.y.front()) + ", " +
+                         num(gap.y.back()) + "] m (" + profiles.body1.source + ", " + profiles.body2.source +
+                         "): a body is narrower than the contact; " + res.status.message;
+    spdlog::warn("semi-Hertz: {}", res.status.message);
+  }
+
+  // the patch: grid over the contact's bounding box, strips carry their rows' loads exactly
+  ContactPatch& patch = res.patch;
+  const double half_x = std::sqrt(ev.t / ev.A_mod);  // a at the gap's minimum, the longest strip
+  const double half_y = (res.contact_y_max_m - res.contact_y_min_m) / 2;
+  res.grid_y0_m = (res.contact_y_min_m + res.contact_y_max_m) / 2;
+  patch.grid = make_grid(half_x, half_y, spec);
+  const Grid& g = patch.grid;
+  patch.half_length_m = Eigen::ArrayXd::Zero(g.ny);
+  patch.strip_peak_Pa = Eigen::ArrayXd::Zero(g.ny);
+  Eigen::ArrayXd row_load_N = Eigen::ArrayXd::Zero(g.ny);
+  {
+    const double line_load_per_g = ev.p0 * (kPi / 2) / std::sqrt(ev.t * ev.A_mod);  // (pi/2) p a = this * g
+    Solver::March rows(gap, ev.t), centres(gap, ev.t);
+    double below = rows.integral_to(res.contact_y_min_m);
+    for (int j = 0; j < g.ny; ++j) {
+      const double yr = j + 1 == g.ny ? res.contact_y_max_m : res.grid_y0_m + g.y_edge(j + 1);
+      const double upto = rows.integral_to(yr);
+      row_load_N(j) = line_load_per_g * (upto - below);
+      below = upto;
+      patch.half_length_m(j) = std::sqrt(std::max(centres.g_at(res.grid_y0_m + g.y_m(j)), 0.0) / ev.A_mod);
+    }
+  }
+  // a row whose centre misses the contact hands its load to the nearest row in contact
+  for (int j = 0; j < g.ny; ++j) {
+    if (patch.half_length_m(j) > 0 || row_load_N(j) == 0) continue;
+    for (int d = 1; d < g.ny; ++d) {
+      const int k = j - d >= 0 && patch.half_length_m(j - d) > 0 ? j - d
+                    : j + d < g.ny && patch.half_length_m(j + d) > 0 ? j + d : -1;
+      if (k < 0) continue;
+      row_load_N(k) += row_load_N(j);
+      row_load_N(j) = 0;
+      break;
+    }
+  }
+  const double carried_N = (patch.half_length_m > 0).select(row_load_N, 0.0).sum();
+  if (!(carried_N > 0))
+    throw std::invalid_argument("semi-Hertz: no strip centre lies in the contact: ny " + std::to_string(g.ny) +
+                                " is too small for its " + std::to_string(res.patches) + " patches");
+  row_load_N *= F / carried_N;  // exact to rounding (carried = F(delta) within load_rtol)
+  for (int j = 0; j < g.ny; ++j)
+    if (patch.half_length_m(j) > 0) patch.strip_peak_Pa(j) = row_load_N(j) / (kPi / 2 * patch.half_length_m(j) * g.dy_m);
+  fill_strip_pressures(patch);
+
+  // the equivalent ellipse for Kalker's coefficients: b half the contact's width, a = area / (pi b)
+  double width = 0, area = 0;
+  for (const ContactRun& run : ev.runs) {
+    width += run.r - run.l;
+    const std::size_t s0 = run.i0 == 0 ? 0 : static_cast<std::size_t>(run.i0 - 1);
+    const std::size_t s1 = std::min(static_cast<std::size_t>(run.i1 + 1), gap.y.size() - 1);
+    for (std::size_t s = s0; s < s1; ++s)
+      area += 2 * sqrt_segment(gap.y[s], gap.y[s + 1], ev.t - gap.h[s], ev.t - gap.h[s + 1]) / std::sqrt(ev.A_mod);
+  }
+  patch.b_m = width / 2;
+  patch.a_m = area / (kPi * patch.b_m);
+  patch.p0_Pa = ev.p0;
+  patch.normal_load_N = F;
+  patch.approach_m = ev.delta;
+
+  // Heathcote slip per strip, zero at the reference point
+  if (options.heathcote_slip)
+    patch.strip_xi_offset = heathcote_xi_offset(profiles, Rx1_m, Rx2_m, res.grid_y0_m + g.y_m, res.reference_y_m);
+
+  spdlog::debug("semi-Hertz: delta {:.6e} m, eps {:.4f}, B_e {:.4e} 1/m, a {:.6e} m, b {:.6e} m, p0 {:.6e} Pa, "
+                "{} patch(es), y [{:.6e}, {:.6e}] m, {}",
+                res.approach_m, res.epsilon, res.equivalent_B_per_m, patch.a_m, patch.b_m, patch.p0_Pa, res.patches,
+                res.contact_y_min_m, res.contact_y_max_m, res.status.message);
+  return res;
+}
+
+SemiHertzResult solve_normal_on_profiles(const Profiles& profiles, double Rx1_m, double Rx2_m, const ElasticPair& pair,
+                                         double normal_load_N, const GridSpec& spec, const SemiHertzOptions& options,
+                                         double curvature_rtol) {
+  // constant curvature on both bodies: Hertz with the fitted radii, centred on the gap's vertex
+  if (has_constant_curvature(profiles.body1, curvature_rtol) && has_constant_curvature(profiles.body2, curvature_rtol)) {
+    const ParabolaFit f1 = fit_parabola(profiles.body1), f2 = fit_parabola(profiles.body2);
+    const double c = f1.curvature_per_m + f2.curvature_per_m;  // gap's curvature 2B
+    const double lo = std::max(profiles.body1.y_m(0), profiles.body2.y_m(0));
+    const double hi = std::min(profiles.body1.y_m(profiles.body1.y_m.size() - 1),
+                               profiles.body2.y_m(profiles.body2.y_m.size() - 1));
+    if (c > 0) {
+      // the gap's vertex: where z1' + z2' = 0
+      const double y0 = (f1.curvature_per_m * f1.vertex_y_m + f2.curvature_per_m * f2.vertex_y_m) / c;
+      const auto radius = [](double curvature) { return curvature == 0 ? kFlat : 1 / curvature; };
+      const Bodies bodies{{Rx1_m, radius(f1.curvature_per_m)}, {Rx2_m, radius(f2.curvature_per_m)}};
+      const HertzContact h = solve_hertz(bodies, pair, normal_load_N);
+      if (y0 - h.b_m > lo && y0 + h.b_m < hi) {
+        spdlog::info("normal problem: both profiles have constant curvature within {:.1e} (Ry1 {:.6g} m, Ry2 {:.6g} m): "
+                     "Hertz instead of semi-Hertz",
+                     curvature_rtol, bodies.body1.Ry_m, bodies.body2.Ry_m);
+        SemiHertzResult res;
+        res.patch = hertz_patch(h, make_grid(h.a_m, h.b_m, spec));
+        res.grid_y0_m = res.reference_y_m = y0;
+        res.contact_y_min_m = y0 - h.b_m;
+        res.contact_y_max_m = y0 + h.b_m;
+        res.approach_m = h.approach_m;
+        res.equivalent_B_per_m = h.B_per_m;
+        res.epsilon = hertz_lateral_epsilon(h.A_per_m, h.B_per_m);
+        res.patches = 1;
+        res.status.kind = SolveStatus::Kind::Converged;
+        res.status.message = "constant curvature: Hertz's closed form";
+        if (options.heathcote_slip)
+          res.patch.strip_xi_offset = heathcote_xi_offset(profiles, Rx1_m, Rx2_m, y0 + res.patch.grid.y_m, y0);
+        return res;
+      }
+    }
+  }
+  return solve_semi_hertz(profiles, Rx1_m, Rx2_m, pair, normal_load_N, spec, options);
+}
+
+}  // namespace contact

@@ -1,1 +1,322 @@
-// placeholder: filled in by later work
+// The semi-Hertzian normal solver (lib/semi_hertz.h): Hertz reproduced on profiles of constant
+// curvature (PHYSICS.md §2), the strips' loads, the Heathcote offset, worn and disconnected contacts,
+// contacts reaching a body's edge, and the tangential solver consuming the patch unchanged.
+#include "lib/semi_hertz.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+#include <tuple>
+
+#include "lib/hertz.h"
+#include "lib/steady.h"
+#include "lib/tangential.h"
+#include "tests/log_capture.h"
+
+namespace contact {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kRx1 = 0.020, kRx2 = 0.025;  // the paper's rolling radii
+// Semi-Hertz against Hertz on constant curvature: 64 quadrature cells give <= 7e-4 on a, b, p0 and
+// delta (docs/semi-hertz.md); the issue asks for 1e-2. The load is exact to rounding.
+constexpr double kHertzTol = 2e-3;
+constexpr double kLoadTol = 1e-12;
+
+ElasticPair steel() { return {{210e9, 0.28}, {210e9, 0.28}}; }
+
+Profiles crowned_on_flat(double Ry) { return {crowned_profile(Ry, 0.020), flat_profile(0.030)}; }
+
+double field_load_N(const ContactPatch& p) { return p.pressure_Pa.sum() * p.grid.dx_m * p.grid.dy_m; }
+
+SemiHertzOptions no_heathcote() {
+  SemiHertzOptions o;
+  o.heathcote_slip = false;
+  return o;
+}
+
+// eps_y = B b^2/delta of Hertz's ellipse, and Johnson's A a^2 + B b^2 = delta
+TEST(SemiHertzEpsilon, MatchesHertzEllipseBothOrientations) {
+  constexpr double kTableTol = 1e-6;  // linear interpolation of the 4000-point table in log(rho)
+  EXPECT_DOUBLE_EQ(hertz_lateral_epsilon(7, 7), 0.5);
+  for (double ratio : {1.5, 10.0, 45.0, 1e3, 1e5}) {
+    for (bool swap : {false, true}) {
+      const double Rx = swap ? 0.01 * ratio : 0.01, Ry = swap ? 0.01 : 0.01 * ratio;
+      const HertzContact h = solve_hertz({{Rx, Ry}, {kFlat, kFlat}}, steel(), 1000);
+      const double eps_y = h.B_per_m * h.b_m * h.b_m / h.approach_m;
+      EXPECT_NEAR(hertz_lateral_epsilon(h.A_per_m, h.B_per_m), eps_y, kTableTol) << ratio << " " << swap;
+      EXPECT_NEAR(h.A_per_m * h.a_m * h.a_m / h.approach_m + eps_y, 1, 1e-9);
+    }
+  }
+  EXPECT_THROW(hertz_lateral_epsilon(1, 0), std::invalid_argument);
+}
+
+// a crowned roller (Ry) on a flat path under a load F: the semi-Hertzian patch is Hertz's ellipse
+class SemiHertzConstantCurvature : public testing::TestWithParam<std::tuple<double, double>> {};
+TEST_P(SemiHertzConstantCurvature, ReproducesHertz) {
+  const auto [Ry, F] = GetParam();
+  const SemiHertzResult r = solve_semi_hertz(crowned_on_flat(Ry), kRx1, kRx2, steel(), F, {40, 60});
+  const HertzContact h = solve_hertz({{kRx1, Ry}, {kRx2, kFlat}}, steel(), F);
+  ASSERT_TRUE(r.status.converged()) << r.status.message;
+  EXPECT_FALSE(r.reaches_edge);
+  EXPECT_EQ(r.patches, 1);
+  const ContactPatch& p = r.patch;
+  EXPECT_NEAR(p.a_m / h.a_m, 1, kHertzTol);
+  EXPECT_NEAR(p.b_m / h.b_m, 1, kHertzTol);
+  EXPECT_NEAR(p.p0_Pa / h.p0_Pa, 1, kHertzTol);
+  EXPECT_NEAR(r.approach_m / h.approach_m, 1, kHertzTol);
+  EXPECT_EQ(p.approach_m, r.approach_m);
+  EXPECT_NEAR(field_load_N(p) / F, 1, kLoadTol);
+  EXPECT_NEAR(r.reference_y_m, 0, 1e-12);
+  EXPECT_NEAR(r.grid_y0_m, 0, 1e-9 * h.b_m);
+  // strips: Hertz's strips on the same grid
+  const ContactPatch hp = hertz_patch(h, p.grid);
+  for (int j = 0; j < p.grid.ny; ++j) {
+    EXPECT_NEAR(p.half_length_m(j), hp.half_length_m(j), kHertzTol * h.a_m) << "strip " << j;
+    EXPECT_NEAR(p.strip_peak_Pa(j), hp.strip_peak_Pa(j), kHertzTol * h.p0_Pa) << "strip " << j;
+    // each strip's semi-ellipse carries its row's load: (pi/2) p_j a_j dy
+    EXPECT_NEAR(p.pressure_Pa.col(j).sum() * p.grid.dx_m, kPi / 2 * p.strip_peak_Pa(j) * p.half_length_m(j),
+                1e-9 * h.p0_Pa * h.a_m);
+  }
+  EXPECT_NEAR(p.grid.half_x_m / h.a_m, 1, kHertzTol);
+}
+// the prefix keeps the instances under the filter SemiHertz*
+INSTANTIATE_TEST_SUITE_P(SemiHertzCrownsAndLoads, SemiHertzConstantCurvature,
+                         testing::Combine(testing::Values(0.05, 0.2, 0.5, 2.0), testing::Values(100.0, 1500.0, 1e4)),
+                         [](const testing::TestParamInfo<std::tuple<double, double>>& param) {
+                           return "Ry" + std::to_string(static_cast<int>(std::get<0>(param.param) * 1e3)) + "mm_F" +
+                                  std::to_string(static_cast<int>(std::get<1>(param.param))) + "N";
+                         });
+
+// PHYSICS.md §2: the paper's case, a = 0.230290 mm, b = 2.610098 mm, p0 = 1191.517 MPa, delta = 9.1991 um
+TEST(SemiHertz, PaperCaseMatchesReferenceValues) {
+  const SemiHertzResult r = solve_semi_hertz(crowned_on_flat(0.5), kRx1, kRx2, steel(), 1500, {80, 80});
+  EXPECT_NEAR(r.patch.a_m / 0.230290e-3, 1, kHertzTol);
+  EXPECT_NEAR(r.patch.b_m / 2.610098e-3, 1, kHertzTol);
+  EXPECT_NEAR(r.patch.p0_Pa / 1191.517e6, 1, kHertzTol);
+  EXPECT_NEAR(r.approach_m / 9.1991e-6, 1, kHertzTol);
+  EXPECT_NEAR(r.epsilon, 0.7406, 1e-4);  // B b^2/delta of the reference values
+  EXPECT_NEAR(field_load_N(r.patch) / 1500, 1, kLoadTol);
+}
+
+// The skip: profiles of constant curvature go to Hertz with the fitted radii, and that changes no
+// result beyond kHertzTol.
+TEST(SemiHertz, ConstantCurvatureSkipChangesNoResultBeyondTolerance) {
+  const Profiles pr{read_profile_csv(std::string(ROLLWEAR_SOURCE_DIR) + "/profiles/crowned_R500_w20.csv"),
+                    read_profile_csv(std::string(ROLLWEAR_SOURCE_DIR) + "/profiles/flat_w30.csv")};
+  constexpr double kFitTol = 1e-3;  // residual of the parabola fit / depth range
+  ASSERT_TRUE(has_constant_curvature(pr.body1, kFitTol));
+  ASSERT_TRUE(has_constant_curvature(pr.body2, kFitTol));
+  const SemiHertzResult skip = solve_normal_on_profiles(pr, kRx1, kRx2, steel(), 1500, {40, 40}, {}, kFitTol);
+  EXPECT_EQ(skip.status.message, "constant curvature: Hertz's closed form");
+  const ContactPatch hertz = solve_normal_hertz({{kRx1, 1 / fit_parabola(pr.body1).curvature_per_m}, {kRx2, kFlat}},
+                                                steel(), 1500, {40, 40});
+  EXPECT_EQ(skip.patch.a_m, hertz.a_m);
+  EXPECT_EQ(skip.patch.b_m, hertz.b_m);
+  const SemiHertzResult semi = solve_semi_hertz(pr, kRx1, kRx2, steel(), 1500, {40, 40});
+  EXPECT_NEAR(semi.patch.a_m / skip.patch.a_m, 1, kHertzTol);
+  EXPECT_NEAR(semi.patch.b_m / skip.patch.b_m, 1, kHertzTol);
+  EXPECT_NEAR(semi.patch.p0_Pa / skip.patch.p0_Pa, 1, kHertzTol);
+  EXPECT_NEAR(semi.approach_m / skip.approach_m, 1, kHertzTol);
+  for (int j = 0; j < 40; ++j)
+    EXPECT_NEAR(semi.patch.strip_xi_offset(j), skip.patch.strip_xi_offset(j), kHertzTol * skip.patch.strip_xi_offset(0));
+  // the worn roller is not a constant-curvature profile: the semi-Hertzian solver runs
+  const Profiles worn{
+      read_profile_csv(std::string(ROLLWEAR_SOURCE_DIR) + "/profiles/flat_worn_R500_w20_band1p5.csv"), pr.body2};
+  EXPECT_FALSE(has_constant_curvature(worn.body1, kFitTol));
+  EXPECT_NE(solve_normal_on_profiles(worn, kRx1, kRx2, steel(), 1500, {40, 40}).status.message.find("load residual"),
+            std::string::npos);
+  // a crown off the origin: Hertz centred on the gap's vertex
+  Profiles shifted = pr;
+  shifted.body1.y_m += 2e-3;
+  const SemiHertzResult off = solve_normal_on_profiles(shifted, kRx1, kRx2, steel(), 1500, {40, 40});
+  EXPECT_NEAR(off.grid_y0_m, 2e-3, 1e-9);
+  EXPECT_EQ(off.status.message, "constant curvature: Hertz's closed form");
+}
+
+// Kik & Piotrowski as published (fixed eps, a = sqrt((eps delta - h)/A)), kept for comparison:
+// on a parabola both semi-axes follow eps delta = B b^2 = A a^2
+TEST(SemiHertz, KikPiotrowskiAsPublishedUsesOneEpsilonForBothAxes) {
+  constexpr double kArc = 1e-3;  // the crown is an arc, B y^2 to within y^2/R^2
+  SemiHertzOptions kp;
+  kp.kp_epsilon = 0.55;
+  const SemiHertzResult r = solve_semi_hertz(crowned_on_flat(0.5), kRx1, kRx2, steel(), 1500, {40, 40}, kp);
+  const double A = (1 / kRx1 + 1 / kRx2) / 2, B = 1 / (2 * 0.5);
+  EXPECT_EQ(r.epsilon, 0.55);
+  EXPECT_NEAR(B * r.patch.b_m * r.patch.b_m / r.approach_m, 0.55, kArc);
+  EXPECT_NEAR(A * r.patch.grid.half_x_m * r.patch.grid.half_x_m / r.approach_m, 0.55, 1e-12);
+  EXPECT_NEAR(field_load_N(r.patch) / 1500, 1, kLoadTol);
+  // and so misses Hertz's ellipse: b about sqrt(0.55/0.74) of Hertz's
+  EXPECT_LT(r.patch.b_m, 0.9 * solve_hertz({{kRx1, 0.5}, {kRx2, kFlat}}, steel(), 1500).b_m);
+}
+
+// The tangential solver takes the semi-Hertzian patch as it takes Hertz's.
+TEST(SemiHertz, SteadyCreepForcesMatchHertzPatch) {
+  constexpr double kForceTol = 1e-2;  // the issue's requirement
+  const ContactPatch semi = solve_semi_hertz(crowned_on_flat(0.5), kRx1, kRx2, steel(), 1500, {60, 60},
+                                             no_heathcote()).patch;
+  const ContactPatch hertz = solve_normal_hertz({{kRx1, 0.5}, {kRx2, kFlat}}, steel(), 1500, {60, 60});
+  for (const Creepages c : {Creepages{1e-3, 0, 0}, Creepages{1e-3, 5e-4, 0.2}}) {
+    const TangentialSolution s = solve_steady(semi, make_tangential_problem(semi, steel(), c, 0.3, 1.0));
+    const TangentialSolution h = solve_steady(hertz, make_tangential_problem(hertz, steel(), c, 0.3, 1.0));
+    EXPECT_NEAR(s.Fx_N / h.Fx_N, 1, kForceTol);
+    if (c.eta != 0) {
+      EXPECT_NEAR(s.Fy_N / h.Fy_N, 1, kForceTol);
+    }
+    EXPECT_NEAR(s.power_W / h.power_W, 1, kForceTol);
+  }
+}
+
+// xi(y) = xi + z1(y)/Rx1 - z2(y)/Rx2, zero at the reference point; off = empty
+TEST(SemiHertz, HeathcoteOffsetFollowsTheRollingRadii) {
+  const Profiles roller = crowned_on_flat(0.5);
+  const SemiHertzResult r = solve_semi_hertz(roller, kRx1, kRx2, steel(), 1500, {20, 40});
+  const ContactPatch& p = r.patch;
+  ASSERT_EQ(p.strip_xi_offset.size(), 40);
+  for (int j = 0; j < 40; ++j) {
+    const double y = r.grid_y0_m + p.grid.y_m(j);
+    const double z1 = 0.5 - std::sqrt(0.25 - y * y);
+    EXPECT_NEAR(p.strip_xi_offset(j), z1 / kRx1, 1e-9 / kRx1) << "strip " << j;  // 1 nm chord tolerance
+    EXPECT_GT(p.strip_xi_offset(j), 0) << "the roller is smaller, slower, at the sides";
+  }
+  EXPECT_TRUE(solve_semi_hertz(roller, kRx1, kRx2, steel(), 1500, {20, 40}, no_heathcote())
+                  .patch.strip_xi_offset.size() == 0);
+  // a crowned path under a flat roller: the path is faster at the sides, the sign flips
+  const Profiles path{flat_profile(0.030), crowned_profile(0.5, 0.020)};
+  const Eigen::ArrayXd off = heathcote_xi_offset(path, kRx1, kRx2, (Eigen::ArrayXd(3) << -2e-3, 0, 2e-3).finished(), 0);
+  EXPECT_NEAR(off(0), -(0.5 - std::sqrt(0.25 - 4e-6)) / kRx2, 1e-9 / kRx2);
+  EXPECT_EQ(off(1), 0);
+  EXPECT_NEAR(off(2), off(0), 1e-15);
+}
+
+// Heathcote slip on a crowned roller adds to xi at the sides: a larger braking force
+TEST(SemiHertz, HeathcoteSlipRaisesLongitudinalForceOfACrownedRoller) {
+  const SemiHertzResult with = solve_semi_hertz(crowned_on_flat(0.5), kRx1, kRx2, steel(), 1500, {40, 40});
+  const SemiHertzResult without =
+      solve_semi_hertz(crowned_on_flat(0.5), kRx1, kRx2, steel(), 1500, {40, 40}, no_heathcote());
+  const Creepages c{1e-4, 0, 0};
+  const double Fx_with = solve_steady(with.patch, make_tangential_problem(with.patch, steel(), c, 0.3, 1.0)).Fx_N;
+  const double Fx_without =
+      solve_steady(without.patch, make_tangential_problem(without.patch, steel(), c, 0.3, 1.0)).Fx_N;
+  EXPECT_LT(Fx_with, Fx_without);  // both negative (the roller is pulled along)
+  EXPECT_LT(Fx_without, 0);
+}
+
+// The grid is centred on the contact: a contact away from y = 0 is the same contact, shifted.
+TEST(SemiHertz, ContactAwayFromTheOriginIsTheSameContactShifted) {
+  constexpr double kShift = 3e-3;
+  Profiles shifted = crowned_on_flat(0.5);
+  shifted.body1.y_m += kShift;
+  const SemiHertzResult c = solve_semi_hertz(crowned_on_flat(0.5), kRx1, kRx2, steel(), 1500, {30, 30});
+  const SemiHertzResult s = solve_semi_hertz(shifted, kRx1, kRx2, steel(), 1500, {30, 30});
+  EXPECT_NEAR(s.patch.a_m / c.patch.a_m, 1, 1e-9);
+  EXPECT_NEAR(s.patch.b_m / c.patch.b_m, 1, 1e-9);
+  EXPECT_NEAR(s.patch.p0_Pa / c.patch.p0_Pa, 1, 1e-9);
+  EXPECT_NEAR(s.grid_y0_m, kShift, 1e-12);
+  EXPECT_NEAR(s.reference_y_m, kShift, 1e-12);
+  EXPECT_NEAR(s.contact_y_min_m, kShift - c.patch.b_m, 1e-12);
+  EXPECT_TRUE(((s.patch.half_length_m - c.patch.half_length_m).abs() < 1e-9 * c.patch.a_m).all());
+  EXPECT_TRUE(((s.patch.strip_xi_offset - c.patch.strip_xi_offset).abs() < 1e-9).all());
+}
+
+// A band worn flat spreads the contact: wider, lower peak; the strips on the band are alike.
+TEST(SemiHertz, FlatWornBandWidensContactAndLowersPeak) {
+  constexpr double kBand = 1.5e-3;
+  const Profiles worn{flat_worn_crown_profile(0.5, 0.020, kBand), flat_profile(0.030)};
+  const SemiHertzResult r = solve_semi_hertz(worn, kRx1, kRx2, steel(), 1500, {40, 80});
+  const HertzContact h = solve_hertz({{kRx1, 0.5}, {kRx2, kFlat}}, steel(), 1500);
+  ASSERT_TRUE(r.status.converged()) << r.status.message;
+  EXPECT_EQ(r.patches, 1);
+  EXPECT_GT(r.patch.b_m, h.b_m * 1.05);
+  EXPECT_LT(r.patch.p0_Pa, h.p0_Pa * 0.95);
+  EXPECT_NEAR(field_load_N(r.patch) / 1500, 1, kLoadTol);
+  EXPECT_FALSE(has_constant_curvature(worn.body1, 1e-3));
+  // rows wholly on the band: equal strips (the gap is 0 there)
+  const Grid& g = r.patch.grid;
+  int on_band = 0, j_ref = -1;
+  for (int j = 0; j < g.ny; ++j) {
+    if (std::abs(r.grid_y0_m + g.y_edge(j)) > kBand || std::abs(r.grid_y0_m + g.y_edge(j + 1)) > kBand) continue;
+    if (j_ref < 0) j_ref = j;
+    ++on_band;
+    EXPECT_NEAR(r.patch.half_length_m(j) / r.patch.half_length_m(j_ref), 1, 1e-12);
+    EXPECT_NEAR(r.patch.strip_peak_Pa(j) / r.patch.strip_peak_Pa(j_ref), 1, 1e-9);
+  }
+  EXPECT_GT(on_band, 10);
+}
+
+// Two crowns 8 mm apart on one roller: two patches, the strips between them out of contact.
+TEST(SemiHertz, DisconnectedContactCarriesTheLoadOnTwoPatches) {
+  Profile w;
+  w.y_m = Eigen::ArrayXd::LinSpaced(801, -0.01, 0.01);
+  w.z_m = w.y_m.unaryExpr([](double y) { return (std::abs(y) - 4e-3) * (std::abs(y) - 4e-3) / (2 * 0.5); });
+  w.source = "two crowns";
+  const SemiHertzResult r = solve_semi_hertz({w, flat_profile(0.030)}, kRx1, kRx2, steel(), 1500, {20, 60});
+  ASSERT_TRUE(r.status.converged()) << r.status.message;
+  EXPECT_EQ(r.patches, 2);
+  const ContactPatch& p = r.patch;
+  EXPECT_NEAR(field_load_N(p) / 1500, 1, kLoadTol);
+  EXPECT_EQ(p.half_length_m(30), 0);  // the middle of the grid is between the crowns
+  // symmetric: each patch carries half the load
+  double left = 0;
+  for (int j = 0; j < 30; ++j) left += p.pressure_Pa.col(j).sum() * p.grid.dx_m * p.grid.dy_m;
+  EXPECT_NEAR(left / 750, 1, 1e-9);
+  for (int j = 0; j < 30; ++j) EXPECT_NEAR(p.half_length_m(j), p.half_length_m(59 - j), 1e-9 * p.a_m);
+  // a single strip, centred between the crowns, cannot hold them
+  EXPECT_THROW(solve_semi_hertz({w, flat_profile(0.030)}, kRx1, kRx2, steel(), 1500, {20, 1}), std::invalid_argument);
+}
+
+// A roller narrower than its contact: reported, never cut silently
+TEST(SemiHertz, ContactReachingABodysEdgeIsReported) {
+  const rollwear_test::ExpectWarnings warnings;
+  const Profiles narrow{crowned_profile(0.5, 0.004), flat_profile(0.030)};
+  const SemiHertzResult r = solve_semi_hertz(narrow, kRx1, kRx2, steel(), 1500, {20, 20});
+  EXPECT_TRUE(r.reaches_edge);
+  EXPECT_EQ(r.status.kind, SolveStatus::Kind::Failed);
+  EXPECT_NE(r.status.message.find("reaches the edge"), std::string::npos) << r.status.message;
+  EXPECT_NE(r.status.message.find("crowned_profile(Ry 0.5 m, width 0.004 m)"), std::string::npos);
+  ASSERT_EQ(warnings.count(), 1);
+  EXPECT_NE(warnings.messages()[0].find("reaches the edge"), std::string::npos);
+  EXPECT_NEAR(r.contact_y_max_m, 0.002, 1e-15);
+  EXPECT_NEAR(field_load_N(r.patch) / 1500, 1, kLoadTol);
+}
+
+// The wear loop starts from the last approach: one evaluation when nothing changed
+TEST(SemiHertz, WarmStartFromLastApproachConvergesAtOnce) {
+  const Profiles worn{flat_worn_crown_profile(0.5, 0.020, 1.5e-3), flat_profile(0.030)};
+  const SemiHertzResult cold = solve_semi_hertz(worn, kRx1, kRx2, steel(), 1500, {20, 20});
+  SemiHertzOptions o;
+  o.initial_approach_m = cold.approach_m;
+  const SemiHertzResult warm = solve_semi_hertz(worn, kRx1, kRx2, steel(), 1500, {20, 20}, o);
+  EXPECT_GE(cold.status.iterations, 3);
+  EXPECT_EQ(warm.status.iterations, 1);
+  EXPECT_NEAR(warm.approach_m / cold.approach_m, 1, 1e-6);
+  EXPECT_NEAR(warm.patch.p0_Pa / cold.patch.p0_Pa, 1, 1e-6);
+}
+
+TEST(SemiHertz, RejectsImpossibleInput) {
+  const Profiles pr = crowned_on_flat(0.5);
+  const ElasticPair m = steel();
+  EXPECT_THROW(solve_semi_hertz(pr, kRx1, kRx2, m, 0, {10, 10}), std::invalid_argument);
+  EXPECT_THROW(solve_semi_hertz(pr, kRx1, kRx2, m, -1, {10, 10}), std::invalid_argument);
+  EXPECT_THROW(solve_semi_hertz(pr, kRx1, -kRx1, m, 1500, {10, 10}), std::invalid_argument);  // A = 0
+  EXPECT_THROW(solve_semi_hertz(pr, 0, kRx2, m, 1500, {10, 10}), std::invalid_argument);
+  EXPECT_THROW(solve_semi_hertz(pr, kRx1, kRx2, {{0, 0.28}, {210e9, 0.28}}, 1500, {10, 10}), std::invalid_argument);
+  EXPECT_THROW(solve_semi_hertz(pr, kRx1, kRx2, m, 1500, {0, 10}), std::invalid_argument);
+  Profiles apart = pr;
+  apart.body2.y_m += 0.1;  // no lateral overlap
+  EXPECT_THROW(solve_semi_hertz(apart, kRx1, kRx2, m, 1500, {10, 10}), std::invalid_argument);
+  Profiles bad = pr;
+  bad.body1.z_m(3) = std::nan("");
+  EXPECT_THROW(solve_semi_hertz(bad, kRx1, kRx2, m, 1500, {10, 10}), std::invalid_argument);
+  SemiHertzOptions o;
+  o.kp_epsilon = 1.2;
+  EXPECT_THROW(solve_semi_hertz(pr, kRx1, kRx2, m, 1500, {10, 10}, o), std::invalid_argument);
+  o = {};
+  o.quadrature_cells = 2;
+  EXPECT_THROW(solve_semi_hertz(pr, kRx1, kRx2, m, 1500, {10, 10}, o), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace contact

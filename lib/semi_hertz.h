@@ -1,0 +1,95 @@
+// Semi-Hertzian normal problem on arbitrary lateral profiles (PHYSICS.md §2): Kik & Piotrowski's
+// virtual penetration (KP, 2008) with an equivalent-ellipse correction of the penetration ratio and
+// of the strip length, so that on a profile of constant curvature it reproduces Hertz exactly (up to
+// quadrature): in the spirit of CONTACT's KPEC, written from the equations below (docs/semi-hertz.md).
+//
+// Geometry: gap h(y) = z1(y) + z2(y) - min (profile.h), piecewise linear on the union of both
+// profiles' nodes over the overlap of their extents; rolling curvature A = (1/Rx1 + 1/Rx2)/2.
+// For an approach delta:
+//   equivalent ellipse  B_e = eps delta / b_e^2,  b_e = (3/4) integral (eps delta - h)_+ dy / (eps delta)
+//                       (exact for h = B y^2: then B_e = B), and
+//   eps = eps_y(A, B_e) = B b^2/delta of Hertz's ellipse with curvatures A, B_e (fixed point),
+//   eps_x = A a^2/delta = 1 - eps (Johnson's relations: A a^2 + B b^2 = delta);
+//   virtual interpenetration  g(y) = eps delta - h(y);  contact where g > 0;
+//   strip half-length         a(y) = sqrt(eps_x g(y) / (eps A))   (Hertz: a sqrt(1 - y^2/b^2));
+//   pressure                  p(x, y) = p0 sqrt(g(y) / (eps delta)) sqrt(1 - x^2/a(y)^2);
+//   p0 from Boussinesq at the reference point (0, y0): u_z = delta - h(y0), i.e.
+//     delta - h(y0) = (1/(pi E*)) integral p(x, y) / sqrt(x^2 + (y - y0)^2) dA,
+//   y0 the centroid of g_+ over the patch holding the gap's minimum (Hertz: the centre).
+// Along a strip, integral sqrt(1 - x^2/a^2) / sqrt(x^2 + eta^2) dx = 2 (sqrt(a^2 + eta^2)/a) (K(k) - E(k)),
+// k^2 = a^2/(a^2 + eta^2); its log singularity at eta = 0 is integrated exactly. The load
+// F(delta) = p0 integral (pi/2) a(y) sqrt(g/(eps delta)) dy rises with delta; a bracketed secant in
+// log delta finds F(delta) = normal load.
+#pragma once
+
+#include <Eigen/Core>
+
+#include "lib/elastic.h"
+#include "lib/grid.h"
+#include "lib/patch.h"
+#include "lib/profile.h"
+#include "lib/solve_status.h"
+
+namespace contact {
+
+struct SemiHertzOptions {
+  bool heathcote_slip = true;     // fill patch.strip_xi_offset; false leaves it empty (no offset)
+  int quadrature_cells = 64;      // lateral cells of the Boussinesq integral (docs/semi-hertz.md)
+  double load_rtol = 1e-6;        // the root find stops at |F(delta)/F - 1| <= load_rtol
+  int max_iterations = 60;        // evaluations of F(delta)
+  double initial_approach_m = 0;  // warm start, e.g. the last solve's approach; 0 = estimate
+  double kp_epsilon = 0;          // 0: eps from the equivalent ellipse (exact on constant curvature);
+                                  // in (0, 1): Kik-Piotrowski as published, fixed eps (0.55 in their
+                                  // paper) and a = sqrt((eps delta - h)/A), for comparison
+};
+
+struct SemiHertzResult {
+  // The patch: grid over the contact's bounding box, x in +-max a(y), y over [contact_y_min_m,
+  // contact_y_max_m] (so centred on the contact, not on the profiles' y = 0: see grid_y0_m).
+  // a_j = a(y_j) at the strip centres (0 for rows between disconnected patches); p_j such that
+  // (pi/2) p_j a_j dy is the load of row j exactly (integrated over the row; a row whose centre
+  // misses the contact hands its load to the nearest row in contact), total = normal load.
+  // a_m, b_m: the equivalent ellipse for Kalker's coefficients, b = half the summed width of the
+  // patches, a = contact area / (pi b) (both exact for Hertz). p0_Pa: the continuous field's peak,
+  // p0 above (>= max p_j, which are row means). approach_m = delta.
+  ContactPatch patch;
+  double grid_y0_m = 0;      // profiles' y of the grid's y = 0: strip j lies at grid_y0_m + grid.y_m(j)
+  double reference_y_m = 0;  // profiles' y of the reference point y0 (Boussinesq point; where the
+                             // Heathcote offset vanishes, so xi is the creepage there)
+  double contact_y_min_m = 0, contact_y_max_m = 0;  // lateral extent of the contact (profiles' y)
+  double approach_m = 0;      // delta
+  double epsilon = 0;         // lateral virtual penetration ratio: contact where h < epsilon delta
+  double equivalent_B_per_m = 0;  // B_e, lateral curvature of the equivalent ellipse
+  bool reaches_edge = false;  // the contact reaches an end of the profiles' overlap (a body's edge)
+  int patches = 0;            // separate contact patches along y (disconnected contact)
+  SolveStatus status;         // Failed when reaches_edge (the patch then holds the contact cut at the edge)
+};
+
+// Hertz's ellipse with relative curvatures A (along x) and B (along y): eps_y = B b^2 / delta
+// (and A a^2 / delta = 1 - eps_y); 1/2 for a circle. Tabulated once, interpolated in log(A/B).
+double hertz_lateral_epsilon(double A_per_m, double B_per_m);
+
+// Heathcote slip: xi(y) - xi at profiles' positions y from the rolling radii Rk - zk(y),
+//   offset(y) = (z1(y) - z1(y0))/Rx1 - (z2(y) - z2(y0))/Rx2   (omega_k = V/Rx_k; O(xi z/R) dropped),
+// zero at the reference point y0. Positive where the roller's radius is smaller than at y0 (it
+// turns slower there: v2 - v1 grows). Throws std::out_of_range outside a profile.
+Eigen::ArrayXd heathcote_xi_offset(const Profiles& profiles, double Rx1_m, double Rx2_m, const Eigen::ArrayXd& y_m,
+                                   double reference_y_m);
+
+// The normal problem for normal_load_N on the profiles, the grid over the contact's bounding box.
+// Throws std::invalid_argument for A <= 0, a zero radius, bad materials, a non-positive load, invalid
+// or non-overlapping profiles, bad options, or a grid with no strip centre in the contact. A contact reaching the profiles' edge, or a root find that does not
+// converge, is a status plus a spdlog::warn.
+SemiHertzResult solve_semi_hertz(const Profiles& profiles, double Rx1_m, double Rx2_m, const ElasticPair& pair,
+                                 double normal_load_N, const GridSpec& spec, const SemiHertzOptions& options = {});
+
+// The normal problem on profiles, skipping what the case does not need: when both profiles have
+// constant curvature (has_constant_curvature with curvature_rtol) and the Hertz ellipse fits inside
+// the overlap of their extents, Hertz's solution with the fitted radii, centred on the gap's vertex
+// (a spdlog::info says so; the result's diagnostics filled alike, status "constant curvature");
+// otherwise solve_semi_hertz. Both agree within 2e-3 on constant curvature (docs/semi-hertz.md).
+SemiHertzResult solve_normal_on_profiles(const Profiles& profiles, double Rx1_m, double Rx2_m, const ElasticPair& pair,
+                                         double normal_load_N, const GridSpec& spec,
+                                         const SemiHertzOptions& options = {}, double curvature_rtol = 1e-3);
+
+}  // namespace contact
