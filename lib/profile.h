@@ -79,6 +79,8 @@ ParabolaFit fit_parabola(const Profile& profile);
 // rel_tol: max residual <= rel_tol * depth range (a flat profile has constant curvature 0). The
 // caller may then use Hertz with Ry = 1/curvature instead of the semi-Hertzian solver.
 bool has_constant_curvature(const Profile& profile, double rel_tol);
+// the same test on a fit already made
+bool has_constant_curvature(const ParabolaFit& fit, double rel_tol);
 
 // A 64-bit hash (FNV-1a) of the node arrays' bytes: equal profiles give equal hashes, so a caller
 // that stored the hash of the profiles of its last solve can reuse that solution.

@@ -646,8 +646,8 @@ SemiHertzResult solve_normal_on_profiles(const Profiles& profiles, double Rx1_m,
                                          double normal_load_N, const GridSpec& spec, const SemiHertzOptions& options,
                                          double curvature_rtol) {
   // constant curvature on both bodies: Hertz with the fitted radii, centred on the gap's vertex
-  if (has_constant_curvature(profiles.body1, curvature_rtol) && has_constant_curvature(profiles.body2, curvature_rtol)) {
-    const ParabolaFit f1 = fit_parabola(profiles.body1), f2 = fit_parabola(profiles.body2);
+  const ParabolaFit f1 = fit_parabola(profiles.body1), f2 = fit_parabola(profiles.body2);
+  if (has_constant_curvature(f1, curvature_rtol) && has_constant_curvature(f2, curvature_rtol)) {
     const double c = f1.curvature_per_m + f2.curvature_per_m;  // gap's curvature 2B
     const double lo = std::max(profiles.body1.y_m(0), profiles.body2.y_m(0));
     const double hi = std::min(profiles.body1.y_m(profiles.body1.y_m.size() - 1),
