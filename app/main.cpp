@@ -67,9 +67,16 @@ struct ContactOptions {
 
 CLI::App* add_contact_command(CLI::App& app, ContactOptions& opt, CommonOptions& common) {
   CLI::App* sub = app.add_subcommand(
-      "contact", "Steady rolling contact of one case: Hertz normal problem, then the tangential problem "
+      "contact", "Steady rolling contact of one case: the normal problem (Hertz, or on the case's profiles the "
+                 "semi-Hertzian or half-space solver, as solver.normal says), then the tangential problem "
                  "(Kalker's simplified theory). Prints a summary and writes summary.csv, strips.csv and "
                  "fields.csv.");
+  sub->footer(
+      "The summary names the normal solver that ran (and why, for solver.normal: auto) and the number of\n"
+      "contact patches. strips.csv's y_m is in the profiles' lateral coordinate.\n"
+      "A contact that reaches a body's edge (the end of its profile) is a warning line in the summary; the\n"
+      "outputs are written and the exit status stays 0.\n"
+      "Exit status: 0 success, 2 bad input (case file, options), 1 any other failure.");
   sub->add_option("case", opt.case_path, "Case file (YAML), e.g. cases/paper.yaml")->required();
   sub->add_option("-o,--output", opt.output_directory,
                   "Output directory (default: the case's output.directory, else out/<case name>)");
@@ -85,10 +92,15 @@ std::filesystem::path output_directory(const std::string& option, const ContactC
   return std::filesystem::path("out") / c.name;
 }
 
-void print_contact_summary(const ContactCase& c, const ContactPatch& patch, const TangentialProblem& problem,
+void print_contact_summary(const ContactCase& c, const NormalSolution& normal, const TangentialProblem& problem,
                            const TangentialSolution& s, TangentialScheme scheme) {
+  const ContactPatch& patch = normal.patch;
   fmt::print("case {} ({}), {} x {} grid, {} scheme\n", c.name, c.path, patch.grid.nx, patch.grid.ny,
              to_string(scheme));
+  fmt::print("  normal solver      {} ({})\n", normal.solver, normal.reason);
+  fmt::print("  contact patches    {}\n", normal.patches);
+  if (normal.reaches_edge)
+    fmt::print("  warning: the contact reaches a body's edge (the end of a profile); it is cut there\n");
   fmt::print("  normal load     F  = {:.6g} N\n", patch.normal_load_N);
   fmt::print("  semi-axes       a  = {:.6f} mm, b = {:.6f} mm\n", patch.a_m * 1e3, patch.b_m * 1e3);
   fmt::print("  peak pressure   p0 = {:.3f} MPa\n", patch.p0_Pa * 1e-6);
@@ -101,13 +113,21 @@ void print_contact_summary(const ContactCase& c, const ContactPatch& patch, cons
   fmt::print("  stick fraction     {:.4f}\n", s.stick_fraction);
 }
 
+// the patch with its strips at the profiles' lateral positions (for strips.csv)
+ContactPatch in_profile_coordinates(const NormalSolution& normal) {
+  ContactPatch p = normal.patch;
+  p.grid.y_m += normal.grid_y0_m;
+  return p;
+}
+
 int run_contact(const ContactOptions& opt) {
   const ContactCase c = read_contact_case(opt.case_path);
   validate_steady(c);  // constants only, no inertia
   const TangentialScheme scheme = parse_tangential_scheme(c.solver.tangential);
 
   // normal problem, then the steady tangential problem on its patch
-  const ContactPatch patch = solve_normal_hertz(bodies_of(c), materials_of(c), normal_load_of(c), grid_of(c));
+  const NormalSolution normal = solve_normal_of(c);
+  const ContactPatch& patch = normal.patch;
   const TangentialProblem problem =
       make_tangential_problem(patch, materials_of(c), creepages_of(c), c.friction.mu, speed_of(c));
   const TangentialSolution solution = solve_steady(patch, problem, scheme);
@@ -116,11 +136,11 @@ int run_contact(const ContactOptions& opt) {
   const std::filesystem::path dir = output_directory(opt.output_directory, c);
   std::vector<OutputFile> files = {
       {dir / "summary.csv", summary_csv(c.name, patch, problem, solution, scheme)},
-      {dir / "strips.csv", strips_csv(patch, solution)},
+      {dir / "strips.csv", strips_csv(in_profile_coordinates(normal), solution)},
   };
   if (c.output.fields && !opt.no_fields) files.push_back({dir / "fields.csv", fields_csv(patch, solution)});
 
-  print_contact_summary(c, patch, problem, solution, scheme);
+  print_contact_summary(c, normal, problem, solution, scheme);
   write_files_atomic(files);
   spdlog::info("wrote {} files to {}", files.size(), dir.string());
   return 0;

@@ -11,6 +11,8 @@
 
 #include <spdlog/spdlog.h>
 
+#include "lib/halfspace.h"
+#include "lib/semi_hertz.h"
 #include "lib/yaml_reader.h"
 
 namespace contact {
@@ -29,11 +31,85 @@ std::string case_name(const std::string& v) {
   return {};
 }
 
-void read_body(YamlMap& m, BodySection& b) {
+// with profiles, Ry_m is read (to be refused by validate, naming both keys) but not required
+void read_body(YamlMap& m, BodySection& b, bool with_profiles) {
   m.required("Rx_m", b.Rx_m, radius);
-  m.required("Ry_m", b.Ry_m, radius);
+  if (with_profiles) m.optional("Ry_m", b.Ry_m, radius);
+  else m.required("Ry_m", b.Ry_m, radius);
   m.required("E_Pa", b.E_Pa, positive_finite);
   m.required("nu", b.nu, in_half_open(0, 0.5));
+}
+
+// ---- lateral profiles ----
+
+constexpr const char* kProfileForms =
+    "{ file: PATH }, { crowned: { Ry_m, width_m } }, { flat: { width_m } }, { arc: { R_m, width_m } } or "
+    "{ flat_worn_crown: { Ry_m, width_m, band_half_width_m } }";
+
+// a profile in any of its forms; a CSV path is relative to the case file's directory
+Profile read_profile(const YamlValue& v, const std::filesystem::path& case_dir) {
+  if (!v.node().IsMap()) v.fail(std::string("expected ") + kProfileForms + ", got " + yaml_describe(v.node()));
+  Profile p;
+  int forms = 0;
+  // a generator's refusal (std::invalid_argument) at the form's node
+  const auto generated = [&](const YamlValue& g, const auto& generate) {
+    try {
+      p = generate();
+    } catch (const std::invalid_argument& e) {
+      g.fail(e.what());
+    }
+  };
+  v.mapping([&](YamlMap& m) {
+    forms += m.optional_value("file", [&](const YamlValue& f) {
+      const std::filesystem::path file = f.as<std::string>();
+      const std::filesystem::path resolved = file.is_absolute() ? file : case_dir / file;
+      try {
+        p = read_profile_csv(resolved.string());
+      } catch (const std::invalid_argument& e) {  // names the CSV's file:line
+        f.fail(e.what());
+      }
+    });
+    forms += m.optional_value("crowned", [&](const YamlValue& g) {
+      double Ry_m = 0, width_m = 0;
+      g.mapping([&](YamlMap& s) {
+        s.required("Ry_m", Ry_m, positive_finite);
+        s.required("width_m", width_m, positive_finite);
+      });
+      generated(g, [&] { return crowned_profile(Ry_m, width_m); });
+    });
+    forms += m.optional_value("flat", [&](const YamlValue& g) {
+      double width_m = 0;
+      g.mapping([&](YamlMap& s) { s.required("width_m", width_m, positive_finite); });
+      generated(g, [&] { return flat_profile(width_m); });
+    });
+    forms += m.optional_value("arc", [&](const YamlValue& g) {
+      double R_m = 0, width_m = 0;
+      g.mapping([&](YamlMap& s) {
+        s.required("R_m", R_m, [](double r) { return r != 0 && std::isfinite(r) ? "" : "must be nonzero and finite"; });
+        s.required("width_m", width_m, positive_finite);
+      });
+      generated(g, [&] { return arc_profile(R_m, width_m); });
+    });
+    forms += m.optional_value("flat_worn_crown", [&](const YamlValue& g) {
+      double Ry_m = 0, width_m = 0, band_m = 0;
+      g.mapping([&](YamlMap& s) {
+        s.required("Ry_m", Ry_m, positive_finite);
+        s.required("width_m", width_m, positive_finite);
+        s.required("band_half_width_m", band_m, nonnegative_finite);
+      });
+      generated(g, [&] { return flat_worn_crown_profile(Ry_m, width_m, band_m); });
+    });
+  });
+  if (forms != 1)
+    v.fail(forms == 0 ? std::string("expected one of ") + kProfileForms + ", got an empty mapping"
+                      : "give one of file, crowned, flat, arc and flat_worn_crown, not several");
+  return p;
+}
+
+void read_profiles(YamlMap& m, ProfilesSection& s, const std::filesystem::path& case_dir) {
+  m.required_value("body1", [&](const YamlValue& v) { s.profiles.body1 = read_profile(v, case_dir); });
+  m.required_value("body2", [&](const YamlValue& v) { s.profiles.body2 = read_profile(v, case_dir); });
+  m.optional("heathcote_slip", s.heathcote_slip);
 }
 
 // ---- time histories ----
@@ -152,6 +228,13 @@ void read_inertia(YamlMap& m, InertiaSection& in) {
 }
 
 void read_solver(YamlMap& m, SolverSection& s) {
+  m.optional("normal", s.normal);
+  const std::vector<std::string>& names = normal_solver_names();
+  if (std::find(names.begin(), names.end(), s.normal) == names.end()) {
+    std::string valid;
+    for (const std::string& n : names) valid += (valid.empty() ? "" : ", ") + n;
+    m.fail("normal", "unknown normal solver '" + s.normal + "' (valid: " + valid + ")");
+  }
   m.optional("tangential", s.tangential);
   try {
     parse_tangential_scheme(s.tangential);
@@ -227,9 +310,13 @@ ContactCase read_contact_case(const std::string& path) {
   c.name = std::filesystem::path(path).stem().string();
   read_yaml_file(path, &c.locations, [&](YamlMap& m) {
     m.optional("name", c.name, case_name);
+    // the profiles first: with them the bodies take no Ry_m
+    m.optional_section("profiles", [&](YamlMap& s) {
+      read_profiles(s, c.profiles.emplace(), std::filesystem::path(path).parent_path());
+    });
     m.section("bodies", [&](YamlMap& s) {
-      s.section("body1", [&](YamlMap& b) { read_body(b, c.bodies.body1); });
-      s.section("body2", [&](YamlMap& b) { read_body(b, c.bodies.body2); });
+      s.section("body1", [&](YamlMap& b) { read_body(b, c.bodies.body1, c.profiles.has_value()); });
+      s.section("body2", [&](YamlMap& b) { read_body(b, c.bodies.body2, c.profiles.has_value()); });
     });
     m.section("load", [&](YamlMap& s) {
       s.required_value("normal_load_N", [&](const YamlValue& v) { c.load.normal_load_N = read_load(v); });
@@ -250,9 +337,28 @@ ContactCase read_contact_case(const std::string& path) {
 }
 
 void validate(const ContactCase& c) {
-  // a point contact: both relative curvatures positive
+  // a point contact: both relative curvatures positive (laterally: from the profiles when given)
   check_curvature(c, "Rx_m", "A", c.bodies.body1.Rx_m, c.bodies.body2.Rx_m);
-  check_curvature(c, "Ry_m", "B", c.bodies.body1.Ry_m, c.bodies.body2.Ry_m);
+  if (!c.profiles) {
+    check_curvature(c, "Ry_m", "B", c.bodies.body1.Ry_m, c.bodies.body2.Ry_m);
+    if (c.solver.normal == "semi-hertz" || c.solver.normal == "halfspace")
+      throw CaseError(where(c, "solver.normal") + "solver.normal, profiles: the " + c.solver.normal +
+                      " solver works on lateral profiles; give a profiles: section (or normal: auto)");
+  } else {
+    // the profiles are the lateral geometry: no Ry_m besides
+    for (const char* key : {"bodies.body1.Ry_m", "bodies.body2.Ry_m"})
+      if (given(c, key))
+        throw CaseError(where(c, key) + key + ", profiles: the lateral geometry comes from the profiles; "
+                        "remove Ry_m (Rx_m stays: the rolling radius)");
+    // Hertz needs constant curvature
+    if (c.solver.normal == "hertz")
+      for (const auto& [key, p] : {std::pair<const char*, const Profile*>{"profiles.body1", &c.profiles->profiles.body1},
+                                   {"profiles.body2", &c.profiles->profiles.body2}})
+        if (!has_constant_curvature(*p, kCaseCurvatureRtol))
+          throw CaseError(where(c, "solver.normal") + "solver.normal, " + key + ": Hertz needs profiles of " +
+                          "constant curvature (within " + number(kCaseCurvatureRtol) + "), " + key +
+                          " is not; use normal: auto, semi-hertz or halfspace");
+  }
 
   // the run: snapshots within it, a time step for the fixed-step schemes
   if (c.transient) {
@@ -300,6 +406,17 @@ Bodies bodies_of(const ContactCase& c) {
   Bodies b;
   b.body1 = {c.bodies.body1.Rx_m, c.bodies.body1.Ry_m};
   b.body2 = {c.bodies.body2.Rx_m, c.bodies.body2.Ry_m};
+  if (c.profiles) {  // Ry from the profiles, which must then have constant curvature
+    const auto lateral_radius = [&](const Profile& p, const char* key) {
+      if (!has_constant_curvature(p, kCaseCurvatureRtol))
+        throw CaseError(where(c, key) + key + ": the radii of this command need profiles of constant curvature "
+                        "(within " + number(kCaseCurvatureRtol) + ")");
+      const double curvature_per_m = fit_parabola(p).curvature_per_m;
+      return curvature_per_m == 0 ? kFlat : 1 / curvature_per_m;
+    };
+    b.body1.Ry_m = lateral_radius(c.profiles->profiles.body1, "profiles.body1");
+    b.body2.Ry_m = lateral_radius(c.profiles->profiles.body2, "profiles.body2");
+  }
   return b;
 }
 
@@ -315,6 +432,93 @@ GridSpec grid_of(const ContactCase& c) {
   g.nx = c.solver.nx;
   g.ny = c.solver.ny;
   return g;
+}
+
+NormalSolution solve_normal_of(const ContactCase& c) {
+  NormalSolution n;
+  const ElasticPair pair = materials_of(c);
+  const double F = normal_load_of(c);
+  const GridSpec spec = grid_of(c);
+
+  // no profiles: Hertz from the four radii
+  if (!c.profiles) {
+    n.patch = solve_normal_hertz(bodies_of(c), pair, F, spec);
+    n.solver = "hertz";
+    n.reason = "solver.normal " + c.solver.normal + ", no profiles: Hertz from the radii";
+    return n;
+  }
+
+  const Profiles& profiles = c.profiles->profiles;
+  const double Rx1 = c.bodies.body1.Rx_m, Rx2 = c.bodies.body2.Rx_m;
+  SemiHertzOptions options;
+  options.heathcote_slip = c.profiles->heathcote_slip;
+  const auto take = [&](const SemiHertzResult& r) {
+    n.patch = r.patch;
+    n.patches = r.patches;
+    n.reaches_edge = r.reaches_edge;
+    n.grid_y0_m = r.grid_y0_m;
+  };
+  const auto by_hertz = [](const SemiHertzResult& r) {
+    return r.status.message.rfind("constant curvature", 0) == 0;
+  };
+
+  if (c.solver.normal == "auto" || c.solver.normal == "hertz") {
+    // Hertz on constant curvature (it says so in the log), else the semi-Hertzian solver
+    const SemiHertzResult r = solve_normal_on_profiles(profiles, Rx1, Rx2, pair, F, spec, options, kCaseCurvatureRtol);
+    if (c.solver.normal == "hertz" && !by_hertz(r))
+      throw CaseError(where(c, "solver.normal") + "solver.normal, profiles: Hertz's ellipse does not fit inside "
+                      "the profiles' overlap; use normal: auto, semi-hertz or halfspace");
+    take(r);
+    n.solver = by_hertz(r) ? "hertz" : "semi-hertz";
+    n.reason = c.solver.normal == "hertz" ? "solver.normal hertz, profiles of constant curvature"
+               : by_hertz(r)             ? "solver.normal auto: both profiles have constant curvature"
+                                         : "solver.normal auto: the profiles are not of constant curvature";
+    return n;
+  }
+
+  // the semi-Hertzian solution: the answer, or the halfspace solver's bounding box
+  const SemiHertzResult sh = solve_semi_hertz(profiles, Rx1, Rx2, pair, F, spec, options);
+  if (c.solver.normal == "semi-hertz") {
+    take(sh);
+    n.solver = "semi-hertz";
+    n.reason = "solver.normal semi-hertz";
+    return n;
+  }
+
+  // halfspace: the semi-Hertzian contact's bounding box enlarged by 25 %, within the profiles' overlap
+  constexpr double kBoxMargin = 1.25;
+  const double lo = std::max(profiles.body1.y_m(0), profiles.body2.y_m(0));
+  const double hi = std::min(profiles.body1.y_m(profiles.body1.y_m.size() - 1),
+                             profiles.body2.y_m(profiles.body2.y_m.size() - 1));
+  const double centre = (sh.contact_y_min_m + sh.contact_y_max_m) / 2;
+  const double half_y = std::min({kBoxMargin * (sh.contact_y_max_m - sh.contact_y_min_m) / 2, centre - lo, hi - centre});
+  const Grid grid = make_grid(kBoxMargin * sh.patch.grid.half_x_m, half_y, spec);
+
+  // gap: the profiles across, A x^2 along, zero at its minimum
+  const double A = (1 / Rx1 + 1 / Rx2) / 2;
+  Eigen::ArrayXXd gap(grid.nx, grid.ny);
+  for (int j = 0; j < grid.ny; ++j) {
+    const double y = centre + grid.y_m(j);
+    const double h = profile_z(profiles.body1, y) + profile_z(profiles.body2, y);
+    for (int i = 0; i < grid.nx; ++i) gap(i, j) = h + A * grid.x_m(i) * grid.x_m(i);
+  }
+  gap -= gap.minCoeff();
+
+  const HalfspaceSolution s = solve_halfspace(grid, gap, effective_modulus_Pa(pair), F);
+  if (s.status.kind != SolveStatus::Kind::Converged) spdlog::warn("normal problem (halfspace): {}", s.status.message);
+  n.patch = halfspace_patch(s, grid, F);
+  n.grid_y0_m = centre;
+  if (options.heathcote_slip)
+    n.patch.strip_xi_offset = heathcote_xi_offset(profiles, Rx1, Rx2, centre + grid.y_m, sh.reference_y_m);
+  // patches: runs of strips in contact; the edge: the semi-Hertzian contact's, or a loaded end strip of a cut box
+  n.patches = 0;
+  for (int j = 0; j < grid.ny; ++j)
+    if (n.patch.half_length_m(j) > 0 && (j == 0 || !(n.patch.half_length_m(j - 1) > 0))) ++n.patches;
+  const bool cut = half_y < kBoxMargin * (sh.contact_y_max_m - sh.contact_y_min_m) / 2;
+  n.reaches_edge = sh.reaches_edge || (cut && (n.patch.half_length_m(0) > 0 || n.patch.half_length_m(grid.ny - 1) > 0));
+  n.solver = "halfspace";
+  n.reason = "solver.normal halfspace, on the semi-Hertzian contact's box enlarged by 25 %";
+  return n;
 }
 
 double normal_load_of(const ContactCase& c) { return steady_value(c, c.load.normal_load_N, "load.normal_load_N"); }

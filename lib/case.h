@@ -26,6 +26,8 @@
 #include "lib/grid.h"
 #include "lib/hertz.h"
 #include "lib/history.h"
+#include "lib/patch.h"
+#include "lib/profile.h"
 #include "lib/satran.h"
 #include "lib/tangential.h"
 
@@ -36,7 +38,7 @@ struct CaseError : std::runtime_error {
 };
 
 struct BodySection {                  // bodies.body1 / bodies.body2
-  double Rx_m = kFlat, Ry_m = kFlat;  // required; .inf for flat, negative for concave
+  double Rx_m = kFlat, Ry_m = kFlat;  // required (Ry_m: only without profiles:); .inf for flat, negative for concave
   double E_Pa = 0;                    // required
   double nu = 0;                      // required, [0, 0.5)
 };
@@ -56,7 +58,19 @@ struct KinematicsSection {  // histories; the steady command takes constants onl
 struct FrictionSection {
   double mu = 0;  // required, >= 0
 };
+// Lateral profiles of the bodies (lib/profile.h), each one of
+//   body1: { file: profiles/x.csv }                       # relative to the case file's directory, or absolute
+//   body1: { crowned: { Ry_m: 0.5, width_m: 0.02 } }
+//   body1: { flat: { width_m: 0.03 } }
+//   body1: { arc: { R_m: -0.6, width_m: 0.02 } }
+//   body1: { flat_worn_crown: { Ry_m: 0.5, width_m: 0.02, band_half_width_m: 0.0015 } }
+// With profiles the bodies' Ry_m are not given (the profiles are the lateral geometry); Rx_m stay.
+struct ProfilesSection {
+  Profiles profiles;          // read or generated when the case is read
+  bool heathcote_slip = true;  // the strips' creepage offset from the rolling radii across the profiles
+};
 struct SolverSection {
+  std::string normal = "auto";            // auto | hertz | semi-hertz | halfspace
   std::string tangential = "consistent";  // consistent | classic
   int nx = 80, ny = 80;
 };
@@ -87,6 +101,7 @@ struct ContactCase {
   std::string path;  // the file it was read from
   std::string name;  // 'name:' or the file's stem
   BodiesSection bodies;
+  std::optional<ProfilesSection> profiles;  // present when the file has a profiles: section
   LoadSection load;
   KinematicsSection kinematics;
   FrictionSection friction;
@@ -111,6 +126,26 @@ void validate_transient(const ContactCase& c);
 Bodies bodies_of(const ContactCase& c);
 ElasticPair materials_of(const ContactCase& c);
 GridSpec grid_of(const ContactCase& c);
+// the normal solvers solver.normal names, in the order listed in messages
+inline const std::vector<std::string>& normal_solver_names() {
+  static const std::vector<std::string> kNames = {"auto", "hertz", "semi-hertz", "halfspace"};
+  return kNames;
+}
+// profiles of constant curvature within this (relative) tolerance are treated by Hertz (semi_hertz.h)
+constexpr double kCaseCurvatureRtol = 1e-3;
+
+// the normal problem of a case as solver.normal asks
+struct NormalSolution {
+  ContactPatch patch;
+  std::string solver;         // the solver that ran: hertz | semi-hertz | halfspace
+  std::string reason;         // why that one ("solver.normal: auto, no profiles: Hertz from the radii")
+  int patches = 1;            // separate contact patches along y
+  bool reaches_edge = false;  // the contact reaches a body's edge (the end of the profiles' overlap)
+  double grid_y0_m = 0;       // profiles' y of the grid's y = 0 (strip j at grid_y0_m + grid.y_m(j))
+};
+// throws CaseError for a case the solver named cannot treat; warns (spdlog) when the contact reaches an edge
+NormalSolution solve_normal_of(const ContactCase& c);
+
 // the steady values: throw CaseError naming the key if its history is not a constant
 double normal_load_of(const ContactCase& c);
 double speed_of(const ContactCase& c);

@@ -15,6 +15,7 @@
 #include "lib/grid.h"
 #include "lib/hertz.h"
 #include "lib/history.h"
+#include "lib/profile.h"
 #include "lib/satran.h"
 
 namespace contact {
@@ -155,7 +156,7 @@ TEST_F(CaseReader, UnknownKeyReportsKeyAndLine) {
   // a section that does not exist (yet)
   EXPECT_EQ(error_of(kMinimalCase + "wear: { law: archard }\n"),  // 6
             path() + ":6:1: wear: unknown key (valid: bodies, friction, inertia, kinematics, load, name, output, "
-                      "solver, transient)");
+                      "profiles, solver, transient)");
 }
 
 TEST_F(CaseReader, MissingKeyReportsKey) {
@@ -582,6 +583,102 @@ TEST_F(CaseReader, ShippedTransientCasesRead) {
   EXPECT_EQ(r.settings.dt_s, 2.0e-6);
   EXPECT_EQ(r.settings.t_end_s, 1.0e-3);
   EXPECT_EQ(r.settings.grid.nx, 40);
+}
+
+// ---- profiles ---------------------------------------------------------------------------------------
+
+// kMinimalCase with profiles: the bodies without Ry_m; body1's profile as given
+std::string profiles_case(const std::string& body1, const std::string& solver = "") {
+  return "profiles:\n"                                                    // 1
+         "  body1: " + body1 + "\n"                                      // 2
+         "  body2: { flat: { width_m: 0.030 } }\n"                        // 3
+         "bodies:\n"                                                      // 4
+         "  body1: { Rx_m: 0.020, E_Pa: 210.0e9, nu: 0.28 }\n"            // 5
+         "  body2: { Rx_m: 0.025, E_Pa: 210.0e9, nu: 0.28 }\n"            // 6
+         "load: { normal_load_N: 1500 }\n"                                // 7
+         "friction: { mu: 0.3 }\n" +                                      // 8
+         (solver.empty() ? "" : "solver: { normal: " + solver + " }\n");  // 9
+}
+
+TEST_F(CaseReader, EachProfileFormReads) {
+  const std::pair<std::string, Profile> forms[] = {
+      {"{ crowned: { Ry_m: 0.5, width_m: 0.020 } }", crowned_profile(0.5, 0.020)},
+      {"{ flat: { width_m: 0.020 } }", flat_profile(0.020)},
+      {"{ arc: { R_m: 0.4, width_m: 0.020 } }", arc_profile(0.4, 0.020)},
+      {"{ flat_worn_crown: { Ry_m: 0.5, width_m: 0.020, band_half_width_m: 0.0015 } }",
+       flat_worn_crown_profile(0.5, 0.020, 0.0015)},
+      {"{ file: " + std::string(ROLLWEAR_SOURCE_DIR) + "/profiles/crowned_R500_w20.csv }",
+       read_profile_csv(std::string(ROLLWEAR_SOURCE_DIR) + "/profiles/crowned_R500_w20.csv")},
+  };
+  for (const auto& [text, expected] : forms) {
+    const ContactCase c = read_contact_case(write(profiles_case(text)));
+    ASSERT_TRUE(c.profiles) << text;
+    EXPECT_TRUE(c.profiles->heathcote_slip);
+    EXPECT_EQ(c.solver.normal, "auto");
+    EXPECT_TRUE((c.profiles->profiles.body1.y_m == expected.y_m).all()) << text;
+    EXPECT_TRUE((c.profiles->profiles.body1.z_m == expected.z_m).all()) << text;
+    EXPECT_EQ(c.profiles->profiles.body2.y_m.size(), flat_profile(0.030).y_m.size());
+  }
+}
+
+TEST_F(CaseReader, ProfileFileIsRelativeToTheCaseFile) {
+  fs::create_directories(dir_ / "profiles");
+  const Profile p = flat_worn_crown_profile(0.5, 0.020, 0.0015);
+  write(profile_csv(p), "profiles/worn.csv");
+  const ContactCase c = read_contact_case(write(profiles_case("{ file: profiles/worn.csv }")));
+  ASSERT_TRUE(c.profiles);
+  EXPECT_EQ(c.profiles->profiles.body1.y_m.size(), p.y_m.size());
+  EXPECT_TRUE((c.profiles->profiles.body1.z_m == p.z_m).all());
+}
+
+TEST_F(CaseReader, BadProfileCsvReportsCaseKeyAndCsvLine) {
+  const std::string csv = write("y_m,z_m\n-0.01,0\n-0.005,0\n0,oops\n0.005,0\n0.01,0\n", "bad.csv");
+  const std::string e = error_of(profiles_case("{ file: bad.csv }"));
+  EXPECT_NE(e.find(path() + ":2:18: profiles.body1.file: "), std::string::npos) << e;
+  EXPECT_NE(e.find(csv + ":4: z_m is not a number, got 'oops'"), std::string::npos) << e;
+}
+
+TEST_F(CaseReader, RyWithProfilesIsAnErrorNamingBothKeys) {
+  std::string text = profiles_case("{ flat: { width_m: 0.020 } }");
+  text.replace(text.find("Rx_m: 0.020,"), 12, "Rx_m: 0.020, Ry_m: 0.5,");
+  const std::string e = error_of(text);
+  EXPECT_NE(e.find(path() + ":5:"), std::string::npos) << e;
+  EXPECT_NE(e.find("bodies.body1.Ry_m, profiles:"), std::string::npos) << e;
+}
+
+TEST_F(CaseReader, ProfileWithTwoFormsOrNoneIsAnError) {
+  EXPECT_NE(error_of(profiles_case("{ flat: { width_m: 0.02 }, arc: { R_m: 1, width_m: 0.02 } }"))
+                .find(":2:10: profiles.body1: give one of"),
+            std::string::npos);
+  EXPECT_NE(error_of(profiles_case("{ crowned: { Ry_m: 0.005, width_m: 0.020 } }")).find(":2:21: profiles.body1.crowned"),
+            std::string::npos);
+}
+
+TEST_F(CaseReader, UnknownNormalSolverListsValidOnes) {
+  const std::string e = error_of(profiles_case("{ flat: { width_m: 0.020 } }", "exact"));
+  EXPECT_NE(e.find(path() + ":9:19: solver.normal: unknown normal solver 'exact' (valid: auto, hertz, "
+                   "semi-hertz, halfspace)"),
+            std::string::npos)
+      << e;
+}
+
+TEST_F(CaseReader, HertzNeedsProfilesOfConstantCurvature) {
+  const std::string e = error_of(
+      profiles_case("{ flat_worn_crown: { Ry_m: 0.5, width_m: 0.020, band_half_width_m: 0.0015 } }", "hertz"));
+  EXPECT_NE(e.find(path() + ":9:19: solver.normal, profiles.body1: Hertz needs"), std::string::npos) << e;
+  EXPECT_NO_THROW(read_contact_case(write(profiles_case("{ crowned: { Ry_m: 0.5, width_m: 0.020 } }", "hertz"))));
+  EXPECT_NE(error_of(kMinimalCase + "solver: { normal: semi-hertz }\n").find("solver.normal, profiles:"),
+            std::string::npos);
+}
+
+TEST_F(CaseReader, ShippedWornCrownCaseReads) {
+  const ContactCase c = read_contact_case(std::string(ROLLWEAR_SOURCE_DIR) + "/cases/worn-crown.yaml");
+  ASSERT_TRUE(c.profiles);
+  EXPECT_FALSE(has_constant_curvature(c.profiles->profiles.body1, kCaseCurvatureRtol));
+  EXPECT_EQ(c.friction.mu, 0.3);
+  EXPECT_EQ(creepages_of(c).xi, 1e-3);
+  EXPECT_EQ(c.solver.nx, 80);
+  EXPECT_EQ(c.solver.ny, 80);
 }
 
 }  // namespace

@@ -393,7 +393,7 @@ TEST_F(CommandLine, HelpMentionsEveryOption) {
 
   const ProcessResult contact = rollwear("contact --help", dir_);
   EXPECT_EQ(contact.exit_code, 0);
-  for (const char* word : {"case", "-o,--output", "--no-fields", "--log-level", "trace", "off", "--help"})
+  for (const char* word : {"case", "-o,--output", "--no-fields", "--log-level", "trace", "off", "--help", "edge"})
     EXPECT_NE(contact.out.find(word), std::string::npos) << word << " missing from:\n" << contact.out;
 }
 
@@ -567,6 +567,90 @@ TEST_F(CommandLine, TransientHelpListsItsOptions) {
   for (const char* word : {"case", "-o,--output", "--no-fields", "-q,--quiet", "--log-level", "trace", "--help",
                            "timeseries.csv", "strip_power.csv", "snapshot_"})
     EXPECT_NE(help.out.find(word), std::string::npos) << word << " missing from:\n" << help.out;
+}
+
+// ---- contact on profiles ---------------------------------------------------------------------------
+
+// the worn crown is not of constant curvature: solver.normal auto runs the semi-Hertzian solver
+TEST_F(CommandLine, ContactOnWornCrownRunsSemiHertz) {
+  const fs::path out = dir_ / "worn";
+  const ProcessResult r = rollwear("contact " + quoted(kSource / "cases" / "worn-crown.yaml") + " -o " + quoted(out) +
+                                       " --no-fields --log-level warn",
+                                   dir_);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("normal solver      semi-hertz (solver.normal auto"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("contact patches    1"), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("warning"), std::string::npos) << r.out;
+  // strips.csv's y_m in the profiles' coordinate: the contact centred on the roller's crown
+  const std::vector<double> y = column(lines_of(read_text(out / "strips.csv")), 0);
+  ASSERT_EQ(y.size(), 80u);
+  EXPECT_NEAR(y.front() + y.back(), 0, 1e-6);
+}
+
+// the paper's crown as a generated profile: auto takes Hertz, which agrees with cases/paper.yaml's radii
+TEST_F(CommandLine, ContactOnCrownedProfileRunsHertzLikeThePaperCase) {
+  constexpr double kFitTol = 1e-3;  // Ry from a parabola fit through the profile's 401 nodes
+  std::string text = read_text(kSource / "cases" / "worn-crown.yaml");
+  const std::string from = "file: ../profiles/flat_worn_R500_w20_band1p5.csv";
+  ASSERT_NE(text.find(from), std::string::npos);
+  text.replace(text.find(from), from.size(), "crowned: { Ry_m: 0.5, width_m: 0.020 }");
+  std::ofstream(dir_ / "crowned.yaml") << text;
+
+  const ProcessResult crowned = rollwear("contact " + quoted(dir_ / "crowned.yaml") + " -o " + quoted(dir_ / "c") +
+                                             " --no-fields --log-level warn",
+                                         dir_);
+  ASSERT_EQ(crowned.exit_code, 0) << crowned.err;
+  EXPECT_NE(crowned.out.find("normal solver      hertz (solver.normal auto: both profiles have constant curvature)"),
+            std::string::npos)
+      << crowned.out;
+  const ProcessResult paper = rollwear("contact " + quoted(kSource / "cases" / "paper.yaml") + " -o " +
+                                           quoted(dir_ / "p") + " --no-fields --log-level warn",
+                                       dir_);
+  ASSERT_EQ(paper.exit_code, 0) << paper.err;
+  const std::vector<std::string> c = split(lines_of(read_text(dir_ / "c" / "summary.csv"))[1]);
+  const std::vector<std::string> p = split(lines_of(read_text(dir_ / "p" / "summary.csv"))[1]);
+  for (std::size_t k : {1u, 2u, 3u})  // a_m, b_m, p0_Pa
+    EXPECT_NEAR(std::stod(c[k]) / std::stod(p[k]), 1, kFitTol) << "column " << k;
+}
+
+// cases/worn-crown.yaml written to DIR/name with its profile file absolute and one replacement made
+fs::path worn_crown_case(const fs::path& dir, const std::string& name, const std::string& from, const std::string& to) {
+  std::string text = read_text(kSource / "cases" / "worn-crown.yaml");
+  const std::string file = "../profiles/";
+  text.replace(text.find(file), file.size(), (kSource / "profiles").string() + "/");
+  if (text.find(from) != std::string::npos) text.replace(text.find(from), from.size(), to);
+  std::ofstream(dir / name) << text;
+  return dir / name;
+}
+
+// a path narrower than the contact: a warning line, the outputs written, exit status 0
+TEST_F(CommandLine, ContactReachingABodysEdgeWarnsAndStillWrites) {
+  const fs::path c = worn_crown_case(dir_, "narrow.yaml", "flat: { width_m: 0.030 }", "flat: { width_m: 0.004 }");
+  const ProcessResult r = rollwear("contact " + quoted(c) + " -o " + quoted(dir_ / "n") + " --log-level off", dir_);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("warning: the contact reaches a body's edge"), std::string::npos) << r.out;
+  EXPECT_TRUE(fs::exists(dir_ / "n" / "summary.csv"));
+  EXPECT_TRUE(fs::exists(dir_ / "n" / "strips.csv"));
+}
+
+// the exact solver on the worn crown: one patch, the load carried, near the semi-Hertzian semi-axes
+TEST_F(CommandLine, ContactByHalfspaceOnWornCrownReportsIt) {
+  constexpr double kSemiHertzTol = 0.1;  // semi-Hertz's approximation on a non-elliptic contact, 80x80 grid
+  const fs::path c = worn_crown_case(dir_, "hs.yaml", "normal: auto", "normal: halfspace");
+  const ProcessResult r =
+      rollwear("contact " + quoted(c) + " -o " + quoted(dir_ / "h") + " --no-fields --log-level warn", dir_);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.err, "");
+  EXPECT_NE(r.out.find("normal solver      halfspace"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("contact patches    1"), std::string::npos) << r.out;
+  const ProcessResult sh = rollwear("contact " + quoted(kSource / "cases" / "worn-crown.yaml") + " -o " +
+                                        quoted(dir_ / "s") + " --no-fields --log-level warn",
+                                    dir_);
+  ASSERT_EQ(sh.exit_code, 0) << sh.err;
+  const std::vector<std::string> h = split(lines_of(read_text(dir_ / "h" / "summary.csv"))[1]);
+  const std::vector<std::string> s = split(lines_of(read_text(dir_ / "s" / "summary.csv"))[1]);
+  for (std::size_t k : {1u, 2u})  // a_m, b_m
+    EXPECT_NEAR(std::stod(h[k]) / std::stod(s[k]), 1, kSemiHertzTol) << "column " << k;
 }
 
 }  // namespace
