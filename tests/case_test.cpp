@@ -3,6 +3,8 @@
 #include "lib/case.h"
 
 #include <gtest/gtest.h>
+
+#include "tests/temp_dir.h"
 #include <spdlog/fmt/fmt.h>
 #include <unistd.h>
 
@@ -24,19 +26,8 @@ namespace {
 namespace fs = std::filesystem;
 
 // a directory of its own for each test, removed at the end
-class CaseReader : public testing::Test {
+class CaseReader : public rollwear_test::TempDirTest {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("rollwear_case_test_" + std::to_string(::getpid()) + "_" +
-            testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override {
-    std::error_code ignored;
-    fs::remove_all(dir_, ignored);
-  }
 
   // writes text to DIR/name and returns the path
   std::string write(const std::string& text, const std::string& name = "case.yaml") const {
@@ -58,7 +49,6 @@ class CaseReader : public testing::Test {
 
   std::string path() const { return (dir_ / "case.yaml").string(); }
 
-  fs::path dir_;
 };
 
 // the smallest valid case: required sections only

@@ -2,6 +2,8 @@
 #include "lib/csv.h"
 
 #include <gtest/gtest.h>
+
+#include "tests/temp_dir.h"
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -24,20 +26,8 @@ namespace {
 namespace fs = std::filesystem;
 
 // a directory of its own for each test, removed at the end
-class TempDir : public testing::Test {
+class TempDir : public rollwear_test::TempDirTest {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("rollwear_cli_test_" + std::to_string(::getpid()) + "_" +
-            testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override {
-    std::error_code ignored;
-    fs::remove_all(dir_, ignored);
-  }
-  fs::path dir_;
 };
 
 std::string read_text(const fs::path& p) {

@@ -3,6 +3,8 @@
 #include "lib/profile.h"
 
 #include <gtest/gtest.h>
+
+#include "tests/temp_dir.h"
 #include <unistd.h>
 
 #include <cmath>
@@ -106,18 +108,8 @@ TEST(ProfileValidation, NamesTheSourceAndTheProblem) {
 }
 
 // a directory of its own for each test, removed at the end
-class ProfileCsv : public testing::Test {
+class ProfileCsv : public rollwear_test::TempDirTest {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("rollwear_profile_test_" + std::to_string(::getpid()) + "_" +
-                                        testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override {
-    std::error_code ignored;
-    fs::remove_all(dir_, ignored);
-  }
   std::string write(const std::string& text) const {
     const fs::path p = dir_ / "x.csv";
     std::ofstream(p) << text;
@@ -135,7 +127,6 @@ class ProfileCsv : public testing::Test {
     }
     return "";
   }
-  fs::path dir_;
 };
 
 // five points around a shallow crown; line numbers on the right
