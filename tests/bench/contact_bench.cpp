@@ -9,6 +9,8 @@
 //   s = V L (tau - tau_pred) / dx,   P = -sum tau . s dx dy.
 #include <benchmark/benchmark.h>
 
+#include "tests/bench/bench_common.h"
+
 #include <Eigen/Core>
 #include <cmath>
 #include <filesystem>
@@ -26,46 +28,9 @@ namespace {
 
 using namespace contact;
 
-// the paper's case: everything but the creepages, which each benchmark sets
-struct PaperCase {
-  Bodies bodies;
-  ElasticPair pair;
-  double normal_load_N = 0;
-  double mu = 0;
-  double speed_m_per_s = 0;
-};
-
-const PaperCase& paper() {
-  static const PaperCase c = [] {
-    PaperCase p;
-    const std::string path = std::string(ROLLWEAR_SOURCE_DIR) + "/cases/paper.yaml";
-    if (std::filesystem::exists(path)) {
-      const ContactCase file = read_contact_case(path);
-      p.bodies = bodies_of(file);
-      p.pair = materials_of(file);
-      p.normal_load_N = normal_load_of(file);
-      p.mu = file.friction.mu;
-      p.speed_m_per_s = speed_of(file);
-    } else {
-      p.bodies.body1 = {0.020, 0.500};
-      p.bodies.body2 = {0.025, kFlat};
-      p.pair.body1 = {210e9, 0.28};
-      p.pair.body2 = {210e9, 0.28};
-      p.normal_load_N = 1500;
-      p.mu = 0.3;
-      p.speed_m_per_s = 1.0;
-    }
-    return p;
-  }();
-  return c;
-}
-
-// keeps a result alive through DoNotOptimize's const overload: the non-const one (asm "+m,r")
-// corrupts doubles with GCC 12 and benchmark 1.7.1 (google/benchmark#903), which bit P_W here
-template <class T>
-void keep(const T& value) {
-  benchmark::DoNotOptimize(value);
-}
+using bench::keep;
+using bench::paper;
+using bench::PaperCase;
 
 Creepages creepages_named(const std::string& name) {
   if (name == "xi") return {1e-3, 0, 0};

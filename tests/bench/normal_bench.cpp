@@ -5,6 +5,8 @@
 // (docs/benchmarks.md, "Normal problem").
 #include <benchmark/benchmark.h>
 
+#include "tests/bench/bench_common.h"
+
 #include <spdlog/spdlog.h>
 
 #include <Eigen/Core>
@@ -25,41 +27,12 @@ namespace {
 
 using namespace contact;
 
-struct PaperCase {
-  Bodies bodies;
-  ElasticPair pair;
-  double normal_load_N = 0;
-};
+using bench::keep;
+using bench::paper;
+using bench::PaperCase;
 
-const PaperCase& paper() {
-  static const PaperCase c = [] {
-    // solve_normal_on_profiles logs a spdlog::info per Hertz skip: keep the output to warnings
-    spdlog::set_level(spdlog::level::warn);
-    PaperCase p;
-    const std::string path = std::string(ROLLWEAR_SOURCE_DIR) + "/cases/paper.yaml";
-    if (std::filesystem::exists(path)) {
-      const ContactCase file = read_contact_case(path);
-      p.bodies = bodies_of(file);
-      p.pair = materials_of(file);
-      p.normal_load_N = normal_load_of(file);
-    } else {
-      p.bodies.body1 = {0.020, 0.500};
-      p.bodies.body2 = {0.025, kFlat};
-      p.pair.body1 = {210e9, 0.28};
-      p.pair.body2 = {210e9, 0.28};
-      p.normal_load_N = 1500;
-    }
-    return p;
-  }();
-  return c;
-}
-
-// keeps a result alive through DoNotOptimize's const overload: the non-const one (asm "+m,r")
-// corrupts doubles with GCC 12 and benchmark 1.7.1 (google/benchmark#903)
-template <class T>
-void keep(const T& value) {
-  benchmark::DoNotOptimize(value);
-}
+// solve_normal_on_profiles logs a spdlog::info per Hertz skip: keep the output to warnings
+const bool kQuiet = (spdlog::set_level(spdlog::level::warn), true);
 
 constexpr double kRollerRy_m = 0.500;      // crown radius
 constexpr double kRollerWidth_m = 0.020;   // roller width
