@@ -25,6 +25,21 @@
 //   P_l = -integral(tau . c dx) - V L |tau(-a_j)|^2 / 2.
 // For pure xi the reconstruction is the closed form of §4, so Fx and P are exact along x on any grid.
 //
+// The march, arranged for speed (the same scheme; the kernel is lib/strip_march.h):
+//   stick runs: consecutive stick intervals share one stick solution, the polynomials above from the
+//     run's first node, so the run's integrals are add_stick's closed forms over the whole run and its
+//     D is the formula above with the run's end nodes (it telescopes). Kalker's tests at the run's
+//     nodes are independent of each other: they go in vectorised blocks, and a block passes at once
+//     when |tau| <= |tau_s - (alpha, beta) t| + |gamma| t^2 (convex plus growing in t) stays below its
+//     smallest bound by a margin far above rounding. The interval where a test fails goes through the
+//     full kernel (the crossing).
+//   slip stretches: consecutive slip intervals go one at a time (the direction of tau is a chain of
+//     dependent operations); the turns of the direction (|d|, the exponential) depend on the geometry
+//     alone and are computed for all the strip's remaining cells at once. The stretch's D is the
+//     formula above with its end nodes.
+//   two strips march in turn in one loop, so that the CPU overlaps their chains.
+// Writing the fields (per interval) changes none of the totals.
+//
 // Classic scheme: Kalker's FASTSIM on the cell centres, tau_pred = tau_prev - (c/(V L)) dx, bound at
 // the centre, s = V L (tau - tau_pred)/dx, P = -sum tau . s dx dy (PHYSICS.md §3, §5).
 #include "lib/steady.h"
@@ -35,6 +50,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace contact {
 
@@ -44,6 +60,77 @@ struct StripTotals {
   double Fx = 0, Fy = 0, Mz = 0;  // per unit width
   double power = 0, creep_power = 0, trailing = 0;
   double stick_length = 0;
+};
+
+// the sums that make the strip's totals
+void accumulate(IntervalSums& into, const IntervalSums& s) {
+  into.Ix += s.Ix;
+  into.Iy += s.Iy;
+  into.Ixy += s.Ixy;
+  into.stick_length_m += s.stick_length_m;
+}
+
+// the stick solution from a node at x_s (PHYSICS.md §3): tau_x linear, tau_y quadratic in t = x_s - x
+struct StickLine {
+  StripNode start;
+  double x_s = 0, alpha = 0, beta = 0, gamma = 0;  // beta = d tau_y/dx at x_s, gamma = phi/(2 L3)
+  StickLine(const StripRates& r, const StripNode& node, double x)
+      : start(node), x_s(x), alpha(r.alpha_Pa_per_m), beta(r.eta_L2_Pa_per_m + r.phi_L3_Pa_per_m2 * x),
+        gamma(r.phi_L3_Pa_per_m2 / 2) {}
+  StripNode at(double x) const {
+    const double t = x_s - x;
+    return {start.tx - alpha * t, start.ty - beta * t + gamma * t * t, start.ex, start.ey, true};
+  }
+  // Kalker's rule at a node: the stick solution lies inside the bound g = mu p there
+  bool sticks_at(double x, double g) const {
+    const double t = x_s - x;
+    const double px = start.tx - alpha * t, py = start.ty - beta * t + gamma * t * t;
+    return px * px + py * py <= g * g;
+  }
+  // the first of the nodes x[k], k = first down to last + 1, where the stick solution leaves the
+  // bound mu p (last if none). The tests are independent: they run in blocks of nodes, the last block
+  // shifted up to end at last + 1 (its nodes above k pass again). A block whose stick solution stays
+  // clearly below its smallest bound passes without the tests: for t in [t_a, t_b],
+  //   |tau(t)| <= |tau_s - (alpha, beta) t| + |gamma| t^2,
+  // the first term convex in t (largest at an end), the second growing; "clearly" is a margin far
+  // above the rounding of the tests.
+  int first_slip_node(const double* x, const double* edge_p, double mu, int first, int last) const {
+    constexpr int kBlock = 16;
+    using Block = Eigen::Array<double, kBlock, 1>;
+    if (first - last < kBlock) {  // a short strip
+      int k = first;
+      while (k > last && sticks_at(x[k], mu * edge_p[k])) --k;
+      return k;
+    }
+    for (int k = first; k > last; k -= kBlock) {
+      const int base = std::max(k - kBlock + 1, last + 1);  // nodes base .. base + kBlock - 1
+      const double g_min = mu * Block::Map(edge_p + base).minCoeff();
+      if (below_bound(x_s - x[base + kBlock - 1], x_s - x[base], g_min)) continue;
+      const Block t = x_s - Block::Map(x + base);
+      const Block px = start.tx - alpha * t, py = start.ty - beta * t + gamma * t * t;
+      const Block g = mu * Block::Map(edge_p + base);
+      const Block excess = px * px + py * py - g * g;  // > 0 where Kalker's test fails
+      if (excess.maxCoeff() > 0) {
+        for (int q = kBlock - 1; q >= 0; --q)
+          if (excess(q) > 0) return base + q;
+      }
+    }
+    return last;
+  }
+
+ private:
+  // |tau| stays below g_min by a margin far above rounding for t in [t_a, t_b], 0 <= t_a <= t_b
+  bool below_bound(double t_a, double t_b, double g_min) const {
+    constexpr double kMargin = 1e-12;
+    const double ax = start.tx - alpha * t_a, ay = start.ty - beta * t_a;
+    const double bx = start.tx - alpha * t_b, by = start.ty - beta * t_b;
+    const double curve = std::abs(gamma) * t_b * t_b;
+    const double bound = std::sqrt(std::max(ax * ax + ay * ay, bx * bx + by * by)) + curve;
+    // the size of the terms of the tests, for their rounding
+    const double terms =
+        std::abs(start.tx) + std::abs(start.ty) + (std::abs(alpha) + std::abs(beta)) * t_b + curve;
+    return bound + kMargin * (bound + terms) < g_min;
+  }
 };
 
 // the fields of one strip, written only when asked for
@@ -62,6 +149,22 @@ struct FieldWriter {
     s->power_W_per_m2(i, j) = D / dx;
     s->state(i, j) = sums.stick_length_m >= h / 2 ? 1 : 2;
   }
+  // the cells of a stick run, first down to last: each interval from the run's stick solution
+  void stick_run(const StripRates& r, const StickLine& line, const double* x, int first, int last) const {
+    if (!s) return;
+    StripNode hi = line.start;
+    double x_hi = line.x_s;
+    for (int i = first; i >= last; --i) {
+      const double x_lo = x[i];
+      const StripNode lo = line.at(x_lo);
+      IntervalSums sums;
+      const double beta = r.eta_L2_Pa_per_m + r.phi_L3_Pa_per_m2 * x_hi;
+      detail::add_stick(r, hi, x_hi, beta, line.gamma, x_hi - x_lo, sums);
+      interval(i, sums, x_hi - x_lo, VL * dissipation_per_VL(r, hi, lo, sums));
+      hi = lo;
+      x_hi = x_lo;
+    }
+  }
   void cell(int i, double tx, double ty, double sx, double sy, double power, int state) const {
     if (!s) return;
     s->tau_x_Pa(i, j) = tx;
@@ -73,41 +176,185 @@ struct FieldWriter {
   }
 };
 
-StripTotals march_consistent(const ContactPatch& patch, const TangentialProblem& pb, int j, FieldWriter out) {
-  const Grid& g = patch.grid;
-  const StripRates r = strip_rates(patch, pb, j);
-  const double a = r.a_m, VL = pb.speed_m_per_s * pb.L_m_per_Pa;
-
-  StripTotals st;
-  StripNode node;  // the leading edge: tau = 0 = bound, stick
-  const int i_top = std::min(g.nx - 1, static_cast<int>(std::floor((a + g.half_x_m) / g.dx_m)));
-  const int i_bot = std::max(0, static_cast<int>(std::floor((-a + g.half_x_m) / g.dx_m)));
-  for (int i = i_top; i >= i_bot; --i) {
-    IntervalGeometry geo;
-    geo.x_hi = std::min(g.x_edge(i + 1), a);
-    geo.x_lo = std::max(g.x_edge(i), -a);
-    if (!(geo.x_hi > geo.x_lo)) continue;
-    geo.bound_lo_Pa = geo.x_lo > -a ? r.mu * patch.edge_pressure_Pa(i, j) : 0.0;
-    geo.load_N_per_m = patch.pressure_Pa(i, j) * g.dx_m;
-    geo.moment_N = patch.pressure_moment_Pa_m(i, j) * g.dx_m;
-
-    IntervalSums sums;
-    const StripNode lo = march_interval(r, node, geo, sums);
-
-    // dissipated power of the interval: -integral(tau . s dx)
-    const double creep = VL * creep_power_per_VL(r, sums);
-    const double D = VL * dissipation_per_VL(r, node, lo, sums);
-    out.interval(i, sums, geo.x_hi - geo.x_lo, D);
-    st.Fx += sums.Ix;
-    st.Fy += sums.Iy;
-    st.Mz += sums.Ixy - r.y_m * sums.Ix;
-    st.power += D;
-    st.creep_power += creep;
-    st.stick_length += sums.stick_length_m;
-    node = lo;
+// The consistent march along one strip, one step at a time: a step is a stick run and one interval
+// through the full kernel, or one interval of a slip stretch. Two strips step in turn in one loop, so
+// that the CPU overlaps their chains of dependent operations (the crossing into slip, the slip
+// direction).
+template <bool kFields>
+class StripMarch {
+ public:
+  // x: the grid's nodes x_edge(i) (nx + 1); turn: room for the strip's slip turns (nx)
+  StripMarch(const ContactPatch& patch, const TangentialProblem& pb, int j, const double* x,
+             detail::SlipTurn* turn, FieldWriter out)
+      : patch_(patch), r_(strip_rates(patch, pb, j)), j_(j), VL_(pb.speed_m_per_s * pb.L_m_per_Pa), x_(x),
+        edge_p_(&patch.edge_pressure_Pa(0, j)), turn_(turn), out_(out) {
+    // the intervals in contact, cells i_top down to i_bot, each of positive length: the interior
+    // nodes x[i], i_bot < i <= i_top, lie strictly inside the strip
+    const Grid& g = patch.grid;
+    const double a = r_.a_m;
+    int i_top = std::min(g.nx - 1, static_cast<int>(std::floor((a + g.half_x_m) / g.dx_m)));
+    int i_bot = std::max(0, static_cast<int>(std::floor((-a + g.half_x_m) / g.dx_m)));
+    if (!(a > 0)) i_top = i_bot - 1;
+    while (i_top >= i_bot && !(x_hi_of(i_top) > x_lo_of(i_top))) --i_top;
+    while (i_bot < i_top && !(x_hi_of(i_bot) > x_lo_of(i_bot))) ++i_bot;
+    i_ = i_top;
+    i_bot_ = i_bot;
+    turns_to_ = i_bot;
   }
-  st.trailing = VL * (node.tx * node.tx + node.ty * node.ty) / 2;
-  return st;
+
+  bool done() const { return i_ < i_bot_; }
+
+  // the node is in slip inside the strip: the next step is one interval of a slip stretch
+  bool in_slip() const { return !node_.stick && i_ > i_bot_; }
+
+  // one interval of a slip stretch, which runs from a slip node through the cells inside the strip
+  // while they slip (the direction of tau carries over); the slip turns of all the cells down to the
+  // trailing one are taken together, off the march
+  [[gnu::always_inline]] void slip_interval() {
+    if (!in_stretch_) {
+      stretch_first_ = node_;
+      stretch_ = IntervalSums{};
+      in_stretch_ = true;
+    }
+    const int i = i_;
+    auto turn = [&] {
+      if (i > turns_to_) {
+        slip_turns(r_, x_, i, i_bot_ + 1, turn_);
+        turns_to_ = i;
+      }
+      return turn_[i];
+    };
+    const double dx = patch_.grid.dx_m;
+    const IntervalGeometry geo{x_[i + 1], x_[i], r_.mu * edge_p_[i], patch_.pressure_Pa(i, j_) * dx,
+                               patch_.pressure_moment_Pa_m(i, j_) * dx};
+    IntervalSums cell;
+    const StripNode lo = march_slip_interval(r_, node_, geo, turn, cell);
+    if constexpr (kFields)
+      out_.interval(i, cell, geo.x_hi - geo.x_lo, VL_ * dissipation_per_VL(r_, node_, lo, cell));
+    accumulate(stretch_, cell);
+    node_ = lo;
+    --i_;
+    if (node_.stick || i_ == i_bot_) {
+      add(stretch_first_, node_, stretch_);
+      in_stretch_ = false;
+    }
+  }
+
+  // a slip interval, or a stick run and one interval through the full kernel
+  void step() {
+    if (in_slip()) {
+      slip_interval();
+      return;
+    }
+    const double dx = patch_.grid.dx_m;
+
+    // stick run: one stick solution from this node through every interior node that passes Kalker's
+    // test; the tests are independent of each other, the run's integrals are closed forms
+    if (node_.stick && i_ > i_bot_) {
+      const StickLine line(r_, node_, x_hi_of(i_));
+      const int k = line.first_slip_node(x_, edge_p_, r_.mu, i_, i_bot_);
+      if (k < i_) {  // intervals i down to k + 1 stick
+        const double x_end = x_[k + 1];
+        const StripNode end = line.at(x_end);
+        IntervalSums sums;
+        detail::add_stick(r_, node_, line.x_s, line.beta, line.gamma, line.x_s - x_end, sums);
+        add(node_, end, sums);
+        if constexpr (kFields) out_.stick_run(r_, line, x_, i_, k + 1);
+        node_ = end;
+        i_ = k;
+      }
+    }
+
+    // one interval through the full kernel: the crossing into slip, or the trailing interval
+    const int i = i_;
+    IntervalGeometry geo;
+    geo.x_hi = x_hi_of(i);
+    geo.x_lo = x_lo_of(i);
+    geo.bound_lo_Pa = geo.x_lo > -r_.a_m ? r_.mu * edge_p_[i] : 0.0;
+    geo.load_N_per_m = patch_.pressure_Pa(i, j_) * dx;
+    geo.moment_N = patch_.pressure_moment_Pa_m(i, j_) * dx;
+    IntervalSums sums;
+    const StripNode lo = march_interval(r_, node_, geo, sums);
+    add(node_, lo, sums);
+    if constexpr (kFields)
+      out_.interval(i, sums, geo.x_hi - geo.x_lo, VL_ * dissipation_per_VL(r_, node_, lo, sums));
+    node_ = lo;
+    --i_;
+  }
+
+  // when done: the totals, with the elastic energy carried out at the trailing edge
+  StripTotals totals() const {
+    StripTotals st = st_;
+    st.trailing = VL_ * (node_.tx * node_.tx + node_.ty * node_.ty) / 2;
+    return st;
+  }
+
+ private:
+  double x_hi_of(int i) const { return std::min(x_[i + 1], r_.a_m); }
+  double x_lo_of(int i) const { return std::max(x_[i], -r_.a_m); }
+
+  // totals of a stretch from node hi to node lo; its dissipated power is -integral(tau . s dx)
+  void add(const StripNode& hi, const StripNode& lo, const IntervalSums& sums) {
+    st_.Fx += sums.Ix;
+    st_.Fy += sums.Iy;
+    st_.Mz += sums.Ixy - r_.y_m * sums.Ix;
+    st_.power += VL_ * dissipation_per_VL(r_, hi, lo, sums);
+    st_.creep_power += VL_ * creep_power_per_VL(r_, sums);
+    st_.stick_length += sums.stick_length_m;
+  }
+
+  const ContactPatch& patch_;
+  const StripRates r_;
+  const int j_;
+  const double VL_;
+  const double* x_;
+  const double* edge_p_;
+  detail::SlipTurn* turn_;
+  FieldWriter out_;
+
+  int i_ = 0, i_bot_ = 0;  // the next interval is cell i_; the last is i_bot_
+  int turns_to_ = 0;       // cells i_bot_ + 1 .. turns_to_ have their slip turn
+  StripNode node_;         // the leading edge: tau = 0 = bound, stick
+  bool in_stretch_ = false;
+  StripNode stretch_first_;
+  IntervalSums stretch_;
+  StripTotals st_;
+};
+
+// the consistent march of all strips, two at a time
+template <bool kFields>
+std::vector<StripTotals> march_consistent(const ContactPatch& patch, const TangentialProblem& pb,
+                                          TangentialSolution& s) {
+  const Grid& g = patch.grid;
+  Eigen::ArrayXd x(g.nx + 1);
+  for (int i = 0; i <= g.nx; ++i) x(i) = g.x_edge(i);
+  std::vector<detail::SlipTurn> turns(2 * static_cast<size_t>(g.nx));
+  const double VL = pb.speed_m_per_s * pb.L_m_per_Pa;
+  auto strip = [&](int j, detail::SlipTurn* turn) {
+    return StripMarch<kFields>(patch, pb, j, x.data(), turn, {kFields ? &s : nullptr, j, g.dx_m, VL});
+  };
+
+  std::vector<StripTotals> totals(g.ny);
+  int j = 0;
+  for (; j + 1 < g.ny; j += 2) {
+    StripMarch<kFields> a = strip(j, turns.data()), b = strip(j + 1, turns.data() + g.nx);
+    while (!a.done() || !b.done()) {
+      while (a.in_slip() && b.in_slip()) {  // the common case, without the branches of step()
+        a.slip_interval();
+        b.slip_interval();
+      }
+      if (!a.done()) a.step();
+      if (!b.done()) b.step();
+    }
+    totals[j] = a.totals();
+    totals[j + 1] = b.totals();
+  }
+  if (j < g.ny) {
+    StripMarch<kFields> a = strip(j, turns.data());
+    while (!a.done()) a.step();
+    totals[j] = a.totals();
+  }
+  return totals;
 }
 
 StripTotals march_classic(const ContactPatch& patch, const TangentialProblem& pb, int j, FieldWriter out) {
@@ -146,6 +393,19 @@ StripTotals march_classic(const ContactPatch& patch, const TangentialProblem& pb
   return st;
 }
 
+// the classic march of all strips
+std::vector<StripTotals> march_classic_strips(const ContactPatch& patch, const TangentialProblem& pb,
+                                              TangentialSolution& s, bool fields) {
+  const Grid& g = patch.grid;
+  const double VL = pb.speed_m_per_s * pb.L_m_per_Pa;
+  std::vector<StripTotals> totals(g.ny);
+  for (int j = 0; j < g.ny; ++j) {
+    if (!(patch.half_length_m(j) > 0)) continue;
+    totals[j] = march_classic(patch, pb, j, {fields ? &s : nullptr, j, g.dx_m, VL});
+  }
+  return totals;
+}
+
 }  // namespace
 
 StripRates strip_rates(const ContactPatch& patch, const TangentialProblem& pb, int j) {
@@ -181,12 +441,15 @@ TangentialSolution solve_steady(const ContactPatch& patch, const TangentialProbl
   s.strip_force_x_N_per_m = Eigen::ArrayXd::Zero(g.ny);
   s.strip_force_y_N_per_m = Eigen::ArrayXd::Zero(g.ny);
 
+  const std::vector<StripTotals> totals =
+      scheme == TangentialScheme::Classic ? march_classic_strips(patch, problem, s, options.fields)
+      : options.fields                    ? march_consistent<true>(patch, problem, s)
+                                          : march_consistent<false>(patch, problem, s);
+
   double stick_area = 0, area = 0;
   for (int j = 0; j < g.ny; ++j) {
     if (!(patch.half_length_m(j) > 0)) continue;
-    const FieldWriter out{options.fields ? &s : nullptr, j, g.dx_m, problem.speed_m_per_s * problem.L_m_per_Pa};
-    const StripTotals st = scheme == TangentialScheme::Classic ? march_classic(patch, problem, j, out)
-                                                               : march_consistent(patch, problem, j, out);
+    const StripTotals& st = totals[j];
     s.strip_power_W_per_m(j) = st.power;
     s.strip_creep_power_W_per_m(j) = st.creep_power;
     s.strip_trailing_W_per_m(j) = st.trailing;

@@ -1,7 +1,9 @@
 // One interval of the consistent strip march (the derivation is at the top of lib/steady.cpp):
 // from the traction at the upstream node x_hi to the downstream node x_lo, with the integrals of
 // the reconstruction over the interval. The steady solver chains it along each strip; Satran's
-// shift scheme applies it to the previous step's node values (PHYSICS.md §3-4).
+// shift scheme applies it to the previous step's node values (PHYSICS.md §3-4). march_slip_interval
+// is its case of a slip node inside the strip with the turn of the slip direction given, so that the
+// steady solver's slip stretches can take the turns of all their cells at once (slip_turns).
 #pragma once
 
 #include <algorithm>
@@ -69,11 +71,131 @@ namespace detail {
   s.stick_length_m += t;
 }
 
+// the turn of the slip direction over a slip part: 1/|d| and the factor k = exp(-|d| integral ds/g)
+// by which tan(psi/2) decays
+struct SlipTurn {
+  double inv_dn = 0, k = 1;
+};
+
+constexpr double kPi = 3.14159265358979323846;
+
+// asin of u clamped to [-1, 1], +-pi/2 at the ends without a call
+[[gnu::always_inline]] inline double clamped_asin(double u) {
+  return u >= 1 ? kPi / 2 : u <= -1 ? -kPi / 2 : std::asin(u);
+}
+
+// u = x/a on the unit semi-ellipse, clamped to [-1, 1], with asin u and sqrt(1 - u^2) computed once for
+// the integrals of ds/g, p and x p (the same arithmetic as semi_ellipse_integral, semi_ellipse_moment)
+struct EllipsePoint {
+  double u, w, asin_u;
+  explicit EllipsePoint(double x_over_a)
+      : u(std::clamp(x_over_a, -1.0, 1.0)), w(std::sqrt(1 - u * u)), asin_u(clamped_asin(x_over_a)) {}
+  double integral() const { return (u * w + asin_u) / 2 + kPi / 4; }  // of sqrt(1 - u^2) from -1
+  double moment() const {                                               // of u sqrt(1 - u^2) from -1
+    const double w2 = 1 - u * u;
+    return -w2 * w / 3;
+  }
+};
+
+// the turn over a slip part with d = (alpha, dy_m) and the integral inv_g of ds/g over it
+[[gnu::always_inline]] inline SlipTurn slip_turn(double alpha, double dy_m, double inv_g) {
+  const double dn = std::sqrt(alpha * alpha + dy_m * dy_m);
+  return {1 / dn, std::exp(-dn * inv_g)};
+}
+
+// the integral of ds/g over [x_lo, x_s] inside the strip by the midpoint rule
+[[gnu::always_inline]] inline double midpoint_inv_g(const StripRates& r, double x_s, double x_lo) {
+  const double um = (x_s + x_lo) / (2 * r.a_m);
+  return (x_s - x_lo) / (r.bound_Pa * std::sqrt(1 - um * um));
+}
+
+// d_y at the midpoint of [x_lo, x_s], written from x_hi as the march writes it
+[[gnu::always_inline]] inline double midpoint_dy(const StripRates& r, double x_hi, double x_s, double x_lo) {
+  const double beta = r.eta_L2_Pa_per_m + r.phi_L3_Pa_per_m2 * x_hi;  // d tau_y/dx at x_hi
+  return beta + r.phi_L3_Pa_per_m2 * ((x_s + x_lo) / 2 - x_hi);
+}
+
+// the turn over an interval strictly inside the strip that slips throughout
+[[gnu::always_inline]] inline SlipTurn interior_slip_turn(const StripRates& r, double x_hi, double x_lo) {
+  return slip_turn(r.alpha_Pa_per_m, midpoint_dy(r, x_hi, x_hi, x_lo), midpoint_inv_g(r, x_hi, x_lo));
+}
+
+// the slip part of an interval, from x_s = x_hi - t_s (traction tau0, direction e0) to x_lo, with
+// d = (alpha, dy_m) frozen at its midpoint and Ip, Ixp the integrals of p and x p over it; turn() gives
+// its SlipTurn, asked for only when e0 turns
+template <class TurnFn>
+[[gnu::always_inline]] inline StripNode slip_part(const StripRates& r, const IntervalGeometry& geo,
+                                                  double t_s, double dy_m, double tx0, double ty0, double ex0,
+                                                  double ey0, double Ip, double Ixp, TurnFn&& turn,
+                                                  IntervalSums& s) {
+  const double x_s = geo.x_hi - t_s, x_lo = geo.x_lo, hs = x_s - x_lo;
+  const double alpha = r.alpha_Pa_per_m;
+
+  // slip direction at x_lo: d psi/ds = -|d| sin(psi)/g exactly, d frozen at the midpoint
+  double ex = ex0, ey = ey0;
+  const double ux = -alpha, uy = -dy_m;  // -d, not yet normalised
+  const double s0u = ux * ey0 - uy * ex0;
+  if (s0u != 0 && r.bound_Pa > 0) {
+    const SlipTurn t = turn();
+    const double c0 = (ex0 * ux + ey0 * uy) * t.inv_dn, s0 = s0u * t.inv_dn;
+    const double c1 = 1 + c0, ks = t.k * s0;
+    const double norm = c1 * c1 + ks * ks;
+    if (norm > 1e-300) {
+      const double scale = t.inv_dn / norm;
+      const double A = (c1 * c1 - ks * ks) * scale, B = 2 * ks * c1 * scale;
+      ex = A * ux - B * uy;
+      ey = A * uy + B * ux;
+    }
+  }
+  const StripNode lo{geo.bound_lo_Pa * ex, geo.bound_lo_Pa * ey, ex, ey, false};
+
+  // |tau| = mu p exactly over the slip part, direction the mean of its end directions
+  const double mx = r.mu * (ex0 + ex) / 2, my = r.mu * (ey0 + ey) / 2;
+  s.Ix += mx * Ip;
+  s.Iy += my * Ip;
+  s.Ixy += my * Ixp;
+  // integral of s/(V L) = d - dtau/dx over the slip part
+  s.slip_x += alpha * hs - (tx0 - lo.tx);
+  s.slip_y += r.eta_L2_Pa_per_m * hs + r.phi_L3_Pa_per_m2 * (x_s * x_s - x_lo * x_lo) / 2 - (ty0 - lo.ty);
+  return lo;
+}
+
 }  // namespace detail
+
+// march_interval for a slip node hi and an interval strictly inside the strip (-a < x_lo < x_hi < a),
+// with the turn of the slip direction from turn(): interior_slip_turn, or slip_turns for all the
+// cells of a slip stretch at once
+template <class TurnFn>
+[[gnu::always_inline]] inline StripNode march_slip_interval(const StripRates& r, const StripNode& hi,
+                                                            const IntervalGeometry& geo, TurnFn&& turn,
+                                                            IntervalSums& s) {
+  const double x_hi = geo.x_hi, x_lo = geo.x_lo, h = x_hi - x_lo;
+  const double alpha = r.alpha_Pa_per_m;
+  const double beta = r.eta_L2_Pa_per_m + r.phi_L3_Pa_per_m2 * x_hi;  // d tau_y/dx at x_hi
+  const double gamma = r.phi_L3_Pa_per_m2 / 2;
+
+  // stick prediction at x_lo (Kalker's rule decides stick or slip there)
+  const double px = hi.tx - alpha * h;
+  const double py = hi.ty - beta * h + gamma * h * h;
+  const double g_lo = geo.bound_lo_Pa;
+  if (px * px + py * py <= g_lo * g_lo) {
+    detail::add_stick(r, hi, x_hi, beta, gamma, h, s);
+    return {px, py, hi.ex, hi.ey, true};
+  }
+
+  // slip throughout
+  return detail::slip_part(r, geo, 0.0, detail::midpoint_dy(r, x_hi, x_hi, x_lo), hi.tx, hi.ty, hi.ex, hi.ey,
+                           geo.load_N_per_m, geo.moment_N, turn, s);
+}
 
 [[gnu::always_inline]] inline StripNode march_interval(const StripRates& r, const StripNode& hi, const IntervalGeometry& geo,
                                 IntervalSums& s) {
   const double x_hi = geo.x_hi, x_lo = geo.x_lo, h = x_hi - x_lo, a = r.a_m;
+
+  // from slip inside the strip, the slip direction turns by the midpoint rule
+  if (!hi.stick && x_hi < a && x_lo > -a)
+    return march_slip_interval(r, hi, geo, [&] { return detail::interior_slip_turn(r, x_hi, x_lo); }, s);
+
   const double alpha = r.alpha_Pa_per_m;
   const double beta = r.eta_L2_Pa_per_m + r.phi_L3_Pa_per_m2 * x_hi;  // d tau_y/dx at x_hi
   const double gamma = r.phi_L3_Pa_per_m2 / 2;
@@ -110,50 +232,30 @@ namespace detail {
     ex0 = n0 > 0 ? tx0 / n0 : px / np;
     ey0 = n0 > 0 ? ty0 / n0 : py / np;
   }
-  const double x_s = x_hi - t_s, hs = x_s - x_lo;
-
-  // slip direction at x_lo: d psi/ds = -|d| sin(psi)/g exactly, d frozen at the midpoint
-  double ex = ex0, ey = ey0;
-  const double dx_m = alpha, dy_m = beta + r.phi_L3_Pa_per_m2 * ((x_s + x_lo) / 2 - x_hi);
-  const double ux = -dx_m, uy = -dy_m;  // -d, not yet normalised
-  const double s0u = ux * ey0 - uy * ex0;
-  if (s0u != 0 && G > 0) {
-    const double dn = std::sqrt(dx_m * dx_m + dy_m * dy_m), inv_dn = 1 / dn;
-    const double c0 = (ex0 * ux + ey0 * uy) * inv_dn, s0 = s0u * inv_dn;
-    // integral of ds/g over the slip part: exact at the strip ends and at a crossing, midpoint inside
-    double inv_g = 0;
-    if (t_s > 0 || x_hi >= a || x_lo <= -a) {
-      inv_g = a / G * (std::asin(std::clamp(x_s / a, -1.0, 1.0)) - std::asin(std::clamp(x_lo / a, -1.0, 1.0)));
-    } else {
-      const double um = (x_s + x_lo) / (2 * a);
-      inv_g = hs / (G * std::sqrt(1 - um * um));
-    }
-    const double k = std::exp(-dn * inv_g);  // tan(psi/2) decays by this factor
-    const double c1 = 1 + c0, ks = k * s0;
-    const double norm = c1 * c1 + ks * ks;
-    if (norm > 1e-300) {
-      const double scale = inv_dn / norm;
-      const double A = (c1 * c1 - ks * ks) * scale, B = 2 * ks * c1 * scale;
-      ex = A * ux - B * uy;
-      ey = A * uy + B * ux;
-    }
-  }
-  const StripNode lo{g_lo * ex, g_lo * ey, ex, ey, false};
-
-  // |tau| = mu p exactly over the slip part, direction the mean of its end directions
-  double Ip = geo.load_N_per_m, Ixp = geo.moment_N;
+  const double x_s = x_hi - t_s;
+  const double dy_m = detail::midpoint_dy(r, x_hi, x_s, x_lo);
+  // from a crossing the integrals of ds/g, p and x p over the slip part are exact
   if (t_s > 0) {
-    Ip = r.peak_Pa * a * (semi_ellipse_integral(x_s / a) - semi_ellipse_integral(x_lo / a));
-    Ixp = r.peak_Pa * a * a * (semi_ellipse_moment(x_s / a) - semi_ellipse_moment(x_lo / a));
+    const detail::EllipsePoint ps(x_s / a), pl(x_lo / a);
+    const double Ip = r.peak_Pa * a * (ps.integral() - pl.integral());
+    const double Ixp = r.peak_Pa * a * a * (ps.moment() - pl.moment());
+    auto turn = [&] { return detail::slip_turn(alpha, dy_m, a / G * (ps.asin_u - pl.asin_u)); };
+    return detail::slip_part(r, geo, t_s, dy_m, tx0, ty0, ex0, ey0, Ip, Ixp, turn, s);
   }
-  const double mx = r.mu * (ex0 + ex) / 2, my = r.mu * (ey0 + ey) / 2;
-  s.Ix += mx * Ip;
-  s.Iy += my * Ip;
-  s.Ixy += my * Ixp;
-  // integral of s/(V L) = d - dtau/dx over the slip part
-  s.slip_x += alpha * hs - (tx0 - lo.tx);
-  s.slip_y += r.eta_L2_Pa_per_m * hs + r.phi_L3_Pa_per_m2 * (x_s * x_s - x_lo * x_lo) / 2 - (ty0 - lo.ty);
-  return lo;
+  // slip throughout: the integral of ds/g is exact at the strip ends, by the midpoint rule inside
+  auto turn = [&] {
+    const double inv_g = x_hi >= a || x_lo <= -a
+                             ? a / G * (detail::clamped_asin(x_s / a) - detail::clamped_asin(x_lo / a))
+                             : detail::midpoint_inv_g(r, x_s, x_lo);
+    return detail::slip_turn(alpha, dy_m, inv_g);
+  };
+  return detail::slip_part(r, geo, t_s, dy_m, tx0, ty0, ex0, ey0, geo.load_N_per_m, geo.moment_N, turn, s);
+}
+
+// The slip turns of the cells first down to last, as interior_slip_turn gives them (x[i] = x_edge(i)),
+// all at once: independent of each other, their exponentials overlap.
+inline void slip_turns(const StripRates& r, const double* x, int first, int last, detail::SlipTurn* turn) {
+  for (int i = first; i >= last; --i) turn[i] = detail::interior_slip_turn(r, x[i + 1], x[i]);
 }
 
 }  // namespace contact
