@@ -162,6 +162,31 @@ template <class TurnFn>
 
 }  // namespace detail
 
+namespace detail {
+
+// the stick prediction at x_lo from tau at x_hi; Kalker's rule: the node sticks if the prediction
+// lies inside the bound, and then the whole interval sticks (its integrals are added to s)
+struct StickStep {
+  double beta = 0, gamma = 0;  // d tau_y/dx at x_hi, and half the curvature of tau_y
+  double px = 0, py = 0;       // the prediction at x_lo
+  bool stick = false;
+};
+
+[[gnu::always_inline]] inline StickStep stick_step(const StripRates& r, const StripNode& hi, const IntervalGeometry& geo,
+                                                   IntervalSums& s) {
+  const double x_hi = geo.x_hi, h = x_hi - geo.x_lo;
+  StickStep k;
+  k.beta = r.eta_L2_Pa_per_m + r.phi_L3_Pa_per_m2 * x_hi;
+  k.gamma = r.phi_L3_Pa_per_m2 / 2;
+  k.px = hi.tx - r.alpha_Pa_per_m * h;
+  k.py = hi.ty - k.beta * h + k.gamma * h * h;
+  k.stick = k.px * k.px + k.py * k.py <= geo.bound_lo_Pa * geo.bound_lo_Pa;
+  if (k.stick) add_stick(r, hi, x_hi, k.beta, k.gamma, h, s);
+  return k;
+}
+
+}  // namespace detail
+
 // march_interval for a slip node hi and an interval strictly inside the strip (-a < x_lo < x_hi < a),
 // with the turn of the slip direction from turn(): interior_slip_turn, or slip_turns for all the
 // cells of a slip stretch at once
@@ -169,19 +194,9 @@ template <class TurnFn>
 [[gnu::always_inline]] inline StripNode march_slip_interval(const StripRates& r, const StripNode& hi,
                                                             const IntervalGeometry& geo, TurnFn&& turn,
                                                             IntervalSums& s) {
-  const double x_hi = geo.x_hi, x_lo = geo.x_lo, h = x_hi - x_lo;
-  const double alpha = r.alpha_Pa_per_m;
-  const double beta = r.eta_L2_Pa_per_m + r.phi_L3_Pa_per_m2 * x_hi;  // d tau_y/dx at x_hi
-  const double gamma = r.phi_L3_Pa_per_m2 / 2;
-
-  // stick prediction at x_lo (Kalker's rule decides stick or slip there)
-  const double px = hi.tx - alpha * h;
-  const double py = hi.ty - beta * h + gamma * h * h;
-  const double g_lo = geo.bound_lo_Pa;
-  if (px * px + py * py <= g_lo * g_lo) {
-    detail::add_stick(r, hi, x_hi, beta, gamma, h, s);
-    return {px, py, hi.ex, hi.ey, true};
-  }
+  const double x_hi = geo.x_hi, x_lo = geo.x_lo;
+  const detail::StickStep k = detail::stick_step(r, hi, geo, s);
+  if (k.stick) return {k.px, k.py, hi.ex, hi.ey, true};
 
   // slip throughout
   return detail::slip_part(r, geo, 0.0, detail::midpoint_dy(r, x_hi, x_hi, x_lo), hi.tx, hi.ty, hi.ex, hi.ey,
@@ -196,18 +211,9 @@ template <class TurnFn>
   if (!hi.stick && x_hi < a && x_lo > -a)
     return march_slip_interval(r, hi, geo, [&] { return detail::interior_slip_turn(r, x_hi, x_lo); }, s);
 
-  const double alpha = r.alpha_Pa_per_m;
-  const double beta = r.eta_L2_Pa_per_m + r.phi_L3_Pa_per_m2 * x_hi;  // d tau_y/dx at x_hi
-  const double gamma = r.phi_L3_Pa_per_m2 / 2;
-
-  // stick prediction at x_lo (Kalker's rule decides stick or slip there)
-  const double px = hi.tx - alpha * h;
-  const double py = hi.ty - beta * h + gamma * h * h;
-  const double g_lo = geo.bound_lo_Pa;
-  if (px * px + py * py <= g_lo * g_lo) {
-    detail::add_stick(r, hi, x_hi, beta, gamma, h, s);
-    return {px, py, hi.ex, hi.ey, true};
-  }
+  const detail::StickStep k = detail::stick_step(r, hi, geo, s);
+  if (k.stick) return {k.px, k.py, hi.ex, hi.ey, true};
+  const double alpha = r.alpha_Pa_per_m, beta = k.beta, gamma = k.gamma, px = k.px, py = k.py;
 
   // slip at x_lo; from stick, the slip starts where the stick line crosses the bound
   const double G = r.bound_Pa;
