@@ -245,8 +245,8 @@ void read_solver(YamlMap& m, SolverSection& s) {
   m.optional("ny", s.ny, in_closed(1, 4096));
 }
 
-// "LOCATION: " of the key if it was read from a file, else of its closest enclosing section that was,
-// else "PATH: " (or nothing for a case built in code)
+}  // namespace
+
 std::string where(const ContactCase& c, std::string key) {
   for (;;) {
     const auto it = c.locations.find(key);
@@ -259,6 +259,8 @@ std::string where(const ContactCase& c, std::string key) {
 }
 
 bool given(const ContactCase& c, const std::string& key) { return c.locations.count(key) > 0; }
+
+namespace {
 
 // the constant of a history the steady command needs
 double steady_value(const ContactCase& c, const History& h, const std::string& key) {
@@ -304,7 +306,7 @@ void check_curvature(const ContactCase& c, const char* axis, const char* symbol,
 
 }  // namespace
 
-ContactCase read_contact_case(const std::string& path) {
+ContactCase read_contact_case(const std::string& path, const ExtraSections& extra) {
   ContactCase c;
   c.path = path;
   c.name = std::filesystem::path(path).stem().string();
@@ -330,6 +332,7 @@ ContactCase read_contact_case(const std::string& path) {
       s.optional("directory", c.output.directory);
       s.optional("fields", c.output.fields);
     });
+    if (extra) extra(m);
   });
   validate(c);
   spdlog::debug("case '{}' read from {}", c.name, path);
@@ -566,6 +569,7 @@ TransientCase transient_case_of(const ContactCase& c) {
 }
 
 Grid transient_grid(const TransientCase& t) {
+  if (t.patch) return t.patch->grid;
   const HertzContact largest = solve_hertz(t.bodies, t.materials, max_value(t.inputs.normal_load_N));
   return make_grid(largest.a_m, largest.b_m, t.settings.grid);
 }

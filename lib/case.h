@@ -16,6 +16,7 @@
 //                path_speed_m_per_s: 1.0 }    # then kinematics.speed_m_per_s and xi follow from the spin
 #pragma once
 
+#include <functional>
 #include <map>
 #include <optional>
 #include <stdexcept>
@@ -112,8 +113,19 @@ struct ContactCase {
   KeyLocations locations;  // where each value was read; empty for a case built in code
 };
 
+class YamlMap;  // lib/yaml_reader.h
+// the sections a command reads beyond the contact's (e.g. wear/wear_case.h's wear:), from the same
+// top-level mapping and with the same errors; a section nobody reads stays an error
+using ExtraSections = std::function<void(YamlMap& top_level)>;
+
 // reads and validates; throws CaseError (file, line, key) on any problem
-ContactCase read_contact_case(const std::string& path);
+ContactCase read_contact_case(const std::string& path, const ExtraSections& extra = {});
+
+// "FILE:LINE:COL: " of the key if it was read from the file, else of its closest enclosing section
+// that was, else "FILE: " (nothing for a case built in code): the prefix of a cross-key message
+std::string where(const ContactCase& c, std::string key);
+// true if the key was read from the file
+bool given(const ContactCase& c, const std::string& key);
 
 // cross-key checks of any case (read_contact_case runs them); throws CaseError naming every key involved
 void validate(const ContactCase& c);

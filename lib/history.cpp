@@ -39,6 +39,28 @@ double min_value(const History& h) { return *std::min_element(h.value.begin(), h
 
 bool is_constant(const History& h) { return max_value(h) == min_value(h); }
 
+double constant_since(const History& h, double t) {
+  const auto& T = h.t_s;
+  const auto& v = h.value;
+  // the last row at or before t, then back over rows of the same value
+  size_t k = std::upper_bound(T.begin(), T.end(), t) - T.begin();  // T[k-1] <= t < T[k]
+  if (k == 0) return -std::numeric_limits<double>::infinity();     // held before the first row
+  if (k < T.size() && v[k] != v[k - 1] && t > T[k - 1]) return t;  // inside a ramp
+  while (k > 1 && v[k - 2] == v[k - 1]) --k;
+  return k == 1 ? -std::numeric_limits<double>::infinity() : T[k - 1];
+}
+
+double constant_until(const History& h, double t) {
+  const auto& T = h.t_s;
+  const auto& v = h.value;
+  // the first row at or after t, then on over rows of the same value
+  size_t k = std::lower_bound(T.begin(), T.end(), t) - T.begin();  // T[k-1] < t <= T[k]
+  if (k == T.size()) return std::numeric_limits<double>::infinity();  // held after the last row
+  if (k > 0 && T[k] != t && v[k] != v[k - 1]) return t;               // inside a ramp
+  while (k + 1 < T.size() && v[k + 1] == v[k]) ++k;
+  return k + 1 == T.size() ? std::numeric_limits<double>::infinity() : T[k];
+}
+
 namespace {
 // breakpoints of the history strictly between t0 and t1, with t0 and t1 themselves
 std::vector<double> pieces(const History& h, double t0, double t1) {

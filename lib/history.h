@@ -27,5 +27,10 @@ double integral(const History& h, double t0_s, double t1_s);
 double time_to_accumulate(const History& h, double t0_s, double amount);
 // true if the history is the same value at all times
 bool is_constant(const History& h);
+// The stretch of constant value around t_s: the earliest t0 <= t_s with the history constant on
+// [t0, t_s] (-inf: constant since the start), and the latest t1 >= t_s with it constant on [t_s, t1]
+// (+inf: constant from there on). Inside a ramp both return t_s.
+double constant_since(const History& h, double t_s);
+double constant_until(const History& h, double t_s);
 
 }  // namespace contact

@@ -286,23 +286,23 @@ bool has_constant_curvature(const Profile& profile, double rel_tol) {
   return has_constant_curvature(fit_parabola(profile), rel_tol);
 }
 
-std::uint64_t profile_hash(const Profile& profile) {
+std::uint64_t hash_words(const void* data, std::size_t size, std::uint64_t h) {
   // FNV-1a over 64-bit words (the arrays are doubles): a word at a time is 8 times fewer rounds
-  std::uint64_t h = 1469598103934665603ull;  // FNV-1a offset basis
-  auto bytes = [&h](const void* data, std::size_t size) {
-    const auto* b = static_cast<const unsigned char*>(data);
-    for (std::size_t i = 0; i < size; i += sizeof(std::uint64_t)) {
-      std::uint64_t w = 0;
-      std::memcpy(&w, b + i, std::min(sizeof w, size - i));
-      h = (h ^ w) * 1099511628211ull;
-    }
-  };
-  const std::int64_t n = profile.y_m.size(), m = profile.z_m.size();
-  bytes(&n, sizeof n);
-  bytes(profile.y_m.data(), static_cast<std::size_t>(n) * sizeof(double));
-  bytes(&m, sizeof m);
-  bytes(profile.z_m.data(), static_cast<std::size_t>(m) * sizeof(double));
+  const auto* b = static_cast<const unsigned char*>(data);
+  for (std::size_t i = 0; i < size; i += sizeof(std::uint64_t)) {
+    std::uint64_t w = 0;
+    std::memcpy(&w, b + i, std::min(sizeof w, size - i));
+    h = (h ^ w) * 1099511628211ull;
+  }
   return h;
+}
+
+std::uint64_t profile_hash(const Profile& profile) {
+  const std::int64_t n = profile.y_m.size(), m = profile.z_m.size();
+  std::uint64_t h = hash_words(&n, sizeof n);
+  h = hash_words(profile.y_m.data(), static_cast<std::size_t>(n) * sizeof(double), h);
+  h = hash_words(&m, sizeof m, h);
+  return hash_words(profile.z_m.data(), static_cast<std::size_t>(m) * sizeof(double), h);
 }
 
 std::uint64_t profile_hash(const Profiles& profiles) {

@@ -14,6 +14,7 @@
 
 #include <Eigen/Core>
 
+#include <cstddef>
 #include <cstdint>
 #include <string>
 
@@ -85,6 +86,8 @@ bool has_constant_curvature(const ParabolaFit& fit, double rel_tol);
 // A 64-bit hash (FNV-1a) of the node arrays' bytes: equal profiles give equal hashes, so a caller
 // that stored the hash of the profiles of its last solve can reuse that solution.
 std::uint64_t profile_hash(const Profile& profile);
+// the hash it is made of: FNV-1a over the bytes taken 8 at a time, continuing from h
+std::uint64_t hash_words(const void* data, std::size_t size, std::uint64_t h = 1469598103934665603ull);
 std::uint64_t profile_hash(const Profiles& profiles);
 
 }  // namespace contact

@@ -304,6 +304,9 @@ void check_run(const TransientCase& c) {
   if (!(s.dt_s >= 0) || !std::isfinite(s.dt_s)) throw std::invalid_argument("dt_s: must be >= 0");
   if (s.scheme != TransientScheme::Shift && !(s.dt_s > 0))
     throw std::invalid_argument("dt_s: the " + to_string(s.scheme) + " scheme needs a time step");
+  if (c.patch && !(is_constant(c.inputs.normal_load_N) && c.inputs.normal_load_N.value[0] == c.patch->normal_load_N))
+    throw std::invalid_argument("normal_load_N: a run on a given contact patch needs the constant load of the patch, " +
+                                std::to_string(c.patch->normal_load_N) + " N");
   if (c.inertia) {
     const RollerInertia& in = *c.inertia;
     check_history(in.path_speed_m_per_s, "path_speed_m_per_s");
@@ -318,6 +321,7 @@ void check_run(const TransientCase& c) {
 
 // the contact at load F on the run's grid; no contact at F = 0
 ContactPatch contact_at(const TransientCase& c, const Grid& grid, double F) {
+  if (c.patch) return *c.patch;  // check_run: F is its load
   if (F > 0) return hertz_patch(solve_hertz(c.bodies, c.materials, F), grid);
   ContactPatch p;
   p.grid = grid;
@@ -357,8 +361,12 @@ TransientResult run_transient(const TransientCase& c, const StepObserver& observ
   const TransientSettings& set = c.settings;
   TransientResult res;
   // the grid covers the largest contact of the run
-  const HertzContact largest = solve_hertz(c.bodies, c.materials, max_value(c.inputs.normal_load_N));
-  res.grid = make_grid(largest.a_m, largest.b_m, set.grid);
+  if (c.patch) {
+    res.grid = c.patch->grid;
+  } else {
+    const HertzContact largest = solve_hertz(c.bodies, c.materials, max_value(c.inputs.normal_load_N));
+    res.grid = make_grid(largest.a_m, largest.b_m, set.grid);
+  }
   const Grid& g = res.grid;
   const double dx = g.dx_m;
   res.strip_energy_J_per_m = Eigen::ArrayXd::Zero(g.ny);
@@ -519,6 +527,40 @@ TransientResult run_transient(const TransientCase& c, const StepObserver& observ
     }
     SPDLOG_TRACE("satran step {}: t {:.6e} s, Fx {:.6e} N, P {:.6e} W", step, t, r.Fx_N, rec.power_W);
     if (!(k.dt_s > 0)) break;  // nothing left to advance
+
+    // steady running: every input constant since the state was last disturbed, long enough for the
+    // material now in contact to have entered under the constant inputs -> skip to the next change
+    if (set.skip_steady && set.scheme == TransientScheme::Shift && !c.inertia && k.dq_m == dx) {
+      const History* inputs[] = {&c.inputs.speed_m_per_s, &c.inputs.xi, &c.inputs.eta, &c.inputs.phi_per_m,
+                                 &c.inputs.normal_load_N};
+      double since = 0, until = set.t_end_s;
+      for (const History* h : inputs) {
+        since = std::max(since, constant_since(*h, t - k.dt_s));
+        until = std::min(until, constant_until(*h, t));
+      }
+      if (next_snap < snaps.size()) until = std::min(until, snaps[next_snap]);
+      const double settle_m = 2 * patches.at(F).half_length_m.maxCoeff() + 2 * dx;
+      // a whole number of steps, so that the steps after the stretch fall where they would without the skip
+      const double whole_steps = std::floor((until - t) / k.dt_s) - 1;
+      if (whole_steps >= 2 && integral(c.inputs.speed_m_per_s, since, t - k.dt_s) >= settle_m) {
+        // the last step's strip powers are the steady ones: held over the stretch
+        const double span = whole_steps * k.dt_s;
+        const double rate = whole_steps;
+        TransientRecord skip = rec;
+        skip.step = ++step;
+        skip.t_s = t + span / 2;
+        skip.q_m = q + V * span / 2;
+        skip.dt_s = span;
+        skip.cfl = V * span / dx;
+        skip.skipped = true;
+        t += span;
+        q += whole_steps * k.dq_m;
+        res.strip_energy_J_per_m += rate * r.strip_energy_J_per_m;
+        res.dissipated_J += rate * r.dissipated_J;
+        if (observe) observe(skip, Eigen::ArrayXd(r.strip_energy_J_per_m / k.dt_s));
+        SPDLOG_TRACE("satran: steady running skipped from t {:.6e} s to {:.6e} s", t - span, t);
+      }
+    }
   }
   res.steps = step;
   res.t_end_s = t;

@@ -127,6 +127,12 @@ struct TransientSettings {
   bool substep = false;   // split a step that breaks CFL <= 1 instead of refusing it
   GridSpec grid;
   std::vector<double> snapshot_times_s;  // fields are recorded at the end of the step that reaches each
+  // Skip steady running (shift, no inertia): once every input has been constant over a rolled
+  // distance of 2 max a_j + 2 dx, the state is the steady one (to rounding), and the rest of the
+  // constant stretch (whole steps, up to one step before the next change of an input, snapshot time
+  // or t_end_s) is one record with the last step's strip powers times its duration, instead of a step
+  // per dx rolled. The steps after it fall where they would without the skip.
+  bool skip_steady = false;
 };
 
 struct TransientCase {
@@ -136,6 +142,10 @@ struct TransientCase {
   TransientInputs inputs;
   std::optional<RollerInertia> inertia;
   TransientSettings settings;
+  // The contact on its own grid (e.g. semi-Hertzian on worn profiles, lib/semi_hertz.h), used at
+  // every step in place of Hertz's from the bodies; the load history must then be the constant
+  // patch->normal_load_N (throws std::invalid_argument otherwise), settings.grid is not used.
+  std::optional<ContactPatch> patch;
 };
 
 struct TransientRecord {  // one step
@@ -149,6 +159,7 @@ struct TransientRecord {  // one step
   double stick_fraction = 0;
   double balance_residual_W = 0;
   double cfl = 0;
+  bool skipped = false;  // steady running skipped (settings.skip_steady): dt_s spans the whole stretch
 };
 
 struct Snapshot {

@@ -659,7 +659,7 @@ SemiHertzResult solve_normal_on_profiles(const Profiles& profiles, double Rx1_m,
       const Bodies bodies{{Rx1_m, radius(f1.curvature_per_m)}, {Rx2_m, radius(f2.curvature_per_m)}};
       const HertzContact h = solve_hertz(bodies, pair, normal_load_N);
       if (y0 - h.b_m > lo && y0 + h.b_m < hi) {
-        spdlog::info("normal problem: both profiles have constant curvature within {:.1e} (Ry1 {:.6g} m, Ry2 {:.6g} m): "
+        spdlog::debug("normal problem: both profiles have constant curvature within {:.1e} (Ry1 {:.6g} m, Ry2 {:.6g} m): "
                      "Hertz instead of semi-Hertz",
                      curvature_rtol, bodies.body1.Ry_m, bodies.body2.Ry_m);
         SemiHertzResult res;

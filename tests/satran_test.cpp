@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #include "lib/steady.h"
@@ -223,6 +224,51 @@ TEST(Satran, StandstillAndPureSlidingNeedNoRolling) {
     EXPECT_EQ(r.Fx_N, 0);
     EXPECT_EQ(r.power_W, 0);
   }
+}
+
+// ---- skipping steady running ----
+
+// The skip changes nothing but the run time: a start, a long constant stretch and a stop, with and
+// without skip_steady, give the same strip energies and totals to rounding (the shift scheme's state
+// is exactly steady once the constant inputs have rolled through the contact), in far fewer steps.
+TEST(SatranSkip, SteadyStretchSkippedChangesNothingButTheStepCount) {
+  TransientCase c = paper_case(0, {1e-3, 2e-4, 0.3}, 20);
+  c.inputs.speed_m_per_s = {{0, 2e-4, 2.2e-2, 2.22e-2}, {0, 1.8, 1.8, 0}};
+  c.settings.t_end_s = 2.25e-2;
+  TransientCase skipping = c;
+  skipping.settings.skip_steady = true;
+  double skipped_s = 0;
+  long steps = 0;
+  const TransientResult with = run_transient(skipping, [&](const TransientRecord& r, const Eigen::ArrayXd&) {
+    ++steps;
+    if (r.skipped) skipped_s += r.dt_s;
+  });
+  const TransientResult without = run_transient(c);
+  EXPECT_GT(skipped_s, 0.02);  // most of the constant stretch
+  EXPECT_LT(with.steps * 10, without.steps);
+  EXPECT_EQ(with.steps, steps);
+  EXPECT_NEAR(with.t_end_s, without.t_end_s, 1e-15);
+  EXPECT_NEAR(with.q_end_m / without.q_end_m, 1.0, 1e-12);
+  EXPECT_NEAR(with.dissipated_J / without.dissipated_J, 1.0, 1e-10);
+  const double scale = without.strip_energy_J_per_m.abs().maxCoeff();
+  EXPECT_LT((with.strip_energy_J_per_m - without.strip_energy_J_per_m).abs().maxCoeff(), 1e-10 * scale);
+}
+
+// History stretches of constant value, around a time: the bounds the skip reads.
+TEST(SatranSkip, ConstantStretchesOfAHistory) {
+  const History h{{0, 1, 2, 3, 4}, {0, 5, 5, 5, 1}};
+  const double inf = std::numeric_limits<double>::infinity();
+  EXPECT_EQ(constant_since(h, 1.5), 1);
+  EXPECT_EQ(constant_until(h, 1.5), 3);
+  EXPECT_EQ(constant_since(h, 3), 1);
+  EXPECT_EQ(constant_until(h, 3), 3);
+  EXPECT_EQ(constant_since(h, 0.5), 0.5);  // inside a ramp
+  EXPECT_EQ(constant_until(h, 3.5), 3.5);
+  EXPECT_EQ(constant_since(h, -1), -inf);  // held before the first row
+  EXPECT_EQ(constant_until(h, 5), inf);    // held after the last row
+  EXPECT_EQ(constant_since(h, 5), 4);
+  EXPECT_EQ(constant_since(constant_history(2.0), 7), -inf);
+  EXPECT_EQ(constant_until(constant_history(2.0), 7), inf);
 }
 
 // ---- the roller's inertia ----
