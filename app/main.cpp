@@ -3,12 +3,15 @@
 // Exit codes: 0 success, 2 bad input (case file, option, invalid argument), 1 any other failure.
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <csignal>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <limits>
 #include <memory>
 #include <optional>
@@ -26,6 +29,10 @@
 #include "lib/satran.h"
 #include "lib/steady.h"
 #include "lib/tangential.h"
+#include "app/plot.h"
+#include "wear/wear_case.h"
+#include "wear/wear_loop.h"
+#include "wear/wear_output.h"
 
 #ifndef ROLLWEAR_VERSION
 #define ROLLWEAR_VERSION "0.1.0"  // keep equal to project(VERSION) in CMakeLists.txt
@@ -222,26 +229,27 @@ class Progress {
   using Clock = std::chrono::steady_clock;
 
  public:
-  Progress(double t_end_s, bool quiet)
-      : t_end_s_(t_end_s), quiet_(quiet), terminal_(::isatty(STDERR_FILENO) == 1), start_(Clock::now()),
+  Progress(std::string label, bool quiet)
+      : label_(std::move(label)), quiet_(quiet), terminal_(::isatty(STDERR_FILENO) == 1), start_(Clock::now()),
         last_(start_) {}
   ~Progress() { clear(); }
 
-  void update(int step, double t_s) {
+  // done: the fraction of the run done, in [0, 1] (for the ETA); what: the state of the run
+  void update(double done, const std::string& what) {
     if (quiet_) return;
     const Clock::time_point now = Clock::now();
     const double elapsed_s = seconds(now - start_);
     if (terminal_ ? elapsed_s < 1.0 || seconds(now - last_) < 0.2 : seconds(now - last_) < 5.0) return;
     last_ = now;
-    const double done = std::min(1.0, t_s / t_end_s_);
-    const std::string line = fmt::format("step {}, t {:.4e} / {:.4e} s ({:.0f} %), ETA {}", step, t_s, t_end_s_,
-                                         100 * done, eta(done > 0 ? elapsed_s * (1 - done) / done : -1));
+    done = std::clamp(done, 0.0, 1.0);
+    const std::string line = fmt::format("{} ({:.0f} %), ETA {}", what, 100 * done,
+                                         eta(done > 0 ? elapsed_s * (1 - done) / done : -1));
     if (terminal_) {
       std::fprintf(stderr, "\r%s\033[K", line.c_str());
       std::fflush(stderr);
       drawn_ = true;
     } else {
-      spdlog::info("transient: {}", line);
+      spdlog::info("{}: {}", label_, line);
     }
   }
 
@@ -261,7 +269,7 @@ class Progress {
     return fmt::format("{:.0f} min {:02.0f} s", std::floor(s / 60), std::fmod(s, 60));
   }
 
-  double t_end_s_;
+  std::string label_;
   bool quiet_, terminal_, drawn_ = false;
   Clock::time_point start_, last_;
 };
@@ -324,7 +332,7 @@ int run_transient_command(const TransientOptions& opt) {
   // before it starts writes nothing
   std::optional<StreamedFile> timeseries, strip_power;
   RunLog log;
-  Progress progress(t.settings.t_end_s, opt.quiet);
+  Progress progress("transient", opt.quiet);
   const StepObserver observe = [&](const TransientRecord& r, const Eigen::ArrayXd& power_W_per_m) {
     if (!timeseries) {
       timeseries.emplace(dir / "timeseries.csv");
@@ -343,7 +351,8 @@ int run_transient_command(const TransientOptions& opt) {
       log.sliding_end_step = r.step;
       log.sliding_end_s = r.t_s;
     }
-    progress.update(r.step, log.t_s);
+    progress.update(log.t_s / t.settings.t_end_s,
+                    fmt::format("step {}, t {:.4e} / {:.4e} s", r.step, log.t_s, t.settings.t_end_s));
   };
 
   TransientResult res;
@@ -383,6 +392,165 @@ void print_error(const std::string& message) {
 
 }  // namespace
 
+// ---- run: the wear loop over the life (the main job) ------------------------------------------------
+
+struct RunOptions {
+  std::string case_path;
+  std::string output_directory;
+  bool resume = false;
+  bool restart = false;
+  bool quiet = false;
+};
+
+CLI::App* add_run_command(CLI::App& app, RunOptions& opt, CommonOptions& common) {
+  CLI::App* sub = app.add_subcommand(
+      "run", "The wear of the case's bodies over their life (wear: section): the worn profiles, the contact and "
+             "the dissipated energy per duty cycle, integrated over revolutions until a limit ends the life. "
+             "Writes summary.csv (one row per accepted step), snapshots/ (worn profiles), report.txt and, "
+             "while running, checkpoint.txt.");
+  sub->footer(
+      "A run killed at any moment continues from its last checkpoint with --resume and ends with the same\n"
+      "result (bit-identical with fixed stepping, within the tolerance with adaptive stepping). A folder\n"
+      "holding an unfinished run is not overwritten unless --restart is given.\n"
+      "Exit status: 0 success (whatever limit ended the life), 2 bad input, 1 any other failure.");
+  sub->add_option("case", opt.case_path, "Case file (YAML) with a wear: section, e.g. cases/paper-wear.yaml")
+      ->required();
+  sub->add_option("-o,--output", opt.output_directory,
+                  "Output directory (default: the case's output.directory, else out/<case name>)");
+  sub->add_flag("--resume", opt.resume, "Continue the run from the output directory's checkpoint.txt");
+  sub->add_flag("--restart", opt.restart, "Start afresh even if the output directory holds an unfinished run");
+  sub->add_flag("-q,--quiet", opt.quiet, "No progress line");
+  add_log_level_option(*sub, common);
+  return sub;
+}
+
+std::string read_text(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw std::runtime_error(path.string() + ": cannot read");
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+int run_run_command(const RunOptions& opt) {
+  using namespace wear;
+  using Clock = std::chrono::steady_clock;
+  const Clock::time_point started = Clock::now();
+  const WearCase c = read_wear_case(opt.case_path);
+  const WearModel m = make_wear_model(c);
+  const std::filesystem::path dir = output_directory(opt.output_directory, c.contact);
+  const std::filesystem::path checkpoint_path = dir / "checkpoint.txt", summary_path = dir / "summary.csv";
+  const double hours_per_rev = hours_per_revolution(m);
+  const std::uint64_t fingerprint = case_fingerprint(read_text(opt.case_path), m);
+  if (opt.resume && opt.restart) throw std::invalid_argument("--resume and --restart exclude each other");
+
+  // where the life starts: a checkpoint, or the unworn state
+  Checkpoint cp;
+  std::string summary;
+  WearCache cache;
+  if (opt.resume) {
+    if (!std::filesystem::exists(checkpoint_path))
+      throw std::invalid_argument(checkpoint_path.string() + ": no checkpoint to resume from (the run finished, "
+                                  "or never started: run without --resume)");
+    cp = read_checkpoint(checkpoint_path);
+    if (cp.case_hash != fingerprint)
+      throw std::invalid_argument(checkpoint_path.string() + ": the checkpoint belongs to another case, or " +
+                                  opt.case_path + " (or a profile) changed since; run with --restart to start afresh");
+    summary = summary_up_to(summary_path, cp.start.steps);
+    spdlog::info("run: resuming at revolution {:.6g} (step {}) from {}", cp.start.N, cp.start.steps,
+                 checkpoint_path.string());
+  } else {
+    if (std::filesystem::exists(checkpoint_path) && !opt.restart)
+      throw std::invalid_argument(dir.string() + " holds an unfinished run (checkpoint.txt): continue it with --resume, "
+                                  "or start afresh with --restart");
+    std::filesystem::remove_all(dir / "snapshots");  // a previous run's snapshots are not this run's
+    std::filesystem::remove(dir / "report.txt");
+    cp.case_hash = fingerprint;
+    cp.start.state = initial_state(m);
+    LifeStep s0;
+    s0.state = &cp.start.state;
+    s0.contact = wear_rate(m, cp.start.state, cache).contact;
+    summary = wear_summary_header(m) + wear_summary_row(m, s0, hours_per_rev);
+  }
+
+  // outputs: the worn profiles of each wearing body at a revolution
+  const auto snapshot_files = [&](double N, const Eigen::VectorXd& state) {
+    std::vector<OutputFile> files;
+    for (int body : {1, 2})
+      if ((body == 1 ? m.n1 : m.n2) > 0)
+        files.push_back({dir / wear_snapshot_path(cp.snapshots_written, body),
+                         wear_snapshot_csv(m, body, N, N * hours_per_rev, state)});
+    ++cp.snapshots_written;
+    return files;
+  };
+  const double earlier_s = cp.wall_s;  // run time before the resume
+  const auto elapsed_s = [&] { return earlier_s + std::chrono::duration<double>(Clock::now() - started).count(); };
+  // summary and checkpoint together: the summary is renamed first, so it never lags the checkpoint
+  const auto save = [&](std::vector<OutputFile> files) {
+    cp.wall_s = elapsed_s();
+    files.push_back({summary_path, summary});
+    files.push_back({checkpoint_path, checkpoint_text(cp)});
+    write_files_atomic(files);
+  };
+  if (!opt.resume) save(snapshot_files(0, cp.start.state));
+
+  // the life, step by step: a summary row each, a checkpoint every checkpoint_interval_s
+  Progress progress("run", opt.quiet);
+  Clock::time_point last_save = Clock::now();
+  LifeHooks hooks;
+  hooks.on_step = [&](const LifeStep& s) {
+    summary += wear_summary_row(m, s, hours_per_rev);
+    cp.start = {s.N, *s.state, s.info.next_step, s.step, s.info.rhs_evals, s.info.rejected};
+    if (std::chrono::duration<double>(Clock::now() - last_save).count() >= c.wear.checkpoint_interval_s) {
+      save({});
+      last_save = Clock::now();
+    }
+    const double depth = max_depth_m(m, *s.state);
+    double done = s.N / c.wear.revolutions;
+    if (m.limits.max_depth_m > 0) done = std::max(done, depth / m.limits.max_depth_m);
+    progress.update(done, fmt::format("step {}, {:.4g} revolutions ({:.4g} h), max depth {:.4g} um", s.step, s.N,
+                                      s.N * hours_per_rev, depth * 1e6));
+    return true;
+  };
+  hooks.on_snapshot = [&](double N, const Eigen::VectorXd& state) {
+    save(snapshot_files(N, state));
+    last_save = Clock::now();
+  };
+  const LifeResult life = run_life(m, c, cp.start, hooks, cache);
+  progress.clear();
+
+  // a limit located within a step ends the life between step ends: its state is the last row
+  if (life.N > cp.start.N) {
+    LifeStep end;
+    end.step = life.steps;
+    end.N = life.N;
+    end.state = &life.state;
+    end.info.step = life.N - cp.start.N;
+    end.info.rhs_evals = life.rhs_evals;
+    end.info.rejected = life.rejected;
+    end.contact = life.contact;
+    summary += wear_summary_row(m, end, hours_per_rev);
+  }
+
+  // the end: the final worn profiles and the report; the checkpoint goes (the run is complete)
+  WearReport report;
+  report.case_name = m.name;
+  report.life = life;
+  report.hours_per_revolution = hours_per_rev;
+  report.counters = cache.counters;
+  report.wall_s = elapsed_s();
+  report.resumed = opt.resume;
+  std::vector<OutputFile> files = snapshot_files(life.N, life.state);
+  files.push_back({summary_path, summary});
+  const std::string report_text = wear_report_text(m, report);
+  files.push_back({dir / "report.txt", report_text});
+  write_files_atomic(files);
+  std::filesystem::remove(checkpoint_path);
+  fmt::print("{}", report_text);
+  spdlog::info("wrote summary.csv, report.txt and {} snapshots to {}", cp.snapshots_written, dir.string());
+  return life.ended_by == "failed" ? kExitFailure : 0;
+}
+
 int main(int argc, char** argv) {
   CLI::App app{"rollwear: wear of bodies in rolling contact (Hertz normal problem, Kalker's simplified "
                "theory for the tangential one, steady or transient).",
@@ -398,6 +566,13 @@ int main(int argc, char** argv) {
   CLI::App* contact_cmd = add_contact_command(app, contact_opt, common);
   TransientOptions transient_opt;
   CLI::App* transient_cmd = add_transient_command(app, transient_opt, common);
+  RunOptions run_opt;
+  CLI::App* run_cmd = add_run_command(app, run_opt, common);
+  std::string plot_dir;
+  CLI::App* plot_cmd = app.add_subcommand("plot", "PNG plots of a wear run's output folder (gnuplot): the worn "
+                                                  "profiles at every snapshot, depth and peak pressure against "
+                                                  "revolutions, written to OUTPUT_DIR/plots/");
+  plot_cmd->add_option("output_dir", plot_dir, "The folder a 'rollwear run' wrote, e.g. out/paper-wear")->required();
 
   try {
     app.parse(argc, argv);
@@ -412,6 +587,8 @@ int main(int argc, char** argv) {
     set_up_logging(common.log_level);
     if (contact_cmd->parsed()) return run_contact(contact_opt);
     if (transient_cmd->parsed()) return run_transient_command(transient_opt);
+    if (run_cmd->parsed()) return run_run_command(run_opt);
+    if (plot_cmd->parsed()) return plot_command(plot_dir);
     print_error("no subcommand ran");
     return kExitBadInput;
   } catch (const CaseError& e) {

@@ -9,6 +9,7 @@ ROLLWEAR_DEB_PACKAGES=(
   cmake ninja-build g++ pkg-config
   libeigen3-dev libsundials-dev libyaml-cpp-dev libspdlog-dev libcli11-dev
   libfftw3-dev                   # half-space normal solver (found through pkg-config)
+  gnuplot-nox                    # rollwear plot
   libgtest-dev libbenchmark-dev  # tests; benchmarks (tests/bench)
 )
 

@@ -5,6 +5,8 @@
 
 #include "tests/temp_dir.h"
 #include <sys/wait.h>
+#include <csignal>
+#include <cstdio>
 #include <unistd.h>
 
 #include <algorithm>
@@ -641,6 +643,190 @@ TEST_F(CommandLine, ContactByHalfspaceOnWornCrownReportsIt) {
   const std::vector<std::string> s = split(lines_of(read_text(dir_ / "s" / "summary.csv"))[1]);
   for (std::size_t k : {1u, 2u})  // a_m, b_m
     EXPECT_NEAR(std::stod(h[k]) / std::stod(s[k]), 1, kSemiHertzTol) << "column " << k;
+}
+
+// ---- run: the wear loop over the life ---------------------------------------------------------------
+
+// the shipped paper-wear case with the wear section's stepping and limits replaced (for the kill tests)
+fs::path wear_case(const fs::path& dir, const std::string& name, const std::string& grid,
+                   const std::string& stepping, const std::string& limits) {
+  std::string text = read_text(kSource / "cases" / "paper-wear.yaml");
+  const auto replace = [&](const std::string& from, const std::string& to) {
+    const std::size_t at = text.find(from);
+    if (at != std::string::npos) text.replace(at, from.size(), to);
+  };
+  replace("nx: 80, ny: 80", grid);
+  replace("stepping: { method: adaptive, rtol: 1.0e-3, atol_m: 1.0e-9 }", stepping + "\n  checkpoint_interval_s: 0.02");
+  replace("limits: { max_depth_m: 1.0e-4, edge: true }", limits);
+  replace("snapshots_revolutions: [1.0e7, 3.0e7, 1.0e8]", "snapshots_revolutions: [5.0e6]");
+  const fs::path p = dir / name;
+  std::ofstream(p) << text;
+  return p;
+}
+
+TEST_F(CommandLine, RunOnPaperWearWritesSummarySnapshotsAndReport) {
+  const fs::path out = dir_ / "w";
+  const ProcessResult r = rollwear("run " + quoted(kSource / "cases" / "paper-wear.yaml") + " -o " + quoted(out) +
+                                       " --log-level error",
+                                   dir_);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  // the report: on stdout and in report.txt; the crown wears flat to the roller's edges
+  EXPECT_EQ(r.out, read_text(out / "report.txt"));
+  EXPECT_NE(r.out.find("ended_by: edge\n"), std::string::npos) << r.out;
+  EXPECT_FALSE(fs::exists(out / "checkpoint.txt"));  // a finished run leaves no checkpoint
+  const std::vector<std::string> summary = lines_of(read_text(out / "summary.csv"));
+  ASSERT_GT(summary.size(), 10u);
+  EXPECT_EQ(summary[0], "# case: paper-wear");
+  const std::string header = "step,revolutions,hours,max_depth_m,worn_volume_m3,dissipated_J,a_m,b_m,p0_Pa,Fx_N,"
+                             "power_W,step_revolutions,error_estimate,rejected,rhs_evals";
+  const auto at = std::find(summary.begin(), summary.end(), header);
+  ASSERT_NE(at, summary.end());
+  EXPECT_EQ(split(*(at + 1))[0], "0");  // step 0: the unworn state
+  // snapshots: the unworn profile, 1e7 and 3e7 revolutions, the end
+  for (const char* f : {"snapshot_0000_body1.csv", "snapshot_0001_body1.csv", "snapshot_0002_body1.csv",
+                        "snapshot_0003_body1.csv"})
+    EXPECT_TRUE(fs::exists(out / "snapshots" / f)) << f;
+  const std::vector<std::string> snap = lines_of(read_text(out / "snapshots" / "snapshot_0001_body1.csv"));
+  EXPECT_EQ(snap[2], "# revolutions: 10000000");
+  EXPECT_EQ(snap[4], "y_m,z_original_m,z_m,depth_m");
+  // and the plots of it
+  const ProcessResult plot = rollwear("plot " + quoted(out), dir_);
+  ASSERT_EQ(plot.exit_code, 0) << plot.err;
+  for (const char* png : {"depth.png", "pressure.png", "profile_body1.png", "depth_profile_body1.png"})
+    EXPECT_GT(fs::file_size(out / "plots" / png), 10000u) << png;
+}
+
+TEST_F(CommandLine, RunRefusesToOverwriteAnUnfinishedRunAndToResumeAnotherCase) {
+  const fs::path out = dir_ / "w";
+  fs::create_directories(out);
+  std::ofstream(out / "checkpoint.txt") << "rollwear-wear-checkpoint 1\n";
+  const std::string run = "run " + quoted(kSource / "cases" / "paper-wear.yaml") + " -o " + quoted(out);
+  ProcessResult r = rollwear(run, dir_);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("holds an unfinished run (checkpoint.txt): continue it with --resume"), std::string::npos) << r.err;
+  r = rollwear(run + " --resume", dir_);  // a torn checkpoint: named with its line
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("checkpoint.txt:2: the checkpoint ends early"), std::string::npos) << r.err;
+  r = rollwear(run + " --resume --restart", dir_);
+  EXPECT_EQ(r.exit_code, 2);
+  // no checkpoint at all
+  fs::remove(out / "checkpoint.txt");
+  r = rollwear(run + " --resume", dir_);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("no checkpoint to resume from"), std::string::npos) << r.err;
+}
+
+TEST_F(CommandLine, RunWithBadWearSectionExitsTwoNamingFileLineAndKey) {
+  const fs::path c = wear_case(dir_, "bad.yaml", "nx: 20, ny: 20", "stepping: { method: rk4 }",
+                               "limits: { max_depth_m: 1.0e-4, edge: true }");
+  const ProcessResult r = rollwear("run " + quoted(c) + " -o " + quoted(dir_ / "w"), dir_);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find(c.string() + ":27:23: "), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("wear.stepping.method: must be adaptive, fixed-depth or fixed-revolutions"), std::string::npos)
+      << r.err;
+  EXPECT_EQ(r.err.find("terminate"), std::string::npos);
+}
+
+// Starts "rollwear ARGS" in the background, waits until its checkpoint has passed `steps` steps, and
+// kills it (SIGKILL: no chance to tidy up). Fails if the run ended before it could be killed.
+void run_and_kill(const std::vector<std::string>& args, const fs::path& checkpoint, long steps, const fs::path& log) {
+  const pid_t pid = ::fork();
+  ASSERT_GE(pid, 0);
+  if (pid == 0) {
+    std::FILE* f = std::freopen(log.c_str(), "w", stdout);
+    if (f) ::dup2(::fileno(stdout), 2);
+    std::vector<char*> argv;
+    std::string exe = ROLLWEAR_EXE;
+    argv.push_back(exe.data());
+    std::vector<std::string> copy = args;
+    for (std::string& a : copy) argv.push_back(a.data());
+    argv.push_back(nullptr);
+    ::execv(exe.c_str(), argv.data());
+    ::_exit(127);
+  }
+  bool killed = false;
+  for (int k = 0; k < 60000 && !killed; ++k) {
+    int status = 0;
+    if (::waitpid(pid, &status, WNOHANG) == pid) FAIL() << "the run ended before it could be killed: " << read_text(log);
+    std::ifstream in(checkpoint);
+    std::string line;
+    long at = -1;
+    while (std::getline(in, line))
+      if (line.rfind("steps ", 0) == 0) at = std::stol(line.substr(6));
+    if (at >= steps) {
+      ::kill(pid, SIGKILL);
+      killed = true;
+    } else {
+      ::usleep(1000);
+    }
+  }
+  int status = 0;
+  ::waitpid(pid, &status, 0);
+  ASSERT_TRUE(killed) << "no checkpoint past step " << steps << " within 60 s";
+  EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGKILL);
+}
+
+// the value of 'key: value' in a report
+std::string report_value(const std::string& report, const std::string& key) {
+  for (const std::string& line : lines_of(report))
+    if (line.rfind(key + ": ", 0) == 0) return line.substr(key.size() + 2);
+  return "";
+}
+
+// Fixed stepping is memoryless: killed at any moment and resumed, the run ends bit-identical to an
+// uninterrupted one (worn profiles, summary rows up to the counters, the life and what ended it).
+TEST_F(CommandLine, RunKilledAndResumedEndsBitIdenticalWithFixedStepping) {
+  const fs::path c = wear_case(dir_, "fixed.yaml", "nx: 40, ny: 40",
+                               "stepping: { method: fixed-depth, max_depth_step_m: 1.0e-8 }",
+                               "limits: { max_depth_m: 2.0e-5, edge: true }");
+  const fs::path whole = dir_ / "whole", killed = dir_ / "killed";
+  ASSERT_EQ(rollwear("run " + quoted(c) + " -o " + quoted(whole) + " --log-level error", dir_).exit_code, 0);
+  run_and_kill({"run", c.string(), "-o", killed.string(), "--quiet"}, killed / "checkpoint.txt", 300,
+               dir_ / "killed.log");
+  ASSERT_TRUE(fs::exists(killed / "checkpoint.txt"));
+  for (const fs::path& p : fs::recursive_directory_iterator(killed))  // no torn file, only temporaries
+    EXPECT_EQ(p.filename().string().find(".tmp."), std::string::npos) << "left: " << p;
+  const ProcessResult r = rollwear("run " + quoted(c) + " -o " + quoted(killed) + " --resume --log-level error", dir_);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string a = read_text(whole / "report.txt"), b = read_text(killed / "report.txt");
+  for (const char* key : {"ended_by", "revolutions", "max_depth_m", "worn_volume_body1_m3", "dissipated_J", "p0_Pa",
+                          "steps"})
+    EXPECT_EQ(report_value(a, key), report_value(b, key)) << key;
+  EXPECT_EQ(report_value(b, "resumed"), "true");
+  EXPECT_EQ(report_value(a, "ended_by"), "max_depth");
+  for (const char* f : {"snapshot_0000_body1.csv", "snapshot_0001_body1.csv", "snapshot_0002_body1.csv"})
+    EXPECT_EQ(read_text(whole / "snapshots" / f), read_text(killed / "snapshots" / f)) << f;
+  // the summary: every row's state and contact columns (the counters differ: a resumed run starts a new
+  // integration, which evaluates f once more)
+  const std::vector<std::string> sa = lines_of(read_text(whole / "summary.csv"));
+  const std::vector<std::string> sb = lines_of(read_text(killed / "summary.csv"));
+  ASSERT_EQ(sa.size(), sb.size());
+  for (std::size_t k = 0; k < sa.size(); ++k) {
+    const std::vector<std::string> ra = split(sa[k]), rb = split(sb[k]);
+    ASSERT_EQ(ra.size(), rb.size());
+    for (std::size_t col = 0; col < std::min<std::size_t>(ra.size(), 12); ++col)
+      ASSERT_EQ(ra[col], rb[col]) << "row " << k << " column " << col;
+  }
+}
+
+// Adaptive stepping: resumed from the checkpoint, the run restarts ARKODE with the step it had reached;
+// it ends within the tolerance of an uninterrupted run.
+TEST_F(CommandLine, RunKilledAndResumedEndsWithinToleranceWithAdaptiveStepping) {
+  const fs::path c = wear_case(dir_, "adaptive.yaml", "nx: 40, ny: 40",
+                               "stepping: { method: adaptive, rtol: 1.0e-7, atol_m: 1.0e-13 }",
+                               "limits: { max_depth_m: 2.0e-5, edge: true }");
+  const fs::path whole = dir_ / "whole", killed = dir_ / "killed";
+  ASSERT_EQ(rollwear("run " + quoted(c) + " -o " + quoted(whole) + " --log-level error", dir_).exit_code, 0);
+  const long steps = std::stol(report_value(read_text(whole / "report.txt"), "steps"));
+  run_and_kill({"run", c.string(), "-o", killed.string(), "--quiet"}, killed / "checkpoint.txt", steps / 4,
+               dir_ / "killed.log");
+  const ProcessResult r = rollwear("run " + quoted(c) + " -o " + quoted(killed) + " --resume --log-level error", dir_);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string a = read_text(whole / "report.txt"), b = read_text(killed / "report.txt");
+  EXPECT_EQ(report_value(b, "ended_by"), "max_depth");
+  EXPECT_NEAR(std::stod(report_value(b, "revolutions")) / std::stod(report_value(a, "revolutions")), 1.0, 1e-5);
+  EXPECT_NEAR(std::stod(report_value(b, "worn_volume_body1_m3")) / std::stod(report_value(a, "worn_volume_body1_m3")),
+              1.0, 1e-5);
 }
 
 }  // namespace

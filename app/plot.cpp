@@ -1,0 +1,630 @@
+// rollwear plot: reads a wear run's output folder (summary.csv, snapshots/, report.txt), writes one
+// gnuplot script with the data inline (converted to mm, µm, MPa), runs gnuplot on it once, and
+// renames the PNGs into place only when gnuplot has succeeded.
+#include "app/plot.h"
+
+#include <fcntl.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <iterator>
+#include <limits>
+#include <map>
+#include <stdexcept>
+#include <string>
+#include <system_error>
+#include <utility>
+#include <vector>
+
+#include <spdlog/fmt/fmt.h>
+
+#include "lib/csv.h"
+
+extern char** environ;
+
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr int kExitFailure = 1;
+constexpr int kExitBadInput = 2;
+constexpr const char* kGnuplotPackage = "gnuplot-nox";
+
+// a failure the command reports as one line, with the exit status it ends with
+struct PlotError : std::runtime_error {
+  PlotError(int status, const std::string& message) : std::runtime_error(message), exit_status(status) {}
+  int exit_status;
+};
+
+PlotError bad_input(const std::string& message) { return PlotError(kExitBadInput, message); }
+
+// ---- reading the run's tables ------------------------------------------------------------------------
+
+std::string trim(const std::string& s) {
+  const std::size_t first = s.find_first_not_of(" \t\r");
+  if (first == std::string::npos) return "";
+  return s.substr(first, s.find_last_not_of(" \t\r") + 1 - first);
+}
+
+// one CSV line's cells, with RFC 4180 quoting (lib/csv.h csv_text) undone
+std::vector<std::string> split_csv(const std::string& line) {
+  std::vector<std::string> cells(1);
+  bool quoted = false;
+  for (std::size_t k = 0; k < line.size(); ++k) {
+    const char ch = line[k];
+    if (quoted) {
+      if (ch == '"' && k + 1 < line.size() && line[k + 1] == '"') {
+        cells.back() += '"';
+        ++k;
+      } else if (ch == '"') {
+        quoted = false;
+      } else {
+        cells.back() += ch;
+      }
+    } else if (ch == '"') {
+      quoted = true;
+    } else if (ch == ',') {
+      cells.emplace_back();
+    } else {
+      cells.back() += ch;
+    }
+  }
+  for (std::string& c : cells) c = trim(c);
+  return cells;
+}
+
+// "# key: value" comment lines, the header and the data rows of a CSV file; line numbers from 1
+struct Table {
+  fs::path path;
+  std::map<std::string, std::pair<std::string, int>> comments;  // key -> (value, line)
+  std::vector<std::string> header;
+  int header_line = 0;
+  std::vector<std::vector<std::string>> rows;
+  std::vector<int> row_lines;
+};
+
+std::string where(const fs::path& path, int line) { return fmt::format("{} line {}", path.string(), line); }
+
+// reads path; a missing file, a row not as wide as the header or a table without rows is bad input
+Table read_table(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw bad_input(fmt::format("cannot read {}: {}", path.string(), std::strerror(errno)));
+  Table t;
+  t.path = path;
+  std::string line;
+  for (int number = 1; std::getline(in, line); ++number) {
+    if (number == 1 && line.rfind("\xEF\xBB\xBF", 0) == 0) line.erase(0, 3);  // a UTF-8 byte order mark
+    const std::string text = trim(line);
+    if (text.empty()) continue;
+    if (text[0] == '#') {
+      const std::string comment = trim(text.substr(1));
+      const std::size_t colon = comment.find(':');
+      if (colon != std::string::npos)
+        t.comments.emplace(trim(comment.substr(0, colon)), std::make_pair(trim(comment.substr(colon + 1)), number));
+      continue;
+    }
+    std::vector<std::string> cells = split_csv(text);
+    if (t.header.empty()) {
+      t.header = std::move(cells);
+      t.header_line = number;
+      continue;
+    }
+    if (cells.size() != t.header.size())
+      throw bad_input(fmt::format("{}: malformed row: {} cells, the header (line {}) has {}", where(path, number),
+                                  cells.size(), t.header_line, t.header.size()));
+    t.rows.push_back(std::move(cells));
+    t.row_lines.push_back(number);
+  }
+  if (in.bad()) throw bad_input(fmt::format("cannot read {}: {}", path.string(), std::strerror(errno)));
+  if (t.header.empty()) throw bad_input(fmt::format("{}: no header row (only comments or nothing)", path.string()));
+  if (t.rows.empty()) throw bad_input(fmt::format("{}: no data row after the header", where(path, t.header_line)));
+  return t;
+}
+
+// a finite number, the whole cell
+bool parse_number(const std::string& text, double& value) {
+  if (text.empty()) return false;
+  char* end = nullptr;
+  errno = 0;
+  value = std::strtod(text.c_str(), &end);
+  return end == text.c_str() + text.size() && std::isfinite(value) && errno != ERANGE;
+}
+
+// the column of that name, each cell a finite number
+std::vector<double> column(const Table& t, const std::string& name) {
+  const auto it = std::find(t.header.begin(), t.header.end(), name);
+  if (it == t.header.end())
+    throw bad_input(fmt::format("{}: no column '{}' in the header", where(t.path, t.header_line), name));
+  const std::size_t k = static_cast<std::size_t>(it - t.header.begin());
+  std::vector<double> values(t.rows.size());
+  for (std::size_t r = 0; r < t.rows.size(); ++r)
+    if (!parse_number(t.rows[r][k], values[r]))
+      throw bad_input(fmt::format("{}: malformed row: column {} is '{}', not a finite number",
+                                  where(t.path, t.row_lines[r]), name, t.rows[r][k]));
+  return values;
+}
+
+// ---- the run's output folder -------------------------------------------------------------------------
+
+struct Snapshot {
+  int index = 0;                                                  // KKKK of the file name
+  double revolutions = std::numeric_limits<double>::quiet_NaN();  // "# revolutions:", nan if absent
+  std::vector<double> y_m, z_original_m, z_m, depth_m;            // one per profile node
+};
+
+struct BodySnapshots {
+  std::string body;                 // body1, body2
+  std::vector<Snapshot> snapshots;  // increasing index
+};
+
+struct RunOutput {
+  std::string case_name;
+  std::vector<double> revolutions, max_depth_m, p0_Pa;  // one per accepted step
+  std::vector<BodySnapshots> bodies;                    // the worn bodies with snapshots, by name
+};
+
+// the case's name: summary.csv's "# case:", else report.txt's "case:", else the folder's name
+std::string case_name_of(const Table& summary, const fs::path& dir) {
+  const auto it = summary.comments.find("case");
+  if (it != summary.comments.end() && !it->second.first.empty()) return it->second.first;
+  std::ifstream report(dir / "report.txt");
+  for (std::string line; std::getline(report, line);) {
+    const std::size_t colon = line.find(':');
+    if (colon != std::string::npos && trim(line.substr(0, colon)) == "case") {
+      const std::string name = trim(line.substr(colon + 1));
+      if (!name.empty()) return name;
+    }
+  }
+  fs::path folder = fs::absolute(dir).lexically_normal();
+  if (folder.filename().empty()) folder = folder.parent_path();  // "out/paper/"
+  return folder.filename().string();
+}
+
+Snapshot read_snapshot(const fs::path& path, int index) {
+  const Table t = read_table(path);
+  Snapshot s;
+  s.index = index;
+  const auto rev = t.comments.find("revolutions");
+  if (rev != t.comments.end() && !parse_number(rev->second.first, s.revolutions))
+    throw bad_input(fmt::format("{}: malformed comment: revolutions is '{}', not a finite number",
+                                where(path, rev->second.second), rev->second.first));
+  s.y_m = column(t, "y_m");
+  s.z_original_m = column(t, "z_original_m");
+  s.z_m = column(t, "z_m");
+  s.depth_m = column(t, "depth_m");
+  return s;
+}
+
+// "snapshot_KKKK_BODY.csv": KKKK (1 to 9 digits) and BODY; false for any other name
+bool parse_snapshot_name(const std::string& leaf, int& index, std::string& body) {
+  const std::string prefix = "snapshot_", suffix = ".csv";
+  if (leaf.size() <= prefix.size() + suffix.size() || leaf.compare(0, prefix.size(), prefix) != 0 ||
+      leaf.compare(leaf.size() - suffix.size(), suffix.size(), suffix) != 0)
+    return false;
+  const std::string middle = leaf.substr(prefix.size(), leaf.size() - prefix.size() - suffix.size());
+  const std::size_t underscore = middle.find('_');
+  if (underscore == 0 || underscore > 9 || underscore + 1 >= middle.size()) return false;
+  const std::string digits = middle.substr(0, underscore);
+  if (digits.find_first_not_of("0123456789") != std::string::npos) return false;
+  index = std::stoi(digits);
+  body = middle.substr(underscore + 1);
+  return true;
+}
+
+// snapshots/snapshot_KKKK_BODY.csv, grouped by body, each body's in increasing KKKK; other files
+// (a running wear loop's temporaries among them) are not snapshots
+std::vector<BodySnapshots> read_snapshots(const fs::path& dir) {
+  std::map<std::string, std::map<int, fs::path>> files;
+  std::error_code ec;
+  if (!fs::is_directory(dir, ec)) return {};
+  for (const fs::directory_entry& e : fs::directory_iterator(dir, ec)) {
+    int index = 0;
+    std::string body;
+    if (parse_snapshot_name(e.path().filename().string(), index, body) && e.is_regular_file(ec))
+      files[body][index] = e.path();
+  }
+  if (ec) throw bad_input(fmt::format("cannot list {}: {}", dir.string(), ec.message()));
+  std::vector<BodySnapshots> bodies;
+  for (const auto& [body, by_index] : files) {
+    BodySnapshots b{body, {}};
+    for (const auto& [index, path] : by_index) b.snapshots.push_back(read_snapshot(path, index));
+    bodies.push_back(std::move(b));
+  }
+  return bodies;
+}
+
+RunOutput read_run_output(const fs::path& dir) {
+  std::error_code ec;
+  if (!fs::exists(dir, ec)) throw bad_input(fmt::format("no such folder: {}", dir.string()));
+  if (!fs::is_directory(dir, ec)) throw bad_input(fmt::format("not a folder: {}", dir.string()));
+  const fs::path summary_path = dir / "summary.csv";
+  if (!fs::exists(summary_path, ec))
+    throw bad_input(
+        fmt::format("no {} (is {} the output folder of a rollwear run?)", summary_path.string(), dir.string()));
+  const Table summary = read_table(summary_path);
+  RunOutput run;
+  run.case_name = case_name_of(summary, dir);
+  run.revolutions = column(summary, "revolutions");
+  run.max_depth_m = column(summary, "max_depth_m");
+  run.p0_Pa = column(summary, "p0_Pa");
+  run.bodies = read_snapshots(dir / "snapshots");
+  return run;
+}
+
+// ---- the gnuplot script ------------------------------------------------------------------------------
+
+// text in a gnuplot single-quoted string (no escapes there but '' for ')
+std::string quote(const std::string& text) {
+  std::string q = "'";
+  for (const char ch : text) {
+    if (ch == '\'') q += '\'';
+    q += ch == '\n' || ch == '\r' ? ' ' : ch;
+  }
+  return q + "'";
+}
+
+// a count of revolutions as a legend shows it: 0, 750, 1.5e7
+std::string revolutions_label(double revolutions) {
+  if (std::isnan(revolutions)) return "";
+  if (revolutions == 0) return "0 rev";
+  if (std::fabs(revolutions) >= 1e-2 && std::fabs(revolutions) < 1e4) return fmt::format("{:.4g} rev", revolutions);
+  std::string s = fmt::format("{:.3g}", revolutions);  // 1.5e+07
+  const std::size_t e = s.find('e');
+  if (e != std::string::npos) {
+    std::string exponent = s.substr(e + 1);
+    const bool negative = !exponent.empty() && exponent[0] == '-';
+    exponent.erase(0, exponent.find_first_not_of("+-0"));
+    s = s.substr(0, e) + "e" + (negative ? "-" : "") + (exponent.empty() ? "0" : exponent);
+  }
+  return s + " rev";
+}
+
+// the revolutions axis in thousands, millions or billions (words, not superscripts, which libgd's
+// png terminal may lack): the divisor and the axis label
+std::pair<double, std::string> revolutions_axis(const std::vector<double>& revolutions) {
+  double largest = 0;
+  for (const double r : revolutions) largest = std::max(largest, std::fabs(r));
+  if (largest >= 1e9) return {1e9, "revolutions (billions, 10^9)"};
+  if (largest >= 1e6) return {1e6, "revolutions (millions)"};
+  if (largest >= 1e4) return {1e3, "revolutions (thousands)"};
+  return {1.0, "revolutions"};
+}
+
+// the colour of snapshot k of n: blue (early) through teal and amber to red (late)
+std::string snapshot_colour(std::size_t k, std::size_t n) {
+  static const int kStops[][3] = {{0x1f, 0x4e, 0x9c}, {0x2a, 0x9d, 0x8f}, {0xe9, 0xa0, 0x3b}, {0xc0, 0x39, 0x2b}};
+  constexpr int kLast = 3;
+  const double t = n > 1 ? static_cast<double>(k) / static_cast<double>(n - 1) : 1.0;
+  const int i = std::min(static_cast<int>(t * kLast), kLast - 1);
+  const double f = t * kLast - i;
+  int rgb[3];
+  for (int c = 0; c < 3; ++c)
+    rgb[c] = static_cast<int>(std::lround(kStops[i][c] + f * (kStops[i + 1][c] - kStops[i][c])));
+  return fmt::format("#{:02x}{:02x}{:02x}", rgb[0], rgb[1], rgb[2]);
+}
+
+// the legend entry of snapshot k of n: every snapshot's while they are few, else about ten spread
+// evenly, the last among them (the colours tell the order of the others)
+std::string snapshot_title(const Snapshot& s, std::size_t k, std::size_t n) {
+  constexpr std::size_t kMaxEntries = 12;
+  const std::size_t stride = n <= kMaxEntries ? 1 : (n - 1 + 9) / 10;
+  if (k % stride != 0 && k + 1 != n) return "notitle";
+  return "title " +
+         quote(std::isnan(s.revolutions) ? fmt::format("snapshot {}", s.index) : revolutions_label(s.revolutions));
+}
+
+// the terminal: pngcairo when this gnuplot has it (Debian's gnuplot-nox does), else libgd's png
+std::string terminal_script() {
+  return "if (strstrt(GPVAL_TERMINALS, ' pngcairo ') > 0) {\n"
+         "  set terminal pngcairo size 1000,650 noenhanced font 'Sans,12' linewidth 1.2\n"
+         "} else {\n"
+         "  if (strstrt(GPVAL_TERMINALS, ' png ') > 0) {\n"
+         "    set terminal png size 1000,650 noenhanced\n"
+         "  } else {\n"
+         "    exit error 'this gnuplot has neither the pngcairo nor the png terminal'\n"
+         "  }\n"
+         "}\n";
+}
+
+// what every picture starts with: its temporary output, the title, the grid
+std::string figure_start(const fs::path& output, const std::string& title) {
+  return fmt::format(
+      "\nreset\n"
+      "set encoding utf8\n"
+      "set output {}\n"
+      "set title {} font ',14'\n"
+      "set grid xtics ytics lt 1 lc rgb '#d4d4d4' lw 1\n"
+      "set border lw 1.2\n"
+      "set key box opaque samplen 3 spacing 1.2 width 1\n"
+      "set xlabel offset 0,0.3\n",
+      quote(output.string()), quote(title));
+}
+
+const char* const kFigureEnd = "unset output\n";
+
+void put(std::string& out, double v) { fmt::format_to(std::back_inserter(out), "{:.10g}", v); }
+
+// the summary as columns: revolutions (scaled), max depth (µm), p0 (MPa)
+std::string summary_block(const RunOutput& run, double revolutions_divisor) {
+  std::string out = "$summary << EOD\n";
+  for (std::size_t r = 0; r < run.revolutions.size(); ++r) {
+    put(out, run.revolutions[r] / revolutions_divisor);
+    out += ' ';
+    put(out, run.max_depth_m[r] * 1e6);
+    out += ' ';
+    put(out, run.p0_Pa[r] * 1e-6);
+    out += '\n';
+  }
+  return out + "EOD\n";
+}
+
+// a snapshot as columns: y (mm), z original (mm), z (mm), depth (µm)
+std::string snapshot_block(const std::string& name, const Snapshot& s) {
+  std::string out = name + " << EOD\n";
+  for (std::size_t r = 0; r < s.y_m.size(); ++r) {
+    for (const double v : {s.y_m[r] * 1e3, s.z_original_m[r] * 1e3, s.z_m[r] * 1e3}) {
+      put(out, v);
+      out += ' ';
+    }
+    put(out, s.depth_m[r] * 1e6);
+    out += '\n';
+  }
+  return out + "EOD\n";
+}
+
+// a quantity of the summary against revolutions
+std::string history_figure(const RunOutput& run, const fs::path& output, const std::string& title,
+                           const std::string& revolutions_label_text, const std::string& ylabel, int column_index,
+                           const std::string& curve, const std::string& colour) {
+  const bool points = run.revolutions.size() <= 200;  // one marker per accepted step, when few
+  return figure_start(output, title) +
+         fmt::format(
+             "set xlabel {}\n"
+             "set ylabel {}\n"
+             "set key outside right top\n"
+             "set autoscale yfix\n"
+             "set offsets 0, 0, graph 0.05, graph 0.05\n"
+             "plot $summary using 1:{} with {} lw 2 lc rgb '{}'{} title {}\n",
+             quote(revolutions_label_text), quote(ylabel), column_index, points ? "linespoints" : "lines", colour,
+             points ? " pt 7 ps 0.7" : "", quote(curve)) +
+         kFigureEnd;
+}
+
+// the worn profile at every snapshot over the original (z down into the material)
+std::string profile_figure(const std::string& case_name, const BodySnapshots& b, const std::vector<std::string>& blocks,
+                           const fs::path& output) {
+  std::string plot;
+  for (std::size_t k = 0; k < b.snapshots.size(); ++k)
+    plot += fmt::format("{} using 1:3 with lines lw 2 lc rgb '{}' {}, \\\n     ", blocks[k],
+                        snapshot_colour(k, b.snapshots.size()), snapshot_title(b.snapshots[k], k, b.snapshots.size()));
+  plot += blocks.front() + " using 1:2 with lines lw 2.5 dt (8,6) lc rgb 'black' title 'original'\n";
+  return figure_start(output,
+                      fmt::format("{}: {} profile, worn at each snapshot over the original", case_name, b.body)) +
+         "set xlabel 'lateral position y (mm)'\n"
+         "set ylabel 'z (mm), into the material (axis points down)'\n"
+         "set yrange [*:*] reverse\n"
+         "set autoscale yfix\n"
+         "set offsets 0, 0, graph 0.05, graph 0.05\n"
+         "set key outside right top title 'revolutions'\n"
+         "plot " +
+         plot + kFigureEnd;
+}
+
+// the wear depth across the profile at every snapshot (depth down into the material)
+std::string depth_profile_figure(const std::string& case_name, const BodySnapshots& b,
+                                 const std::vector<std::string>& blocks, const fs::path& output) {
+  std::string plot;
+  for (std::size_t k = 0; k < b.snapshots.size(); ++k) {
+    if (k > 0) plot += ", \\\n     ";
+    plot += fmt::format("{} using 1:4 with lines lw 2 lc rgb '{}' {}", blocks[k],
+                        snapshot_colour(k, b.snapshots.size()), snapshot_title(b.snapshots[k], k, b.snapshots.size()));
+  }
+  return figure_start(output, fmt::format("{}: {} wear depth across the profile", case_name, b.body)) +
+         "set xlabel 'lateral position y (mm)'\n"
+         "set ylabel 'wear depth (µm), into the material (axis points down)'\n"
+         "set yrange [*:*] reverse\n"
+         "set autoscale yfix\n"
+         "set offsets 0, 0, graph 0.05, graph 0.05\n"
+         "set xzeroaxis lt -1 lw 1\n"
+         "set key outside right top title 'revolutions'\n"
+         "plot " +
+         plot + "\n" + kFigureEnd;
+}
+
+// ---- files -------------------------------------------------------------------------------------------
+
+fs::path temporary_for(const fs::path& path) {
+  fs::path tmp = path;
+  tmp += ".tmp." + std::to_string(::getpid());
+  return tmp;
+}
+
+// removes its files when it goes (the script, and any PNG not renamed into place)
+class Temporaries {
+ public:
+  Temporaries() = default;
+  Temporaries(const Temporaries&) = delete;
+  Temporaries& operator=(const Temporaries&) = delete;
+  ~Temporaries() {
+    for (const fs::path& p : paths_) {
+      std::error_code ignored;
+      fs::remove(p, ignored);
+    }
+  }
+  void add(const fs::path& p) { paths_.push_back(p); }
+
+ private:
+  std::vector<fs::path> paths_;
+};
+
+bool has_png_signature(const fs::path& p) {
+  static const char kSignature[] = "\x89PNG\r\n\x1a\n";
+  char head[8] = {};
+  std::ifstream in(p, std::ios::binary);
+  return in.read(head, sizeof head) && std::memcmp(head, kSignature, sizeof head) == 0;
+}
+
+// gnuplot's messages on one line: lines joined by " | ", its caret lines left out
+std::string one_line(const std::string& text) {
+  std::string joined;
+  std::size_t start = 0;
+  while (start < text.size()) {
+    std::size_t end = text.find('\n', start);
+    if (end == std::string::npos) end = text.size();
+    const std::string line = trim(text.substr(start, end - start));
+    start = end + 1;
+    if (line.empty() || line.find_first_not_of("^ \t") == std::string::npos) continue;
+    if (!joined.empty()) joined += " | ";
+    joined += line;
+  }
+  return joined;
+}
+
+// runs "gnuplot SCRIPT" (found on PATH), stdin from /dev/null; returns its stdout and stderr
+// together. Throws PlotError when gnuplot is not installed, cannot start or fails.
+std::string run_gnuplot(const fs::path& script) {
+  int fd[2];
+  if (::pipe2(fd, O_CLOEXEC) != 0)
+    throw PlotError(kExitFailure, fmt::format("cannot run gnuplot: pipe: {}", std::strerror(errno)));
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
+  posix_spawn_file_actions_adddup2(&actions, fd[1], STDOUT_FILENO);
+  posix_spawn_file_actions_adddup2(&actions, fd[1], STDERR_FILENO);
+  std::string program = "gnuplot", script_path = script.string();
+  char* argv[] = {program.data(), script_path.data(), nullptr};
+  pid_t pid = 0;
+  const int spawned = ::posix_spawnp(&pid, "gnuplot", &actions, nullptr, argv, environ);
+  posix_spawn_file_actions_destroy(&actions);
+  ::close(fd[1]);
+  if (spawned != 0) {
+    ::close(fd[0]);
+    if (spawned == ENOENT)
+      throw PlotError(kExitFailure,
+                      fmt::format("gnuplot is not installed (not found on PATH); it is Debian's package {}: "
+                                  "sudo apt-get install -y {}",
+                                  kGnuplotPackage, kGnuplotPackage));
+    throw PlotError(kExitFailure, fmt::format("cannot run gnuplot: {}", std::strerror(spawned)));
+  }
+
+  std::string messages;
+  char buffer[4096];
+  for (;;) {
+    const ssize_t n = ::read(fd[0], buffer, sizeof buffer);
+    if (n > 0)
+      messages.append(buffer, static_cast<std::size_t>(n));
+    else if (n == 0 || errno != EINTR)
+      break;
+  }
+  ::close(fd[0]);
+  int status = 0;
+  while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+  }
+  if (WIFEXITED(status) && WEXITSTATUS(status) == 0) return messages;
+  const std::string how = WIFEXITED(status)     ? fmt::format("exit status {}", WEXITSTATUS(status))
+                          : WIFSIGNALED(status) ? fmt::format("signal {}", WTERMSIG(status))
+                                                : std::string("unknown status");
+  const std::string said = one_line(messages);
+  throw PlotError(kExitFailure, fmt::format("gnuplot failed ({}): {}", how, said.empty() ? "no message" : said));
+}
+
+// the pictures: the script, gnuplot, then every PNG into place; returns the PNGs written
+std::vector<fs::path> draw(const RunOutput& run, const fs::path& plots, std::ostream& err) {
+  struct Picture {
+    fs::path path, temporary;
+  };
+  std::vector<Picture> pictures;
+  const auto picture = [&](const std::string& leaf) {
+    const fs::path path = plots / leaf;
+    pictures.push_back({path, temporary_for(path)});
+    return pictures.back().temporary;
+  };
+
+  // the data, then one figure after another
+  const auto [divisor, revolutions_text] = revolutions_axis(run.revolutions);
+  std::string script = "# rollwear plot: " + run.case_name + "\n" + terminal_script() + summary_block(run, divisor);
+  script += history_figure(run, picture("depth.png"), run.case_name + ": maximum wear depth", revolutions_text,
+                           "maximum wear depth (µm)", 2, "max depth", "#c0392b");
+  script += history_figure(run, picture("pressure.png"), run.case_name + ": peak contact pressure", revolutions_text,
+                           "peak pressure p0 (MPa)", 3, "peak pressure p0", "#1f4e9c");
+  for (std::size_t b = 0; b < run.bodies.size(); ++b) {
+    const BodySnapshots& body = run.bodies[b];
+    std::vector<std::string> blocks;
+    for (std::size_t k = 0; k < body.snapshots.size(); ++k) {
+      blocks.push_back(fmt::format("$body{}_snapshot{}", b, k));
+      script += snapshot_block(blocks.back(), body.snapshots[k]);
+    }
+    script += profile_figure(run.case_name, body, blocks, picture("profile_" + body.body + ".png"));
+    script += depth_profile_figure(run.case_name, body, blocks, picture("depth_profile_" + body.body + ".png"));
+  }
+
+  // gnuplot draws every picture to its temporary name; any failure removes them all
+  Temporaries temporaries;
+  for (const Picture& p : pictures) temporaries.add(p.temporary);
+  const fs::path script_path = temporary_for(plots / "plot.gp");
+  temporaries.add(script_path);
+  try {
+    contact::write_file_atomic(script_path, script);
+  } catch (const std::exception& e) {
+    throw PlotError(kExitFailure, e.what());
+  }
+  const std::string messages = one_line(run_gnuplot(script_path));
+  if (!messages.empty()) err << "rollwear plot: gnuplot said: " << messages << '\n';
+  for (const Picture& p : pictures)
+    if (!has_png_signature(p.temporary))
+      throw PlotError(kExitFailure, fmt::format("gnuplot did not draw {}", p.path.string()));
+
+  // then each into place
+  std::vector<fs::path> written;
+  for (const Picture& p : pictures) {
+    std::error_code ec;
+    fs::rename(p.temporary, p.path, ec);
+    if (ec) throw PlotError(kExitFailure, fmt::format("cannot write {}: {}", p.path.string(), ec.message()));
+    written.push_back(p.path);
+  }
+  return written;
+}
+
+}  // namespace
+
+int plot_command(const std::string& output_dir, std::ostream& out, std::ostream& err) {
+  const auto fail = [&err](const std::string& message) {
+    std::string line = message;
+    for (char& ch : line)
+      if (ch == '\n' || ch == '\r') ch = ' ';
+    err << "rollwear plot: " << line << '\n';
+    err.flush();
+  };
+  try {
+    const fs::path dir = output_dir;
+    const RunOutput run = read_run_output(dir);
+    for (const fs::path& p : draw(run, dir / "plots", err)) out << p.string() << '\n';
+    out.flush();
+    if (run.bodies.empty()) {
+      fail(fmt::format("no profile plot drawn: no snapshot in {} (no snapshots/snapshot_KKKK_BODY.csv)",
+                       (dir / "snapshots").string()));
+      return kExitBadInput;
+    }
+    return 0;
+  } catch (const PlotError& e) {
+    fail(e.what());
+    return e.exit_status;
+  } catch (const std::exception& e) {
+    fail(e.what());
+    return kExitFailure;
+  } catch (...) {
+    fail("unknown failure");
+    return kExitFailure;
+  }
+}
+
+int plot_command(const std::string& output_dir) { return plot_command(output_dir, std::cout, std::cerr); }

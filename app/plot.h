@@ -1,0 +1,30 @@
+// rollwear plot: PNG pictures of a wear run's output folder, drawn by gnuplot.
+//
+// Reads (columns found by their header names, so added columns do not matter):
+//   summary.csv                        revolutions, max_depth_m, p0_Pa; "# case: NAME" names the case
+//   snapshots/snapshot_KKKK_BODY.csv   y_m, z_original_m, z_m, depth_m; "# revolutions: R"
+//   report.txt                         only "case: NAME", when summary.csv has no "# case:" line
+// Writes into OUTPUT_DIR/plots/ (each 1000 x 650, pngcairo, else gnuplot's png terminal):
+//   depth.png                 the maximum wear depth (µm) against revolutions
+//   pressure.png              the peak pressure p0 (MPa) against revolutions
+//   profile_BODY.png          per worn body: the profile at each snapshot over the original, z (mm,
+//                             axis pointing down into the material) against y (mm)
+//   depth_profile_BODY.png    per worn body: the wear depth (µm, axis pointing down) against y (mm)
+// gnuplot runs once on a temporary script (plots/plot.gp.tmp.<pid>); every PNG is drawn to
+// PNG + ".tmp.<pid>" and renamed only when gnuplot has succeeded, so a failure leaves no torn PNG and
+// no temporary file.
+#pragma once
+
+#include <ostream>
+#include <string>
+
+// Draws the pictures of output_dir and returns the process's exit status: 0 when every picture was
+// drawn; 2 bad input (no folder, no or a malformed summary.csv or snapshot: the file and line named;
+// no snapshot at all: depth.png and pressure.png are still drawn); 1 any other failure (gnuplot not
+// installed, or failing: its messages quoted; a file that cannot be written). Prints the PNGs written,
+// one path a line, on stdout; a failure is one line on stderr starting with "rollwear plot: ".
+// Throws nothing.
+int plot_command(const std::string& output_dir);
+
+// The same with the streams given (for the tests).
+int plot_command(const std::string& output_dir, std::ostream& out, std::ostream& err);

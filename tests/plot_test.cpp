@@ -1,0 +1,333 @@
+// rollwear plot (app/plot.h): the pictures of a synthetic wear-run output folder, drawn by gnuplot,
+// and the one-line errors of a folder that is missing, incomplete or malformed, or of a gnuplot that
+// is missing or fails. No test leaves a torn PNG or a temporary file behind.
+#include "app/plot.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "tests/temp_dir.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr std::uintmax_t kMinPngBytes = 5000;  // a 1000 x 650 picture with axes, text and curves
+
+const char* const kSummaryHeader =
+    "step,revolutions,hours,max_depth_m,worn_volume_m3,a_m,b_m,p0_Pa,Fx_N,power_W,step_revolutions,"
+    "error_estimate,rejected,rhs_evals";
+
+void write_text(const fs::path& p, const std::string& text) {
+  fs::create_directories(p.parent_path());
+  std::ofstream(p, std::ios::binary) << text;
+}
+
+std::string read_text(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+std::vector<std::string> lines_of(const std::string& text) {
+  std::vector<std::string> lines;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  return lines;
+}
+
+std::string joined(const std::vector<std::string>& lines) {
+  std::string text;
+  for (const std::string& line : lines) text += line + "\n";
+  return text;
+}
+
+// the files under dir, names relative to it, sorted
+std::vector<std::string> files_under(const fs::path& dir) {
+  std::vector<std::string> names;
+  if (!fs::exists(dir)) return names;
+  for (const fs::directory_entry& e : fs::recursive_directory_iterator(dir))
+    if (e.is_regular_file()) names.push_back(fs::relative(e.path(), dir).string());
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+bool has_temporary(const fs::path& dir) {
+  for (const std::string& name : files_under(dir))
+    if (name.find(".tmp.") != std::string::npos || name.find(".gp") != std::string::npos) return true;
+  return false;
+}
+
+::testing::AssertionResult is_png(const fs::path& p) {
+  if (!fs::exists(p)) return ::testing::AssertionFailure() << p << " does not exist";
+  const std::string bytes = read_text(p);
+  if (bytes.compare(0, 8, "\x89PNG\r\n\x1a\n") != 0) return ::testing::AssertionFailure() << p << " is no PNG";
+  if (bytes.size() <= kMinPngBytes)
+    return ::testing::AssertionFailure() << p << " has only " << bytes.size() << " bytes";
+  return ::testing::AssertionSuccess();
+}
+
+// one line on stderr, starting with the command's prefix
+::testing::AssertionResult is_one_error_line(const std::string& err) {
+  if (err.rfind("rollwear plot: ", 0) != 0) return ::testing::AssertionFailure() << "no prefix: " << err;
+  if (err.find('\n') != err.size() - 1) return ::testing::AssertionFailure() << "not one line: " << err;
+  return ::testing::AssertionSuccess();
+}
+
+// summary.csv of a run: a roller wearing in, the depth growing, p0 falling as the contact widens
+std::string summary_csv() {
+  std::string s = "# rollwear run\n# case: synthetic_roller\n# units: SI\n" + std::string(kSummaryHeader) + "\n";
+  const double revolutions[] = {0, 2.0e6, 6.0e6, 1.5e7, 3.0e7};
+  for (int k = 0; k < 5; ++k) {
+    const double n = revolutions[k];
+    const double depth_m = 6e-6 * (1 - std::exp(-n / 1.2e7));
+    const double p0_Pa = 1.6e9 - 4e8 * (1 - std::exp(-n / 1.2e7));
+    std::ostringstream row;
+    row.precision(17);
+    row << k << ',' << n << ',' << n * 3.49e-5 << ',' << depth_m << ",1e-12,3.1e-4,1.2e-3," << p0_Pa << ",4.5,0.45,"
+        << (k == 0 ? 0 : n - revolutions[k - 1]) << ",1e-4,0,12\n";
+    s += row.str();
+  }
+  return s;
+}
+
+// a snapshot of body1's profile: a 0.5 m crown over +-10 mm, worn to max_depth_m over +-3 mm
+std::string snapshot_csv(double revolutions, double max_depth_m) {
+  std::ostringstream s;
+  s.precision(17);
+  s << "# case: synthetic_roller\n# body: body1\n# revolutions: " << revolutions
+    << "\n# hours: " << revolutions * 3.49e-5 << "\ny_m,z_original_m,z_m,depth_m\n";
+  for (int i = 0; i <= 80; ++i) {
+    const double y = -0.010 + 0.020 * i / 80;
+    const double z_original = y * y / (2 * 0.5);
+    const double depth = std::fabs(y) < 0.003 ? max_depth_m * (1 - (y / 0.003) * (y / 0.003)) : 0.0;
+    s << y << ',' << z_original << ',' << z_original + depth << ',' << depth << '\n';
+  }
+  return s.str();
+}
+
+// the output folder of a run with two snapshots of body1
+void write_run_output(const fs::path& dir) {
+  write_text(dir / "summary.csv", summary_csv());
+  write_text(dir / "snapshots" / "snapshot_0000_body1.csv", snapshot_csv(1.5e7, 4.4e-6));
+  write_text(dir / "snapshots" / "snapshot_0001_body1.csv", snapshot_csv(3.0e7, 5.6e-6));
+  write_text(dir / "report.txt", "case: synthetic_roller\nended_by: revolutions\n");
+}
+
+struct Result {
+  int status = -1;
+  std::string out, err;
+};
+
+Result plot(const fs::path& dir) {
+  std::ostringstream out, err;
+  Result r;
+  r.status = plot_command(dir.string(), out, err);
+  r.out = out.str();
+  r.err = err.str();
+  return r;
+}
+
+// PATH set to one directory for the life of the guard
+class PathGuard {
+ public:
+  explicit PathGuard(const fs::path& dir) : old_(std::getenv("PATH") ? std::getenv("PATH") : "") {
+    ::setenv("PATH", dir.c_str(), 1);
+  }
+  ~PathGuard() { ::setenv("PATH", old_.c_str(), 1); }
+  PathGuard(const PathGuard&) = delete;
+  PathGuard& operator=(const PathGuard&) = delete;
+
+ private:
+  std::string old_;
+};
+
+// an executable "gnuplot" in dir that writes a torn file to every "set output" of its script, says
+// something on stderr and fails
+void write_failing_gnuplot(const fs::path& dir) {
+  const fs::path p = dir / "gnuplot";
+  write_text(p,
+             "#!/bin/sh\n"
+             "sed -n \"s/^set output '\\(.*\\)'$/\\1/p\" \"$1\" | while IFS= read -r f; do printf torn > \"$f\"; "
+             "done\n"
+             "echo 'fake gnuplot: line 7: the pen broke' >&2\n"
+             "exit 3\n");
+  fs::permissions(p, fs::perms::owner_all);
+}
+
+const std::vector<std::string> kAllPictures = {"depth.png", "depth_profile_body1.png", "pressure.png",
+                                               "profile_body1.png"};
+
+using PlotCommand = rollwear_test::TempDirTest;
+
+TEST_F(PlotCommand, DrawsEveryPictureOfARunAndListsThem) {
+  const fs::path run = dir_ / "run";
+  write_run_output(run);
+  const Result r = plot(run);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.err, "");
+  EXPECT_EQ(files_under(run / "plots"), kAllPictures);
+  for (const std::string& name : kAllPictures) {
+    EXPECT_TRUE(is_png(run / "plots" / name));
+    EXPECT_NE(r.out.find((run / "plots" / name).string() + "\n"), std::string::npos) << r.out;
+  }
+  EXPECT_FALSE(has_temporary(run));
+}
+
+TEST_F(PlotCommand, FindsColumnsByNameWhateverTheirOrder) {
+  // the columns used (revolutions, max_depth_m, p0_Pa; y_m, z_original_m, z_m, depth_m) moved and
+  // joined by columns the plot does not know, some of them text
+  const fs::path run = dir_ / "run";
+  write_text(run / "summary.csv",
+             "# case: reordered\nnote,p0_Pa,revolutions,extra_column,max_depth_m\n"
+             "\"start, unworn\",1.6e9,0,x,0\nrun,1.5e9,1e6,y,1e-6\nrun,1.45e9,3e6,z,2.5e-6\n");
+  write_text(run / "snapshots" / "snapshot_0000_body2.csv",
+             "# revolutions: 3e6\ndepth_m,label,z_m,y_m,z_original_m\n"
+             "0,a,0.0001,-0.01,0.0001\n2e-6,b,2e-6,0,0\n0,c,0.0001,0.01,0.0001\n");
+  const Result r = plot(run);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(files_under(run / "plots"),
+            (std::vector<std::string>{"depth.png", "depth_profile_body2.png", "pressure.png", "profile_body2.png"}));
+  EXPECT_TRUE(is_png(run / "plots" / "profile_body2.png"));
+}
+
+TEST_F(PlotCommand, IgnoresFilesThatAreNoSnapshots) {
+  // a running wear loop's temporary snapshot, and files of other names, are not read
+  const fs::path run = dir_ / "run";
+  write_run_output(run);
+  write_text(run / "snapshots" / "snapshot_0002_body1.csv.tmp.4242", "torn,");
+  write_text(run / "snapshots" / "notes.csv", "not,a,snapshot\n");
+  write_text(run / "snapshots" / "snapshot_x_body1.csv", "not a snapshot\n");
+  const Result r = plot(run);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(files_under(run / "plots"), kAllPictures);
+}
+
+TEST_F(PlotCommand, WithoutSnapshotsDrawsHistoriesAndSaysNoProfile) {
+  const fs::path run = dir_ / "run";
+  write_text(run / "summary.csv", summary_csv());
+  const Result r = plot(run);
+  EXPECT_NE(r.status, 0);
+  EXPECT_TRUE(is_one_error_line(r.err));
+  EXPECT_NE(r.err.find("no profile plot"), std::string::npos) << r.err;
+  EXPECT_EQ(files_under(run / "plots"), (std::vector<std::string>{"depth.png", "pressure.png"}));
+  EXPECT_TRUE(is_png(run / "plots" / "depth.png"));
+  EXPECT_TRUE(is_png(run / "plots" / "pressure.png"));
+  EXPECT_FALSE(has_temporary(run));
+}
+
+using PlotInput = rollwear_test::TempDirTest;
+
+TEST_F(PlotInput, MissingFolderIsNamed) {
+  const Result r = plot(dir_ / "no_such_run");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_TRUE(is_one_error_line(r.err));
+  EXPECT_NE(r.err.find("no_such_run"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(dir_ / "no_such_run"));
+  EXPECT_EQ(r.out, "");
+}
+
+TEST_F(PlotInput, MissingSummaryIsNamed) {
+  const fs::path run = dir_ / "run";
+  write_text(run / "snapshots" / "snapshot_0000_body1.csv", snapshot_csv(1.5e7, 4.4e-6));
+  const Result r = plot(run);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_TRUE(is_one_error_line(r.err));
+  EXPECT_NE(r.err.find((run / "summary.csv").string()), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(run / "plots"));
+}
+
+TEST_F(PlotInput, MalformedSummaryRowNamesFileAndLine) {
+  const fs::path run = dir_ / "run";
+  write_run_output(run);
+  std::vector<std::string> lines = lines_of(summary_csv());  // 3 comments, the header, 5 rows
+  ASSERT_EQ(lines.size(), 9u);
+  lines[6] = lines[6].substr(0, lines[6].rfind(','));  // line 7: a cell short
+  write_text(run / "summary.csv", joined(lines));
+
+  const Result r = plot(run);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_TRUE(is_one_error_line(r.err));
+  EXPECT_NE(r.err.find((run / "summary.csv").string() + " line 7"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(run / "plots"));
+}
+
+TEST_F(PlotInput, NonNumericSnapshotCellNamesFileLineAndColumn) {
+  const fs::path run = dir_ / "run";
+  write_run_output(run);
+  std::vector<std::string> lines = lines_of(snapshot_csv(3.0e7, 5.6e-6));  // 4 comments, the header, rows
+  ASSERT_EQ(lines[4], "y_m,z_original_m,z_m,depth_m");
+  lines[7] = "abc" + lines[7].substr(lines[7].find(','));  // line 8: y_m is no number
+  const fs::path snapshot = run / "snapshots" / "snapshot_0001_body1.csv";
+  write_text(snapshot, joined(lines));
+
+  const Result r = plot(run);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_TRUE(is_one_error_line(r.err));
+  EXPECT_NE(r.err.find(snapshot.string() + " line 8"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("y_m"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(run / "plots"));
+}
+
+TEST_F(PlotInput, MissingColumnIsNamedWithTheHeaderLine) {
+  const fs::path run = dir_ / "run";
+  write_text(run / "summary.csv", "# case: x\nstep,revolutions,max_depth_m\n0,0,0\n1,1e6,1e-6\n");
+  const Result r = plot(run);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_TRUE(is_one_error_line(r.err));
+  EXPECT_NE(r.err.find((run / "summary.csv").string() + " line 2"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("'p0_Pa'"), std::string::npos) << r.err;
+}
+
+using PlotGnuplot = rollwear_test::TempDirTest;
+
+TEST_F(PlotGnuplot, MissingGnuplotNamesTheDebianPackage) {
+  const fs::path run = dir_ / "run";
+  write_run_output(run);
+  fs::create_directories(dir_ / "empty_bin");
+  Result r;
+  {
+    const PathGuard path(dir_ / "empty_bin");
+    r = plot(run);
+  }
+  EXPECT_EQ(r.status, 1);
+  EXPECT_TRUE(is_one_error_line(r.err));
+  EXPECT_NE(r.err.find("gnuplot-nox"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("sudo apt-get install -y gnuplot-nox"), std::string::npos) << r.err;
+  EXPECT_EQ(files_under(run / "plots"), std::vector<std::string>{});
+}
+
+TEST_F(PlotGnuplot, FailureShowsItsMessageAndKeepsTheOldPictures) {
+  const fs::path run = dir_ / "run";
+  write_run_output(run);
+  ASSERT_EQ(plot(run).status, 0);
+  const std::string old_profile = read_text(run / "plots" / "profile_body1.png");
+
+  write_failing_gnuplot(dir_);
+  Result r;
+  {
+    const PathGuard path(dir_);
+    r = plot(run);
+  }
+  EXPECT_EQ(r.status, 1);
+  EXPECT_TRUE(is_one_error_line(r.err));
+  EXPECT_NE(r.err.find("exit status 3"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("the pen broke"), std::string::npos) << r.err;
+  EXPECT_EQ(r.out, "");
+  // the torn temporaries are gone, the pictures of the run before untouched
+  EXPECT_EQ(files_under(run / "plots"), kAllPictures);
+  EXPECT_FALSE(has_temporary(run));
+  EXPECT_EQ(read_text(run / "plots" / "profile_body1.png"), old_profile);
+}
+
+}  // namespace

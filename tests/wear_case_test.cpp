@@ -1,0 +1,150 @@
+// The wear section of a case (wear/wear_case.h): read with the contact case in one pass; every
+// error names the file, the line and column, and the key path. The texts number their lines on the right.
+#include "wear/wear_case.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "tests/temp_dir.h"
+
+namespace wear {
+namespace {
+
+namespace fs = std::filesystem;
+
+class WearCaseReader : public rollwear_test::TempDirTest {
+ protected:
+  std::string write(const std::string& text) const {
+    const fs::path p = dir_ / "case.yaml";
+    std::ofstream(p) << text;
+    return p.string();
+  }
+  // the CaseError message of reading text, or "" if it reads
+  std::string error_of(const std::string& text) const {
+    const std::string path = write(text);
+    try {
+      read_wear_case(path);
+    } catch (const contact::CaseError& e) {
+      return e.what();
+    }
+    return "";
+  }
+  std::string path() const { return (dir_ / "case.yaml").string(); }
+};
+
+// a steady case with profiles: lines 1-10, then the wear section from line 11
+const std::string kContact =
+    "profiles:\n"                                                    // 1
+    "  body1: { crowned: { Ry_m: 0.5, width_m: 0.02 } }\n"           // 2
+    "  body2: { flat: { width_m: 0.03 } }\n"                         // 3
+    "bodies:\n"                                                      // 4
+    "  body1: { Rx_m: 0.020, E_Pa: 210.0e9, nu: 0.28 }\n"            // 5
+    "  body2: { Rx_m: 0.025, E_Pa: 210.0e9, nu: 0.28 }\n"            // 6
+    "load: { normal_load_N: 1500 }\n"                                // 7
+    "kinematics: { speed_m_per_s: 1.0, xi: 1.0e-3 }\n"               // 8
+    "friction: { mu: 0.3 }\n"                                        // 9
+    "solver: { nx: 20, ny: 20 }\n";                                  // 10
+
+TEST_F(WearCaseReader, ReadsTheShippedCase) {
+  const WearCase c = read_wear_case(std::string(ROLLWEAR_SOURCE_DIR) + "/cases/paper-wear.yaml");
+  ASSERT_TRUE(c.wear.body1.has_value());
+  EXPECT_FALSE(c.wear.body2.has_value());
+  EXPECT_EQ(c.wear.body1->law, "archard");
+  EXPECT_EQ(c.wear.body1->archard_k, 1e-4);
+  EXPECT_EQ(c.wear.body1->hardness_Pa, 6e9);
+  EXPECT_EQ(c.wear.revolutions, 1e10);
+  EXPECT_EQ(c.wear.limits.max_depth_m, 1e-4);
+  EXPECT_EQ(c.wear.stepping.method, "adaptive");
+  EXPECT_EQ(c.wear.smoothing_wavelength_m, 5e-4);
+  EXPECT_EQ(c.wear.snapshots_revolutions.size(), 3u);
+}
+
+TEST_F(WearCaseReader, DefaultsAndBothBodies) {
+  const std::string text = kContact +
+                           "wear:\n"                                                  // 11
+                           "  body1: { k_E_m3_per_J: 1.0e-13 }\n"                      // 12
+                           "  body2: { law: energy, k_E_m3_per_J: 2.0e-13 }\n"          // 13
+                           "  revolutions: 1.0e6\n";                                   // 14
+  ASSERT_EQ(error_of(text), "");
+  const WearCase c = read_wear_case(path());
+  EXPECT_EQ(c.wear.body1->law, "energy");
+  EXPECT_EQ(c.wear.body2->k_E_m3_per_J, 2e-13);
+  EXPECT_TRUE(c.wear.limits.edge);
+  EXPECT_EQ(c.wear.limits.max_depth_m, 0);
+  EXPECT_EQ(c.wear.stepping.rtol, 1e-3);
+  EXPECT_EQ(c.wear.smoothing_wavelength_m, 5e-4);
+  EXPECT_EQ(integrator_options(c.wear.stepping).method, IntegratorOptions::Method::Adaptive);
+}
+
+TEST_F(WearCaseReader, ErrorsNameFileLineAndKey) {
+  const std::string file = path();
+  // a law parameter out of range: at its key in the body's mapping
+  EXPECT_EQ(error_of(kContact + "wear:\n  body1: { law: archard, archard_k: 2, hardness_Pa: 6.0e9 }\n  revolutions: 1\n"),
+            file + ":12:37: wear.body1.archard_k: must be in (0, 1], got 2");
+  // an unknown law
+  EXPECT_EQ(error_of(kContact + "wear:\n  body1: { law: magic }\n  revolutions: 1\n"),
+            file + ":12:17: wear.body1.law: unknown wear law 'magic' (valid: energy, archard, kth, usfd)");
+  // a typo is a key left over, not a default
+  EXPECT_NE(error_of(kContact + "wear:\n  body1: { k_E_m3_per_J: 1.0e-13 }\n  revolutions: 1\n  revolution: 1\n")
+                .find(file + ":14:3: wear.revolution: unknown key"),
+            std::string::npos);
+  // nobody wears
+  EXPECT_EQ(error_of(kContact + "wear:\n  revolutions: 1\n"),
+            file + ":12:3: wear: no body wears: give body1: and/or body2: with a law, e.g. body1: { law: energy, "
+                   "k_E_m3_per_J: 1.0e-13 }");
+  // snapshots after the budget
+  EXPECT_EQ(error_of(kContact + "wear:\n  body1: { k_E_m3_per_J: 1.0e-13 }\n  revolutions: 10\n"
+                                "  snapshots_revolutions: [5, 20]\n"),
+            file + ":14:26: wear.snapshots_revolutions, wear.revolutions: snapshot at 20 is after the end of the "
+                   "life budget, 10");
+  // snapshots not increasing
+  EXPECT_NE(error_of(kContact + "wear:\n  body1: { k_E_m3_per_J: 1.0e-13 }\n  revolutions: 10\n"
+                                "  snapshots_revolutions: [5, 5]\n")
+                .find(file + ":14:30: wear.snapshots_revolutions: element 2 must be after element 1's 5"),
+            std::string::npos);
+  // an unknown stepping method lists the valid ones
+  EXPECT_EQ(error_of(kContact + "wear:\n  body1: { k_E_m3_per_J: 1.0e-13 }\n  revolutions: 10\n"
+                                "  stepping: { method: rk4 }\n"),
+            file + ":14:23: wear.stepping.method: must be adaptive, fixed-depth or fixed-revolutions, got 'rk4'");
+}
+
+TEST_F(WearCaseReader, CrossKeyErrors) {
+  const std::string file = path();
+  // no wear section at all
+  EXPECT_NE(error_of(kContact).find("wear: the run command needs a wear: section"), std::string::npos);
+  // a body without rolling radius cannot count revolutions
+  std::string flat_path = kContact;
+  flat_path.replace(flat_path.find("Rx_m: 0.025"), 11, "Rx_m: .inf");
+  EXPECT_NE(error_of(flat_path + "wear:\n  body2: { k_E_m3_per_J: 1.0e-13 }\n  revolutions: 10\n")
+                .find(file + ":12:10: wear.body2: the body wears but its rolling radius Rx_m = inf gives no revolutions"),
+            std::string::npos);
+  // no profiles: section
+  const std::string radii =
+      "bodies:\n"
+      "  body1: { Rx_m: 0.020, Ry_m: 0.5, E_Pa: 210.0e9, nu: 0.28 }\n"
+      "  body2: { Rx_m: 0.025, Ry_m: .inf, E_Pa: 210.0e9, nu: 0.28 }\n"
+      "load: { normal_load_N: 1500 }\n"
+      "friction: { mu: 0.3 }\n"
+      "wear:\n"                                       // 6
+      "  body1: { k_E_m3_per_J: 1.0e-13 }\n"
+      "  revolutions: 10\n";
+  EXPECT_NE(error_of(radii).find(file + ":7:3: wear, profiles: the worn body needs a lateral profile"),
+            std::string::npos);
+  // a transient duty cycle takes the energy-type laws only
+  EXPECT_NE(error_of(kContact + "transient: { t_end_s: 1.0e-3 }\n"
+                                "wear:\n  body1: { law: kth, hardness_Pa: 3.0e9 }\n  revolutions: 10\n")
+                .find("wear.body1.law, transient: the kth law reads steady per-cell fields"),
+            std::string::npos);
+  // Hertz cannot follow a worn profile
+  std::string hertz = kContact;
+  hertz.replace(hertz.find("solver: { nx: 20"), 16, "solver: { normal: hertz, nx: 20");
+  EXPECT_NE(error_of(hertz + "wear:\n  body1: { k_E_m3_per_J: 1.0e-13 }\n  revolutions: 10\n")
+                .find(file + ":10:19: solver.normal: a wear run solves the worn profiles with auto"),
+            std::string::npos);
+}
+
+}  // namespace
+}  // namespace wear

@@ -1,0 +1,190 @@
+#include "wear/wear_case.h"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+#include <tuple>
+
+#include <spdlog/fmt/fmt.h>
+
+#include "lib/yaml_reader.h"
+
+namespace wear {
+
+using contact::CaseError;
+using contact::YamlMap;
+using contact::YamlValue;
+
+namespace {
+
+std::string number(double v) { return fmt::format("{}", v); }
+
+void read_kth(YamlMap& m, KthWearMap& k) {
+  m.optional("pressure_ratio", k.pressure_ratio);
+  m.optional("slip_speed_low_m_per_s", k.slip_speed_low_m_per_s);
+  m.optional("slip_speed_high_m_per_s", k.slip_speed_high_m_per_s);
+  m.optional("K_mild_slow", k.K_mild_slow);
+  m.optional("K_severe", k.K_severe);
+  m.optional("K_mild_fast", k.K_mild_fast);
+  m.optional("K_catastrophic", k.K_catastrophic);
+}
+
+void read_usfd(YamlMap& m, UsfdWearFunction& u) {
+  m.optional("mild_slope", u.mild_slope);
+  m.optional("severe_ug_per_m_mm2", u.severe_ug_per_m_mm2);
+  m.optional("catastrophic_slope", u.catastrophic_slope);
+  m.optional("catastrophic_offset_ug_per_m_mm2", u.catastrophic_offset_ug_per_m_mm2);
+}
+
+// one body's law; validate()'s message "wear.KEY: ..." is moved to this body's key and line
+void read_law(YamlMap& m, WearLaw& law) {
+  m.optional("law", law.law);
+  try {
+    parse_wear_law(law.law);
+  } catch (const std::invalid_argument& e) {
+    m.fail("law", std::string(e.what()).substr(std::string("wear.law: ").size()));
+  }
+  m.optional("k_E_m3_per_J", law.k_E_m3_per_J);
+  m.optional("archard_k", law.archard_k);
+  m.optional("hardness_Pa", law.hardness_Pa);
+  m.optional("density_kg_per_m3", law.density_kg_per_m3);
+  m.optional_section("kth", [&](YamlMap& s) { read_kth(s, law.kth); });
+  m.optional_section("usfd", [&](YamlMap& s) { read_usfd(s, law.usfd); });
+  try {
+    validate(law);
+  } catch (const std::invalid_argument& e) {
+    const std::string what = e.what();
+    const std::string prefix = "wear.";
+    const std::size_t colon = what.find(": ");
+    if (what.compare(0, prefix.size(), prefix) == 0 && colon != std::string::npos) {
+      const std::string key = what.substr(prefix.size(), colon - prefix.size());
+      const std::size_t dot = key.find('.');
+      if (dot == std::string::npos) m.fail(key, what.substr(colon + 2));
+      m.fail(key.substr(0, dot), key.substr(dot + 1) + ": " + what.substr(colon + 2));
+    }
+    m.fail_here(what);
+  }
+}
+
+void read_stepping(YamlMap& m, WearStepping& s) {
+  m.optional("method", s.method, [](const std::string& v) -> std::string {
+    return v == "adaptive" || v == "fixed-depth" || v == "fixed-revolutions"
+               ? ""
+               : "must be adaptive, fixed-depth or fixed-revolutions";
+  });
+  m.optional("rtol", s.rtol, [](double v) -> std::string {
+    return v >= 1e-10 && v <= 0.5 ? "" : "must be in [1e-10, 0.5]";
+  });
+  m.optional("atol_m", s.atol_m, contact::positive_finite);
+  m.optional("max_depth_step_m", s.max_depth_step_m, contact::positive_finite);
+  m.optional("step_revolutions", s.step_revolutions, contact::nonnegative_finite);
+  double max_steps = static_cast<double>(s.max_steps);
+  m.optional("max_steps", max_steps, contact::in_closed(1, 1e9));
+  s.max_steps = static_cast<long>(max_steps);
+}
+
+void read_wear(YamlMap& m, WearSection& w) {
+  m.optional_section("body1", [&](YamlMap& s) { read_law(s, w.body1.emplace()); });
+  m.optional_section("body2", [&](YamlMap& s) { read_law(s, w.body2.emplace()); });
+  if (!w.body1 && !w.body2)
+    m.fail_here("no body wears: give body1: and/or body2: with a law, e.g. body1: { law: energy, k_E_m3_per_J: 1.0e-13 }");
+  m.required("revolutions", w.revolutions, [](double v) -> std::string {
+    return v > 0 && v <= 1e15 ? "" : "must be in (0, 1e15]";
+  });
+  m.optional_section("limits", [&](YamlMap& s) {
+    s.optional("max_depth_m", w.limits.max_depth_m, contact::nonnegative_finite);
+    s.optional("max_pressure_Pa", w.limits.max_pressure_Pa, contact::nonnegative_finite);
+    s.optional("edge", w.limits.edge);
+  });
+  m.optional_section("stepping", [&](YamlMap& s) { read_stepping(s, w.stepping); });
+  m.optional("smoothing_wavelength_m", w.smoothing_wavelength_m, contact::in_closed(0, 0.1));
+  m.optional_value("snapshots_revolutions", [&](const YamlValue& v) {
+    const std::vector<YamlValue> e = v.elements("a list of revolutions, e.g. [1.0e7, 2.0e7]");
+    for (std::size_t k = 0; k < e.size(); ++k) {
+      const std::string element = "element " + std::to_string(k + 1);
+      const double N = e[k].as<double>(contact::positive_finite, element);
+      if (k > 0 && !(N > w.snapshots_revolutions.back()))
+        e[k].fail(element + " must be after element " + std::to_string(k) + "'s " +
+                  number(w.snapshots_revolutions.back()) + " (revolutions strictly increasing), got " +
+                  e[k].node().Scalar());
+      w.snapshots_revolutions.push_back(N);
+    }
+  });
+  m.optional("checkpoint_interval_s", w.checkpoint_interval_s, contact::nonnegative_finite);
+}
+
+}  // namespace
+
+WearCase read_wear_case(const std::string& path) {
+  WearCase c;
+  bool has_wear = false;
+  c.contact = contact::read_contact_case(path, [&](YamlMap& m) {
+    m.optional_section("wear", [&](YamlMap& s) {
+      has_wear = true;
+      read_wear(s, c.wear);
+    });
+  });
+  if (!has_wear)
+    throw CaseError(path + ": wear: the run command needs a wear: section (the bodies that wear, their law "
+                    "and the revolutions), e.g. cases/paper-wear.yaml");
+  validate(c);
+  return c;
+}
+
+void validate(const WearCase& c) {
+  using contact::where;
+  const contact::ContactCase& k = c.contact;
+  const WearSection& w = c.wear;
+  if (!k.profiles)
+    throw CaseError(where(k, "wear") + "wear, profiles: the worn body needs a lateral profile; give a profiles: "
+                    "section (e.g. body1: { crowned: { Ry_m: 0.5, width_m: 0.02 } })");
+  if (k.solver.normal == "hertz" || k.solver.normal == "halfspace")
+    throw CaseError(where(k, "solver.normal") + "solver.normal: a wear run solves the worn profiles with auto "
+                    "(Hertz while the curvature is constant, then semi-Hertz) or semi-hertz, not " + k.solver.normal);
+  if (k.inertia) throw CaseError(where(k, "inertia") + "inertia: not supported in a wear run");
+  for (const auto& [key, law, R] : {std::tuple<const char*, const std::optional<WearLaw>*, double>{
+                                        "wear.body1", &w.body1, k.bodies.body1.Rx_m},
+                                    {"wear.body2", &w.body2, k.bodies.body2.Rx_m}}) {
+    if (!law->has_value()) continue;
+    if (!(R > 0) || !std::isfinite(R))
+      throw CaseError(where(k, key) + key + ": the body wears but its rolling radius Rx_m = " + number(R) +
+                      " gives no revolutions (a flat or concave body cannot be the worn body)");
+    const std::string name = (*law)->law;
+    if (k.transient && name != "energy" && name != "archard")
+      throw CaseError(where(k, std::string(key) + ".law") + key + ".law, transient: the " + name +
+                      " law reads steady per-cell fields; a transient duty cycle takes energy or archard");
+  }
+  if (k.transient) {
+    if (!contact::is_constant(k.load.normal_load_N))
+      throw CaseError(where(k, "load.normal_load_N") + "load.normal_load_N: a wear run's duty cycle needs a constant "
+                      "load (the worn contact is solved once per evaluation)");
+    if (k.transient->scheme != "shift")
+      throw CaseError(where(k, "transient.scheme") + "transient.scheme: a wear run's duty cycle uses shift");
+  } else {
+    contact::validate_steady(k);
+    if (!(contact::speed_of(k) > 0))
+      throw CaseError(where(k, "kinematics.speed_m_per_s") + "kinematics.speed_m_per_s: steady running needs a "
+                      "rolling speed > 0 (revolutions)");
+  }
+  if (!w.snapshots_revolutions.empty() && w.snapshots_revolutions.back() > w.revolutions)
+    throw CaseError(where(k, "wear.snapshots_revolutions") + "wear.snapshots_revolutions, wear.revolutions: snapshot at " +
+                    number(w.snapshots_revolutions.back()) + " is after the end of the life budget, " +
+                    number(w.revolutions));
+  if (w.stepping.method == "fixed-revolutions" && !(w.stepping.step_revolutions > 0))
+    throw CaseError(where(k, "wear.stepping") + "wear.stepping.step_revolutions: fixed-revolutions needs a step > 0");
+}
+
+IntegratorOptions integrator_options(const WearStepping& s) {
+  IntegratorOptions o;
+  o.method = s.method == "adaptive"      ? IntegratorOptions::Method::Adaptive
+             : s.method == "fixed-depth" ? IntegratorOptions::Method::FixedDepth
+                                         : IntegratorOptions::Method::FixedStep;
+  o.rtol = s.rtol;
+  o.atol = s.atol_m;
+  o.max_depth_step = s.max_depth_step_m;
+  o.fixed_step = s.step_revolutions;
+  o.max_steps = s.max_steps;
+  return o;
+}
+
+}  // namespace wear

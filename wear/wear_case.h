@@ -1,0 +1,76 @@
+// A wear case: a contact case (lib/case.h) with a wear: section, read in one pass with the same
+// errors (file, line, column, key path). The duty cycle is the case's kinematic history:
+//   no transient: section  steady running, every history a constant; one duty cycle = one
+//                          revolution of the reference body (the first body that wears);
+//   transient: section     the histories over [0, transient.t_end_s], run by Satran (shift) with
+//                          its steady stretches skipped (lib/satran.h, skip_steady), repeated over
+//                          the life. The load must be constant (the worn profiles' contact is solved
+//                          once per evaluation), and the law energy or archard (the per-cell laws
+//                          read steady fields).
+//
+//   wear:
+//     body1: { law: energy, k_E_m3_per_J: 1.0e-13 }   # the body that wears, with its law (and/or body2)
+//     revolutions: 1.0e9            # the life budget, revolutions of the reference body (required)
+//     limits: { max_depth_m: 1.0e-4, max_pressure_Pa: 0, edge: true }   # 0 = no such limit
+//     stepping: { method: adaptive, rtol: 1.0e-3, atol_m: 1.0e-9,
+//                 max_depth_step_m: 1.0e-5, step_revolutions: 0, max_steps: 100000 }
+//     smoothing_wavelength_m: 5.0e-4    # cut-off of the volume-conserving Gaussian filter; 0 = none
+//     snapshots_revolutions: [1.0e7, 3.0e7]   # worn profiles written there (and at the start and end)
+//     checkpoint_interval_s: 10      # wall time between checkpoints (the last step is always saved)
+//
+// Each body's law takes the keys of wear::WearLaw (wear_law.h): law, k_E_m3_per_J, archard_k,
+// hardness_Pa, density_kg_per_m3, kth: {...}, usfd: {...}.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "lib/case.h"
+#include "wear/integrator.h"
+#include "wear/wear_law.h"
+
+namespace wear {
+
+struct WearLimits {
+  double max_depth_m = 0;      // the life ends when the maximum worn depth reaches it; 0 = none
+  double max_pressure_Pa = 0;  // ... when the peak contact pressure exceeds it; 0 = none
+  bool edge = true;            // ... when the contact reaches a body's edge
+};
+
+struct WearStepping {
+  std::string method = "adaptive";  // adaptive | fixed-depth | fixed-revolutions
+  double rtol = 1e-3;               // adaptive: relative tolerance on the worn depth
+  double atol_m = 1e-9;             // adaptive: absolute tolerance, m
+  double max_depth_step_m = 1e-5;   // fixed-depth: the largest depth worn in one update, m
+  double step_revolutions = 0;      // fixed-revolutions: revolutions per update
+  long max_steps = 100000;          // accepted steps in the whole run
+};
+
+struct WearSection {
+  std::optional<WearLaw> body1, body2;  // the bodies that wear; at least one
+  double revolutions = 0;               // required: the life budget
+  WearLimits limits;
+  WearStepping stepping;
+  double smoothing_wavelength_m = 5e-4;
+  std::vector<double> snapshots_revolutions;  // increasing, in (0, revolutions]
+  double checkpoint_interval_s = 10;
+};
+
+struct WearCase {
+  contact::ContactCase contact;
+  WearSection wear;
+};
+
+// reads and validates; throws contact::CaseError (file, line, key) on any problem, among them a case
+// without profiles: (the worn body needs a lateral profile), a law the duty cycle cannot feed, or a
+// worn body with a flat rolling radius (no revolutions)
+WearCase read_wear_case(const std::string& path);
+
+// cross-key checks (read_wear_case runs them)
+void validate(const WearCase& c);
+
+// the integrator's settings of the case
+IntegratorOptions integrator_options(const WearStepping& s);
+
+}  // namespace wear

@@ -1,0 +1,339 @@
+// The wear loop (wear_loop.h, docs/wear-loop.md).
+#include "wear/wear_loop.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+#include <spdlog/fmt/fmt.h>
+#include <spdlog/spdlog.h>
+
+#include "lib/case.h"
+#include "lib/steady.h"
+#include "wear/profile_update.h"
+
+namespace wear {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kNominalEnergyCoefficient_m3_per_J = 1e-13;  // scales e for the per-cell laws
+constexpr std::size_t kCachedRates = 4;  // an RK step's stages, the step end, a root's probes
+
+// k_E of an energy-type law (energy, archard), 0 for the per-cell laws
+double energy_coefficient(const WearLaw& law, double mu) {
+  const WearLawKind kind = parse_wear_law(law.law);
+  if (kind == WearLawKind::Energy) return law.k_E_m3_per_J;
+  if (kind == WearLawKind::Archard) return archard_energy_coefficient_m3_per_J(law.archard_k, law.hardness_Pa, mu);
+  return 0;
+}
+
+const contact::Profile& profile_of(const WearModel& m, int body) {
+  return body == 1 ? m.profiles.body1 : m.profiles.body2;
+}
+
+// the dissipated energy per unit width over one duty cycle, with what the per-cell laws read
+struct DutyCycleEnergy {
+  Eigen::ArrayXd strip_energy_J_per_m;
+  std::vector<CellFields> stretches;  // steady running only
+  double rolled_m = 0;                // distance rolled in the cycle
+  double duration_s = 0;
+  double Fx_N = 0;
+  double dissipated_J = 0;
+};
+
+DutyCycleEnergy duty_cycle_energy(const WearModel& m, const contact::ContactPatch& patch, bool need_fields) {
+  DutyCycleEnergy d;
+  if (!m.transient) {
+    // steady running: one cycle is one revolution of the reference body
+    const contact::TangentialProblem problem =
+        contact::make_tangential_problem(patch, m.materials, m.creepages, m.mu, m.speed_m_per_s);
+    contact::SteadyOptions options;
+    options.fields = need_fields;
+    const contact::TangentialSolution s = contact::solve_steady(patch, problem, m.scheme, options);
+    d.rolled_m = 2 * kPi * m.reference_radius_m;
+    d.duration_s = d.rolled_m / m.speed_m_per_s;
+    d.strip_energy_J_per_m = s.strip_power_W_per_m * d.duration_s;
+    d.Fx_N = s.Fx_N;
+    d.dissipated_J = s.power_W * d.duration_s;
+    if (need_fields) d.stretches.push_back(cell_fields(patch, s, m.mu, m.speed_m_per_s, d.duration_s));
+    return d;
+  }
+  // the transient history, on the worn contact, with its steady stretches skipped
+  contact::TransientCase t = *m.transient;
+  t.patch = patch;
+  double last_Fx = 0;
+  const contact::TransientResult r =
+      contact::run_transient(t, [&](const contact::TransientRecord& rec, const Eigen::ArrayXd&) { last_Fx = rec.Fx_N; });
+  d.strip_energy_J_per_m = r.strip_energy_J_per_m;
+  d.rolled_m = r.q_end_m;
+  d.duration_s = r.t_end_s;
+  d.Fx_N = last_Fx;
+  d.dissipated_J = r.dissipated_J;
+  if (!(d.rolled_m > 0))
+    throw std::invalid_argument("the duty cycle rolls no distance: its wear cannot be spread over revolutions");
+  return d;
+}
+
+// a body's depth per duty cycle at its profile's nodes: the law per strip, mapped and smoothed
+Eigen::ArrayXd node_depth_per_cycle(const WearModel& m, int body, const WearLaw& law, const DutyCycleEnergy& d,
+                                    double strip_y0_m, double dy_m) {
+  DutyCycle duty;
+  duty.worn_radius_m = body == 1 ? m.Rx1_m : m.Rx2_m;
+  duty.mu = m.mu;
+  duty.strip_energy_J_per_m = d.strip_energy_J_per_m;
+  duty.stretches = d.stretches;
+  const Eigen::ArrayXd strips = depth_per_duty_cycle(law, duty);
+  const contact::Profile& p = profile_of(m, body);
+  return smooth_conserving(strips_to_nodes(strips, strip_y0_m, dy_m, p.y_m), p.y_m, m.smoothing_wavelength_m);
+}
+
+bool needs_fields(const std::optional<WearLaw>& law) {
+  if (!law) return false;
+  const WearLawKind k = parse_wear_law(law->law);
+  return k == WearLawKind::Kth || k == WearLawKind::Usfd;
+}
+
+}  // namespace
+
+WearModel make_wear_model(const WearCase& c) {
+  validate(c);
+  const contact::ContactCase& k = c.contact;
+  WearModel m;
+  m.name = k.name;
+  m.profiles = k.profiles->profiles;
+  m.Rx1_m = k.bodies.body1.Rx_m;
+  m.Rx2_m = k.bodies.body2.Rx_m;
+  m.materials = contact::materials_of(k);
+  m.grid = contact::grid_of(k);
+  m.normal_options.heathcote_slip = k.profiles->heathcote_slip;
+  m.semi_hertz_always = k.solver.normal == "semi-hertz";
+  m.normal_load_N = k.load.normal_load_N.value.front();
+  m.mu = k.friction.mu;
+  m.scheme = contact::parse_tangential_scheme(k.solver.tangential);
+  if (k.transient) {
+    m.transient = contact::transient_case_of(k);
+    m.transient->settings.skip_steady = true;
+    m.transient->settings.snapshot_times_s.clear();
+  } else {
+    m.speed_m_per_s = contact::speed_of(k);
+    m.creepages = contact::creepages_of(k);
+  }
+  m.law1 = c.wear.body1;
+  m.law2 = c.wear.body2;
+  m.n1 = m.law1 ? static_cast<int>(m.profiles.body1.y_m.size()) : 0;
+  m.n2 = m.law2 ? static_cast<int>(m.profiles.body2.y_m.size()) : 0;
+  m.reference_radius_m = m.law1 ? m.Rx1_m : m.Rx2_m;
+  const WearLaw& reference = m.law1 ? *m.law1 : *m.law2;
+  const double k_E = energy_coefficient(reference, m.mu);
+  const contact::Profile& p = m.law1 ? m.profiles.body1 : m.profiles.body2;
+  const double width = p.y_m(p.y_m.size() - 1) - p.y_m(0);
+  // e = the depth the energy would wear spread evenly over the reference body's width
+  m.energy_scale = (k_E > 0 ? k_E : kNominalEnergyCoefficient_m3_per_J) / (2 * kPi * m.reference_radius_m * width);
+  m.smoothing_wavelength_m = c.wear.smoothing_wavelength_m;
+  m.limits = c.wear.limits;
+  return m;
+}
+
+Eigen::VectorXd initial_state(const WearModel& m) { return Eigen::VectorXd::Zero(m.state_size()); }
+
+contact::Profiles worn_profiles(const WearModel& m, const Eigen::VectorXd& state) {
+  if (state.size() != m.state_size())
+    throw std::invalid_argument(fmt::format("wear state has {} values, the model {}", state.size(), m.state_size()));
+  contact::Profiles p = m.profiles;
+  // wear removes material: the surface recedes into the body, z grows by the depth
+  if (m.n1 > 0) p.body1.z_m += state.segment(0, m.n1).array();
+  if (m.n2 > 0) p.body2.z_m += state.segment(m.n1, m.n2).array();
+  return p;
+}
+
+NormalState normal_state(const WearModel& m, const Eigen::VectorXd& state, WearCache& cache) {
+  const contact::Profiles profiles = worn_profiles(m, state);
+  const std::uint64_t key = contact::profile_hash(profiles);
+  if (cache.normal_valid && cache.normal_key == key) return cache.normal;
+
+  // normal problem on the current worn geometry: Hertz while unworn profiles have constant curvature,
+  // semi-Hertz once anything is worn (never back: the switch is a jump in f of up to 6.4e-4,
+  // docs/semi-hertz.md, which the step control would meet at every crossing)
+  const bool unworn = m.n1 + m.n2 == 0 || state.head(m.n1 + m.n2).isZero(0);
+  NormalState n;
+  n.normal = m.semi_hertz_always || !unworn
+                 ? contact::solve_semi_hertz(profiles, m.Rx1_m, m.Rx2_m, m.materials, m.normal_load_N, m.grid,
+                                             m.normal_options)
+                 : contact::solve_normal_on_profiles(profiles, m.Rx1_m, m.Rx2_m, m.materials, m.normal_load_N, m.grid,
+                                                     m.normal_options, contact::kCaseCurvatureRtol);
+  // the lifetime's edge limit: how far the contact is from the end of the profiles' overlap
+  const double lo = std::max(profiles.body1.y_m(0), profiles.body2.y_m(0));
+  const double hi = std::min(profiles.body1.y_m(profiles.body1.y_m.size() - 1),
+                             profiles.body2.y_m(profiles.body2.y_m.size() - 1));
+  n.edge_margin_m = n.normal.reaches_edge
+                        ? 0.0
+                        : std::min(n.normal.contact_y_min_m - lo, hi - n.normal.contact_y_max_m);
+  ++cache.counters.normal_solves;
+  cache.normal_key = key;
+  cache.normal = n;
+  cache.normal_valid = true;
+  return n;
+}
+
+WearRate wear_rate(const WearModel& m, const Eigen::VectorXd& state, WearCache& cache) {
+  ++cache.counters.rate_evaluations;
+  const std::uint64_t key = contact::profile_hash(worn_profiles(m, state));
+  for (const auto& [k, rate] : cache.rates)
+    if (k == key) return rate;
+
+  // normal problem on the current worn geometry
+  const NormalState n = normal_state(m, state, cache);
+  const contact::ContactPatch& patch = n.normal.patch;
+
+  // tangential problem over the duty cycle: dissipated energy per unit width
+  const DutyCycleEnergy duty = duty_cycle_energy(m, patch, needs_fields(m.law1) || needs_fields(m.law2));
+  ++cache.counters.tangential_solves;
+
+  // wear law per strip, onto each worn body's nodes (volume-conserving smoothing), per revolution
+  WearRate r;
+  r.strip_energy_J_per_m = duty.strip_energy_J_per_m;
+  r.strip_y0_m = n.normal.grid_y0_m + patch.grid.y_edge(0);
+  r.strip_dy_m = patch.grid.dy_m;
+  r.cycles_per_revolution = 2 * kPi * m.reference_radius_m / duty.rolled_m;
+  r.energy_per_revolution_J = duty.strip_energy_J_per_m.sum() * r.strip_dy_m * r.cycles_per_revolution;
+  r.dstate_dN = Eigen::VectorXd::Zero(m.state_size());
+  if (m.law1)
+    r.dstate_dN.segment(0, m.n1) =
+        r.cycles_per_revolution * node_depth_per_cycle(m, 1, *m.law1, duty, r.strip_y0_m, r.strip_dy_m).matrix();
+  if (m.law2)
+    r.dstate_dN.segment(m.n1, m.n2) =
+        r.cycles_per_revolution * node_depth_per_cycle(m, 2, *m.law2, duty, r.strip_y0_m, r.strip_dy_m).matrix();
+  r.dstate_dN(m.energy_index()) = m.energy_scale * r.energy_per_revolution_J;
+
+  r.contact.a_m = patch.a_m;
+  r.contact.b_m = patch.b_m;
+  r.contact.p0_Pa = patch.p0_Pa;
+  r.contact.Fx_N = duty.Fx_N;
+  r.contact.power_W = duty.duration_s > 0 ? duty.dissipated_J / duty.duration_s : 0;
+  r.contact.edge_margin_m = n.edge_margin_m;
+  r.contact.normal_solver = n.normal.status.message.rfind("constant curvature", 0) == 0 ? "hertz" : "semi-hertz";
+
+  if (cache.rates.size() >= kCachedRates) cache.rates.erase(cache.rates.begin());
+  cache.rates.emplace_back(key, r);
+  return r;
+}
+
+double max_depth_m(const WearModel& m, const Eigen::VectorXd& state) {
+  const int n = m.n1 + m.n2;
+  return n > 0 ? state.head(n).maxCoeff() : 0.0;
+}
+
+double worn_volume_m3(const WearModel& m, const Eigen::VectorXd& state, int body) {
+  if (body == 1 && m.n1 > 0)
+    return 2 * kPi * m.Rx1_m * profile_area_m2(state.segment(0, m.n1).array(), m.profiles.body1.y_m);
+  if (body == 2 && m.n2 > 0)
+    return 2 * kPi * m.Rx2_m * profile_area_m2(state.segment(m.n1, m.n2).array(), m.profiles.body2.y_m);
+  return 0;
+}
+
+double dissipated_energy_J(const WearModel& m, const Eigen::VectorXd& state) {
+  return state(m.energy_index()) / m.energy_scale;
+}
+
+// ---- the life ----
+
+namespace {
+
+enum Limit { kDepth, kPressure, kEdge, kLimits };
+const char* const kLimitNames[kLimits] = {"max_depth", "max_pressure", "edge"};
+
+}  // namespace
+
+LifeResult run_life(const WearModel& m, const WearCase& c, const LifeStart& start, const LifeHooks& hooks,
+                    WearCache& cache) {
+  LifeResult life;
+  life.N = start.N;
+  life.state = start.state.size() ? start.state : initial_state(m);
+  life.next_step = start.next_step;
+  life.steps = start.steps;
+  life.rhs_evals = start.rhs_evals;
+  life.rejected = start.rejected;
+
+  // the lifetime limits as event functions g_k(N, h): a sign change ends the life
+  const auto limit_values = [&](const Eigen::VectorXd& h, Eigen::VectorXd& g) {
+    g.resize(kLimits);
+    g(kDepth) = m.limits.max_depth_m > 0 ? max_depth_m(m, h) - m.limits.max_depth_m : -1;
+    const bool need_normal = m.limits.max_pressure_Pa > 0 || m.limits.edge;
+    const NormalState n = need_normal ? normal_state(m, h, cache) : NormalState{};
+    g(kPressure) = m.limits.max_pressure_Pa > 0 ? n.normal.patch.p0_Pa - m.limits.max_pressure_Pa : -1;
+    g(kEdge) = m.limits.edge ? -n.edge_margin_m : -1;
+  };
+  const auto end_with = [&](const char* why, const std::string& message) {
+    life.ended_by = why;
+    life.message = message;
+    life.contact = wear_rate(m, life.state, cache).contact;
+    return life;
+  };
+
+  // a limit already reached (a resumed run, or an unworn contact at the edge)
+  Eigen::VectorXd g0;
+  limit_values(life.state, g0);
+  for (int k = 0; k < kLimits; ++k)
+    if (g0(k) >= 0)
+      return end_with(kLimitNames[k], fmt::format("{} reached at the start, N {:.10g}", kLimitNames[k], life.N));
+
+  const Rhs f = [&](double, const Eigen::VectorXd& h, Eigen::VectorXd& dhdN) {
+    dhdN = wear_rate(m, h, cache).dstate_dN;
+  };
+  const Roots roots = [&](double, const Eigen::VectorXd& h, Eigen::VectorXd& g) { limit_values(h, g); };
+
+  // the segments: up to each snapshot revolution, then to the budget
+  std::vector<double> ends;
+  for (double N : c.wear.snapshots_revolutions)
+    if (N > life.N) ends.push_back(N);
+  if (ends.empty() || ends.back() < c.wear.revolutions) ends.push_back(c.wear.revolutions);
+
+  IntegratorOptions options = integrator_options(c.wear.stepping);
+  for (double N_end : ends) {
+    options.initial_step = life.next_step;
+    options.max_steps = c.wear.stepping.max_steps - life.steps;
+    if (options.max_steps <= 0) return end_with("max_steps", fmt::format("max_steps {} reached", c.wear.stepping.max_steps));
+    const long steps0 = life.steps, rhs0 = life.rhs_evals, rejected0 = life.rejected;
+    const OnStep on_step = [&](const StepInfo& info, const Eigen::VectorXd& h) {
+      LifeStep s;
+      s.step = steps0 + info.steps;
+      s.N = info.N;
+      s.state = &h;
+      s.info = info;
+      s.info.steps = s.step;
+      s.info.rhs_evals = rhs0 + info.rhs_evals;
+      s.info.rejected = rejected0 + info.rejected;
+      s.contact = wear_rate(m, h, cache).contact;
+      return hooks.on_step ? hooks.on_step(s) : true;
+    };
+    const IntegratorResult r = integrate(f, roots, kLimits, life.N, life.state, N_end, options, on_step);
+    life.N = r.N;
+    life.state = r.h_m;
+    life.steps = steps0 + r.steps;
+    life.rhs_evals = rhs0 + r.rhs_evals;
+    life.rejected = rejected0 + r.rejected;
+    if (r.next_step > 0) life.next_step = r.next_step;
+    switch (r.status.kind) {
+      case IntegratorStatus::Kind::ReachedEnd: {
+        const auto& snaps = c.wear.snapshots_revolutions;
+        if (hooks.on_snapshot && std::find(snaps.begin(), snaps.end(), N_end) != snaps.end())
+          hooks.on_snapshot(life.N, life.state);
+        break;
+      }
+      case IntegratorStatus::Kind::RootFound:
+        return end_with(kLimitNames[r.status.roots.front()],
+                        fmt::format("{} reached at N {:.10g} ({})", kLimitNames[r.status.roots.front()], r.N,
+                                    r.status.message));
+      case IntegratorStatus::Kind::Stopped: return end_with("stopped", r.status.message);
+      case IntegratorStatus::Kind::MaxSteps: return end_with("max_steps", r.status.message);
+      case IntegratorStatus::Kind::Failed: return end_with("failed", r.status.message);
+    }
+  }
+  return end_with("revolutions", fmt::format("the life budget wear.revolutions = {:.10g} reached with no limit",
+                                             c.wear.revolutions));
+}
+
+}  // namespace wear

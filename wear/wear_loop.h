@@ -1,0 +1,161 @@
+// The wear loop (PHYSICS.md §6, docs/wear-loop.md): the worn depth h at the fixed lateral nodes of
+// each wearing body's profile obeys an ODE in the revolutions N of the reference body (the first body
+// that wears),
+//   dh/dN = f(h):  worn profiles z + h -> normal problem -> tangential problem over the duty cycle
+//                  -> dissipated energy per unit width E_l(y_j) per duty cycle -> the wear law's depth
+//                  per strip -> mapped onto the profile's nodes and smoothed, conserving the volume
+//                  -> times the duty cycles per revolution.
+// One duty cycle is one revolution in steady running (E_l = P_l 2 pi R_ref / V), and the case's
+// transient history otherwise (Satran; duty cycles per revolution 2 pi R_ref / q_cycle, q_cycle the
+// distance it rolls). Its energy is spread evenly around each body's circumference: stop positions are
+// assumed to vary, and wear at a fixed stop position (flat spots) is out of scope.
+//
+// The state vector is [h_body1 (its profile's nodes, if it wears) | h_body2 (likewise) | e], e the
+// dissipated energy scaled to a depth, e = E kEnergyScale: integrated by the same Runge-Kutta weights
+// as h, it makes "worn volume = k_E x dissipated energy" checkable to rounding at every step.
+// The rolling radius change of the worn body (Rx) is ignored: z is measured from the unworn radius.
+#pragma once
+
+#include <Eigen/Core>
+
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "lib/profile.h"
+#include "lib/satran.h"
+#include "lib/semi_hertz.h"
+#include "lib/tangential.h"
+#include "wear/integrator.h"
+#include "wear/wear_case.h"
+#include "wear/wear_law.h"
+
+namespace wear {
+
+// everything an evaluation of f needs, built once from the case
+struct WearModel {
+  std::string name;
+  contact::Profiles profiles;  // the unworn profiles
+  double Rx1_m = 0, Rx2_m = 0;
+  contact::ElasticPair materials;
+  contact::GridSpec grid;
+  contact::SemiHertzOptions normal_options;
+  bool semi_hertz_always = false;  // solver.normal semi-hertz (else auto: Hertz while curvature is constant)
+  double normal_load_N = 0;
+  double mu = 0;
+  contact::TangentialScheme scheme = contact::TangentialScheme::Consistent;
+  // the duty cycle: steady running at speed and creepages, or the transient history
+  double speed_m_per_s = 0;
+  contact::Creepages creepages;
+  std::optional<contact::TransientCase> transient;
+  // wear
+  std::optional<WearLaw> law1, law2;
+  double reference_radius_m = 0;   // Rx of the first body that wears: life counted in its revolutions
+  double energy_scale = 0;         // e = E energy_scale (m/J)
+  double smoothing_wavelength_m = 0;
+  WearLimits limits;
+  int n1 = 0, n2 = 0;              // nodes of each body in the state (0: the body does not wear)
+
+  int state_size() const { return n1 + n2 + 1; }
+  int energy_index() const { return n1 + n2; }
+};
+
+// throws contact::CaseError for what validate(WearCase) refuses
+WearModel make_wear_model(const WearCase& c);
+
+// the unworn state (zeros)
+Eigen::VectorXd initial_state(const WearModel& m);
+
+// the profiles worn by the state's depths
+contact::Profiles worn_profiles(const WearModel& m, const Eigen::VectorXd& state);
+
+// the normal problem on worn profiles, and what the lifetime limits read from it
+struct NormalState {
+  contact::SemiHertzResult normal;
+  double edge_margin_m = 0;  // lateral distance from the contact to the nearest end of the profiles' overlap
+};
+
+// the contact's state after one evaluation
+struct ContactReport {
+  double a_m = 0, b_m = 0, p0_Pa = 0;
+  double Fx_N = 0;        // steady: the creep force; transient: at the end of the duty cycle
+  double power_W = 0;     // mean dissipated power over the duty cycle
+  double edge_margin_m = 0;
+  std::string normal_solver;  // hertz (constant curvature) or semi-hertz
+};
+
+struct WearRate {
+  Eigen::VectorXd dstate_dN;              // (state_size) per revolution of the reference body
+  Eigen::ArrayXd strip_energy_J_per_m;    // (ny) per duty cycle
+  double strip_y0_m = 0, strip_dy_m = 0;  // strip j covers [strip_y0 + j dy, strip_y0 + (j + 1) dy] (profiles' y)
+  double cycles_per_revolution = 0;
+  double energy_per_revolution_J = 0;
+  ContactReport contact;
+};
+
+// counts of the solver calls (the benchmark reports them)
+struct WearCounters {
+  long normal_solves = 0;
+  long tangential_solves = 0;   // steady solves or Satran duty cycles
+  long rate_evaluations = 0;    // evaluations of f, cached or not
+};
+
+// the last results, keyed by the worn profiles' hash (an unchanged profile is not solved again)
+struct WearCache {
+  std::uint64_t normal_key = 0;
+  bool normal_valid = false;
+  NormalState normal;
+  std::vector<std::pair<std::uint64_t, WearRate>> rates;  // the last few
+  WearCounters counters;
+};
+
+NormalState normal_state(const WearModel& m, const Eigen::VectorXd& state, WearCache& cache);
+WearRate wear_rate(const WearModel& m, const Eigen::VectorXd& state, WearCache& cache);
+
+// what the state says: the largest depth over the wearing bodies, each body's worn volume
+// (2 pi R_k x the profile's worn area), the dissipated energy
+double max_depth_m(const WearModel& m, const Eigen::VectorXd& state);
+double worn_volume_m3(const WearModel& m, const Eigen::VectorXd& state, int body);  // body 1 or 2
+double dissipated_energy_J(const WearModel& m, const Eigen::VectorXd& state);
+
+// ---- the life ----
+
+// where a run starts: the unworn state, or a checkpoint
+struct LifeStart {
+  double N = 0;
+  Eigen::VectorXd state;
+  double next_step = 0;   // adaptive: the step to try first (a checkpoint's), 0 = ARKODE's estimate
+  long steps = 0, rhs_evals = 0, rejected = 0;  // counters so far
+};
+
+struct LifeStep {
+  long step = 0;              // accepted steps so far, over the whole life
+  double N = 0;
+  const Eigen::VectorXd* state = nullptr;
+  StepInfo info;              // this step (counters over the whole life)
+  ContactReport contact;      // at the step's end
+};
+
+struct LifeHooks {
+  std::function<bool(const LifeStep&)> on_step;  // after every accepted step; false stops the run
+  std::function<void(double N, const Eigen::VectorXd& state)> on_snapshot;  // at each snapshot revolution
+};
+
+struct LifeResult {
+  std::string ended_by;  // max_depth | max_pressure | edge | revolutions | max_steps | stopped | failed
+  std::string message;
+  double N = 0;
+  Eigen::VectorXd state;
+  double next_step = 0;
+  long steps = 0, rhs_evals = 0, rejected = 0;
+  ContactReport contact;  // at the end
+};
+
+// integrates from start to the first lifetime limit (located by root finding) or the budget
+// wear.revolutions, stepping through the snapshot revolutions
+LifeResult run_life(const WearModel& m, const WearCase& c, const LifeStart& start, const LifeHooks& hooks,
+                    WearCache& cache);
+
+}  // namespace wear

@@ -1,0 +1,204 @@
+#include "wear/wear_output.h"
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+
+#include <spdlog/fmt/fmt.h>
+
+#include "lib/history.h"
+
+namespace wear {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr const char* kCheckpointMagic = "rollwear-wear-checkpoint 1";
+
+std::string g17(double v) { return fmt::format("{:.17g}", v); }
+
+std::string law_text(const WearLaw& law) {
+  switch (parse_wear_law(law.law)) {
+    case WearLawKind::Energy: return fmt::format("energy, k_E {} m^3/J", law.k_E_m3_per_J);
+    case WearLawKind::Archard:
+      return fmt::format("archard, K {}, H {} Pa (k_E = K/(H mu))", law.archard_k, law.hardness_Pa);
+    case WearLawKind::Kth: return fmt::format("kth, H {} Pa", law.hardness_Pa);
+    case WearLawKind::Usfd: return fmt::format("usfd, rho {} kg/m^3", law.density_kg_per_m3);
+  }
+  return law.law;
+}
+
+}  // namespace
+
+double hours_per_revolution(const WearModel& m) {
+  double V = m.speed_m_per_s;
+  if (m.transient) {
+    const double T = m.transient->settings.t_end_s;
+    V = contact::integral(m.transient->inputs.speed_m_per_s, 0, T) / T;
+  }
+  return V > 0 ? 2 * kPi * m.reference_radius_m / V / 3600 : 0;
+}
+
+std::string wear_summary_header(const WearModel& m) {
+  std::string s = fmt::format("# case: {}\n", m.name);
+  if (m.law1) s += fmt::format("# body1 wears: {}\n", law_text(*m.law1));
+  if (m.law2) s += fmt::format("# body2 wears: {}\n", law_text(*m.law2));
+  s += fmt::format("# revolutions of body{} (R {} m); one row per accepted step, step 0 unworn\n", m.law1 ? 1 : 2,
+                   m.reference_radius_m);
+  s += "step,revolutions,hours,max_depth_m,worn_volume_m3,dissipated_J,a_m,b_m,p0_Pa,Fx_N,power_W,"
+       "step_revolutions,error_estimate,rejected,rhs_evals\n";
+  return s;
+}
+
+std::string wear_summary_row(const WearModel& m, const LifeStep& s, double hours_per_rev) {
+  const Eigen::VectorXd& h = *s.state;
+  return fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n", s.step, g17(s.N), g17(s.N * hours_per_rev),
+                     g17(max_depth_m(m, h)), g17(worn_volume_m3(m, h, 1) + worn_volume_m3(m, h, 2)),
+                     g17(dissipated_energy_J(m, h)), g17(s.contact.a_m), g17(s.contact.b_m), g17(s.contact.p0_Pa),
+                     g17(s.contact.Fx_N), g17(s.contact.power_W), g17(s.info.step), g17(s.info.error_estimate),
+                     s.info.rejected, s.info.rhs_evals);
+}
+
+std::string wear_snapshot_csv(const WearModel& m, int body, double N, double hours, const Eigen::VectorXd& state) {
+  const contact::Profile& p = body == 1 ? m.profiles.body1 : m.profiles.body2;
+  const int n = body == 1 ? m.n1 : m.n2;
+  const int offset = body == 1 ? 0 : m.n1;
+  if (n == 0) throw std::invalid_argument(fmt::format("wear snapshot: body{} does not wear", body));
+  std::string s = fmt::format("# case: {}\n# body: body{}\n# revolutions: {}\n# hours: {}\n", m.name, body, g17(N),
+                              g17(hours));
+  s += "y_m,z_original_m,z_m,depth_m\n";
+  for (int i = 0; i < n; ++i) {
+    const double d = state(offset + i);
+    s += fmt::format("{},{},{},{}\n", g17(p.y_m(i)), g17(p.z_m(i)), g17(p.z_m(i) + d), g17(d));
+  }
+  return s;
+}
+
+std::filesystem::path wear_snapshot_path(int index, int body) {
+  return std::filesystem::path("snapshots") / fmt::format("snapshot_{:04d}_body{}.csv", index, body);
+}
+
+std::string wear_report_text(const WearModel& m, const WearReport& r) {
+  const LifeResult& l = r.life;
+  std::string s;
+  s += fmt::format("case: {}\n", r.case_name);
+  s += fmt::format("ended_by: {}\n", l.ended_by);
+  s += fmt::format("message: {}\n", l.message);
+  s += fmt::format("revolutions: {}\n", g17(l.N));
+  s += fmt::format("hours: {}\n", g17(l.N * r.hours_per_revolution));
+  s += fmt::format("reference_body: body{}\n", m.law1 ? 1 : 2);
+  s += fmt::format("max_depth_m: {}\n", g17(max_depth_m(m, l.state)));
+  if (m.law1) s += fmt::format("worn_volume_body1_m3: {}\n", g17(worn_volume_m3(m, l.state, 1)));
+  if (m.law2) s += fmt::format("worn_volume_body2_m3: {}\n", g17(worn_volume_m3(m, l.state, 2)));
+  s += fmt::format("dissipated_J: {}\n", g17(dissipated_energy_J(m, l.state)));
+  s += fmt::format("p0_Pa: {}\n", g17(l.contact.p0_Pa));
+  s += fmt::format("a_m: {}\nb_m: {}\n", g17(l.contact.a_m), g17(l.contact.b_m));
+  s += fmt::format("normal_solver: {}\n", l.contact.normal_solver);
+  s += fmt::format("steps: {}\nrejected_steps: {}\nrhs_evals: {}\n", l.steps, l.rejected, l.rhs_evals);
+  s += fmt::format("normal_solves: {}\ntangential_solves: {}\n", r.counters.normal_solves, r.counters.tangential_solves);
+  s += fmt::format("resumed: {}\n", r.resumed ? "true" : "false");
+  s += fmt::format("wall_s: {:.3f}\n", r.wall_s);
+  return s;
+}
+
+// ---- checkpoint ----
+
+std::uint64_t case_fingerprint(const std::string& case_text, const WearModel& m) {
+  std::uint64_t h = contact::hash_words(case_text.data(), case_text.size());
+  const std::int64_t n = m.state_size();
+  h = contact::hash_words(&n, sizeof n, h);
+  return h ^ contact::profile_hash(m.profiles);
+}
+
+std::string checkpoint_text(const Checkpoint& c) {
+  const LifeStart& s = c.start;
+  std::string t = std::string(kCheckpointMagic) + "\n";
+  t += fmt::format("case_hash {:016x}\n", c.case_hash);
+  t += fmt::format("N {:a}\n", s.N);
+  t += fmt::format("next_step {:a}\n", s.next_step);
+  t += fmt::format("steps {}\nrhs_evals {}\nrejected {}\n", s.steps, s.rhs_evals, s.rejected);
+  t += fmt::format("snapshots_written {}\n", c.snapshots_written);
+  t += fmt::format("wall_s {:a}\n", c.wall_s);
+  t += fmt::format("state {}\n", s.state.size());
+  for (Eigen::Index i = 0; i < s.state.size(); ++i) t += fmt::format("{:a}\n", s.state(i));
+  t += "end\n";
+  return t;
+}
+
+Checkpoint read_checkpoint(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error(path.string() + ": cannot read the checkpoint");
+  int line_no = 0;
+  std::string line;
+  const auto fail = [&](const std::string& what) -> void {
+    throw std::runtime_error(fmt::format("{}:{}: {}", path.string(), line_no, what));
+  };
+  const auto next = [&]() {
+    if (!std::getline(in, line)) {
+      ++line_no;
+      fail("the checkpoint ends early (a torn file?)");
+    }
+    ++line_no;
+  };
+  const auto number = [&](const std::string& text) {
+    char* end = nullptr;
+    const double v = std::strtod(text.c_str(), &end);
+    if (end == text.c_str() || *end != '\0') fail("expected a number, got '" + text + "'");
+    return v;
+  };
+  const auto field = [&](const std::string& key) {
+    next();
+    if (line.compare(0, key.size() + 1, key + " ") != 0) fail("expected '" + key + " ...', got '" + line + "'");
+    return line.substr(key.size() + 1);
+  };
+  next();
+  if (line != kCheckpointMagic) fail("not a rollwear wear checkpoint (expected '" + std::string(kCheckpointMagic) + "')");
+  Checkpoint c;
+  c.case_hash = std::stoull(field("case_hash"), nullptr, 16);
+  c.start.N = number(field("N"));
+  c.start.next_step = number(field("next_step"));
+  c.start.steps = static_cast<long>(number(field("steps")));
+  c.start.rhs_evals = static_cast<long>(number(field("rhs_evals")));
+  c.start.rejected = static_cast<long>(number(field("rejected")));
+  c.snapshots_written = static_cast<int>(number(field("snapshots_written")));
+  c.wall_s = number(field("wall_s"));
+  const long n = static_cast<long>(number(field("state")));
+  if (n < 1 || n > 100000000) fail("bad state size " + std::to_string(n));
+  c.start.state.resize(n);
+  for (long i = 0; i < n; ++i) {
+    next();
+    c.start.state(i) = number(line);
+  }
+  next();
+  if (line != "end") fail("expected 'end', got '" + line + "'");
+  return c;
+}
+
+std::string summary_up_to(const std::filesystem::path& path, long steps) {
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error(path.string() + ": cannot read the summary of the run to resume");
+  std::string out, line;
+  bool header = false;
+  long last = -1;
+  while (std::getline(in, line)) {
+    if (line.empty() || line[0] == '#' || !header) {
+      if (!line.empty() && line[0] != '#') header = true;
+      out += line + "\n";
+      continue;
+    }
+    const long step = std::strtol(line.c_str(), nullptr, 10);
+    if (step > steps) break;
+    out += line + "\n";
+    last = step;
+  }
+  if (last != steps)
+    throw std::runtime_error(fmt::format("{}: the summary ends at step {}, the checkpoint is at step {}", path.string(),
+                                         last, steps));
+  return out;
+}
+
+}  // namespace wear

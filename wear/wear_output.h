@@ -1,0 +1,70 @@
+// The files of a wear run (`rollwear run`, docs/wear-loop.md), built as text so they can be tested,
+// then written atomically (lib/csv.h). Numbers at full precision (%.17g).
+//
+//   summary.csv                        '# ' comment lines (case, bodies, law), then
+//     step,revolutions,hours,max_depth_m,worn_volume_m3,dissipated_J,a_m,b_m,p0_Pa,Fx_N,power_W,
+//     step_revolutions,error_estimate,rejected,rhs_evals
+//                                      one row per accepted step; step 0 is the unworn state; a limit
+//                                      located within a step adds a last row at the limit (the step
+//                                      cut short: error_estimate 0)
+//   snapshots/snapshot_KKKK_BODY.csv   '# case: ', '# body: ', '# revolutions: ', '# hours: ', then
+//     y_m,z_original_m,z_m,depth_m     one row per profile node of a worn body
+//   report.txt                         'key: value' lines: the predicted life and what ended it
+//   checkpoint.txt                     the state to resume from (hexadecimal floats: bit-exact)
+#pragma once
+
+#include <Eigen/Core>
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "wear/wear_loop.h"
+
+namespace wear {
+
+// comment lines and the header row of summary.csv
+std::string wear_summary_header(const WearModel& m);
+// one row; step 0 (the unworn state) has step_revolutions, error_estimate, rejected and rhs_evals 0
+std::string wear_summary_row(const WearModel& m, const LifeStep& s, double hours_per_revolution);
+
+// the worn profile of one body (1 or 2) in the state
+std::string wear_snapshot_csv(const WearModel& m, int body, double N, double hours, const Eigen::VectorXd& state);
+// "snapshots/snapshot_0003_body1.csv"
+std::filesystem::path wear_snapshot_path(int index, int body);
+
+struct WearReport {
+  std::string case_name;
+  LifeResult life;
+  double hours_per_revolution = 0;
+  WearCounters counters;
+  double wall_s = 0;
+  bool resumed = false;
+};
+std::string wear_report_text(const WearModel& m, const WearReport& r);
+
+// the mean rolling speed of the duty cycle, and the hours one revolution of the reference body takes
+double hours_per_revolution(const WearModel& m);
+
+// ---- checkpoint ----
+
+struct Checkpoint {
+  std::uint64_t case_hash = 0;  // the case as read (files and profiles): a resume of another case is refused
+  LifeStart start;
+  int snapshots_written = 0;    // snapshot files written so far (the initial one included)
+  double wall_s = 0;            // run time so far
+};
+
+// the case's fingerprint: its file's text, the model's state size and its profiles
+std::uint64_t case_fingerprint(const std::string& case_text, const WearModel& m);
+
+std::string checkpoint_text(const Checkpoint& c);
+// throws std::runtime_error "PATH:LINE: what" for a file that is not a checkpoint of this version
+Checkpoint read_checkpoint(const std::filesystem::path& path);
+
+// the summary.csv text of a run being resumed: its comment lines, header and the rows up to and
+// including step `steps` (rows written after the checkpoint are dropped: they will be written again)
+std::string summary_up_to(const std::filesystem::path& path, long steps);
+
+}  // namespace wear
