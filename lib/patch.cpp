@@ -29,22 +29,22 @@ void fill_strip_pressures(ContactPatch& patch) {
   patch.pressure_Pa = Eigen::ArrayXXd::Zero(g.nx, g.ny);
   patch.pressure_moment_Pa_m = Eigen::ArrayXXd::Zero(g.nx, g.ny);
   patch.edge_pressure_Pa = Eigen::ArrayXXd::Zero(g.nx + 1, g.ny);
+  Eigen::ArrayXd S(g.nx + 1), M(g.nx + 1);  // S(u), M(u) at the cell edges, u clamped to the strip
   for (int j = 0; j < g.ny; ++j) {
     const double a = patch.half_length_m(j);
     const double p = patch.strip_peak_Pa(j);
     if (!(a > 0) || !(p > 0)) continue;
-    // cells cut by the strip ends: only the part in contact counts
-    for (int i = 0; i < g.nx; ++i) {
-      const double xl = std::max(g.x_edge(i), -a);
-      const double xr = std::min(g.x_edge(i + 1), a);
-      if (xr <= xl) continue;
-      const double ul = xl / a, ur = xr / a;
-      patch.pressure_Pa(i, j) = p * a * (semi_ellipse_integral(ur) - semi_ellipse_integral(ul)) / g.dx_m;
-      patch.pressure_moment_Pa_m(i, j) = p * a * a * (semi_ellipse_moment(ur) - semi_ellipse_moment(ul)) / g.dx_m;
-    }
+    // once per edge (a cell's integrals are differences of its edges' values; a cell cut by a strip
+    // end counts only the part in contact, and a cell outside it gets S(u) - S(u) = 0)
     for (int i = 0; i <= g.nx; ++i) {
       const double u = g.x_edge(i) / a;
+      S(i) = semi_ellipse_integral(u);
+      M(i) = semi_ellipse_moment(u);
       if (std::abs(u) < 1) patch.edge_pressure_Pa(i, j) = p * std::sqrt(1 - u * u);
+    }
+    for (int i = 0; i < g.nx; ++i) {
+      patch.pressure_Pa(i, j) = p * a * (S(i + 1) - S(i)) / g.dx_m;
+      patch.pressure_moment_Pa_m(i, j) = p * a * a * (M(i + 1) - M(i)) / g.dx_m;
     }
   }
 }
