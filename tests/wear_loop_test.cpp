@@ -223,6 +223,69 @@ TEST(WearLoop, StepControlCopesOnTheShippedCase) {
   EXPECT_LE(life.rejected, life.steps / 10 + 1) << life.message;
 }
 
+// Both bodies wear, each with its own coefficient: each spreads the same dissipated energy over its own
+// circumference, so each body's volume rate is its k_E x the energy rate (to rounding), and with the
+// same k_E the path's depth per roller revolution is the roller's x R1/R2 (the strips' depths are the
+// same per unit circumference; the map to each body's nodes differs, so the areas are compared).
+TEST(WearLoop, BothBodiesWearWithTheirOwnCoefficients) {
+  WearCase c = paper_wear();
+  WearLaw path;
+  path.law = "energy";
+  path.k_E_m3_per_J = 2e-14;
+  c.wear.body2 = path;
+  const WearModel m = make_wear_model(c);
+  ASSERT_GT(m.n2, 0);
+  WearCache cache;
+  const WearRate r = wear_rate(m, initial_state(m), cache);
+  const double area1 = profile_area_m2(r.dstate_dN.segment(0, m.n1).array(), m.profiles.body1.y_m);
+  const double area2 = profile_area_m2(r.dstate_dN.segment(m.n1, m.n2).array(), m.profiles.body2.y_m);
+  EXPECT_NEAR(2 * kPi * m.Rx1_m * area1 / (k_E_of(m) * r.energy_per_revolution_J), 1.0, 1e-13);
+  EXPECT_NEAR(2 * kPi * m.Rx2_m * area2 / (2e-14 * r.energy_per_revolution_J), 1.0, 1e-13);
+  EXPECT_NEAR(area2 / area1, 2e-14 / k_E_of(m) * m.Rx1_m / m.Rx2_m, 1e-13 * area2 / area1);
+  // life counted in the roller's revolutions; the path's worn volume in the report
+  const LifeResult life = run_to(c, 1e7);
+  EXPECT_GT(worn_volume_m3(m, life.state, 2), 0);
+  EXPECT_NEAR(worn_volume_m3(m, life.state, 2) / worn_volume_m3(m, life.state, 1), 2e-14 / k_E_of(m), 1e-9);
+}
+
+// The KTH map with the same K in every region is Archard with that K (docs/wear-laws.md): the loop
+// fed with the steady per-cell fields gives Archard's wear rate to rounding.
+TEST(WearLoop, KthWithOneCoefficientIsArchard) {
+  WearCase c = paper_wear();
+  const WearModel archard = make_wear_model(c);
+  WearLaw kth;
+  kth.law = "kth";
+  kth.hardness_Pa = c.wear.body1->hardness_Pa;
+  kth.kth.K_mild_slow = kth.kth.K_severe = kth.kth.K_mild_fast = kth.kth.K_catastrophic = c.wear.body1->archard_k;
+  c.wear.body1 = kth;
+  const WearModel by_map = make_wear_model(c);
+  WearCache a, b;
+  const Eigen::VectorXd ra = wear_rate(archard, initial_state(archard), a).dstate_dN.head(archard.n1);
+  const Eigen::VectorXd rb = wear_rate(by_map, initial_state(by_map), b).dstate_dN.head(by_map.n1);
+  EXPECT_GT(ra.maxCoeff(), 0);
+  EXPECT_LT((ra - rb).cwiseAbs().maxCoeff(), 1e-12 * ra.maxCoeff());
+}
+
+// A limit already passed at the start ends the life there, and says which: the unworn crown's p0 is
+// 1192 MPa, above a 1 GPa limit.
+TEST(WearLoop, PressureLimitAlreadyExceededEndsTheLifeAtTheStart) {
+  WearCase c = paper_wear();
+  c.wear.limits.max_pressure_Pa = 1e9;
+  const WearModel m = make_wear_model(c);
+  WearCache cache;
+  const LifeResult life = run_life(m, c, LifeStart{}, LifeHooks{}, cache);
+  EXPECT_EQ(life.ended_by, "max_pressure") << life.message;
+  EXPECT_EQ(life.N, 0);
+  EXPECT_EQ(life.steps, 0);
+  // a limit below p0's fall: the worn contact's p0 falls through 1.1 GPa, never exceeding it again
+  c.wear.limits.max_pressure_Pa = 1.2e9;
+  c.wear.revolutions = 1e7;
+  c.wear.snapshots_revolutions.clear();
+  const WearModel m2 = make_wear_model(c);
+  WearCache cache2;
+  EXPECT_EQ(run_life(m2, c, LifeStart{}, LifeHooks{}, cache2).ended_by, "revolutions");
+}
+
 // ---- regression: the shipped wear cases after a few revolutions ----
 // Goldens in tests/data/golden/<case>.txt: 'key value' lines. Regenerate after an intended change with
 //   ROLLWEAR_UPDATE_GOLDENS=1 ./build/release/tests/rollwear_tests --gtest_filter='WearGolden.*'
