@@ -145,10 +145,12 @@ int run_contact(const ContactOptions& opt) {
       {dir / "summary.csv", summary_csv(c.name, patch, problem, solution, scheme)},
       {dir / "strips.csv", strips_csv(in_profile_coordinates(normal), solution)},
   };
-  if (c.output.fields && !opt.no_fields) files.push_back({dir / "fields.csv", fields_csv(patch, solution)});
+  const bool fields = c.output.fields && !opt.no_fields;
+  if (fields) files.push_back({dir / "fields.csv", fields_csv(patch, solution)});
 
   print_contact_summary(c, normal, problem, solution, scheme);
   write_files_atomic(files);
+  if (!fields) std::filesystem::remove(dir / "fields.csv");  // an earlier run's: not this run's fields
   spdlog::info("wrote {} files to {}", files.size(), dir.string());
   return 0;
 }

@@ -334,6 +334,8 @@ TEST_F(CommandLine, ContactOnPaperCaseWritesThreeTables) {
 
 TEST_F(CommandLine, NoFieldsSkipsFieldsTable) {
   const fs::path out = dir_ / "paper";
+  fs::create_directories(out);
+  std::ofstream(out / "fields.csv") << "an earlier run's fields\n";  // stale: removed, not left behind
   const ProcessResult r = rollwear("contact " + quoted(kSource / "cases" / "paper.yaml") + " -o " + quoted(out) +
                              " --no-fields --log-level off",
                          dir_);

@@ -99,7 +99,8 @@ TEST_P(SteadyPaperAccuracy, ForceAndPowerWithinToleranceOfClosedForm) {
   EXPECT_NEAR(s.Fy_N, 0, 1e-12 * F);
 }
 INSTANTIATE_TEST_SUITE_P(Grids, SteadyPaperAccuracy,
-                         testing::Values(GridTol{80, 0.005}, GridTol{20, 0.01}, GridTol{40, 0.005}));
+                         testing::Values(GridTol{80, 0.005}, GridTol{20, 0.01}, GridTol{40, 0.005}),
+                         [](const testing::TestParamInfo<GridTol>& info) { return "nx" + std::to_string(info.param.n); });
 
 // PHYSICS.md §5 reports classic FASTSIM on the 80 x 80 Cartesian grid at Fx +1.4 %, P -19 %; the
 // classic scheme is kept for comparison and must show that error, not the consistent scheme's.
@@ -175,7 +176,8 @@ TEST_P(SteadyEnergy, DissipatedPowerBalancesCreepPowerStripByStrip) {
   EXPECT_NEAR(s.power_W_per_m2.sum() * p.grid.dx_m * p.grid.dy_m, s.power_W, 1e-12 * s.power_W);
 }
 INSTANTIATE_TEST_SUITE_P(Schemes, SteadyEnergy,
-                         testing::Values(TangentialScheme::Consistent, TangentialScheme::Classic));
+                         testing::Values(TangentialScheme::Consistent, TangentialScheme::Classic),
+                         [](const testing::TestParamInfo<TangentialScheme>& info) { return to_string(info.param); });
 
 TEST(SteadyTangential, TractionNeverExceedsTheCoulombBound) {
   const ContactPatch p = paper_patch(37, 23);
