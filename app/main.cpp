@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <chrono>
 #include <cmath>
 #include <csignal>
@@ -434,6 +435,22 @@ std::string read_text(const std::filesystem::path& path) {
   return text.str();
 }
 
+// Temporary files a killed run left in dir and dir/snapshots (NAME.tmp.<pid> of a process that no
+// longer runs): removed, so a resumed run ends with a clean folder.
+void remove_stale_temporaries(const std::filesystem::path& dir) {
+  for (const std::filesystem::path& d : {dir, dir / "snapshots"}) {
+    std::error_code ec;
+    for (const auto& entry : std::filesystem::directory_iterator(d, ec)) {
+      const std::string name = entry.path().filename().string();
+      const std::size_t at = name.rfind(".tmp.");
+      if (at == std::string::npos) continue;
+      const long pid = std::strtol(name.c_str() + at + 5, nullptr, 10);
+      if (pid > 0 && pid != ::getpid() && ::kill(static_cast<pid_t>(pid), 0) != 0 && errno == ESRCH)
+        std::filesystem::remove(entry.path(), ec);
+    }
+  }
+}
+
 int run_run_command(const RunOptions& opt) {
   using namespace wear;
   using Clock = std::chrono::steady_clock;
@@ -445,6 +462,8 @@ int run_run_command(const RunOptions& opt) {
   const double hours_per_rev = hours_per_revolution(m);
   const std::uint64_t fingerprint = case_fingerprint(read_text(opt.case_path), m);
   if (opt.resume && opt.restart) throw std::invalid_argument("--resume and --restart exclude each other");
+
+  remove_stale_temporaries(dir);
 
   // where the life starts: a checkpoint, or the unworn state
   Checkpoint cp;
@@ -518,7 +537,16 @@ int run_run_command(const RunOptions& opt) {
     save(snapshot_files(N, state));
     last_save = Clock::now();
   };
-  const LifeResult life = run_life(m, c, cp.start, hooks, cache);
+  LifeResult life;
+  try {
+    life = run_life(m, c, cp.start, hooks, cache);
+  } catch (...) {
+    progress.clear();
+    save({});  // the last accepted step: --resume continues from there (e.g. with other settings)
+    spdlog::error("run: stopped at revolution {:.6g} (step {}); its state is saved in {}", cp.start.N, cp.start.steps,
+                  checkpoint_path.string());
+    throw;
+  }
   progress.clear();
 
   // a limit located within a step ends the life between step ends: its state is the last row
