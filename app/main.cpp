@@ -138,7 +138,10 @@ int run_contact(const ContactOptions& opt) {
   const ContactPatch& patch = normal.patch;
   const TangentialProblem problem =
       make_tangential_problem(patch, materials_of(c), creepages_of(c), c.friction.mu, speed_of(c));
-  const TangentialSolution solution = solve_steady(patch, problem, scheme);
+  const bool fields = c.output.fields && !opt.no_fields;
+  SteadyOptions steady_options;
+  steady_options.fields = fields;  // not asked for: not computed either
+  const TangentialSolution solution = solve_steady(patch, problem, scheme, steady_options);
 
   // every output computed before anything is written
   const std::filesystem::path dir = output_directory(opt.output_directory, c);
@@ -146,7 +149,6 @@ int run_contact(const ContactOptions& opt) {
       {dir / "summary.csv", summary_csv(c.name, patch, problem, solution, scheme)},
       {dir / "strips.csv", strips_csv(in_profile_coordinates(normal), solution)},
   };
-  const bool fields = c.output.fields && !opt.no_fields;
   if (fields) files.push_back({dir / "fields.csv", fields_csv(patch, solution)});
 
   print_contact_summary(c, normal, problem, solution, scheme);

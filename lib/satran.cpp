@@ -403,7 +403,10 @@ TransientResult run_transient(const TransientCase& c, const StepObserver& observ
     double V = 0;
     double F = 0;
     Creepages cr;
-    const bool want_fields = next_snap < snaps.size();
+    // the fields only on a step that reaches the next snapshot time (the step's length: below)
+    const auto reaches_snapshot = [&](double dt) {
+      return next_snap < snaps.size() && snaps[next_snap] <= (t + dt) * (1 + 1e-12);
+    };
     if (!c.inertia) {
       // step length: one dx of rolling (shift), or the fixed step
       if (set.scheme == TransientScheme::Shift) {
@@ -424,7 +427,7 @@ TransientResult run_transient(const TransientCase& c, const StepObserver& observ
       k.spin_rad = cr.phi_per_m * k.dq_m;
       const ContactPatch& patch = patches.at(F);
       const TangentialProblem pb = make_tangential_problem(patch, c.materials, cr, c.mu, V);
-      r = satran_step(patch, pb, k, set.scheme, state, want_fields);
+      r = satran_step(patch, pb, k, set.scheme, state, reaches_snapshot(k.dt_s));
     } else {
       // the roller's spin at the end of the step balances the creep torque over the step (implicit)
       const RollerInertia& in = *c.inertia;
@@ -446,7 +449,7 @@ TransientResult run_transient(const TransientCase& c, const StepObserver& observ
         const Creepages ratio{1.0, 0.0, 0.0};
         const TangentialProblem pb = make_tangential_problem(patch, c.materials, ratio, c.mu, Vm);
         trial_state = state;
-        out = satran_step(patch, pb, kk, TransientScheme::Shift, trial_state, want_fields);
+        out = satran_step(patch, pb, kk, TransientScheme::Shift, trial_state, reaches_snapshot(longest));
         // J1 (omega_end - omega1) = (-R1 Fx - T_res) dt
         return in.J1_kg_m2 * (omega_end - omega1) - (-in.R1_m * out.Fx_N - in.T_res_N_m) * kk.dt_s;
       };

@@ -254,6 +254,27 @@ TEST(SatranSkip, SteadyStretchSkippedChangesNothingButTheStepCount) {
   EXPECT_LT((with.strip_energy_J_per_m - without.strip_energy_J_per_m).abs().maxCoeff(), 1e-10 * scale);
 }
 
+// Snapshots are an output: asked for or not, the run's forces and energies are the same, and the fields
+// are computed only on the steps that reach a snapshot time.
+TEST(SatranSkip, SnapshotsChangeNothingButTheirOutput) {
+  TransientCase c = paper_case(0, {1e-3, 2e-4, 0.3}, 20);
+  c.inputs.speed_m_per_s = ramp_history(0, 0, 2e-4, 1.8);
+  c.settings.t_end_s = 6e-4;
+  TransientCase snapping = c;
+  snapping.settings.snapshot_times_s = {1e-4, 5e-4};
+  const std::vector<TransientRecord> plain = run(c);
+  const std::vector<TransientRecord> snapped = run(snapping);
+  const TransientResult with = run_transient(snapping);
+  ASSERT_EQ(plain.size(), snapped.size());
+  for (std::size_t k = 0; k < plain.size(); ++k) {
+    // to rounding: a step computing its fields sums the energy in another order
+    EXPECT_NEAR(plain[k].Fx_N, snapped[k].Fx_N, 1e-12 * std::abs(plain[k].Fx_N)) << k;
+    EXPECT_NEAR(plain[k].power_W, snapped[k].power_W, 1e-12 * std::abs(plain[k].power_W)) << k;
+  }
+  ASSERT_EQ(with.snapshots.size(), 2u);
+  EXPECT_GT(with.snapshots[1].tau_x_Pa.abs().maxCoeff(), 0);
+}
+
 // History stretches of constant value, around a time: the bounds the skip reads.
 TEST(SatranSkip, ConstantStretchesOfAHistory) {
   const History h{{0, 1, 2, 3, 4}, {0, 5, 5, 5, 1}};

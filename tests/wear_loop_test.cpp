@@ -286,6 +286,25 @@ TEST(WearLoop, PressureLimitAlreadyExceededEndsTheLifeAtTheStart) {
   EXPECT_EQ(run_life(m2, c, LifeStart{}, LifeHooks{}, cache2).ended_by, "revolutions");
 }
 
+// The reuse of solves at an unchanged profile (WearCache) is a skip that changes nothing: the same life
+// bit for bit, with fewer tangential solves.
+TEST(WearLoop, ReusingUnchangedProfilesChangesNothing) {
+  WearCase c = paper_wear(20);
+  c.wear.revolutions = 3e7;
+  c.wear.snapshots_revolutions.clear();
+  const WearModel m = make_wear_model(c);
+  WearCache reuse, afresh;
+  afresh.reuse = false;
+  const LifeResult a = run_life(m, c, LifeStart{}, LifeHooks{}, reuse);
+  const LifeResult b = run_life(m, c, LifeStart{}, LifeHooks{}, afresh);
+  EXPECT_EQ(a.N, b.N);
+  EXPECT_EQ(a.steps, b.steps);
+  EXPECT_TRUE(a.state == b.state);  // bit for bit
+  EXPECT_LT(reuse.counters.tangential_solves, afresh.counters.tangential_solves);
+  std::cout << "tangential solves: " << reuse.counters.tangential_solves << " with reuse, "
+            << afresh.counters.tangential_solves << " without\n";
+}
+
 // ---- regression: the shipped wear cases after a few revolutions ----
 // Goldens in tests/data/golden/<case>.txt: 'key value' lines. Regenerate after an intended change with
 //   ROLLWEAR_UPDATE_GOLDENS=1 ./build/release/tests/rollwear_tests --gtest_filter='WearGolden.*'

@@ -152,7 +152,7 @@ contact::Profiles worn_profiles(const WearModel& m, const Eigen::VectorXd& state
 NormalState normal_state(const WearModel& m, const Eigen::VectorXd& state, WearCache& cache) {
   const contact::Profiles profiles = worn_profiles(m, state);
   const std::uint64_t key = contact::profile_hash(profiles);
-  if (cache.normal_valid && cache.normal_key == key) return cache.normal;
+  if (cache.reuse && cache.normal_valid && cache.normal_key == key) return cache.normal;
 
   // normal problem on the current worn geometry: Hertz while unworn profiles have constant curvature,
   // semi-Hertz once anything is worn (never back: the switch is a jump in f of up to 6.4e-4,
@@ -181,8 +181,9 @@ NormalState normal_state(const WearModel& m, const Eigen::VectorXd& state, WearC
 WearRate wear_rate(const WearModel& m, const Eigen::VectorXd& state, WearCache& cache) {
   ++cache.counters.rate_evaluations;
   const std::uint64_t key = contact::profile_hash(worn_profiles(m, state));
-  for (const auto& [k, rate] : cache.rates)
-    if (k == key) return rate;
+  if (cache.reuse)
+    for (const auto& [k, rate] : cache.rates)
+      if (k == key) return rate;
 
   // normal problem on the current worn geometry
   const NormalState n = normal_state(m, state, cache);

@@ -104,6 +104,7 @@ struct WearCounters {
 
 // the last results, keyed by the worn profiles' hash (an unchanged profile is not solved again)
 struct WearCache {
+  bool reuse = true;  // false: every evaluation solves afresh (to show that reuse changes nothing)
   std::uint64_t normal_key = 0;
   bool normal_valid = false;
   NormalState normal;
