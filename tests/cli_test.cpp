@@ -21,9 +21,12 @@
 #include "lib/grid.h"
 #include "lib/hertz.h"
 #include "lib/satran.h"
+#include "tests/test_text.h"
 
 namespace contact {
 namespace {
+using rollwear_test::read_text;
+using rollwear_test::lines_of;
 
 namespace fs = std::filesystem;
 
@@ -31,20 +34,6 @@ namespace fs = std::filesystem;
 class TempDir : public rollwear_test::TempDirTest {
  protected:
 };
-
-std::string read_text(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-std::vector<std::string> lines_of(const std::string& text) {
-  std::vector<std::string> lines;
-  std::istringstream in(text);
-  for (std::string line; std::getline(in, line);) lines.push_back(line);
-  return lines;
-}
 
 std::vector<std::string> split(const std::string& line) {
   std::vector<std::string> cells;

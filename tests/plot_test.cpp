@@ -16,8 +16,11 @@
 #include <vector>
 
 #include "tests/temp_dir.h"
+#include "tests/test_text.h"
 
 namespace {
+using rollwear_test::read_text;
+using rollwear_test::lines_of;
 
 namespace fs = std::filesystem;
 
@@ -30,20 +33,6 @@ const char* const kSummaryHeader =
 void write_text(const fs::path& p, const std::string& text) {
   fs::create_directories(p.parent_path());
   std::ofstream(p, std::ios::binary) << text;
-}
-
-std::string read_text(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-std::vector<std::string> lines_of(const std::string& text) {
-  std::vector<std::string> lines;
-  std::istringstream in(text);
-  for (std::string line; std::getline(in, line);) lines.push_back(line);
-  return lines;
 }
 
 std::string joined(const std::vector<std::string>& lines) {

@@ -14,9 +14,11 @@
 #include <random>
 #include <stdexcept>
 #include <string>
+#include "tests/test_text.h"
 
 namespace wear {
 namespace {
+using rollwear_test::message_of;
 
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kRounding = 1e-14;  // relative: sums of a few thousand non-negative terms in double
@@ -41,15 +43,6 @@ Eigen::ArrayXd random_values(int n, double lo, double hi, unsigned seed) {
   Eigen::ArrayXd v(n);
   for (int i = 0; i < n; ++i) v(i) = u(rng);
   return v;
-}
-
-std::string message_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const std::invalid_argument& e) {
-    return e.what();
-  }
-  return "no exception";
 }
 
 // ---- control volumes ----

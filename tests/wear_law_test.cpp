@@ -15,9 +15,11 @@
 #include "lib/hertz.h"
 #include "lib/satran.h"
 #include "lib/steady.h"
+#include "tests/test_text.h"
 
 namespace wear {
 namespace {
+using rollwear_test::message_of;
 
 using contact::ContactPatch;
 using contact::Creepages;
@@ -65,15 +67,6 @@ WearLaw archard_law(double K, double H) {
 CellFields one_cell(double p, double tx, double ty, double sx, double sy, double dx, double V, double T) {
   auto a = [](double v) { return Eigen::ArrayXXd::Constant(1, 1, v); };
   return {a(p), a(tx), a(ty), a(sx), a(sy), Eigen::ArrayXXd(), 0.3, dx, V, T};
-}
-
-std::string message_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const std::invalid_argument& e) {
-    return e.what();
-  }
-  return "no exception";
 }
 
 // ---- energy law ----

@@ -40,14 +40,14 @@ double k_E_of(const WearModel& m) {
 }
 
 // the worn state after N revolutions of the case (no limit besides the budget)
-LifeResult run_to(const WearCase& c, double N) {
+LifeResult run_to(const WearCase& c, double N, const LifeHooks& hooks = {}) {
   WearCase k = c;
   k.wear.revolutions = N;
   k.wear.snapshots_revolutions.clear();
   k.wear.limits = WearLimits{0, 0, false};
   const WearModel m = make_wear_model(k);
   WearCache cache;
-  return run_life(m, k, LifeStart{}, LifeHooks{}, cache);
+  return run_life(m, k, LifeStart{}, hooks, cache);
 }
 
 // Identity (PHYSICS.md §6): the volume worn per revolution, 2 pi R_w sum_i w_i dh_i/dN after mapping and
@@ -184,23 +184,17 @@ TEST(WearLoop, FixedSteppingRespectsItsStepAndAgreesWithAdaptive) {
 
   c.wear.stepping.method = "fixed-depth";
   c.wear.stepping.max_depth_step_m = depth / 50;
-  WearCase k = c;
-  k.wear.revolutions = N;
-  k.wear.snapshots_revolutions.clear();
-  k.wear.limits = WearLimits{0, 0, false};
-  const WearModel mk = make_wear_model(k);
-  WearCache cache;
   double largest = 0;
-  Eigen::VectorXd previous = initial_state(mk);
+  Eigen::VectorXd previous = initial_state(m);
   LifeHooks hooks;
   hooks.on_step = [&](const LifeStep& s) {
-    largest = std::max(largest, (s.state->head(mk.n1) - previous.head(mk.n1)).cwiseAbs().maxCoeff());
+    largest = std::max(largest, (s.state->head(m.n1) - previous.head(m.n1)).cwiseAbs().maxCoeff());
     previous = *s.state;
     return true;
   };
-  const LifeResult fixed = run_life(mk, k, LifeStart{}, hooks, cache);
+  const LifeResult fixed = run_to(c, N, hooks);
   EXPECT_LE(largest, depth / 50 * (1 + 1e-12));
-  EXPECT_NEAR(max_depth_m(mk, fixed.state) / depth, 1.0, 0.03);
+  EXPECT_NEAR(max_depth_m(m, fixed.state) / depth, 1.0, 0.03);
 
   c.wear.stepping.method = "fixed-revolutions";
   c.wear.stepping.step_revolutions = N / 64;
