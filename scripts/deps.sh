@@ -11,6 +11,7 @@ ROLLWEAR_DEB_PACKAGES=(
   libfftw3-dev                   # half-space normal solver (found through pkg-config)
   gnuplot-nox                    # rollwear plot
   libgtest-dev libbenchmark-dev  # tests; benchmarks (tests/bench)
+  clang libclang-rt-14-dev       # the YAML fuzzer (scripts/fuzz: clang's libFuzzer)
 )
 
 rollwear_deps() {

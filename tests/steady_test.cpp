@@ -100,7 +100,7 @@ TEST_P(SteadyPaperAccuracy, ForceAndPowerWithinToleranceOfClosedForm) {
 }
 INSTANTIATE_TEST_SUITE_P(Grids, SteadyPaperAccuracy,
                          testing::Values(GridTol{80, 0.005}, GridTol{20, 0.01}, GridTol{40, 0.005}),
-                         [](const testing::TestParamInfo<GridTol>& info) { return "nx" + std::to_string(info.param.n); });
+                         [](const testing::TestParamInfo<GridTol>& p) { return "nx" + std::to_string(p.param.n); });
 
 // PHYSICS.md §5 reports classic FASTSIM on the 80 x 80 Cartesian grid at Fx +1.4 %, P -19 %; the
 // classic scheme is kept for comparison and must show that error, not the consistent scheme's.
@@ -177,7 +177,7 @@ TEST_P(SteadyEnergy, DissipatedPowerBalancesCreepPowerStripByStrip) {
 }
 INSTANTIATE_TEST_SUITE_P(Schemes, SteadyEnergy,
                          testing::Values(TangentialScheme::Consistent, TangentialScheme::Classic),
-                         [](const testing::TestParamInfo<TangentialScheme>& info) { return to_string(info.param); });
+                         [](const testing::TestParamInfo<TangentialScheme>& p) { return to_string(p.param); });
 
 TEST(SteadyTangential, TractionNeverExceedsTheCoulombBound) {
   const ContactPatch p = paper_patch(37, 23);

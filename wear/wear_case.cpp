@@ -73,7 +73,7 @@ void read_stepping(YamlMap& m, WearStepping& s) {
                : "must be adaptive, fixed-depth or fixed-revolutions";
   });
   m.optional("rtol", s.rtol, [](double v) -> std::string {
-    return v >= 1e-10 && v <= 0.5 ? "" : "must be in [1e-10, 0.5]";
+    return v >= 1e-10 && v <= 0.1 ? "" : "must be in [1e-10, 0.1]";
   });
   m.optional("atol_m", s.atol_m, contact::positive_finite);
   m.optional("max_depth_step_m", s.max_depth_step_m, contact::positive_finite);

@@ -159,11 +159,24 @@ NormalState normal_state(const WearModel& m, const Eigen::VectorXd& state, WearC
   // docs/semi-hertz.md, which the step control would meet at every crossing)
   const bool unworn = m.n1 + m.n2 == 0 || state.head(m.n1 + m.n2).isZero(0);
   NormalState n;
-  n.normal = m.semi_hertz_always || !unworn
-                 ? contact::solve_semi_hertz(profiles, m.Rx1_m, m.Rx2_m, m.materials, m.normal_load_N, m.grid,
-                                             m.normal_options)
-                 : contact::solve_normal_on_profiles(profiles, m.Rx1_m, m.Rx2_m, m.materials, m.normal_load_N, m.grid,
-                                                     m.normal_options, contact::kCaseCurvatureRtol);
+  contact::GridSpec grid = m.grid;
+  for (int refinement = 0;; ++refinement) {
+    try {
+      n.normal = m.semi_hertz_always || !unworn
+                     ? contact::solve_semi_hertz(profiles, m.Rx1_m, m.Rx2_m, m.materials, m.normal_load_N, grid,
+                                                 m.normal_options)
+                     : contact::solve_normal_on_profiles(profiles, m.Rx1_m, m.Rx2_m, m.materials, m.normal_load_N,
+                                                         grid, m.normal_options, contact::kCaseCurvatureRtol);
+      break;
+    } catch (const std::invalid_argument& e) {
+      // a worn profile can split the contact into narrow patches that no strip centre of the case's grid
+      // hits: twice the strips, up to 8 times (the wear maps from any strips onto the nodes)
+      if (refinement == 3 || std::string(e.what()).find("no strip centre lies in the contact") == std::string::npos)
+        throw;
+      grid.ny *= 2;
+      spdlog::debug("wear: {}; solving again with ny = {}", e.what(), grid.ny);
+    }
+  }
   // the lifetime's edge limit: how far the contact is from the end of the profiles' overlap
   const double lo = std::max(profiles.body1.y_m(0), profiles.body2.y_m(0));
   const double hi = std::min(profiles.body1.y_m(profiles.body1.y_m.size() - 1),
@@ -244,6 +257,24 @@ double dissipated_energy_J(const WearModel& m, const Eigen::VectorXd& state) {
 namespace {
 
 enum Limit { kDepth, kPressure, kEdge, kLimits };
+
+// The wear is carried by the worn bodies' profile nodes: a contact narrower than a few node spacings
+// would put a strip's wear on one node and the next solve could not see the worn shape. Throws
+// std::invalid_argument naming both sizes.
+constexpr int kMinNodesAcrossContact = 4;
+void check_profile_resolves_contact(const WearModel& m, const NormalState& n) {
+  const double width = n.normal.contact_y_max_m - n.normal.contact_y_min_m;
+  for (int body : {1, 2}) {
+    if ((body == 1 ? m.n1 : m.n2) == 0) continue;
+    const Eigen::ArrayXd& y = body == 1 ? m.profiles.body1.y_m : m.profiles.body2.y_m;
+    const double spacing = (y.tail(y.size() - 1) - y.head(y.size() - 1)).maxCoeff();
+    if (width < kMinNodesAcrossContact * spacing)
+      throw std::invalid_argument(fmt::format(
+          "profiles.body{}: its nodes ({:.3g} m apart at most) are too coarse for the contact, {:.3g} m wide: "
+          "the wear needs at least {} nodes across it; give a profile with nodes {:.3g} m apart or closer",
+          body, spacing, width, kMinNodesAcrossContact, width / kMinNodesAcrossContact));
+  }
+}
 const char* const kLimitNames[kLimits] = {"max_depth", "max_pressure", "edge"};
 
 }  // namespace
@@ -273,6 +304,9 @@ LifeResult run_life(const WearModel& m, const WearCase& c, const LifeStart& star
     life.contact = wear_rate(m, life.state, cache).contact;
     return life;
   };
+
+  // the worn body's profile must resolve the contact: its nodes carry the wear
+  check_profile_resolves_contact(m, normal_state(m, life.state, cache));
 
   // a limit already reached (a resumed run, or an unworn contact at the edge)
   Eigen::VectorXd g0;
