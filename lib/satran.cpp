@@ -8,6 +8,10 @@
 // and summed over a strip the last term telescopes to E_start - E_end - (L dx/2)|tau(-a)|^2, with
 // E = (L dx/2) sum over interior nodes of |tau|^2: the balance of PHYSICS.md §4 to rounding.
 //
+// The shift step, arranged for speed (the same scheme; shift_strip): the intervals of a step form no
+// chain, and most of them stick, so a strip's interior intervals take the stick step in SIMD blocks,
+// and only those whose stick test fails, and the strip's two end intervals, go through the whole kernel.
+//
 // Upwind and Lax-Friedrichs steps update the interior nodes from the old values of their neighbours
 // (0 outside the contact) and clip to mu p at the node; see explicit_strip for their energy.
 #include "lib/satran.h"
@@ -17,8 +21,10 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "lib/kalker.h"
 
@@ -75,48 +81,210 @@ struct StripEnergy {
   double Fx = 0, Fy = 0, Mz = 0;
 };
 
+// the sums that make a strip's totals
+void add_sums(IntervalSums& into, const IntervalSums& s) {
+  into.Ix += s.Ix;
+  into.Iy += s.Iy;
+  into.Ixy += s.Ixy;
+  into.stick_length_m += s.stick_length_m;
+}
+
+// the whole kernel for one interval, kept out of the loops over the strip
+[[gnu::noinline]] StripNode whole_kernel(const StripRates& r, const StripNode& hi, const IntervalGeometry& geo,
+                                         IntervalSums& s) {
+  return march_interval(r, hi, geo, s);
+}
+
+// The stick pass takes a strip's interior intervals in blocks; an Eigen array of a block is a run of
+// SIMD packets.
+constexpr int kBlock = 4;
+using Block = Eigen::Array<double, kBlock, 1>;
+using BlockMap = Eigen::Map<const Block>;  // a block of an array: the per-step geometry, the pressures
+
+// what the shift step of every strip shares, and room for one strip's, set up once per step from the
+// rates r of any strip (only eta/L2 and phi/L3, the same on every strip, are used)
+struct ShiftScratch {
+  Eigen::ArrayXd x;  // the nodes x_edge(i), i = 0 .. nx
+  // cell i whole, from x_edge(i+1) down to x_edge(i): its length t and the terms of its stick solution
+  // that involve neither tau nor alpha, so that they are the same on every strip
+  Eigen::ArrayXd t, beta_t, gamma_t2;                                // the prediction's
+  Eigen::ArrayXd t2_2, beta_t2_2, gamma_t3_3, beta_t3_3, gamma_t4_4;  // the integrals'
+  std::vector<int> failed;             // a strip's interior intervals whose stick test failed
+  std::vector<StripNode> failed_hi;    // their old upstream nodes
+  std::vector<detail::SlipTurn> turn;  // their slip turns, from a slip node
+  ShiftScratch(const Grid& g, const StripRates& r)
+      : x(g.nx + 1), t(g.nx), beta_t(g.nx), gamma_t2(g.nx), t2_2(g.nx), beta_t2_2(g.nx), gamma_t3_3(g.nx),
+        beta_t3_3(g.nx), gamma_t4_4(g.nx), failed(g.nx), failed_hi(g.nx), turn(g.nx) {
+    for (int i = 0; i <= g.nx; ++i) x(i) = g.x_edge(i);
+    for (int i = 0; i < g.nx; ++i) {
+      t(i) = x(i + 1) - x(i);
+      const double beta = detail::stick_beta(r, x(i + 1));
+      const detail::StickGeometry<double> sg = detail::stick_geometry(r, beta, t(i));
+      const detail::StickMoments<double> sm = detail::stick_moments(beta, r.phi_L3_Pa_per_m2 / 2, t(i));
+      beta_t(i) = sg.beta_t;
+      gamma_t2(i) = sg.gamma_t2;
+      t2_2(i) = sm.t2_2;
+      beta_t2_2(i) = sm.beta_t2_2;
+      gamma_t3_3(i) = sm.gamma_t3_3;
+      beta_t3_3(i) = sm.beta_t3_3;
+      gamma_t4_4(i) = sm.gamma_t4_4;
+    }
+  }
+};
+
+// One strip, shift. In a shift step node i's new value depends on the old node i+1 alone: the intervals
+// form no chain, and most of them stick. So the interior intervals (both ends strictly inside the strip)
+// first take the stick step in blocks: the prediction at x_lo, Kalker's test, the stick integrals (the
+// arithmetic of stick_step, lane by lane). The intervals whose test fails follow, together: from a slip
+// node the slip direction turns by the midpoint rule, and their turns (an exponential each) are taken
+// all at once so that they overlap, as in the steady march; from a stick node the whole kernel finds the
+// crossing into slip. The strip's two end intervals go through the whole kernel. The fields need each
+// interval's integrals: when they are written, every interval goes through the whole kernel.
+template <bool kFields>
 StripEnergy shift_strip(const ContactPatch& patch, const StripRates& r, int j, double L, const StepKinematics& k,
-                        TransientState& state, StepResult* fields) {
+                        ShiftScratch& scratch, TransientState& state, StepResult* fields) {
   const Grid& g = patch.grid;
-  const double a = r.a_m, dq = k.dq_m;
+  const double a = r.a_m, dq = k.dq_m, dx = g.dx_m;
+  const double* x = scratch.x.data();
+  StripNode* node = &state.node(0, j);  // node[i] sits at x_edge(i)
+  const double* edge_p = &patch.edge_pressure_Pa(0, j);
   StripEnergy e;
   const int i_top = std::min(g.nx - 1, static_cast<int>(std::floor((a + g.half_x_m) / g.dx_m)));
   const int i_bot = std::max(0, static_cast<int>(std::floor((-a + g.half_x_m) / g.dx_m)));
   // the integrals add up over the strip (per interval only for the fields)
   IntervalSums strip;
   double hi2 = 0, lo2 = 0, trail2 = 0;  // sums of |tau|^2 at the upstream, downstream, trailing nodes
-  // from the trailing side up, so that node i+1 still holds the previous step's value when node i is updated
-  for (int i = i_bot; i <= i_top; ++i) {
-    IntervalGeometry geo;
-    geo.x_hi = std::min(g.x_edge(i + 1), a);
-    geo.x_lo = std::max(g.x_edge(i), -a);
-    if (!(geo.x_hi > geo.x_lo)) continue;
-    geo.bound_lo_Pa = geo.x_lo > -a ? r.mu * patch.edge_pressure_Pa(i, j) : 0.0;
-    geo.load_N_per_m = patch.pressure_Pa(i, j) * g.dx_m;
-    geo.moment_N = patch.pressure_moment_Pa_m(i, j) * g.dx_m;
-    const StripNode hi = geo.x_hi < a ? state.node(i + 1, j) : StripNode{};
 
-    IntervalSums cell;
-    const StripNode lo = march_interval(r, hi, geo, fields ? cell : strip);
+  // interval i: its part of the strip and the bound at x_lo (0 at the trailing edge)
+  auto geometry = [&](int i) {
+    IntervalGeometry geo;
+    geo.x_hi = std::min(x[i + 1], a);
+    geo.x_lo = std::max(x[i], -a);
+    geo.bound_lo_Pa = geo.x_lo > -a ? r.mu * edge_p[i] : 0.0;
+    geo.load_N_per_m = patch.pressure_Pa(i, j) * dx;
+    geo.moment_N = patch.pressure_moment_Pa_m(i, j) * dx;
+    return geo;
+  };
+  // the totals of interval i from its old upstream node hi, and the new node lo (the trailing edge's
+  // carries its energy out of the contact)
+  auto record = [&](int i, const IntervalGeometry& geo, const StripNode& hi, const StripNode& lo,
+                    const IntervalSums& cell) {
+    add_sums(strip, cell);
     hi2 += hi.tx * hi.tx + hi.ty * hi.ty;
     lo2 += lo.tx * lo.tx + lo.ty * lo.ty;
     if (geo.x_lo > -a) {
-      state.node(i, j) = lo;
+      node[i] = lo;
     } else {
-      trail2 = lo.tx * lo.tx + lo.ty * lo.ty;  // carried out of the contact
+      trail2 = lo.tx * lo.tx + lo.ty * lo.ty;
     }
-    if (fields) {
+    if constexpr (kFields) {
       const double h = geo.x_hi - geo.x_lo;
-      fields->tau_x_Pa(i, j) = cell.Ix / g.dx_m;
-      fields->tau_y_Pa(i, j) = cell.Iy / g.dx_m;
+      fields->tau_x_Pa(i, j) = cell.Ix / dx;
+      fields->tau_y_Pa(i, j) = cell.Iy / dx;
       fields->slip_x_m_per_s(i, j) = L * dq / k.dt_s * cell.slip_x / h;
       fields->slip_y_m_per_s(i, j) = L * dq / k.dt_s * cell.slip_y / h;
-      strip.Ix += cell.Ix;
-      strip.Iy += cell.Iy;
-      strip.Ixy += cell.Ixy;
-      strip.stick_length_m += cell.stick_length_m;
     }
+  };
+  // interval i through the whole kernel, from the old node i+1 (tau = 0 enters at the leading edge)
+  auto whole_interval = [&](int i) {
+    const IntervalGeometry geo = geometry(i);
+    if (!(geo.x_hi > geo.x_lo)) return;
+    const StripNode hi = geo.x_hi < a ? node[i + 1] : StripNode{};
+    IntervalSums cell;
+    const StripNode lo = whole_kernel(r, hi, geo, cell);
+    record(i, geo, hi, lo, cell);
+  };
+
+  // the interior intervals first .. last; below them the trailing edge's, above them the leading edge's
+  int first = i_bot, last = i_top;
+  while (first <= last && !(x[first] > -a)) ++first;
+  while (last >= first && !(x[last + 1] < a)) --last;
+  if (kFields || last - first + 1 < kBlock) {
+    for (int i = i_bot; i <= i_top; ++i) whole_interval(i);
+  } else {
+    for (int i = i_bot; i < first; ++i) whole_interval(i);
+
+    // the stick pass, in blocks from the trailing side up; the last block is moved back to end at `last`,
+    // and its intervals below `from` were done by the block before
+    int n_failed = 0;
+    for (int from = first; from <= last; from += kBlock) {
+      const int b = std::min(from, last - kBlock + 1);  // the block's intervals are b .. b + kBlock - 1
+      Block tx, ty;  // the old tau at x_hi: nodes b + 1 and up are not written yet
+      for (int q = 0; q < kBlock; ++q) {
+        tx(q) = node[b + 1 + q].tx;
+        ty(q) = node[b + 1 + q].ty;
+      }
+      auto at = [b](const Eigen::ArrayXd& v) { return BlockMap(v.data() + b); };
+      const BlockMap x_hi(x + b + 1), h = at(scratch.t);
+      const Block bound = r.mu * BlockMap(edge_p + b);
+      const detail::StickPrediction<Block> p = detail::stick_prediction<Block, BlockMap>(
+          r.alpha_Pa_per_m, tx, ty, h, {at(scratch.beta_t), at(scratch.gamma_t2)});
+      const Block lo2_lane = p.px * p.px + p.py * p.py;
+      const Block excess = lo2_lane - bound * bound;  // > 0 exactly where stick_step's test fails
+      const detail::StickIntegrals<Block> I = detail::stick_integrals<Block, BlockMap>(
+          r.alpha_Pa_per_m, tx, ty, x_hi, h,
+          {at(scratch.t2_2), at(scratch.beta_t2_2), at(scratch.gamma_t3_3), at(scratch.beta_t3_3),
+           at(scratch.gamma_t4_4)});
+      const Block hi2_lane = tx * tx + ty * ty;
+      // the new nodes from the trailing side up, so that node i+1 still holds the old tau when node i is
+      // written; an interval whose test fails keeps its old upstream node for later
+      auto stick = [&](int q) {
+        const StripNode& hi = node[b + q + 1];
+        StripNode& lo = node[b + q];
+        lo.tx = p.px(q);
+        lo.ty = p.py(q);
+        lo.ex = hi.ex;
+        lo.ey = hi.ey;
+        lo.stick = true;
+      };
+      if (b == from && excess.maxCoeff() <= 0) {  // the whole block sticks
+        strip.Ix += I.Ix.sum();
+        strip.Iy += I.Iy.sum();
+        strip.Ixy += I.Ixy.sum();
+        strip.stick_length_m += h.sum();
+        hi2 += hi2_lane.sum();
+        lo2 += lo2_lane.sum();
+        for (int q = 0; q < kBlock; ++q) stick(q);
+        continue;
+      }
+      for (int q = from - b; q < kBlock; ++q) {
+        if (excess(q) > 0) {
+          scratch.failed[n_failed] = b + q;
+          scratch.failed_hi[n_failed++] = node[b + q + 1];
+          continue;
+        }
+        strip.Ix += I.Ix(q);
+        strip.Iy += I.Iy(q);
+        strip.Ixy += I.Ixy(q);
+        strip.stick_length_m += h(q);
+        hi2 += hi2_lane(q);
+        lo2 += lo2_lane(q);
+        stick(q);
+      }
+    }
+
+    // the intervals whose test failed: from a slip node the interval slips throughout, from a stick node
+    // the whole kernel finds the crossing into slip. With a lateral creep rate the slip direction turns,
+    // and the turns from slip nodes are taken first, all at once (with xi alone they are asked for only
+    // where tau is not along x)
+    const bool turns = r.eta_L2_Pa_per_m != 0 || r.phi_L3_Pa_per_m2 != 0;
+    for (int f = 0; turns && f < n_failed; ++f) {
+      const int i = scratch.failed[f];
+      if (!scratch.failed_hi[f].stick) scratch.turn[f] = detail::interior_slip_turn(r, x[i + 1], x[i]);
+    }
+    for (int f = 0; f < n_failed; ++f) {
+      const int i = scratch.failed[f];
+      const StripNode& hi = scratch.failed_hi[f];
+      const IntervalGeometry geo = geometry(i);
+      auto turn = [&] { return turns ? scratch.turn[f] : detail::interior_slip_turn(r, x[i + 1], x[i]); };
+      IntervalSums cell;
+      const StripNode lo = hi.stick ? whole_kernel(r, hi, geo, cell) : slip_throughout(r, hi, geo, turn, cell);
+      record(i, geo, hi, lo, cell);
+    }
+
+    for (int i = last + 1; i <= i_top; ++i) whole_interval(i);
   }
+
   // energies of the strip: the per-interval formula summed (its last term telescopes)
   e.creep = L * dq * creep_power_per_VL(r, strip);
   e.dissipated = e.creep + L * dq * (hi2 - lo2) / 2;
@@ -255,12 +423,17 @@ StepResult satran_step(const ContactPatch& patch, const TangentialProblem& probl
   const bool exact_shift = scheme == TransientScheme::Shift && cfl == 1.0;
   TangentialProblem rates_problem = problem;  // creepages per rolled distance for the shift kernel
   if (exact_shift) rates_problem.creepages = {k.slip_x_m / k.dq_m, k.slip_y_m / k.dq_m, k.spin_rad / k.dq_m};
-  std::vector<StripNode> old(g.nx + 1);
+  std::vector<StripNode> old(exact_shift ? 0 : g.nx + 1);
+  std::optional<ShiftScratch> scratch;
+  if (exact_shift) scratch.emplace(g, strip_rates(patch, rates_problem, 0));
   double stick_area = 0, area = 0, E_start = 0, E_end = 0;  // sums of |tau|^2 over interior nodes
   for (int j = 0; j < g.ny; ++j) {
     if (!(patch.half_length_m(j) > 0)) continue;
     const StripEnergy e =
-        exact_shift ? shift_strip(patch, strip_rates(patch, rates_problem, j), j, L, k, state, fields ? &r : nullptr)
+        exact_shift ? (fields ? shift_strip<true>(patch, strip_rates(patch, rates_problem, j), j, L, k, *scratch,
+                                                  state, &r)
+                              : shift_strip<false>(patch, strip_rates(patch, rates_problem, j), j, L, k, *scratch,
+                                                   state, nullptr))
                     : explicit_strip(patch, problem, j, k, scheme == TransientScheme::LaxFriedrichs, state, old,
                                      fields ? &r : nullptr);
     r.strip_energy_J_per_m(j) = e.dissipated;

@@ -3,7 +3,9 @@
 // the reconstruction over the interval. The steady solver chains it along each strip; Satran's
 // shift scheme applies it to the previous step's node values (PHYSICS.md §3-4). march_slip_interval
 // is its case of a slip node inside the strip with the turn of the slip direction given, so that the
-// steady solver's slip stretches can take the turns of all their cells at once (slip_turns).
+// steady solver's slip stretches can take the turns of all their cells at once (slip_turns). The pieces
+// of the stick solution are templates, so that Satran's shift step can take them for a block of
+// intervals at once (SIMD).
 #pragma once
 
 #include <algorithm>
@@ -60,14 +62,75 @@ inline double creep_power_per_VL(const StripRates& r, const IntervalSums& s) {
 
 namespace detail {
 
+// The stick solution from tau = (tx, ty) at x_hi, with t = x_hi - x (PHYSICS.md §3):
+//   tau_x = tx - alpha t,  tau_y = ty - beta t + gamma t^2,  beta = eta/L2 + (phi/L3) x_hi, gamma = phi/(2 L3).
+// Over an interval [x_hi - t, x_hi], the terms that involve neither tau at x_hi nor alpha (which varies
+// with y) are the same on every strip: the interval's StickGeometry and StickMoments. T is double for
+// one interval, or an Eigen array for a block of intervals (G: of the geometry, which may be a map of
+// it): the same arithmetic lane by lane, so a block gives each interval's values to the bit.
+
+// beta = d tau_y/dx at x_hi
+template <class T>
+[[gnu::always_inline]] inline T stick_beta(const StripRates& r, const T& x_hi) {
+  return r.eta_L2_Pa_per_m + r.phi_L3_Pa_per_m2 * x_hi;
+}
+
+// the terms beta t and gamma t^2 of the prediction at x_lo
+template <class T>
+struct StickGeometry {
+  T beta_t, gamma_t2;
+};
+
+template <class T>
+[[gnu::always_inline]] inline StickGeometry<T> stick_geometry(const StripRates& r, const T& beta, const T& t) {
+  return {beta * t, r.phi_L3_Pa_per_m2 / 2 * t * t};
+}
+
+// the terms t^2/2, beta t^2/2, gamma t^3/3, beta t^3/3 and gamma t^4/4 of the integrals
+template <class T>
+struct StickMoments {
+  T t2_2, beta_t2_2, gamma_t3_3, beta_t3_3, gamma_t4_4;
+};
+
+template <class T>
+[[gnu::always_inline]] inline StickMoments<T> stick_moments(const T& beta, double gamma, const T& t) {
+  const T t2 = t * t, t3 = t2 * t;
+  return {t2 / 2, beta * t2 / 2, gamma * t3 / 3, beta * t3 / 3, gamma * t3 * t / 4};
+}
+
+// the prediction at x_lo
+template <class T>
+struct StickPrediction {
+  T px, py;
+};
+
+template <class T, class G>
+[[gnu::always_inline]] inline StickPrediction<T> stick_prediction(double alpha, const T& tx, const T& ty, const G& t,
+                                                                  const StickGeometry<G>& g) {
+  return {tx - alpha * t, ty - g.beta_t + g.gamma_t2};
+}
+
+// the exact integrals of tau_x, tau_y and x tau_y over the interval
+template <class T>
+struct StickIntegrals {
+  T Ix, Iy, Ixy;
+};
+
+template <class T, class G>
+[[gnu::always_inline]] inline StickIntegrals<T> stick_integrals(double alpha, const T& tx, const T& ty, const G& x_hi,
+                                                                const G& t, const StickMoments<G>& m) {
+  const T iy = ty * t - m.beta_t2_2 + m.gamma_t3_3;
+  return {tx * t - alpha * m.t2_2, iy, x_hi * iy - (ty * m.t2_2 - m.beta_t3_3 + m.gamma_t4_4)};
+}
+
 // exact stick solution over t = x_hi - x in [0, t] from tau at x_hi
 [[gnu::always_inline]] inline void add_stick(const StripRates& r, const StripNode& hi, double x_hi, double beta, double gamma,
                       double t, IntervalSums& s) {
-  const double t2 = t * t, t3 = t2 * t;
-  s.Ix += hi.tx * t - r.alpha_Pa_per_m * t2 / 2;
-  const double iy = hi.ty * t - beta * t2 / 2 + gamma * t3 / 3;
-  s.Iy += iy;
-  s.Ixy += x_hi * iy - (hi.ty * t2 / 2 - beta * t3 / 3 + gamma * t3 * t / 4);
+  const StickIntegrals<double> I =
+      stick_integrals(r.alpha_Pa_per_m, hi.tx, hi.ty, x_hi, t, stick_moments(beta, gamma, t));
+  s.Ix += I.Ix;
+  s.Iy += I.Iy;
+  s.Ixy += I.Ixy;
   s.stick_length_m += t;
 }
 
@@ -176,16 +239,25 @@ struct StickStep {
                                                    IntervalSums& s) {
   const double x_hi = geo.x_hi, h = x_hi - geo.x_lo;
   StickStep k;
-  k.beta = r.eta_L2_Pa_per_m + r.phi_L3_Pa_per_m2 * x_hi;
+  k.beta = stick_beta(r, x_hi);
+  const StickPrediction<double> p = stick_prediction(r.alpha_Pa_per_m, hi.tx, hi.ty, h, stick_geometry(r, k.beta, h));
   k.gamma = r.phi_L3_Pa_per_m2 / 2;
-  k.px = hi.tx - r.alpha_Pa_per_m * h;
-  k.py = hi.ty - k.beta * h + k.gamma * h * h;
+  k.px = p.px;
+  k.py = p.py;
   k.stick = k.px * k.px + k.py * k.py <= geo.bound_lo_Pa * geo.bound_lo_Pa;
   if (k.stick) add_stick(r, hi, x_hi, k.beta, k.gamma, h, s);
   return k;
 }
 
 }  // namespace detail
+
+// march_slip_interval once Kalker's test has failed: the interval slips throughout
+template <class TurnFn>
+[[gnu::always_inline]] inline StripNode slip_throughout(const StripRates& r, const StripNode& hi,
+                                                        const IntervalGeometry& geo, TurnFn&& turn, IntervalSums& s) {
+  return detail::slip_part(r, geo, 0.0, detail::midpoint_dy(r, geo.x_hi, geo.x_hi, geo.x_lo), hi.tx, hi.ty, hi.ex,
+                           hi.ey, geo.load_N_per_m, geo.moment_N, turn, s);
+}
 
 // march_interval for a slip node hi and an interval strictly inside the strip (-a < x_lo < x_hi < a),
 // with the turn of the slip direction from turn(): interior_slip_turn, or slip_turns for all the
@@ -194,13 +266,9 @@ template <class TurnFn>
 [[gnu::always_inline]] inline StripNode march_slip_interval(const StripRates& r, const StripNode& hi,
                                                             const IntervalGeometry& geo, TurnFn&& turn,
                                                             IntervalSums& s) {
-  const double x_hi = geo.x_hi, x_lo = geo.x_lo;
   const detail::StickStep k = detail::stick_step(r, hi, geo, s);
   if (k.stick) return {k.px, k.py, hi.ex, hi.ey, true};
-
-  // slip throughout
-  return detail::slip_part(r, geo, 0.0, detail::midpoint_dy(r, x_hi, x_hi, x_lo), hi.tx, hi.ty, hi.ex, hi.ey,
-                           geo.load_N_per_m, geo.moment_N, turn, s);
+  return slip_throughout(r, hi, geo, turn, s);
 }
 
 [[gnu::always_inline]] inline StripNode march_interval(const StripRates& r, const StripNode& hi, const IntervalGeometry& geo,
