@@ -67,6 +67,23 @@ double node_energy_sum(const TransientState& s) {  // sum of |tau|^2 over all no
   return e;
 }
 
+// strips j and ny - 1 - j hold the same nodes (the state of a symmetric case, bit for bit)
+bool mirror_symmetric_state(const TransientState& s) {
+  const int n = s.nx + 1;
+  auto same = [](const StripNode& u, const StripNode& v) {
+    return u.tx == v.tx && u.ty == v.ty && u.ex == v.ex && u.ey == v.ey && u.stick == v.stick;
+  };
+  for (int j = 0; j < s.ny / 2; ++j)
+    if (!std::equal(&s.nodes[j * n], &s.nodes[j * n] + n, &s.nodes[(s.ny - 1 - j) * n], same)) return false;
+  return true;
+}
+
+// strip `to` takes the nodes of strip `from`
+void mirror_strip(TransientState& s, int from, int to) {
+  const int n = s.nx + 1;
+  std::copy_n(&s.nodes[from * n], n, &s.nodes[to * n]);
+}
+
 void allocate_fields(StepResult& r, const Grid& g) {
   r.tau_x_Pa = Eigen::ArrayXXd::Zero(g.nx, g.ny);
   r.tau_y_Pa = Eigen::ArrayXXd::Zero(g.nx, g.ny);
@@ -377,7 +394,7 @@ StripEnergy explicit_strip(const ContactPatch& patch, const TangentialProblem& p
 }  // namespace
 
 StepResult satran_step(const ContactPatch& patch, const TangentialProblem& problem, const StepKinematics& k,
-                       TransientScheme scheme, TransientState& state, bool fields) {
+                       TransientScheme scheme, TransientState& state, bool fields, bool skip_mirrored) {
   const Grid& g = patch.grid;
   if (state.nx != g.nx || state.ny != g.ny)
     throw std::invalid_argument("satran: the state's grid (" + std::to_string(state.nx) + " x " +
@@ -426,16 +443,34 @@ StepResult satran_step(const ContactPatch& patch, const TangentialProblem& probl
   std::vector<StripNode> old(exact_shift ? 0 : g.nx + 1);
   std::optional<ShiftScratch> scratch;
   if (exact_shift) scratch.emplace(g, strip_rates(patch, rates_problem, 0));
+  // without spin, on a mirror-symmetric patch and state, strips from `strips` up are mirror images
+  const int strips = skip_mirrored && k.spin_rad == 0 && mirror_symmetric_state(state)
+                         ? first_mirrored_strip(patch, 0.0)
+                         : g.ny;
+  std::vector<StripEnergy> energies(g.ny);
   double stick_area = 0, area = 0, E_start = 0, E_end = 0;  // sums of |tau|^2 over interior nodes
   for (int j = 0; j < g.ny; ++j) {
     if (!(patch.half_length_m(j) > 0)) continue;
-    const StripEnergy e =
-        exact_shift ? (fields ? shift_strip<true>(patch, strip_rates(patch, rates_problem, j), j, L, k, *scratch,
-                                                  state, &r)
-                              : shift_strip<false>(patch, strip_rates(patch, rates_problem, j), j, L, k, *scratch,
-                                                   state, nullptr))
-                    : explicit_strip(patch, problem, j, k, scheme == TransientScheme::LaxFriedrichs, state, old,
-                                     fields ? &r : nullptr);
+    StripEnergy& e = energies[j];
+    if (j >= strips) {  // tau(x, -y) = tau(x, y); Mz = integral(x tau_y) - y Fx
+      const int m = g.ny - 1 - j;
+      e = energies[m];
+      e.Mz += (g.y_m(m) - g.y_m(j)) * e.Fx;
+      mirror_strip(state, m, j);
+      if (fields) {
+        r.tau_x_Pa.col(j) = r.tau_x_Pa.col(m);
+        r.tau_y_Pa.col(j) = r.tau_y_Pa.col(m);
+        r.slip_x_m_per_s.col(j) = r.slip_x_m_per_s.col(m);
+        r.slip_y_m_per_s.col(j) = r.slip_y_m_per_s.col(m);
+      }
+    } else {
+      e = exact_shift ? (fields ? shift_strip<true>(patch, strip_rates(patch, rates_problem, j), j, L, k, *scratch,
+                                                    state, &r)
+                                : shift_strip<false>(patch, strip_rates(patch, rates_problem, j), j, L, k,
+                                                     *scratch, state, nullptr))
+                      : explicit_strip(patch, problem, j, k, scheme == TransientScheme::LaxFriedrichs, state, old,
+                                       fields ? &r : nullptr);
+    }
     r.strip_energy_J_per_m(j) = e.dissipated;
     r.dissipated_J += e.dissipated * g.dy_m;
     r.creep_work_J += e.creep * g.dy_m;
@@ -600,7 +635,7 @@ TransientResult run_transient(const TransientCase& c, const StepObserver& observ
       k.spin_rad = cr.phi_per_m * k.dq_m;
       const ContactPatch& patch = patches.at(F);
       const TangentialProblem pb = make_tangential_problem(patch, c.materials, cr, c.mu, V);
-      r = satran_step(patch, pb, k, set.scheme, state, reaches_snapshot(k.dt_s));
+      r = satran_step(patch, pb, k, set.scheme, state, reaches_snapshot(k.dt_s), set.skip_mirrored);
     } else {
       // the roller's spin at the end of the step balances the creep torque over the step (implicit)
       const RollerInertia& in = *c.inertia;
@@ -622,7 +657,8 @@ TransientResult run_transient(const TransientCase& c, const StepObserver& observ
         const Creepages ratio{1.0, 0.0, 0.0};
         const TangentialProblem pb = make_tangential_problem(patch, c.materials, ratio, c.mu, Vm);
         trial_state = state;
-        out = satran_step(patch, pb, kk, TransientScheme::Shift, trial_state, reaches_snapshot(longest));
+        out = satran_step(patch, pb, kk, TransientScheme::Shift, trial_state, reaches_snapshot(longest),
+                          set.skip_mirrored);
         // J1 (omega_end - omega1) = (-R1 Fx - T_res) dt
         return in.J1_kg_m2 * (omega_end - omega1) - (-in.R1_m * out.Fx_N - in.T_res_N_m) * kk.dt_s;
       };

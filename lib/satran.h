@@ -93,9 +93,12 @@ struct StepResult {
 // One step on the contact `patch` with the flexibilities (L1, L2, L3, L) and friction of `problem`;
 // the rigid kinematics `k` drive it (problem.creepages and speed are not used). For shift, k.dq_m is
 // dx or less (less: an upwind step at CFL dq/dx). Throws std::invalid_argument for a CFL number
-// above 1 or a state on another grid.
+// above 1 or a state on another grid. skip_mirrored: without spin, on a mirror-symmetric patch
+// (first_mirrored_strip) whose state is symmetric bit for bit, half the strips are stepped and the
+// others take their mirror images (the same to rounding; docs/accuracy-and-speed.md).
 StepResult satran_step(const ContactPatch& patch, const TangentialProblem& problem, const StepKinematics& k,
-                       TransientScheme scheme, TransientState& state, bool fields = false);
+                       TransientScheme scheme, TransientState& state, bool fields = false,
+                       bool skip_mirrored = true);
 
 // ---- runs over a time history ----
 
@@ -133,6 +136,8 @@ struct TransientSettings {
   // or t_end_s) is one record with the last step's strip powers times its duration, instead of a step
   // per dx rolled. The steps after it fall where they would without the skip.
   bool skip_steady = false;
+  // Skip the mirror images (satran_step): on by default, exact to rounding; off for its tests and benchmarks.
+  bool skip_mirrored = true;
 };
 
 struct TransientCase {

@@ -321,10 +321,41 @@ class StripMarch {
   StripTotals st_;
 };
 
-// the consistent march of all strips, two at a time
+// Pure xi on strip j (eta = phi = 0): the consistent march's result in closed form (PHYSICS.md §4).
+// From the leading edge tau_x = -alpha t (t = a - x) sticks until it meets the bound g = G sqrt(1 - x^2/a^2),
+//   alpha^2 t^2 = (G/a)^2 t (2a - t)   =>   t_s = 2 a G^2 / (a^2 alpha^2 + G^2),
+// and slips on the bound from there to the trailing edge (the bound falls there faster than the stick line
+// could, so it never sticks again): Fx = -alpha t_s^2/2 - sign(alpha) G a S(1 - t_s/a), S the integral of
+// sqrt(1 - u^2) from -1. tau = 0 at both ends, so the strip's power is its creep power -V L alpha Fx.
+// The march reaches the same numbers, since it integrates these pieces exactly on any grid.
+StripTotals pure_xi_strip(const StripRates& r, double VL) {
+  StripTotals st;
+  const double a = r.a_m, alpha = r.alpha_Pa_per_m, G = r.bound_Pa;
+  if (alpha == 0) {  // no creepage: no traction, all stick
+    st.stick_length = 2 * a;
+    return st;
+  }
+  const double t_s = 2 * a * G * G / (a * a * alpha * alpha + G * G);
+  st.Fx = -alpha * t_s * t_s / 2 - std::copysign(G * a * semi_ellipse_integral(1 - t_s / a), alpha);
+  st.Mz = -r.y_m * st.Fx;
+  st.power = st.creep_power = -VL * alpha * st.Fx;
+  st.stick_length = t_s;
+  return st;
+}
+
+// all strips below `strips` in closed form (pure xi)
+std::vector<StripTotals> pure_xi_strips(const ContactPatch& patch, const TangentialProblem& pb, int strips) {
+  std::vector<StripTotals> totals(patch.grid.ny);
+  const double VL = pb.speed_m_per_s * pb.L_m_per_Pa;
+  for (int j = 0; j < strips; ++j)
+    if (patch.half_length_m(j) > 0) totals[j] = pure_xi_strip(strip_rates(patch, pb, j), VL);
+  return totals;
+}
+
+// the consistent march of the strips below `strips`, two at a time
 template <bool kFields>
 std::vector<StripTotals> march_consistent(const ContactPatch& patch, const TangentialProblem& pb,
-                                          TangentialSolution& s) {
+                                          TangentialSolution& s, int strips) {
   const Grid& g = patch.grid;
   Eigen::ArrayXd x(g.nx + 1);
   for (int i = 0; i <= g.nx; ++i) x(i) = g.x_edge(i);
@@ -336,7 +367,7 @@ std::vector<StripTotals> march_consistent(const ContactPatch& patch, const Tange
 
   std::vector<StripTotals> totals(g.ny);
   int j = 0;
-  for (; j + 1 < g.ny; j += 2) {
+  for (; j + 1 < strips; j += 2) {
     StripMarch<kFields> a = strip(j, turns.data()), b = strip(j + 1, turns.data() + g.nx);
     while (!a.done() || !b.done()) {
       while (a.in_slip() && b.in_slip()) {  // the common case, without the branches of step()
@@ -349,7 +380,7 @@ std::vector<StripTotals> march_consistent(const ContactPatch& patch, const Tange
     totals[j] = a.totals();
     totals[j + 1] = b.totals();
   }
-  if (j < g.ny) {
+  if (j < strips) {
     StripMarch<kFields> a = strip(j, turns.data());
     while (!a.done()) a.step();
     totals[j] = a.totals();
@@ -393,13 +424,13 @@ StripTotals march_classic(const ContactPatch& patch, const TangentialProblem& pb
   return st;
 }
 
-// the classic march of all strips
+// the classic march of the strips below `strips`
 std::vector<StripTotals> march_classic_strips(const ContactPatch& patch, const TangentialProblem& pb,
-                                              TangentialSolution& s, bool fields) {
+                                              TangentialSolution& s, bool fields, int strips) {
   const Grid& g = patch.grid;
   const double VL = pb.speed_m_per_s * pb.L_m_per_Pa;
   std::vector<StripTotals> totals(g.ny);
-  for (int j = 0; j < g.ny; ++j) {
+  for (int j = 0; j < strips; ++j) {
     if (!(patch.half_length_m(j) > 0)) continue;
     totals[j] = march_classic(patch, pb, j, {fields ? &s : nullptr, j, g.dx_m, VL});
   }
@@ -441,10 +472,29 @@ TangentialSolution solve_steady(const ContactPatch& patch, const TangentialProbl
   s.strip_force_x_N_per_m = Eigen::ArrayXd::Zero(g.ny);
   s.strip_force_y_N_per_m = Eigen::ArrayXd::Zero(g.ny);
 
-  const std::vector<StripTotals> totals =
-      scheme == TangentialScheme::Classic ? march_classic_strips(patch, problem, s, options.fields)
-      : options.fields                    ? march_consistent<true>(patch, problem, s)
-                                          : march_consistent<false>(patch, problem, s);
+  // the skips (SteadyOptions::skips): strips from `strips` up are mirror images; pure xi in closed form
+  const Creepages& c = problem.creepages;
+  const int strips = first_mirrored_strip(patch, c.phi_per_m, options.skips);
+  const bool closed_form = options.skips && !options.fields && scheme == TangentialScheme::Consistent &&
+                           c.eta == 0 && c.phi_per_m == 0;
+  std::vector<StripTotals> totals =
+      scheme == TangentialScheme::Classic ? march_classic_strips(patch, problem, s, options.fields, strips)
+      : closed_form                       ? pure_xi_strips(patch, problem, strips)
+      : options.fields                    ? march_consistent<true>(patch, problem, s, strips)
+                                          : march_consistent<false>(patch, problem, s, strips);
+  for (int j = strips; j < g.ny; ++j) {  // the mirror images: tau(x, -y) = tau(x, y)
+    const int m = g.ny - 1 - j;
+    totals[j] = totals[m];
+    totals[j].Mz += (g.y_m(m) - g.y_m(j)) * totals[m].Fx;  // Mz = integral(x tau_y) - y Fx
+    if (options.fields) {
+      s.tau_x_Pa.col(j) = s.tau_x_Pa.col(m);
+      s.tau_y_Pa.col(j) = s.tau_y_Pa.col(m);
+      s.slip_x_m_per_s.col(j) = s.slip_x_m_per_s.col(m);
+      s.slip_y_m_per_s.col(j) = s.slip_y_m_per_s.col(m);
+      s.power_W_per_m2.col(j) = s.power_W_per_m2.col(m);
+      s.state.col(j) = s.state.col(m);
+    }
+  }
 
   double stick_area = 0, area = 0;
   for (int j = 0; j < g.ny; ++j) {
@@ -464,7 +514,6 @@ TangentialSolution solve_steady(const ContactPatch& patch, const TangentialProbl
   }
   s.stick_fraction = area > 0 ? stick_area / area : 0;
   // work of the creep forces, with the local xi of each strip where the rolling radius varies
-  const Creepages& c = problem.creepages;
   double xi_Fx = c.xi * s.Fx_N;
   if (patch.strip_xi_offset.size() == g.ny)
     xi_Fx += (patch.strip_xi_offset * s.strip_force_x_N_per_m).sum() * g.dy_m;

@@ -8,6 +8,11 @@ namespace contact {
 
 struct SteadyOptions {
   bool fields = true;  // the fields on the grid; without them only strips and totals are filled
+  // the skips of a case that does not need the whole march (docs/accuracy-and-speed.md), each exact
+  // to rounding: consistent scheme without fields and eta = phi = 0: each strip is the closed form of
+  // pure xi, no march; no spin on a mirror-symmetric patch: half the strips, mirrored
+  // (first_mirrored_strip). Off: every strip is marched (for the tests and benchmarks of the skips).
+  bool skips = true;
 };
 
 TangentialSolution solve_steady(const ContactPatch& patch, const TangentialProblem& problem,

@@ -1,5 +1,6 @@
 #include "lib/tangential.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -30,6 +31,24 @@ TangentialProblem make_tangential_problem(const ContactPatch& patch, const Elast
   p.mu = mu;
   p.speed_m_per_s = speed_m_per_s;
   return p;
+}
+
+int first_mirrored_strip(const ContactPatch& patch, double phi_per_m, bool skip) {
+  const Grid& g = patch.grid;
+  const int ny = g.ny;
+  if (!skip || phi_per_m != 0 || ny < 2) return ny;
+  const bool offsets = patch.strip_xi_offset.size() == ny;
+  const double a_max = patch.half_length_m.abs().maxCoeff(), p_max = patch.strip_peak_Pa.abs().maxCoeff();
+  const double o_max = offsets ? patch.strip_xi_offset.abs().maxCoeff() : 0.0;
+  auto same = [](double u, double v, double scale) { return std::abs(u - v) <= kMirrorTol * scale; };
+  for (int j = 0; j < ny / 2; ++j) {
+    const int m = ny - 1 - j;
+    if (!same(g.y_m(j), -g.y_m(m), g.half_y_m) || !same(patch.half_length_m(j), patch.half_length_m(m), a_max) ||
+        !same(patch.strip_peak_Pa(j), patch.strip_peak_Pa(m), p_max) ||
+        (offsets && !same(patch.strip_xi_offset(j), patch.strip_xi_offset(m), o_max)))
+      return ny;
+  }
+  return ny - ny / 2;
 }
 
 std::string to_string(TangentialScheme scheme) {

@@ -46,6 +46,16 @@ TangentialProblem make_tangential_problem(const ContactPatch& patch, const Elast
 enum class TangentialScheme { Classic, Consistent };
 
 std::string to_string(TangentialScheme scheme);
+
+// Skip for a symmetric case (issue #6, docs/accuracy-and-speed.md). Without spin the creep rates
+// (xi/L1, eta/L2) are the same on every strip, so on a patch that is its own mirror image in y = 0
+// the solution is too: strip ny - 1 - j is a copy of strip j. Mirror images within kMirrorTol: the
+// strips' positions, half lengths, peaks and Heathcote offsets agree to that fraction of their
+// largest value (a Hertz patch is symmetric to a few ulps, a worn one to its rounding). Returns the
+// first strip that is a copy (ny - ny/2), or ny when the skip does not apply (spin, an asymmetric
+// patch, or skip false).
+constexpr double kMirrorTol = 1e-12;
+int first_mirrored_strip(const ContactPatch& patch, double phi_per_m, bool skip = true);
 // throws std::invalid_argument naming the valid schemes
 TangentialScheme parse_tangential_scheme(const std::string& name);
 

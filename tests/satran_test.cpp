@@ -5,9 +5,11 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <vector>
 
 #include "lib/steady.h"
 #include "tests/closed_forms.h"
@@ -243,6 +245,50 @@ TEST(SatranSkip, SnapshotsChangeNothingButTheirOutput) {
   }
   ASSERT_EQ(with.snapshots.size(), 2u);
   EXPECT_GT(with.snapshots[1].tau_x_Pa.abs().maxCoeff(), 0);
+}
+
+// Symmetric cases step half the strips and mirror the rest (TransientSettings::skip_mirrored): every
+// step's forces, power and balance, the strip energies and the final state are those of stepping all
+// strips, to rounding. Shift from rest with eta (tau_y mirrors too), upwind, a load ramp (the patch
+// changes, nodes leave the contact); with spin the skip does not apply and nothing changes, bit for bit.
+TEST(SatranSkip, MirroredStripsChangeNothing) {
+  struct Case { const char* what; TransientScheme scheme; double phi; bool load_ramp; };
+  for (const Case k : {Case{"shift, xi and eta", TransientScheme::Shift, 0.0, false},
+                       Case{"upwind", TransientScheme::Upwind, 0.0, false},
+                       Case{"shift, falling load", TransientScheme::Shift, 0.0, true},
+                       Case{"shift, spin", TransientScheme::Shift, 0.3, false}}) {
+    TransientCase c = paper_case(0, {1e-3, 2e-4, k.phi}, 21);
+    c.inputs.speed_m_per_s = ramp_history(0, 0, 2e-4, 1.8);
+    if (k.load_ramp) c.inputs.normal_load_N = ramp_history(2e-4, 1500, 5e-4, 900);
+    c.settings.scheme = k.scheme;
+    c.settings.dt_s = k.scheme == TransientScheme::Upwind ? 2e-6 : 0;
+    c.settings.t_end_s = 6e-4;
+    TransientCase all = c;
+    all.settings.skip_mirrored = false;
+    std::vector<TransientRecord> rows_skip, rows_all;
+    const TransientResult skip = run_transient(c, [&](const TransientRecord& r, const Eigen::ArrayXd&) { rows_skip.push_back(r); });
+    const TransientResult full = run_transient(all, [&](const TransientRecord& r, const Eigen::ArrayXd&) { rows_all.push_back(r); });
+    ASSERT_EQ(rows_skip.size(), rows_all.size()) << k.what;
+    constexpr double kRounding = 1e-12;
+    const double F_scale = 0.3 * 1500, P_scale = F_scale * 1.8 * 1e-3;
+    for (std::size_t s = 0; s < rows_all.size(); ++s) {
+      EXPECT_NEAR(rows_skip[s].Fx_N, rows_all[s].Fx_N, kRounding * F_scale) << k.what << ", step " << s;
+      EXPECT_NEAR(rows_skip[s].Fy_N, rows_all[s].Fy_N, kRounding * F_scale) << k.what << ", step " << s;
+      EXPECT_NEAR(rows_skip[s].Mz_N_m, rows_all[s].Mz_N_m, kRounding * F_scale * 1e-2) << k.what << ", step " << s;
+      EXPECT_NEAR(rows_skip[s].power_W, rows_all[s].power_W, kRounding * P_scale) << k.what << ", step " << s;
+      EXPECT_NEAR(rows_skip[s].balance_residual_W, 0, kRounding * P_scale) << k.what << ", step " << s;
+    }
+    const double E_scale = full.strip_energy_J_per_m.abs().maxCoeff();
+    EXPECT_LE((skip.strip_energy_J_per_m - full.strip_energy_J_per_m).abs().maxCoeff(), kRounding * E_scale) << k.what;
+    double state_difference = 0;
+    for (std::size_t n = 0; n < full.final_state.nodes.size(); ++n)
+      state_difference = std::max({state_difference, std::abs(skip.final_state.nodes[n].tx - full.final_state.nodes[n].tx),
+                                   std::abs(skip.final_state.nodes[n].ty - full.final_state.nodes[n].ty)});
+    EXPECT_LE(state_difference, kRounding * 0.3 * 1e9) << k.what;  // of mu p0 (p0 about 1 GPa)
+    if (k.phi != 0) {
+      EXPECT_EQ(skip.dissipated_J, full.dissipated_J) << k.what;  // the skip does not apply
+    }
+  }
 }
 
 // History stretches of constant value, around a time: the bounds the skip reads.

@@ -5,8 +5,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <ostream>
+#include <string>
 
 #include "lib/hertz.h"
 #include "lib/strip_march.h"
@@ -308,13 +310,14 @@ INSTANTIATE_TEST_SUITE_P(
                     MarchCase{7, 15, {1e-3, 4e-4, 0.3}, 0.3, false},    // strips shorter than a block
                     MarchCase{333, 15, {6e-4, 4e-4, 0.8}, 0.3, true}));  // long strips
 
-// The fields are a by-product: asking for them leaves the strips and totals as they are, bit for bit.
+// The fields are a by-product: asking for them leaves the strips and totals of the march as they are,
+// bit for bit (the skips are off here: pure xi without fields would take the closed form, tested below).
 TEST(SteadyTangential, FieldsDoNotChangeTheTotals) {
   const ContactPatch p = paper_patch(40, 31);
   for (const Creepages c : {Creepages{1e-3, 0, 0}, Creepages{1e-3, 5e-4, 0.5}, Creepages{2e-3, 1e-3, 2.0}}) {
     const TangentialProblem pb = problem(p, c);
-    const TangentialSolution off = solve_steady(p, pb, TangentialScheme::Consistent, SteadyOptions{false});
-    const TangentialSolution on = solve_steady(p, pb, TangentialScheme::Consistent, SteadyOptions{true});
+    const TangentialSolution off = solve_steady(p, pb, TangentialScheme::Consistent, SteadyOptions{false, false});
+    const TangentialSolution on = solve_steady(p, pb, TangentialScheme::Consistent, SteadyOptions{true, false});
     EXPECT_EQ(on.Fx_N, off.Fx_N);
     EXPECT_EQ(on.Fy_N, off.Fy_N);
     EXPECT_EQ(on.Mz_N_m, off.Mz_N_m);
@@ -360,6 +363,94 @@ TEST(SteadyTangential, ConvergesAtSecondOrderWithCombinedCreepages) {
       }
       prev_fx = efx;
       prev_p = ep;
+    }
+  }
+}
+
+// ---- the skips (SteadyOptions::skips; docs/accuracy-and-speed.md) ----
+
+// the largest difference of the strip powers, relative to the largest strip power
+double strip_difference(const TangentialSolution& a, const TangentialSolution& b) {
+  const double scale = std::max(a.strip_power_W_per_m.abs().maxCoeff(), 1e-300);
+  return (a.strip_power_W_per_m - b.strip_power_W_per_m).abs().maxCoeff() / scale;
+}
+
+// eta = phi = 0: each strip in closed form instead of the march; the same to rounding. The march is
+// exact along x for pure xi (SteadyStripExact), so the two differ by rounding alone: checked on the
+// paper's contact over grids, signs of xi, stick throughout, full slip, mu = 0, and Heathcote offsets
+// (a different xi on every strip). Near stick throughout (xi 1e-9) both lose digits alike: the slip
+// zone's share of the force, mu p_j a_j S(u) with u = x_s/a_j near -1, is a difference of nearly equal
+// terms in S, in the march's cell integrals as in the closed form; there the two agree to 1e-9.
+TEST(SteadySkips, PureXiClosedFormEqualsTheMarch) {
+  struct Case { int nx, ny; double xi, mu; bool heathcote; double tol; };
+  for (const Case k : {Case{80, 80, 1e-3, 0.3, false, 1e-12}, Case{7, 15, -1e-3, 0.3, false, 1e-12},
+                       Case{333, 15, 2e-3, 0.3, true, 1e-12}, Case{40, 41, 1e-9, 0.3, false, 1e-9},
+                       Case{40, 40, 0.5, 0.3, true, 1e-12}, Case{20, 20, 1e-3, 0.0, false, 1e-12},
+                       Case{20, 20, 0.0, 0.3, true, 1e-12}, Case{1, 1, 1e-3, 0.3, false, 1e-12}}) {
+    ContactPatch p = paper_patch(k.nx, k.ny);
+    if (k.heathcote) p.strip_xi_offset = Eigen::ArrayXd::LinSpaced(k.ny, -4e-4, 6e-4);
+    const TangentialProblem pb = problem(p, {k.xi, 0, 0}, k.mu);
+    const TangentialSolution skip = solve_steady(p, pb, TangentialScheme::Consistent, SteadyOptions{false, true});
+    const TangentialSolution march = solve_steady(p, pb, TangentialScheme::Consistent, SteadyOptions{false, false});
+    const std::string what = std::to_string(k.nx) + " x " + std::to_string(k.ny) + ", xi " + std::to_string(k.xi) +
+                             ", mu " + std::to_string(k.mu) + (k.heathcote ? ", Heathcote" : "");
+    const double kRounding = k.tol;
+    const double F_scale = k.mu * p.normal_load_N;
+    EXPECT_NEAR(skip.Fx_N, march.Fx_N, kRounding * F_scale) << what;
+    EXPECT_EQ(skip.Fy_N, 0) << what;
+    EXPECT_NEAR(skip.Mz_N_m, march.Mz_N_m, kRounding * F_scale * p.b_m) << what;
+    EXPECT_NEAR(skip.power_W, march.power_W, kRounding * std::max(std::abs(march.power_W), 1e-300)) << what;
+    EXPECT_NEAR(skip.stick_fraction, march.stick_fraction, kRounding) << what;
+    EXPECT_LE(strip_difference(skip, march), kRounding) << what;
+    EXPECT_LE((skip.strip_trailing_W_per_m - march.strip_trailing_W_per_m).abs().maxCoeff(),
+              kRounding * std::max(march.strip_power_W_per_m.abs().maxCoeff(), 1e-300)) << what;
+  }
+}
+
+// A symmetric case: the Hertz patch is its own mirror image, so without spin the upper half of the
+// strips are copies (first_mirrored_strip); with spin, or on a patch made asymmetric, no strip is.
+TEST(SteadySkips, MirrorImagesOnlyWithoutSpinOnSymmetricPatches) {
+  for (const int ny : {1, 2, 7, 80, 81}) {
+    const ContactPatch p = paper_patch(40, ny);
+    EXPECT_EQ(first_mirrored_strip(p, 0.0), ny - ny / 2) << ny;
+    EXPECT_EQ(first_mirrored_strip(p, 0.1), ny) << ny;
+    EXPECT_EQ(first_mirrored_strip(p, 0.0, false), ny) << ny;
+  }
+  ContactPatch tilted = paper_patch(40, 80);
+  tilted.strip_peak_Pa(3) *= 1 + 1e-9;  // one strip off by far more than rounding
+  EXPECT_EQ(first_mirrored_strip(tilted, 0.0), 80);
+  ContactPatch heathcote = paper_patch(40, 80);
+  heathcote.strip_xi_offset = Eigen::ArrayXd::LinSpaced(80, -4e-4, 6e-4);  // not symmetric
+  EXPECT_EQ(first_mirrored_strip(heathcote, 0.0), 80);
+  heathcote.strip_xi_offset = heathcote.grid.y_m.square() * 1e2;  // symmetric
+  EXPECT_EQ(first_mirrored_strip(heathcote, 0.0), 40);
+}
+
+// Half the strips, mirrored: the same strips, totals and fields as marching all of them, to rounding,
+// with eta (the mirror keeps tau_y: tau(x, -y) = tau(x, y) without spin), both schemes, fields on and off.
+TEST(SteadySkips, MirroredHalfEqualsAllStrips) {
+  for (const int ny : {80, 81}) {
+    ContactPatch p = paper_patch(40, ny);
+    p.strip_xi_offset = p.grid.y_m.square() * 1e2;
+    for (const TangentialScheme scheme : {TangentialScheme::Consistent, TangentialScheme::Classic}) {
+      const TangentialProblem pb = problem(p, {1e-3, 5e-4, 0});
+      const TangentialSolution skip = solve_steady(p, pb, scheme, SteadyOptions{true, true});
+      const TangentialSolution all = solve_steady(p, pb, scheme, SteadyOptions{true, false});
+      const std::string what = to_string(scheme) + ", ny " + std::to_string(ny);
+      constexpr double kRounding = 1e-12;
+      const double F_scale = 0.3 * p.normal_load_N;
+      EXPECT_NEAR(skip.Fx_N, all.Fx_N, kRounding * F_scale) << what;
+      EXPECT_NEAR(skip.Fy_N, all.Fy_N, kRounding * F_scale) << what;
+      EXPECT_NEAR(skip.Mz_N_m, all.Mz_N_m, kRounding * F_scale * p.b_m) << what;
+      EXPECT_NEAR(skip.power_W, all.power_W, kRounding * all.power_W) << what;
+      EXPECT_NEAR(skip.stick_fraction, all.stick_fraction, kRounding) << what;
+      EXPECT_LE(strip_difference(skip, all), kRounding) << what;
+      const double tau_scale = 0.3 * p.p0_Pa;
+      EXPECT_LE((skip.tau_x_Pa - all.tau_x_Pa).abs().maxCoeff(), kRounding * tau_scale) << what;
+      EXPECT_LE((skip.tau_y_Pa - all.tau_y_Pa).abs().maxCoeff(), kRounding * tau_scale) << what;
+      EXPECT_LE((skip.power_W_per_m2 - all.power_W_per_m2).abs().maxCoeff(),
+                kRounding * all.power_W_per_m2.abs().maxCoeff()) << what;
+      EXPECT_TRUE((skip.state == all.state).all()) << what;
     }
   }
 }

@@ -236,6 +236,7 @@ Eigen::ArrayXXd centre_pressure(const ContactPatch& p) {
 constexpr double kBoundRounding = 1e-12;   // |tau| <= mu p (1 + this) + this mu p0: cell means of the bound
 constexpr double kStripEnergyTol = 1e-10;  // consistent: |P_l - (C_l - T_l)| / max over strips of |C_l| + |T_l|
 constexpr double kTotalsTol = 1e-11;       // sums of the strips against the grid fields and the totals
+constexpr double kSkipTol = 1e-9;          // the steady skips against marching every strip (of mu F, of the power scale)
 
 // Known findings (issue #6 stress suite; each kept as a DISABLED_ test below, counted here so the
 // sweep stays green while the rest is asserted):
@@ -363,11 +364,21 @@ TEST(StressSteady, RandomCasesStayFiniteBoundedAndBalanced) {
         ASSERT_LE(s.power_W, s.strip_creep_power_W_per_m.sum() * patch.grid.dy_m +
                                  kStripEnergyTol * pscale * patch.grid.dy_m * ny)
             << w;
-        // the fields are a by-product: the totals without them are the same, bit for bit
+        // the fields are a by-product: the totals without them are the same, bit for bit (unless pure xi
+        // takes its closed form)
         const TangentialSolution off = solve_steady(patch, pb, scheme, SteadyOptions{false});
-        ASSERT_EQ(off.Fx_N, s.Fx_N) << w;
-        ASSERT_EQ(off.power_W, s.power_W) << w;
+        if (c.eta != 0 || c.phi_per_m != 0) {
+          ASSERT_EQ(off.Fx_N, s.Fx_N) << w;
+          ASSERT_EQ(off.power_W, s.power_W) << w;
+        }
       }
+      // the skips (pure xi in closed form, mirrored strips) against marching every strip: rounding
+      // (near stick throughout both lose digits alike, tests/steady_test.cpp SteadySkips)
+      const TangentialSolution skipped = solve_steady(patch, pb, scheme, SteadyOptions{false, true});
+      const TangentialSolution all = solve_steady(patch, pb, scheme, SteadyOptions{false, false});
+      ASSERT_NEAR(skipped.Fx_N, all.Fx_N, kSkipTol * (mu * patch.normal_load_N) + 1e-300) << w;
+      ASSERT_NEAR(skipped.Fy_N, all.Fy_N, kSkipTol * (mu * patch.normal_load_N) + 1e-300) << w;
+      ASSERT_NEAR(skipped.power_W, all.power_W, kSkipTol * (pscale * patch.grid.dy_m * ny) + 1e-300) << w;
     }
   });
   std::printf("  a/b covered %.3g .. %.3g; worst strip energy residual %.2e (tol %.0e)\n", ab_min, ab_max, worst_energy,

@@ -682,57 +682,75 @@ void skips_study(const Options& o, std::vector<Row>& rows) {
     end();
   }
 
-  // 5. eta = phi = 0: no skip of the lateral traction work exists; a probe: eta = 1e-30 (zero to the
-  // physics) takes the general path, so the difference is what the pure-xi path saves by itself
+  // 5. eta = phi = 0 -> each strip in closed form, no march (SteadyOptions::skips). Alone: with the
+  // Heathcote offsets of a linear xi(y), so that the patch is not symmetric; and with the mirror too.
   {
     begin();
     const SteadySetup s = paper_setup();
     const ContactPatch p = solve_normal_hertz(s.bodies, s.pair, s.F, {80, 80});
-    Creepages tiny = s.creep;
-    tiny.eta = 1e-30;
-    const TangentialProblem pz = make_tangential_problem(p, s.pair, s.creep, s.mu, s.V);
-    const TangentialProblem pt = make_tangential_problem(p, s.pair, tiny, s.mu, s.V);
-    const TangentialSolution a = solve_steady(p, pz, TangentialScheme::Consistent, SteadyOptions{false});
-    const TangentialSolution b = solve_steady(p, pt, TangentialScheme::Consistent, SteadyOptions{false});
-    Row on = skip_row("paper", "lateral-zero-probe", 80, true,
-                      "solve_steady with eta = phi = 0 against eta = 1e-30 (no explicit skip exists)");
-    on.err_Fx = rel(a.Fx_N, b.Fx_N);
-    on.err_P = rel(a.power_W, b.power_W);
-    add(on, [&] { return solve_steady(p, pz, TangentialScheme::Consistent, SteadyOptions{false}).power_W; });
-    add(skip_row("paper", "lateral-zero-probe", 80, false, "eta = 1e-30"),
-        [&] { return solve_steady(p, pt, TangentialScheme::Consistent, SteadyOptions{false}).power_W; });
+    ContactPatch tilted = p;
+    tilted.strip_xi_offset = Eigen::ArrayXd::LinSpaced(80, -4e-4, 6e-4);
+    const TangentialProblem pb = make_tangential_problem(p, s.pair, s.creep, s.mu, s.V);
+    for (const bool symmetric : {false, true}) {
+      const ContactPatch& q = symmetric ? p : tilted;
+      const std::string name = symmetric ? "pure-xi-closed-form+mirror" : "pure-xi-closed-form";
+      const TangentialSolution a = solve_steady(q, pb, TangentialScheme::Consistent, SteadyOptions{false, true});
+      const TangentialSolution b = solve_steady(q, pb, TangentialScheme::Consistent, SteadyOptions{false, false});
+      Row on = skip_row("paper", name, 80, true,
+                        std::string(symmetric ? "the paper's case" : "Heathcote offsets -4e-4..6e-4 across (no mirror)") +
+                            ": closed-form strips against the march of every strip (test "
+                            "SteadySkips.PureXiClosedFormEqualsTheMarch)");
+      on.err_Fx = rel(a.Fx_N, b.Fx_N);
+      on.err_P = rel(a.power_W, b.power_W);
+      on.err_strip_P = (a.strip_power_W_per_m - b.strip_power_W_per_m).abs().maxCoeff() /
+                       b.strip_power_W_per_m.abs().maxCoeff();
+      add(on, [&] { return solve_steady(q, pb, TangentialScheme::Consistent, SteadyOptions{false, true}).power_W; });
+      add(skip_row("paper", name, 80, false, "the march of every strip"),
+          [&] { return solve_steady(q, pb, TangentialScheme::Consistent, SteadyOptions{false, false}).power_W; });
+    }
     end();
   }
 
-  // 6. a symmetric case -> half the strips: not implemented; a probe of what it could save. The paper's
-  // case (pure xi, symmetric about y = 0) solved on the upper half of its 80 x 80 patch, totals doubled
+  // 6. a symmetric case -> half the strips, mirrored (first_mirrored_strip): the steady solver with eta
+  // (the closed form does not apply), and Satran over start-stop-wear's duty cycle
   {
     begin();
     const SteadySetup s = paper_setup();
     const ContactPatch p = solve_normal_hertz(s.bodies, s.pair, s.F, {80, 80});
-    const int h = p.grid.ny / 2;
-    ContactPatch half = p;
-    half.grid.ny = h;
-    half.grid.half_y_m = 0;  // y_edge(0) = 0: the strips y > 0 only (enough for solve_steady)
-    half.grid.y_m = p.grid.y_m.tail(h);
-    half.half_length_m = p.half_length_m.tail(h);
-    half.strip_peak_Pa = p.strip_peak_Pa.tail(h);
-    half.pressure_Pa = p.pressure_Pa.rightCols(h);
-    half.pressure_moment_Pa_m = p.pressure_moment_Pa_m.rightCols(h);
-    half.edge_pressure_Pa = p.edge_pressure_Pa.rightCols(h);
-    const TangentialProblem pb = make_tangential_problem(p, s.pair, s.creep, s.mu, s.V);
-    const TangentialSolution full = solve_steady(p, pb, TangentialScheme::Consistent, SteadyOptions{false});
-    const TangentialSolution upper = solve_steady(half, pb, TangentialScheme::Consistent, SteadyOptions{false});
-    Row on = skip_row("paper", "symmetric-half-probe", 80, true,
-                      "not implemented: solve_steady on the upper 40 strips, totals doubled, against all 80 strips "
-                      "(test WearLoop.SymmetricCaseStaysSymmetric shows the symmetry it would use)");
-    on.err_Fx = rel(2 * upper.Fx_N, full.Fx_N);
-    on.err_P = rel(2 * upper.power_W, full.power_W);
-    on.err_strip_P = (upper.strip_power_W_per_m - full.strip_power_W_per_m.tail(h)).abs().maxCoeff() /
-                     full.strip_power_W_per_m.abs().maxCoeff();
-    add(on, [&] { return solve_steady(half, pb, TangentialScheme::Consistent, SteadyOptions{false}).power_W; });
-    add(skip_row("paper", "symmetric-half-probe", 80, false, "all 80 strips"),
-        [&] { return solve_steady(p, pb, TangentialScheme::Consistent, SteadyOptions{false}).power_W; });
+    Creepages c = s.creep;
+    c.eta = 5e-4;
+    const TangentialProblem pb = make_tangential_problem(p, s.pair, c, s.mu, s.V);
+    const TangentialSolution a = solve_steady(p, pb, TangentialScheme::Consistent, SteadyOptions{false, true});
+    const TangentialSolution b = solve_steady(p, pb, TangentialScheme::Consistent, SteadyOptions{false, false});
+    Row on = skip_row("paper", "mirror-steady", 80, true,
+                      "xi 1e-3, eta 5e-4: 40 strips mirrored against all 80 (test SteadySkips.MirroredHalfEqualsAllStrips)");
+    on.err_Fx = rel(a.Fx_N, b.Fx_N);
+    on.err_P = rel(a.power_W, b.power_W);
+    on.err_strip_P = (a.strip_power_W_per_m - b.strip_power_W_per_m).abs().maxCoeff() /
+                     b.strip_power_W_per_m.abs().maxCoeff();
+    add(on, [&] { return solve_steady(p, pb, TangentialScheme::Consistent, SteadyOptions{false, true}).power_W; });
+    add(skip_row("paper", "mirror-steady", 80, false, "all 80 strips"),
+        [&] { return solve_steady(p, pb, TangentialScheme::Consistent, SteadyOptions{false, false}).power_W; });
+
+    const wear::WearCase wc = wear::read_wear_case(kSource + "/cases/start-stop-wear.yaml");
+    const wear::WearModel m = wear::make_wear_model(wc);
+    wear::WearCache cache;
+    TransientCase t = *m.transient;
+    t.patch = wear::normal_state(m, wear::initial_state(m), cache).normal.patch;
+    TransientCase all = t;
+    all.settings.skip_mirrored = false;
+    const TransientResult ta = run_transient(t), tb = run_transient(all);
+    Row ton = skip_row("start-stop-wear", "mirror-satran", t.patch->grid.nx, true,
+                       "the duty cycle (skip_steady on) stepping half the strips against all (test "
+                       "SatranSkip.MirroredStripsChangeNothing)");
+    ton.err_P = rel(ta.dissipated_J, tb.dissipated_J);
+    ton.err_strip_P = (ta.strip_energy_J_per_m - tb.strip_energy_J_per_m).abs().maxCoeff() /
+                      tb.strip_energy_J_per_m.abs().maxCoeff();
+    ton.steps = ta.steps;
+    add(ton, [&] { return run_transient(t).dissipated_J; }, 200);
+    Row toff = skip_row("start-stop-wear", "mirror-satran", t.patch->grid.nx, false, "all strips");
+    toff.steps = tb.steps;
+    add(toff, [&] { return run_transient(all).dissipated_J; }, 200);
     end();
   }
 
