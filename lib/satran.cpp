@@ -51,6 +51,7 @@ TransientState rest_state(const Grid& grid) {
   s.nx = grid.nx;
   s.ny = grid.ny;
   s.nodes.assign(static_cast<size_t>(grid.nx + 1) * grid.ny, StripNode{});
+  s.mirror_images = true;
   return s;
 }
 
@@ -65,17 +66,6 @@ double node_energy_sum(const TransientState& s) {  // sum of |tau|^2 over all no
   double e = 0;
   for (const StripNode& n : s.nodes) e += n.tx * n.tx + n.ty * n.ty;
   return e;
-}
-
-// strips j and ny - 1 - j hold the same nodes (the state of a symmetric case, bit for bit)
-bool mirror_symmetric_state(const TransientState& s) {
-  const int n = s.nx + 1;
-  auto same = [](const StripNode& u, const StripNode& v) {
-    return u.tx == v.tx && u.ty == v.ty && u.ex == v.ex && u.ey == v.ey && u.stick == v.stick;
-  };
-  for (int j = 0; j < s.ny / 2; ++j)
-    if (!std::equal(&s.nodes[j * n], &s.nodes[j * n] + n, &s.nodes[(s.ny - 1 - j) * n], same)) return false;
-  return true;
 }
 
 // strip `to` takes the nodes of strip `from`
@@ -444,9 +434,8 @@ StepResult satran_step(const ContactPatch& patch, const TangentialProblem& probl
   std::optional<ShiftScratch> scratch;
   if (exact_shift) scratch.emplace(g, strip_rates(patch, rates_problem, 0));
   // without spin, on a mirror-symmetric patch and state, strips from `strips` up are mirror images
-  const int strips = skip_mirrored && k.spin_rad == 0 && mirror_symmetric_state(state)
-                         ? first_mirrored_strip(patch, 0.0)
-                         : g.ny;
+  const int strips = skip_mirrored && k.spin_rad == 0 && state.mirror_images ? first_mirrored_strip(patch, 0.0) : g.ny;
+  state.mirror_images = strips < g.ny;  // after this step
   std::vector<StripEnergy> energies(g.ny);
   double stick_area = 0, area = 0, E_start = 0, E_end = 0;  // sums of |tau|^2 over interior nodes
   for (int j = 0; j < g.ny; ++j) {

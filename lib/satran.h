@@ -60,6 +60,9 @@ struct TransientState {
   int nx = 0, ny = 0;
   std::vector<StripNode> nodes;  // (nx+1) x ny: node i of strip j sits at x_edge(i), index i + j (nx+1)
   double L_m_per_Pa = 0;         // the flexibility the tractions refer to (u = L tau); 0 = not set yet
+  // strips j and ny - 1 - j hold the same nodes, bit for bit: true at rest and after a step that
+  // mirrored its strips (satran_step's skip_mirrored); whoever writes the nodes otherwise clears it
+  bool mirror_images = false;
 
   StripNode& node(int i, int j) { return nodes[i + j * (nx + 1)]; }
   const StripNode& node(int i, int j) const { return nodes[i + j * (nx + 1)]; }
@@ -94,8 +97,8 @@ struct StepResult {
 // the rigid kinematics `k` drive it (problem.creepages and speed are not used). For shift, k.dq_m is
 // dx or less (less: an upwind step at CFL dq/dx). Throws std::invalid_argument for a CFL number
 // above 1 or a state on another grid. skip_mirrored: without spin, on a mirror-symmetric patch
-// (first_mirrored_strip) whose state is symmetric bit for bit, half the strips are stepped and the
-// others take their mirror images (the same to rounding; docs/accuracy-and-speed.md).
+// (first_mirrored_strip) whose state holds mirror images (state.mirror_images), half the strips are
+// stepped and the others take their mirror images (the same to rounding; docs/accuracy-and-speed.md).
 StepResult satran_step(const ContactPatch& patch, const TangentialProblem& problem, const StepKinematics& k,
                        TransientScheme scheme, TransientState& state, bool fields = false,
                        bool skip_mirrored = true);

@@ -285,6 +285,8 @@ TEST(SatranSkip, MirroredStripsChangeNothing) {
       state_difference = std::max({state_difference, std::abs(skip.final_state.nodes[n].tx - full.final_state.nodes[n].tx),
                                    std::abs(skip.final_state.nodes[n].ty - full.final_state.nodes[n].ty)});
     EXPECT_LE(state_difference, kRounding * 0.3 * 1e9) << k.what;  // of mu p0 (p0 about 1 GPa)
+    EXPECT_EQ(skip.final_state.mirror_images, k.phi == 0) << k.what;  // the skip was taken to the end
+    EXPECT_FALSE(full.final_state.mirror_images) << k.what;
     if (k.phi != 0) {
       EXPECT_EQ(skip.dissipated_J, full.dissipated_J) << k.what;  // the skip does not apply
     }

@@ -254,7 +254,9 @@ void steady_study(const Options& o, std::vector<Row>& rows) {
       auto contact = [s, spec, scheme] {
         const ContactPatch p = solve_normal_hertz(s.bodies, s.pair, s.F, spec);
         const TangentialProblem pb = make_tangential_problem(p, s.pair, s.creep, s.mu, s.V);
-        return std::make_pair(p, solve_steady(p, pb, scheme, SteadyOptions{false}));
+        // the march of every strip (skips off): what a case with eta or phi costs; pure xi alone would
+        // take the closed form (the skips study)
+        return std::make_pair(p, solve_steady(p, pb, scheme, SteadyOptions{false, false}));
       };
       const auto [p, sol] = contact();
       // the closed-form mean strip power of each cell row
