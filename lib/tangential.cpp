@@ -33,6 +33,26 @@ TangentialProblem make_tangential_problem(const ContactPatch& patch, const Elast
   return p;
 }
 
+namespace {
+
+// the grid's nodes x_edge(i) strictly inside |x| < a1 are those strictly inside |x| < a2 (only the
+// nodes next to +-a can differ)
+bool same_nodes_inside(const Grid& g, double a1, double a2) {
+  if (a1 == a2) return true;
+  for (const double a : {a1, a2}) {
+    const int near = static_cast<int>(std::floor((a + g.half_x_m) / g.dx_m));
+    const int far = static_cast<int>(std::floor((-a + g.half_x_m) / g.dx_m));
+    for (const int c : {near, far})
+      for (int i = std::max(0, c - 1); i <= std::min(g.nx, c + 2); ++i) {
+        const double x = g.x_edge(i);
+        if ((x > -a1 && x < a1) != (x > -a2 && x < a2)) return false;
+      }
+  }
+  return true;
+}
+
+}  // namespace
+
 int first_mirrored_strip(const ContactPatch& patch, double phi_per_m, bool skip) {
   const Grid& g = patch.grid;
   const int ny = g.ny;
@@ -45,7 +65,8 @@ int first_mirrored_strip(const ContactPatch& patch, double phi_per_m, bool skip)
     const int m = ny - 1 - j;
     if (!same(g.y_m(j), -g.y_m(m), g.half_y_m) || !same(patch.half_length_m(j), patch.half_length_m(m), a_max) ||
         !same(patch.strip_peak_Pa(j), patch.strip_peak_Pa(m), p_max) ||
-        (offsets && !same(patch.strip_xi_offset(j), patch.strip_xi_offset(m), o_max)))
+        (offsets && !same(patch.strip_xi_offset(j), patch.strip_xi_offset(m), o_max)) ||
+        !same_nodes_inside(g, patch.half_length_m(j), patch.half_length_m(m)))
       return ny;
   }
   return ny - ny / 2;

@@ -51,7 +51,8 @@ std::string to_string(TangentialScheme scheme);
 // (xi/L1, eta/L2) are the same on every strip, so on a patch that is its own mirror image in y = 0
 // the solution is too: strip ny - 1 - j is a copy of strip j. Mirror images within kMirrorTol: the
 // strips' positions, half lengths, peaks and Heathcote offsets agree to that fraction of their
-// largest value (a Hertz patch is symmetric to a few ulps, a worn one to its rounding). Returns the
+// largest value (a Hertz patch is symmetric to a few ulps, a worn one to its rounding), and the two
+// strips have the same grid nodes inside them (a copied node never lands outside its strip). Returns the
 // first strip that is a copy (ny - ny/2), or ny when the skip does not apply (spin, an asymmetric
 // patch, or skip false).
 constexpr double kMirrorTol = 1e-12;

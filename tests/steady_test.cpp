@@ -424,6 +424,15 @@ TEST(SteadySkips, MirrorImagesOnlyWithoutSpinOnSymmetricPatches) {
   EXPECT_EQ(first_mirrored_strip(heathcote, 0.0), 80);
   heathcote.strip_xi_offset = heathcote.grid.y_m.square() * 1e2;  // symmetric
   EXPECT_EQ(first_mirrored_strip(heathcote, 0.0), 40);
+  // half lengths equal to rounding, but a grid node between them: a copied node would land outside
+  // its strip (found by the stress suite, Lax-Friedrichs on 5 x 15)
+  ContactPatch node = paper_patch(40, 80);
+  const double x = node.grid.x_edge(33);
+  node.half_length_m(5) = x;  // node 33 is not strictly inside strip 5
+  node.half_length_m(74) = std::nextafter(x, 1.0);
+  EXPECT_EQ(first_mirrored_strip(node, 0.0), 80);
+  node.half_length_m(74) = x;
+  EXPECT_EQ(first_mirrored_strip(node, 0.0), 40);
 }
 
 // Half the strips, mirrored: the same strips, totals and fields as marching all of them, to rounding,
