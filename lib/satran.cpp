@@ -84,6 +84,7 @@ void allocate_fields(StepResult& r, const Grid& g) {
 // one strip, shift: returns (dissipated, creep, trailing) energies per unit width
 struct StripEnergy {
   double dissipated = 0, creep = 0, trailing = 0, transport = 0, stick_length = 0;
+  double counted_length = 0;  // upwind, lax-friedrichs: dx per node in contact (0: shift, the exact 2 a_j)
   double E_start = 0, E_end = 0;  // sums of |tau|^2 over the interior nodes before and after the step
   double Fx = 0, Fy = 0, Mz = 0;
 };
@@ -364,6 +365,7 @@ StripEnergy explicit_strip(const ContactPatch& patch, const TangentialProblem& p
     e.Fy += nw.ty * dx;
     e.Mz += (x * nw.ty - y * nw.tx) * dx;
     if (!slip) e.stick_length += dx;
+    e.counted_length += dx;
     if (fields && k.dt_s > 0) {
       // node -> the two cells it borders, half to each
       for (int c : {i - 1, i}) {
@@ -470,8 +472,9 @@ StepResult satran_step(const ContactPatch& patch, const TangentialProblem& probl
     r.Fx_N += e.Fx * g.dy_m;
     r.Fy_N += e.Fy * g.dy_m;
     r.Mz_N_m += e.Mz * g.dy_m;
+    // the stick share of what the scheme counts: the node-based steps count dx per node in contact
     stick_area += e.stick_length * g.dy_m;
-    area += 2 * patch.half_length_m(j) * g.dy_m;
+    area += (e.counted_length > 0 ? e.counted_length : 2 * patch.half_length_m(j)) * g.dy_m;
   }
   r.stick_fraction = area > 0 ? stick_area / area : 0;
   r.elastic_change_J = L * dx / 2 * (E_end - E_start) * g.dy_m;

@@ -60,6 +60,7 @@ struct StripTotals {
   double Fx = 0, Fy = 0, Mz = 0;  // per unit width
   double power = 0, creep_power = 0, trailing = 0;
   double stick_length = 0;
+  double counted_length = 0;  // classic: the length its cell centres stand for (0: the exact 2 a_j)
 };
 
 // the sums that make the strip's totals
@@ -419,6 +420,7 @@ StripTotals march_classic(const ContactPatch& patch, const TangentialProblem& pb
     st.power += power * dx;
     st.creep_power += -VL * (alpha * tx + (eta_L2 + phi_L3 * x) * ty) * dx;
     if (!slip) st.stick_length += dx;
+    st.counted_length += dx;
   }
   st.trailing = VL * (tx * tx + ty * ty) / 2;
   return st;
@@ -509,8 +511,9 @@ TangentialSolution solve_steady(const ContactPatch& patch, const TangentialProbl
     s.Fy_N += st.Fy * g.dy_m;
     s.Mz_N_m += st.Mz * g.dy_m;
     s.power_W += st.power * g.dy_m;
+    // the stick share of what the scheme counts: classic counts dx per cell centre in contact
     stick_area += st.stick_length * g.dy_m;
-    area += 2 * patch.half_length_m(j) * g.dy_m;
+    area += (st.counted_length > 0 ? st.counted_length : 2 * patch.half_length_m(j)) * g.dy_m;
   }
   s.stick_fraction = area > 0 ? stick_area / area : 0;
   // work of the creep forces, with the local xi of each strip where the rolling radius varies
