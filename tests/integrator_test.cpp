@@ -273,6 +273,36 @@ TEST(Integrator, FixedStepIsExplicitEuler) {
   ASSERT_EQ(r.status.kind, Kind::ReachedEnd) << r.status.message;
   EXPECT_EQ(r.steps, 50);
   EXPECT_EQ(r.N, kLife);
+  EXPECT_EQ(r.rejected, 0);  // lambda dN = 0.06: the stability control leaves the step alone
+}
+
+// Issue #6: a fixed step far too large is refused by the step control, not taken into an oscillating
+// profile. h' = -lambda h with lambda dN = 10: plain Euler multiplies h by -9 per step. The control
+// halves each step until its rate changes by at most the rate's size, i.e. lambda dN <= 1 for this
+// linear decay (Euler's factor in [0, 1]): h decays monotonically and stays >= 0, and the run still
+// reaches N_end. The same for a step that makes f throw (an absurd profile): halved until it does not.
+TEST(Integrator, FixedStepTooLargeIsHalvedNotOscillating) {
+  constexpr double kLambda = 1e-5, kStep = 1e6;  // lambda dN = 10
+  const wear::Rhs decay = [](double, const Eigen::VectorXd& h, Eigen::VectorXd& dhdN) {
+    if (h[0] < -1e-3 * kDepth) throw std::runtime_error("the profile is absurd");
+    dhdN = -kLambda * h;
+  };
+  IntegratorOptions o;
+  o.method = Method::FixedStep;
+  o.fixed_step = kStep;
+  double previous = kDepth;
+  const IntegratorResult r = wear::integrate(decay, {}, 0, 0, Eigen::VectorXd::Constant(1, kDepth), 1e7, o,
+                                             [&](const StepInfo& s, const Eigen::VectorXd& h) {
+                                               EXPECT_LE(kLambda * s.step, 1 + kRoundoff) << "N " << s.N;
+                                               EXPECT_LE(h[0], previous) << "N " << s.N;
+                                               EXPECT_GE(h[0], 0) << "N " << s.N;
+                                               previous = h[0];
+                                               return true;
+                                             });
+  ASSERT_EQ(r.status.kind, Kind::ReachedEnd) << r.status.message;
+  EXPECT_EQ(r.N, 1e7);
+  EXPECT_GT(r.rejected, 0);
+  EXPECT_LT(r.h_m[0], 1e-6 * kDepth);  // exp(-100) in truth; decayed, not blown up
 }
 
 // -------------------------------------------------------------------------------------------

@@ -47,6 +47,7 @@ constexpr double kRootTol = 100 * kEps;   // root located to kRootTol (|N| + |st
 constexpr double kEndTol = 100 * kEps;    // a step ending this close to N_end (relative) ends there
 constexpr int kDefaultTable = ARKODE_BOGACKI_SHAMPINE_4_2_3;
 constexpr int kMaxRootIterations = 200;
+constexpr int kMaxHalvings = 20;  // fixed modes: a step is halved at most this often (to ~1e-6 of it)
 
 // f(N, h) into dhdN; an exception or a non-finite value is reported with N
 void evaluate_rate(const Rhs& f, double N, const Eigen::VectorXd& h, Eigen::VectorXd& dhdN) {
@@ -461,24 +462,54 @@ IntegratorResult integrate_fixed(const Rhs& f, const Roots& roots, int n_roots, 
   Eigen::VectorXd g(n_roots), g_next(n_roots);
   if (n_roots > 0) evaluate_roots(roots, n_roots, N0, h0, g);
 
+  long targets = 0;  // FixedStep: multiples of fixed_step reached; N counts from N0 on them
   while (r.N < N_end) {
     if (r.steps >= o.max_steps) {
       finish_max_steps(r, o.max_steps, N_end);
       return r;
     }
 
-    // step: fixed revolutions, or those that wear max_depth_step at the fastest node
+    // step: to the next multiple of fixed_step from N0 (no summed rounding in N), or the revolutions
+    // that wear max_depth_step at the fastest node
     double dN = o.fixed_step;
     if (by_depth) {
       const double fastest = rate.cwiseAbs().maxCoeff();
       dN = fastest > 0 ? o.max_depth_step / fastest : std::numeric_limits<double>::infinity();
       if (o.max_step > 0) dN = std::min(dN, o.max_step);
     }
-    // FixedStep counts from N0 so that N carries no summed rounding
-    double N_next = by_depth ? r.N + dN : N0 + static_cast<double>(r.steps + 1) * o.fixed_step;
+    double N_next = by_depth ? r.N + dN : N0 + static_cast<double>(targets + 1) * o.fixed_step;
     if (N_next >= N_end - kEndTol * std::max(std::abs(N_end), dN)) N_next = N_end;
-    dN = N_next - r.N;
-    h_next = r.h_m + dN * rate;
+    const double N_target = N_next;
+
+    // Stability control: the step is halved until the rate at its end exists (a far too large step
+    // wears an absurd profile, on which the contact cannot be solved) and differs from the rate at its
+    // start by at most the larger of the two rates' sizes. For a decaying mode dh/dN = lambda h that is
+    // lambda dN >= -1: Euler's factor 1 + lambda dN stays in [0, 1], so the profile cannot oscillate;
+    // a growing mode or a rate rising from 0 passes. A halved FixedStep goes on towards the same
+    // multiple of fixed_step.
+    for (int halvings = 0;; ++halvings) {
+      dN = N_next - r.N;
+      h_next = r.h_m + dN * rate;
+      bool stable = false;
+      try {
+        ++r.rhs_evals;
+        evaluate_rate(f, N_next, h_next, rate_next);
+        stable = (rate_next - rate).cwiseAbs().maxCoeff() <=
+                 std::max(rate.cwiseAbs().maxCoeff(), rate_next.cwiseAbs().maxCoeff());
+      } catch (const std::exception&) {
+        if (halvings == kMaxHalvings) throw;
+      }
+      if (stable) break;
+      if (halvings == kMaxHalvings) {  // a jump of f itself, not the step's doing
+        spdlog::warn("wear::integrate: the rate changes by more than its size over a step of {:.4g} revolutions "
+                     "at N {:.10g}, halved {} times; taking it",
+                     dN, r.N, kMaxHalvings);
+        break;
+      }
+      ++r.rejected;
+      N_next = r.N + dN / 2;
+    }
+    if (!by_depth && N_next == N_target) ++targets;
 
     // a lifetime limit inside the step: located on the Euler line
     if (n_roots > 0) {
@@ -499,9 +530,7 @@ IntegratorResult integrate_fixed(const Rhs& f, const Roots& roots, int n_roots, 
       g.swap(g_next);
     }
 
-    // the rate at the step's end: the next step's slope and this step's error estimate
-    evaluate_rate(f, N_next, h_next, rate_next);
-    ++r.rhs_evals;
+    // the rate at the step's end (evaluated above): the next step's slope and this step's error estimate
     ++r.steps;
     const Eigen::ArrayXd e = (0.5 * dN) * (rate_next - rate).array();
     const Eigen::ArrayXd w = 1.0 / (o.rtol * r.h_m.array().abs() + o.atol);
@@ -512,6 +541,7 @@ IntegratorResult integrate_fixed(const Rhs& f, const Roots& roots, int n_roots, 
     info.error_estimate = std::sqrt((e * w).square().mean());
     info.max_local_error_m = e.abs().maxCoeff();
     info.steps = r.steps;
+    info.rejected = r.rejected;
     info.rhs_evals = r.rhs_evals;
     r.N = N_next;
     r.h_m.swap(h_next);

@@ -9,7 +9,10 @@
 //
 // Fixed (the literature's stepping, kept for comparison): explicit Euler, h += dN f(N, h), with
 //   FixedDepth  dN = max_depth_step / max_i |f_i|  (each update wears at most max_depth_step), or
-//   FixedStep   dN = fixed_step.
+//   FixedStep   dN = fixed_step,
+// and a stability control: a step is halved (and counted as rejected) until f exists at its end and
+// changes over it by at most the larger max_i |f_i| of its two ends (lambda dN >= -1: no
+// oscillation), so that a far too large step is refused rather than wearing an absurd profile.
 // The Euler solution is linear in N over a step, so a root of g on it is located exactly (to
 // rounding) by regula falsi on that line: no further RHS evaluations.
 #pragma once
@@ -87,7 +90,7 @@ struct IntegratorResult {
   double next_step = 0;        // as StepInfo::next_step after the last accepted step (0 if none)
   long steps = 0;              // accepted steps, including the one a root cut short
   long rhs_evals = 0;          // evaluations of f
-  long rejected = 0;           // error test failures (Adaptive; 0 in the fixed modes)
+  long rejected = 0;           // error test failures (Adaptive); halved steps (fixed modes)
 };
 
 // called after every accepted step with the state at its end; return false to stop (Kind::Stopped),
