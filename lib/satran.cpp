@@ -520,18 +520,27 @@ void check_run(const TransientCase& c) {
 }
 
 // the contact at load F on the run's grid; no contact at F = 0
-ContactPatch contact_at(const TransientCase& c, const Grid& grid, double F) {
-  if (c.patch) return *c.patch;  // check_run: F is its load
-  if (F > 0) return hertz_patch(solve_hertz(c.bodies, c.materials, F), grid);
+// No strip of the grid in contact; a and b (Kalker's a/b) from h
+ContactPatch empty_patch(const Grid& grid, const HertzContact& h) {
   ContactPatch p;
   p.grid = grid;
   p.half_length_m = Eigen::ArrayXd::Zero(grid.ny);
   p.strip_peak_Pa = Eigen::ArrayXd::Zero(grid.ny);
   fill_strip_pressures(p);
-  const HertzContact h = solve_hertz(c.bodies, c.materials, 1.0);  // the shape, for Kalker's a/b
   p.a_m = h.a_m;
   p.b_m = h.b_m;
   return p;
+}
+
+// The contact at load F on the run's grid: none at F = 0, and none either while the ellipse is so
+// narrow that it misses every strip centre of the grid (a small load on the largest contact's grid:
+// no strip can carry it, so it carries no traction)
+ContactPatch contact_at(const TransientCase& c, const Grid& grid, double F) {
+  if (c.patch) return *c.patch;  // check_run: F is its load
+  if (!(F > 0)) return empty_patch(grid, solve_hertz(c.bodies, c.materials, 1.0));  // the shape at any load
+  const HertzContact h = solve_hertz(c.bodies, c.materials, F);
+  if (!(grid.y_m.abs() < h.b_m).any()) return empty_patch(grid, h);
+  return hertz_patch(h, grid);
 }
 
 class PatchCache {
@@ -542,6 +551,12 @@ class PatchCache {
       patch_ = contact_at(c_, g_, F);
       F_ = F;
       valid_ = true;
+      if (F > 0 && !(patch_.half_length_m > 0).any() && !warned_) {
+        spdlog::warn("satran: at {:.4g} N the contact (b = {:.4g} m) misses every strip centre of the run's grid "
+                     "(dy = {:.4g} m, sized for the largest load): no traction while the load is that small",
+                     F, patch_.b_m, g_.dy_m);
+        warned_ = true;
+      }
     }
     return patch_;
   }
@@ -552,6 +567,7 @@ class PatchCache {
   ContactPatch patch_;
   double F_ = 0;
   bool valid_ = false;
+  bool warned_ = false;  // of a load too small for the grid, once per run
 };
 
 }  // namespace

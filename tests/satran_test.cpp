@@ -13,6 +13,7 @@
 
 #include "lib/steady.h"
 #include "tests/closed_forms.h"
+#include "tests/log_capture.h"
 
 namespace contact {
 namespace {
@@ -291,6 +292,33 @@ TEST(SatranSkip, MirroredStripsChangeNothing) {
       EXPECT_EQ(skip.dissipated_J, full.dissipated_J) << k.what;  // the skip does not apply
     }
   }
+}
+
+// A load ramp from 0 on the grid of the largest contact: at the smallest loads the contact ellipse
+// misses every strip centre, so no strip can carry it. The run goes on without traction there (one
+// warning), and the contact takes traction once it covers a strip centre (it threw before: stress
+// finding "small load").
+TEST(Satran, LoadTooSmallForTheGridCarriesNoTraction) {
+  TransientCase c = paper_case(1.8, {1e-3, 0, 0}, 20);
+  c.inputs.normal_load_N = {{0, 2e-4, 4e-4}, {0, 0.1, 1500}};  // b < dy/2 below about 0.19 N
+  c.settings.t_end_s = 4e-4;
+  const rollwear_test::ExpectWarnings warnings;
+  const std::vector<TransientRecord> rows = run(c);
+  ASSERT_EQ(warnings.count(), 1);
+  EXPECT_NE(warnings.messages()[0].find("misses every strip centre"), std::string::npos) << warnings.messages()[0];
+  const double dy = 2 * solve_hertz(c.bodies, c.materials, 1500).b_m / 20;
+  int empty = 0;
+  for (const TransientRecord& r : rows) {
+    // the Hertz half-width b at this load against the strip centres nearest y = 0, at +-dy/2
+    const double b = r.normal_load_N > 0 ? solve_hertz(c.bodies, c.materials, r.normal_load_N).b_m : 0;
+    if (b < dy / 2 * (1 - 1e-9)) {
+      EXPECT_EQ(r.Fx_N, 0) << "t " << r.t_s;
+      EXPECT_EQ(r.power_W, 0) << "t " << r.t_s;
+      ++empty;
+    }
+  }
+  EXPECT_GT(empty, 0);
+  EXPECT_LT(rows.back().Fx_N, 0);  // xi > 0 pulls body 1 back: Fx < 0 once loaded
 }
 
 // History stretches of constant value, around a time: the bounds the skip reads.

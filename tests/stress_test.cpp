@@ -470,7 +470,7 @@ constexpr double kStepBalanceTol = 1e-9;  // |balance residual| / (power + elast
 struct SatranTally {
   double worst_balance = 0;
   long steps = 0;
-  int spin_bound = 0, spin_negative_power = 0, node_forces = 0, small_load = 0,
+  int spin_bound = 0, spin_negative_power = 0, node_forces = 0,
       snapshot_bound = 0;
   double node_forces_worst = 0;
 };
@@ -532,6 +532,8 @@ void satran_case(Rng& r, const std::string& tag, TransientScheme scheme, SatranT
   bool finite = true;
   std::string first_bad;
   TransientResult res;
+  // allowed: a load too small for the largest contact's grid carries no traction, with a warning
+  const rollwear_test::ExpectWarnings warnings;
   try {
     res = run_transient(tc, [&](const TransientRecord& rec, const Eigen::ArrayXd& strips) {
       rows.push_back(rec);
@@ -544,14 +546,6 @@ void satran_case(Rng& r, const std::string& tag, TransientScheme scheme, SatranT
                                 rec.Fy_N, rec.Mz_N_m, rec.power_W, rec.balance_residual_W);
       }
     });
-  } catch (const std::invalid_argument& e) {
-    // finding "small load": a load history reaching loads whose ellipse misses every strip centre of
-    // the largest contact's grid throws from Hertz (StressSatran.DISABLED_LoadRampFromZeroRuns); counted
-    if (std::string(e.what()).find("strips miss the contact ellipse") != std::string::npos && load_ramp && !strict) {
-      ++tally.small_load;
-      return;
-    }
-    FAIL() << what << ": run_transient threw " << e.what();
   } catch (const std::exception& e) {
     FAIL() << what << ": run_transient threw " << e.what();
   }
@@ -611,8 +605,11 @@ void satran_case(Rng& r, const std::string& tag, TransientScheme scheme, SatranT
   // |tau| <= mu p at every node of the final state, against the contact of the final load
   const double F_end = value_at(tc.inputs.normal_load_N, t_end);
   ASSERT_EQ(static_cast<int>(res.final_state.nodes.size()), (res.grid.nx + 1) * res.grid.ny) << what;
-  if (F_end > 0) {
-    const ContactPatch p = hertz_patch(solve_hertz(tc.bodies, tc.materials, F_end), res.grid);
+  for (const StripNode& n : res.final_state.nodes) ASSERT_TRUE(std::isfinite(n.tx) && std::isfinite(n.ty)) << what;
+  // the end's contact, unless its load is too small for the grid to carry (then it has no traction)
+  const HertzContact h_end = solve_hertz(tc.bodies, tc.materials, std::max(F_end, 1e-300));
+  if (F_end > 0 && (res.grid.y_m.abs() < h_end.b_m).any()) {
+    const ContactPatch p = hertz_patch(h_end, res.grid);
     bool above = false;
     for (int j = 0; j < res.grid.ny; ++j)
       for (int i = 0; i <= res.grid.nx; ++i) {
@@ -661,8 +658,8 @@ void print_tally(const SatranTally& t) {
               kStepBalanceTol);
   std::printf("  snapshots above mu p at constant inputs: %d\n", t.snapshot_bound);
   std::printf("  known findings: spin or load fall: %d runs with a final |tau| above mu p; %d steps with power < 0 (spin or not); node-counting steps: "
-              "%d with |F| > mu F (worst by %.3g); small load: %d runs threw\n",
-              t.spin_bound, t.spin_negative_power, t.node_forces, t.node_forces_worst, t.small_load);
+              "%d with |F| > mu F (worst by %.3g)\n",
+              t.spin_bound, t.spin_negative_power, t.node_forces, t.node_forces_worst);
 }
 
 TEST(StressSatran, ShiftRandomHistoriesKeepTheBoundAndTheEnergyBalance) {
@@ -687,7 +684,9 @@ TEST(StressSatran, UpwindAndLaxFriedrichsRandomHistoriesKeepTheBoundAndTheEnergy
 // "hertz: the grid's strips miss the contact ellipse". A load ramp from 0 (which the case reader
 // accepts: values >= 0, positive somewhere) meets such loads at its start whenever ny is even. Found by
 // StressSatran.ShiftRandomHistoriesKeepTheBoundAndTheEnergyBalance (base seed 20240606, case 117: load
-// ramp 0 -> 0.97 N, grid 2 x 4; case 142: ramp 123.6 -> 1.27 N, grid 13 x 4). Enable when fixed.
+// ramp 0 -> 0.97 N, grid 2 x 4; case 142: ramp 123.6 -> 1.27 N, grid 13 x 4). Fixed: such a load has
+// no strip in contact and carries no traction, with a warning (lib/satran.cpp contact_at); the two
+// cases run below, and the sweeps no longer allow a throw.
 // Finding "load fall" (issue #6 stress suite): when the load falls during a step, the final state's
 // tractions exceed mu p of the contact at the end: shift, case 223 (load ramp 90617 -> 6186 N ending
 // 1.4e-6 s before t_end, no spin, 10 x 1): |tau| 3.20e8 Pa at node (3, 0) against mu p 1.84e8 Pa;
@@ -700,7 +699,7 @@ TEST(StressSatran, DISABLED_FallingLoadKeepsTheFinalStateWithinTheBound) {
   }
 }
 
-TEST(StressSatran, DISABLED_LoadRampFromZeroRuns) {
+TEST(StressSatran, LoadRampFromZeroRuns) {
   // the sweep's cases 117 and 142 by their case seeds (valid while the generator is unchanged)
   for (const std::uint64_t seed : {3161848494750300723ull, 3161848494750300748ull}) {
     Rng r(seed);
