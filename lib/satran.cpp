@@ -633,9 +633,11 @@ TransientResult run_transient(const TransientCase& c, const StepObserver& observ
         k.dt_s = std::min(set.dt_s / substeps, left);
         k.dq_m = std::min(dx, integral(c.inputs.speed_m_per_s, t, t + k.dt_s));
       }
+      // the creepages and the speed at mid-step (the rigid slip over the step); the contact at the step's
+      // end, whose Coulomb bound the state at the step's end obeys (a falling load clips it in this step)
       const double tm = t + k.dt_s / 2;
       V = value_at(c.inputs.speed_m_per_s, tm);
-      F = value_at(c.inputs.normal_load_N, tm);
+      F = value_at(c.inputs.normal_load_N, t + k.dt_s);
       cr = {value_at(c.inputs.xi, tm), value_at(c.inputs.eta, tm), value_at(c.inputs.phi_per_m, tm)};
       // rigid slip over the step: creepage x rolled distance
       k.slip_x_m = cr.xi * k.dq_m;
