@@ -119,10 +119,11 @@ struct ShiftScratch {
   Eigen::ArrayXd t2_2, beta_t2_2, gamma_t3_3, beta_t3_3, gamma_t4_4;  // the integrals'
   std::vector<int> failed;             // a strip's interior intervals whose stick test failed
   std::vector<StripNode> failed_hi;    // their old upstream nodes
+  std::vector<char> failed_between;    // spin: the interior test failed, or a slip node sticks again
   std::vector<detail::SlipTurn> turn;  // their slip turns, from a slip node
   ShiftScratch(const Grid& g, const StripRates& r)
       : x(g.nx + 1), t(g.nx), beta_t(g.nx), gamma_t2(g.nx), t2_2(g.nx), beta_t2_2(g.nx), gamma_t3_3(g.nx),
-        beta_t3_3(g.nx), gamma_t4_4(g.nx), failed(g.nx), failed_hi(g.nx), turn(g.nx) {
+        beta_t3_3(g.nx), gamma_t4_4(g.nx), failed(g.nx), failed_hi(g.nx), failed_between(g.nx), turn(g.nx) {
     for (int i = 0; i <= g.nx; ++i) x(i) = g.x_edge(i);
     for (int i = 0; i < g.nx; ++i) {
       t(i) = x(i + 1) - x(i);
@@ -213,7 +214,11 @@ StripEnergy shift_strip(const ContactPatch& patch, const StripRates& r, int j, d
     for (int i = i_bot; i < first; ++i) whole_interval(i);
 
     // the stick pass, in blocks from the trailing side up; the last block is moved back to end at `last`,
-    // and its intervals below `from` were done by the block before
+    // and its intervals below `from` were done by the block before. With spin Kalker's test also asks
+    // whether the stick solution stays inside the bound between the nodes, and a slip node whose slip
+    // stops dissipating sticks again (stick_step, spin_sticks): those intervals go to the whole kernel
+    const bool spin = r.phi_L3_Pa_per_m2 / 2 != 0;
+    const detail::BoundQuadratic bound_q = detail::bound_quadratic(r);
     int n_failed = 0;
     for (int from = first; from <= last; from += kBlock) {
       const int b = std::min(from, last - kBlock + 1);  // the block's intervals are b .. b + kBlock - 1
@@ -222,13 +227,28 @@ StripEnergy shift_strip(const ContactPatch& patch, const StripRates& r, int j, d
         tx(q) = node[b + 1 + q].tx;
         ty(q) = node[b + 1 + q].ty;
       }
+      Block slips;  // 1 where the old node at x_hi slips (spin only)
+      if (spin)
+        for (int q = 0; q < kBlock; ++q) slips(q) = node[b + 1 + q].stick ? 0.0 : 1.0;
       auto at = [b](const Eigen::ArrayXd& v) { return BlockMap(v.data() + b); };
       const BlockMap x_hi(x + b + 1), h = at(scratch.t);
       const Block bound = r.mu * BlockMap(edge_p + b);
       const detail::StickPrediction<Block> p = detail::stick_prediction<Block, BlockMap>(
           r.alpha_Pa_per_m, tx, ty, h, {at(scratch.beta_t), at(scratch.gamma_t2)});
       const Block lo2_lane = p.px * p.px + p.py * p.py;
-      const Block excess = lo2_lane - bound * bound;  // > 0 exactly where stick_step's test fails
+      const Block excess = lo2_lane - bound * bound;  // > 0 exactly where stick_step's node test fails
+      // with spin, spin_sticks' excess F: its hull > 0 where the interior test needs first_crossing, and
+      // F'(0) <= 0 where a slip node sticks again
+      Block inner, rising;
+      if (spin) {
+        detail::StickExcess<Block> ex = detail::stick_excess<Block, BlockMap>(
+            r.alpha_Pa_per_m, bound_q, tx, ty, x_hi, h, {at(scratch.beta_t), at(scratch.gamma_t2)});
+        // a slip node on the bound: d0 = 0, and its slip goes on where F'(0) = d1 > 0 (else rising <= 0)
+        const auto slipping = (slips > 0) && detail::on_bound(ex.d0, bound_q);
+        ex.d0 = slipping.select(0.0, ex.d0);
+        inner = detail::hull_excess(ex);
+        rising = slipping.select(ex.d1, 0.0);
+      }
       const detail::StickIntegrals<Block> I = detail::stick_integrals<Block, BlockMap>(
           r.alpha_Pa_per_m, tx, ty, x_hi, h,
           {at(scratch.t2_2), at(scratch.beta_t2_2), at(scratch.gamma_t3_3), at(scratch.beta_t3_3),
@@ -245,7 +265,7 @@ StripEnergy shift_strip(const ContactPatch& patch, const StripRates& r, int j, d
         lo.ey = hi.ey;
         lo.stick = true;
       };
-      if (b == from && excess.maxCoeff() <= 0) {  // the whole block sticks
+      if (b == from && excess.maxCoeff() <= 0 && (!spin || inner.maxCoeff() <= 0)) {  // the whole block sticks
         strip.Ix += I.Ix.sum();
         strip.Iy += I.Iy.sum();
         strip.Ixy += I.Ixy.sum();
@@ -256,8 +276,11 @@ StripEnergy shift_strip(const ContactPatch& patch, const StripRates& r, int j, d
         continue;
       }
       for (int q = from - b; q < kBlock; ++q) {
-        if (excess(q) > 0) {
+        // the whole kernel with spin: the node passes but the interior may not, or a slip node sticks again
+        const bool between = spin && (excess(q) <= 0 ? inner(q) > 0 : slips(q) > 0 && !(rising(q) > 0));
+        if (excess(q) > 0 || between) {
           scratch.failed[n_failed] = b + q;
+          scratch.failed_between[n_failed] = between;
           scratch.failed_hi[n_failed++] = node[b + q + 1];
           continue;
         }
@@ -272,13 +295,14 @@ StripEnergy shift_strip(const ContactPatch& patch, const StripRates& r, int j, d
     }
 
     // the intervals whose test failed: from a slip node the interval slips throughout, from a stick node
-    // the whole kernel finds the crossing into slip. With a lateral creep rate the slip direction turns,
-    // and the turns from slip nodes are taken first, all at once (with xi alone they are asked for only
-    // where tau is not along x)
+    // the whole kernel finds the crossing into slip, and so it does for the intervals of spin marked
+    // above. With a lateral creep rate the slip direction turns, and the turns from slip nodes
+    // are taken first, all at once (with xi alone they are asked for only where tau is not along x)
     const bool turns = r.eta_L2_Pa_per_m != 0 || r.phi_L3_Pa_per_m2 != 0;
     for (int f = 0; turns && f < n_failed; ++f) {
       const int i = scratch.failed[f];
-      if (!scratch.failed_hi[f].stick) scratch.turn[f] = detail::interior_slip_turn(r, x[i + 1], x[i]);
+      if (!scratch.failed_hi[f].stick && !scratch.failed_between[f])
+        scratch.turn[f] = detail::interior_slip_turn(r, x[i + 1], x[i]);
     }
     for (int f = 0; f < n_failed; ++f) {
       const int i = scratch.failed[f];
@@ -286,7 +310,8 @@ StripEnergy shift_strip(const ContactPatch& patch, const StripRates& r, int j, d
       const IntervalGeometry geo = geometry(i);
       auto turn = [&] { return turns ? scratch.turn[f] : detail::interior_slip_turn(r, x[i + 1], x[i]); };
       IntervalSums cell;
-      const StripNode lo = hi.stick ? whole_kernel(r, hi, geo, cell) : slip_throughout(r, hi, geo, turn, cell);
+      const StripNode lo = hi.stick || scratch.failed_between[f] ? whole_kernel(r, hi, geo, cell)
+                                                                 : slip_throughout(r, hi, geo, turn, cell);
       record(i, geo, hi, lo, cell);
     }
 

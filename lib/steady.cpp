@@ -5,12 +5,27 @@
 // from the leading node (tau = 0) with t = x_hi - x, the stick solution is exact:
 //   tau_x(t) = tau_x(x_hi) - alpha t,            alpha = xi/L1 - phi y/L3,
 //   tau_y(t) = tau_y(x_hi) - beta t + gamma t^2,  beta = eta/L2 + phi x_hi/L3, gamma = phi/(2 L3).
-// The node x_lo sticks if that prediction lies inside the bound mu p(x_lo) (Kalker's rule); otherwise
-// it is clipped to the bound keeping its direction. Within an interval:
-//   stick -> stick or slip -> stick: the exact stick solution throughout (|stick| - bound is convex
-//     along the interval, so stick at both ends means stick in between);
-//   stick -> slip: the crossing of the stick line with the semi-elliptic bound is located exactly
-//     (a quadratic in t on the chord; exact without spin), stick before it, slip after;
+// Kalker's rule: the interval sticks if the stick solution lies inside the bound g = mu p on all of
+// it. With g^2 = G^2 (1 - x^2/a^2), the excess F = |tau_stick|^2 - g^2 is a polynomial in t:
+//   without spin a quadratic, convex (its t^2 term |(alpha, beta)|^2 + G^2/a^2 > 0), so F <= 0 at both
+//     nodes means F <= 0 in between: the test at x_lo (the prediction inside mu p(x_lo)) is the whole
+//     test, and it costs nothing more;
+//   with spin a quartic (the parabola's gamma t^2 term): the stick parabola can rise over the bound
+//     between two nodes that pass, so the interior is tested too (lib/strip_march.h, stick_excess:
+//     Bernstein coefficients of F bound it from above; where they do not settle it, first_crossing
+//     finds F's first root by subdivision and a bracketed Newton step).
+// Within an interval:
+//   stick throughout (stick -> stick or slip -> stick): the exact stick solution;
+//   stick -> slip: the first crossing of the stick solution with the semi-elliptic bound is located
+//     (without spin a quadratic in t, exact; with spin the first root of the quartic F on the
+//     parabola), stick before it, slip after, so the stick part never leaves the bound;
+//   from a slip node: slip throughout if Kalker's test fails at x_lo. With spin the creep rate turns
+//     along the strip, and the slip goes on only while it dissipates at x_hi: F'(0) = 2 h g (g' - e . d)
+//     > 0 (the stick solution from the node leaves the bound at once); otherwise the material sticks
+//     again at x_hi and the stick solution is followed to its first crossing, as from a stick node.
+//     (An interval has one stick part and then one slip part: a slip that should stop inside a cell
+//     goes on to x_lo. On grids coarse along x with spin this can make a strip's dissipation < 0;
+//     docs/stress-suite.md, finding "restick".)
 //   slip part: |tau| = g = mu p integrated exactly, direction the mean of the end directions. The
 //     direction at the downstream node solves the slip-direction equation exactly for the creep
 //     rate d = (alpha, beta) frozen at the interval's midpoint: with psi the angle between tau and
@@ -29,10 +44,11 @@
 //   stick runs: consecutive stick intervals share one stick solution, the polynomials above from the
 //     run's first node, so the run's integrals are add_stick's closed forms over the whole run and its
 //     D is the formula above with the run's end nodes (it telescopes). Kalker's tests at the run's
-//     nodes are independent of each other: they go in vectorised blocks, and a block passes at once
-//     when |tau| <= |tau_s - (alpha, beta) t| + |gamma| t^2 (convex plus growing in t) stays below its
-//     smallest bound by a margin far above rounding. The interval where a test fails goes through the
-//     full kernel (the crossing).
+//     nodes, and with spin between them (each interval's quartic from the run's solution at its upper
+//     node, as the kernel takes it), are independent of each other: they go in vectorised blocks, and
+//     a block passes at once when |tau| <= |tau_s - (alpha, beta) t| + |gamma| t^2 (convex plus growing
+//     in t) stays below its smallest bound by a margin far above rounding. The interval where a test
+//     fails goes through the full kernel (the crossing).
 //   slip stretches: consecutive slip intervals go one at a time (the direction of tau is a chain of
 //     dependent operations); the turns of the direction (|d|, the exponential) depend on the geometry
 //     alone and are computed for all the strip's remaining cells at once. The stretch's D is the
@@ -73,11 +89,12 @@ void accumulate(IntervalSums& into, const IntervalSums& s) {
 
 // the stick solution from a node at x_s (PHYSICS.md §3): tau_x linear, tau_y quadratic in t = x_s - x
 struct StickLine {
+  const StripRates& r;
   StripNode start;
   double x_s = 0, alpha = 0, beta = 0, gamma = 0;  // beta = d tau_y/dx at x_s, gamma = phi/(2 L3)
-  StickLine(const StripRates& r, const StripNode& node, double x)
-      : start(node), x_s(x), alpha(r.alpha_Pa_per_m), beta(r.eta_L2_Pa_per_m + r.phi_L3_Pa_per_m2 * x),
-        gamma(r.phi_L3_Pa_per_m2 / 2) {}
+  StickLine(const StripRates& rates, const StripNode& node, double x)
+      : r(rates), start(node), x_s(x), alpha(rates.alpha_Pa_per_m),
+        beta(rates.eta_L2_Pa_per_m + rates.phi_L3_Pa_per_m2 * x), gamma(rates.phi_L3_Pa_per_m2 / 2) {}
   StripNode at(double x) const {
     const double t = x_s - x;
     return {start.tx - alpha * t, start.ty - beta * t + gamma * t * t, start.ex, start.ey, true};
@@ -88,32 +105,68 @@ struct StickLine {
     const double px = start.tx - alpha * t, py = start.ty - beta * t + gamma * t * t;
     return px * px + py * py <= g * g;
   }
-  // the first of the nodes x[k], k = first down to last + 1, where the stick solution leaves the
-  // bound mu p (last if none). The tests are independent: they run in blocks of nodes, the last block
-  // shifted up to end at last + 1 (its nodes above k pass again). A block whose stick solution stays
-  // clearly below its smallest bound passes without the tests: for t in [t_a, t_b],
+  // with spin, Kalker's rule between the nodes of the interval [x_lo, x_hi] of the run: the kernel's
+  // interior test (detail::spin_sticks) from the stick solution at x_hi, as the kernel takes it
+  // from that node
+  bool sticks_between(double x_hi, double x_lo) const {
+    if (gamma == 0) return true;  // the node tests are the whole test
+    const StripNode hi = at(x_hi);
+    const double h = x_hi - x_lo;
+    const detail::StickExcess<double> e =
+        detail::stick_excess(alpha, detail::bound_quadratic(r), hi.tx, hi.ty, x_hi, h,
+                             detail::stick_geometry(r, detail::stick_beta(r, x_hi), h));
+    return detail::hull_excess(e) <= 0 || detail::first_crossing(e) > 1;
+  }
+  // The first of the nodes x[k], k = first down to last + 1, where the stick solution leaves the
+  // bound mu p (last if none): at the node, or with spin between it and the node above (x_s for
+  // k = first). The tests are independent: they run in blocks of nodes, the last block shifted up to
+  // end at last + 1 (its nodes above k pass again). A block whose stick solution stays clearly below
+  // its smallest bound passes without the tests: for t in [t_a, t_b],
   //   |tau(t)| <= |tau_s - (alpha, beta) t| + |gamma| t^2,
   // the first term convex in t (largest at an end), the second growing; "clearly" is a margin far
-  // above the rounding of the tests.
+  // above the rounding of the tests. With spin the block's intervals are covered, from the node above
+  // it, and the bound along them is smallest at an end (g is concave in x).
   int first_slip_node(const double* x, const double* edge_p, double mu, int first, int last) const {
     constexpr int kBlock = 16;
     using Block = Eigen::Array<double, kBlock, 1>;
     if (first - last < kBlock) {  // a short strip
       int k = first;
-      while (k > last && sticks_at(x[k], mu * edge_p[k])) --k;
+      while (k > last && sticks_at(x[k], mu * edge_p[k]) && sticks_between(k == first ? x_s : x[k + 1], x[k])) --k;
       return k;
     }
+    const bool spin = gamma != 0;
     for (int k = first; k > last; k -= kBlock) {
       const int base = std::max(k - kBlock + 1, last + 1);  // nodes base .. base + kBlock - 1
+      const int top = base + kBlock - 1;
       const double g_min = mu * Block::Map(edge_p + base).minCoeff();
-      if (below_bound(x_s - x[base + kBlock - 1], x_s - x[base], g_min)) continue;
+      if (!spin) {
+        if (below_bound(x_s - x[top], x_s - x[base], g_min)) continue;
+      } else {  // from the node above the block (edge_p is 0 outside the strip, as the bound at x_s = a)
+        const double x_above = top == first ? x_s : x[top + 1];
+        if (below_bound(x_s - x_above, x_s - x[base], std::min(g_min, mu * edge_p[top + 1]))) continue;
+      }
       const Block t = x_s - Block::Map(x + base);
       const Block px = start.tx - alpha * t, py = start.ty - beta * t + gamma * t * t;
       const Block g = mu * Block::Map(edge_p + base);
       const Block excess = px * px + py * py - g * g;  // > 0 where Kalker's test fails
-      if (excess.maxCoeff() > 0) {
-        for (int q = kBlock - 1; q >= 0; --q)
+      Block inner;  // > 0 where the interior test (spin) needs first_crossing
+      if (spin) {
+        Block x_hi = Block::Map(x + base + 1);
+        if (top == first) x_hi(kBlock - 1) = x_s;
+        const Block t_hi = x_s - x_hi;
+        const Block tx_hi = start.tx - alpha * t_hi, ty_hi = start.ty - beta * t_hi + gamma * t_hi * t_hi;
+        const Block h = x_hi - Block::Map(x + base);
+        const detail::StickExcess<Block> e = detail::stick_excess<Block, Block>(
+            alpha, detail::bound_quadratic(r), tx_hi, ty_hi, x_hi, h,
+            detail::stick_geometry<Block>(r, detail::stick_beta<Block>(r, x_hi), h));
+        inner = detail::hull_excess(e);
+      }
+      if (excess.maxCoeff() > 0 || (spin && inner.maxCoeff() > 0)) {
+        for (int q = kBlock - 1; q >= 0; --q) {
           if (excess(q) > 0) return base + q;
+          if (spin && inner(q) > 0 && !sticks_between(base + q == first ? x_s : x[base + q + 1], x[base + q]))
+            return base + q;
+        }
       }
     }
     return last;

@@ -5,7 +5,8 @@
 // is its case of a slip node inside the strip with the turn of the slip direction given, so that the
 // steady solver's slip stretches can take the turns of all their cells at once (slip_turns). The pieces
 // of the stick solution are templates, so that Satran's shift step can take them for a block of
-// intervals at once (SIMD).
+// intervals at once (SIMD). Kalker's test holds on the whole interval, not only at x_lo: with spin the
+// stick solution is a parabola that can leave the bound between two nodes (stick_excess, first_crossing).
 #pragma once
 
 #include <algorithm>
@@ -134,6 +135,162 @@ template <class T, class G>
   s.stick_length_m += t;
 }
 
+// Kalker's test on the whole interval. Over s = t/h in [0, 1] the stick solution is
+//   tau(s) = tau_hi - D s + Gm s^2 e_y,  D = (alpha h, beta h),  Gm = gamma h^2,
+// and the bound of the semi-ellipse g = G sqrt(1 - x^2/a^2), x = x_hi - h s, has
+//   g^2(s) = g_hi^2 + 2 k x_hi h s - k h^2 s^2,  k = G^2/a^2,
+// so the excess F(s) = |tau|^2 - g^2 is a quartic in s:
+//   F = d0 + d1 s + d2 s^2 + d3 s^3 + d4 s^4,  d0 = |tau_hi|^2 - g_hi^2,
+//   d1 = -2 (tau_hi . D) - 2 k x_hi h,  d2 = |D|^2 + 2 tau_y,hi Gm + k h^2,  d3 = -2 D_y Gm,  d4 = Gm^2.
+// The interval sticks if F <= 0 on all of [0, 1]. Without spin (Gm = 0) F is a convex quadratic
+// (d2 > 0), so F <= 0 at both nodes means F <= 0 in between: Kalker's test at x_lo is the whole test.
+// With spin it is not, and F is tested in Bernstein form on [0, 1], whose coefficients
+//   b0 = d0, b1 = d0 + d1/4, b2 = d0 + d1/2 + d2/6, b3 = d0 + 3 d1/4 + d2/2 + d3/4, b4 = F(1)
+// bound F from above (F is a convex combination of them): b1, b2, b3 <= 0 with the node tests (b0, b4)
+// is a sufficient pass, exact to rounding in the cases that matter. Where it fails, first_crossing
+// finds the first s where F > 0 by subdividing (de Casteljau) and a bracketed Newton step.
+// The upstream node lies within its bound (a slip node on it, to rounding): d0 is taken as min(d0, 0),
+// and as 0 for a slip node on the bound (spin_sticks), so that the test asks only whether the stick
+// solution leaves the bound after x_hi.
+
+// the strip's bound as a quadratic in x: g^2 = G2 - k x^2
+struct BoundQuadratic {
+  double G2 = 0, k = 0;  // G^2 = (mu p_j)^2 (Pa^2), k = G^2/a^2 (Pa^2/m^2)
+};
+
+inline BoundQuadratic bound_quadratic(const StripRates& r) {
+  const double G2 = r.bound_Pa * r.bound_Pa;
+  return {G2, r.a_m > 0 ? G2 / (r.a_m * r.a_m) : 0.0};
+}
+
+// min(v, 0) and max(a, b), the same lane by lane for an Eigen array of a block
+[[gnu::always_inline]] inline double nonpositive(double v) { return v > 0 ? 0.0 : v; }
+template <class D>
+[[gnu::always_inline]] inline auto nonpositive(const Eigen::ArrayBase<D>& v) {
+  using A = typename D::PlainObject;
+  return A((v > 0).select(0.0, v));
+}
+[[gnu::always_inline]] inline double larger(double a, double b) { return a < b ? b : a; }
+template <class D>
+[[gnu::always_inline]] inline auto larger(const Eigen::ArrayBase<D>& a, const Eigen::ArrayBase<D>& b) {
+  using A = typename D::PlainObject;
+  return A((a < b).select(b, a));
+}
+
+// the excess F(s) = |tau|^2 - g^2 of the stick solution over an interval: its power coefficients
+template <class T>
+struct StickExcess {
+  T d0, d1, d2, d3, d4;  // F(s) = d0 + d1 s + d2 s^2 + d3 s^3 + d4 s^4, d0 <= 0
+};
+
+template <class T, class G>
+[[gnu::always_inline]] inline StickExcess<T> stick_excess(double alpha, const BoundQuadratic& q, const T& tx,
+                                                          const T& ty, const G& x_hi, const G& h,
+                                                          const StickGeometry<G>& sg) {
+  const T Dx = alpha * h, Dy = sg.beta_t, Gm = sg.gamma_t2;
+  const T g_hi2 = q.G2 - q.k * x_hi * x_hi;
+  const T d0 = tx * tx + ty * ty - g_hi2;
+  return {nonpositive(d0), -2.0 * (tx * Dx + ty * Dy) - 2.0 * q.k * x_hi * h,
+          Dx * Dx + Dy * Dy + 2.0 * ty * Gm + q.k * h * h, -2.0 * Dy * Gm, Gm * Gm};
+}
+
+// the largest of the Bernstein coefficients b1, b2, b3 of F on [0, 1]: <= 0 means F <= max(b0, b4)
+template <class T>
+[[gnu::always_inline]] inline T hull_excess(const StickExcess<T>& e) {
+  const T b1 = e.d0 + e.d1 * 0.25;
+  const T b2 = e.d0 + e.d1 * 0.5 + e.d2 * (1.0 / 6);
+  const T b3 = e.d0 + e.d1 * 0.75 + e.d2 * 0.5 + e.d3 * 0.25;
+  return larger(b1, larger(b2, b3));
+}
+
+constexpr double kNoCrossing = 2;  // first_crossing: F <= 0 on all of [0, 1]
+
+// The first s in [0, 1] where F > 0 (kNoCrossing if none, to rounding). F(0) = d0 <= 0. Pieces of
+// [0, 1] are taken from the left: a piece whose Bernstein coefficients are all <= 0 has F <= 0; a piece
+// whose coefficients increase has F increasing, so if F > 0 at its right end the first crossing is
+// its one root, found by Newton's method kept inside the bracket; any other piece is halved.
+[[gnu::noinline]] inline double first_crossing(const StickExcess<double>& e) {
+  const double d[5] = {e.d0, e.d1, e.d2, e.d3, e.d4};
+  // on the bound at s = 0: the first nonzero term says whether F rises at once
+  if (d[0] == 0) {
+    for (int i = 1; i < 5; ++i)
+      if (d[i] != 0) {
+        if (d[i] > 0) return 0;
+        break;
+      }
+  }
+  auto F = [&](double s) { return d[0] + s * (d[1] + s * (d[2] + s * (d[3] + s * d[4]))); };
+  auto dF = [&](double s) { return d[1] + s * (2 * d[2] + s * (3 * d[3] + s * 4 * d[4])); };
+  // the root of F in (lo, hi], F(lo) <= 0 < F(hi), F increasing
+  auto root = [&](double lo, double hi) {
+    if (F(lo) > 0) return lo;
+    if (F(hi) <= 0) return hi;
+    double s = hi;
+    for (int it = 0; it < 100; ++it) {
+      const double f = F(s);
+      if (f > 0) {
+        hi = s;
+      } else {
+        lo = s;
+      }
+      const double slope = dF(s);
+      double next = slope > 0 ? s - f / slope : lo + (hi - lo) / 2;
+      if (!(next > lo && next < hi)) next = lo + (hi - lo) / 2;
+      if (std::abs(next - s) <= 4e-16 * next || hi - lo <= 4e-16 * hi) return next;
+      s = next;
+    }
+    return s;
+  };
+
+  struct Piece {
+    double s0, s1, b[5];
+    int depth;
+  };
+  constexpr int kMaxDepth = 48;  // a piece of 2^-48: a tangency within rounding
+  Piece stack[kMaxDepth + 2];
+  int n = 0;
+  stack[n++] = {0, 1,
+                {d[0], d[0] + d[1] * 0.25, d[0] + d[1] * 0.5 + d[2] * (1.0 / 6),
+                 d[0] + d[1] * 0.75 + d[2] * 0.5 + d[3] * 0.25, d[0] + d[1] + d[2] + d[3] + d[4]},
+                0};
+  while (n > 0) {
+    const Piece p = stack[--n];
+    const double* b = p.b;
+    if (std::max({b[0], b[1], b[2], b[3], b[4]}) <= 0) continue;  // F <= 0 on the piece
+    const bool rising = b[0] <= b[1] && b[1] <= b[2] && b[2] <= b[3] && b[3] <= b[4];
+    if (b[4] > 0 && (rising || p.depth >= kMaxDepth)) return root(p.s0, p.s1);
+    if (p.depth >= kMaxDepth) continue;
+    // halve (de Casteljau): the left piece is taken first
+    Piece left{p.s0, (p.s0 + p.s1) / 2, {}, p.depth + 1}, right{left.s1, p.s1, {}, p.depth + 1};
+    double w[5] = {b[0], b[1], b[2], b[3], b[4]};
+    left.b[0] = w[0];
+    right.b[4] = w[4];
+    for (int level = 1; level <= 4; ++level) {
+      for (int i = 0; i + level <= 4; ++i) w[i] = (w[i] + w[i + 1]) / 2;
+      left.b[level] = w[0];
+      right.b[4 - level] = w[4 - level];
+    }
+    stack[n++] = right;
+    stack[n++] = left;
+  }
+  return kNoCrossing;
+}
+
+// the direction in which the stick solution leaves t: tau(t) = (tx, ty), or where that is 0, its
+// first derivative in t that is not
+inline void leaving_direction(double alpha, double beta, double gamma, double t, double tx, double ty, double& ex,
+                              double& ey) {
+  double vx = tx, vy = ty;
+  if (vx == 0 && vy == 0) {
+    vx = -alpha;
+    vy = -beta + 2 * gamma * t;
+  }
+  if (vx == 0 && vy == 0) vy = gamma;
+  const double n = std::sqrt(vx * vx + vy * vy);
+  ex = vx / n;
+  ey = vy / n;
+}
+
 // the turn of the slip direction over a slip part: 1/|d| and the factor k = exp(-|d| integral ds/g)
 // by which tan(psi/2) decays
 struct SlipTurn {
@@ -228,23 +385,59 @@ template <class TurnFn>
 namespace detail {
 
 // the stick prediction at x_lo from tau at x_hi; Kalker's rule: the node sticks if the prediction
-// lies inside the bound, and then the whole interval sticks (its integrals are added to s)
+// lies inside the bound, and then, if the stick solution stays inside it over the whole interval (a
+// question only with spin), the whole interval sticks (its integrals are added to s)
 struct StickStep {
   double beta = 0, gamma = 0;  // d tau_y/dx at x_hi, and half the curvature of tau_y
   double px = 0, py = 0;       // the prediction at x_lo
-  bool stick = false;
+  bool node = false;           // Kalker's test at x_lo passes
+  bool stick = false;          // the interval sticks throughout
+  double s_cross = -1;         // with spin, where it does not: the first crossing (x_hi - x_s)/h, 0 for a
+                               // slip that goes on, > 1 for none found; -1: not asked (stick_then_slip)
 };
+
+// a slip node on its bound, to rounding (d0 of stick_excess); a slip node can lie inside it where a
+// transient rescales tau (Satran, when L changes), and it then sticks like a stick node
+constexpr double kOnBound = 1e-12;  // of G^2
+
+template <class T>
+[[gnu::always_inline]] inline auto on_bound(const T& d0, const BoundQuadratic& q) {
+  return d0 >= -kOnBound * q.G2;
+}
+
+// Spin, Kalker's test on the whole interval, asked where the node test passes or the upstream node
+// slips. A slip node on the bound has d0 = 0, and F'(0) = d1 = 2 h g (g' - e . d) is the slip's
+// dissipation density there: the slip goes on while it is positive; where it is not, the material
+// sticks again at x_hi, and the stick solution is followed to its first crossing (possibly through
+// the inside of the bound to its other side), as from a stick node.
+[[gnu::always_inline]] inline bool spin_sticks(const StripRates& r, const StripNode& hi, double x_hi, double h,
+                                               const StickGeometry<double>& sg, StickStep& k) {
+  const BoundQuadratic q = bound_quadratic(r);
+  StickExcess<double> e = stick_excess(r.alpha_Pa_per_m, q, hi.tx, hi.ty, x_hi, h, sg);
+  const bool slipping = !hi.stick && on_bound(e.d0, q);
+  if (slipping) e.d0 = 0;
+  if (k.node && hull_excess(e) <= 0) return true;
+  if (slipping && e.d1 > 0) {
+    k.s_cross = 0;
+    return false;
+  }
+  k.s_cross = first_crossing(e);
+  return k.node && k.s_cross > 1;
+}
 
 [[gnu::always_inline]] inline StickStep stick_step(const StripRates& r, const StripNode& hi, const IntervalGeometry& geo,
                                                    IntervalSums& s) {
   const double x_hi = geo.x_hi, h = x_hi - geo.x_lo;
   StickStep k;
   k.beta = stick_beta(r, x_hi);
-  const StickPrediction<double> p = stick_prediction(r.alpha_Pa_per_m, hi.tx, hi.ty, h, stick_geometry(r, k.beta, h));
+  const StickGeometry<double> sg = stick_geometry(r, k.beta, h);
+  const StickPrediction<double> p = stick_prediction(r.alpha_Pa_per_m, hi.tx, hi.ty, h, sg);
   k.gamma = r.phi_L3_Pa_per_m2 / 2;
   k.px = p.px;
   k.py = p.py;
-  k.stick = k.px * k.px + k.py * k.py <= geo.bound_lo_Pa * geo.bound_lo_Pa;
+  k.node = k.px * k.px + k.py * k.py <= geo.bound_lo_Pa * geo.bound_lo_Pa;
+  k.stick = k.node;
+  if (k.gamma != 0 && (k.node || !hi.stick)) k.stick = spin_sticks(r, hi, x_hi, h, sg, k);
   if (k.stick) add_stick(r, hi, x_hi, k.beta, k.gamma, h, s);
   return k;
 }
@@ -259,6 +452,86 @@ template <class TurnFn>
                            hi.ey, geo.load_N_per_m, geo.moment_N, turn, s);
 }
 
+namespace detail {
+
+// The interval does not stick throughout: stick from x_hi to the crossing x_s = x_hi - t_s of the stick
+// solution with the bound, slip from there to x_lo. From a stick node the crossing is located on the
+// stick solution (without spin a quadratic in t, exact; with spin the first root of the quartic F).
+// From a slip node whose stick solution fails at x_lo the interval slips throughout (t_s = 0), but with
+// spin only while the slip dissipates at x_hi (spin_sticks); else it sticks up to the crossing.
+[[gnu::always_inline]] inline StripNode stick_then_slip(const StripRates& r, const StripNode& hi,
+                                                        const IntervalGeometry& geo, const StickStep& k,
+                                                        IntervalSums& s) {
+  const double x_hi = geo.x_hi, x_lo = geo.x_lo, h = x_hi - x_lo, a = r.a_m;
+  const double alpha = r.alpha_Pa_per_m, beta = k.beta, gamma = k.gamma, px = k.px, py = k.py;
+
+  // slip at x_lo; from stick, the slip starts where the stick solution crosses the bound
+  const double G = r.bound_Pa;
+  double t_s = 0, tx0 = hi.tx, ty0 = hi.ty, ex0 = hi.ex, ey0 = hi.ey;
+  if (gamma != 0) {
+    // spin: the first crossing of the parabola (stick_step found it unless a stick node failed at x_lo);
+    // none, or past x_lo, only by rounding where the node test failed: stick up to x_lo
+    double s_cross = k.s_cross;
+    if (s_cross < 0)
+      s_cross = first_crossing(
+          stick_excess(alpha, bound_quadratic(r), hi.tx, hi.ty, x_hi, h, stick_geometry(r, beta, h)));
+    t_s = std::min(s_cross, 1.0) * h;
+  } else if (hi.stick) {
+    const double Dx = (hi.tx - px) / h, Dy = (hi.ty - py) / h;  // the stick line, straight without spin
+    const double G2a2 = G * G / (a * a);
+    const double qa = Dx * Dx + Dy * Dy + G2a2;
+    const double qb = -2 * (hi.tx * Dx + hi.ty * Dy) - 2 * G2a2 * x_hi;
+    const double qc = std::min(0.0, hi.tx * hi.tx + hi.ty * hi.ty - G * G + G2a2 * x_hi * x_hi);
+    if (qa > 0) {
+      const double root = std::sqrt(qb * qb - 4 * qa * qc);
+      t_s = std::clamp(qb <= 0 ? (-qb + root) / (2 * qa) : (-2 * qc) / (qb + root), 0.0, h);
+    }
+  }
+  if (t_s > 0) {
+    add_stick(r, hi, x_hi, beta, gamma, t_s, s);
+    tx0 = hi.tx - alpha * t_s;
+    ty0 = hi.ty - beta * t_s + gamma * t_s * t_s;
+  }
+  // the slip starts along tau at the crossing
+  if (hi.stick || t_s > 0) {
+    if (gamma != 0) {
+      leaving_direction(alpha, beta, gamma, t_s, tx0, ty0, ex0, ey0);
+    } else {
+      const double n0 = std::sqrt(tx0 * tx0 + ty0 * ty0);
+      const double np = std::sqrt(px * px + py * py);
+      ex0 = n0 > 0 ? tx0 / n0 : px / np;
+      ey0 = n0 > 0 ? ty0 / n0 : py / np;
+    }
+  }
+  const double x_s = x_hi - t_s;
+  const double dy_m = midpoint_dy(r, x_hi, x_s, x_lo);
+  // from a crossing the integrals of ds/g, p and x p over the slip part are exact
+  if (t_s > 0) {
+    const EllipsePoint ps(x_s / a), pl(x_lo / a);
+    const double Ip = r.peak_Pa * a * (ps.integral() - pl.integral());
+    const double Ixp = r.peak_Pa * a * a * (ps.moment() - pl.moment());
+    auto turn = [&] { return slip_turn(alpha, dy_m, a / G * (ps.asin_u - pl.asin_u)); };
+    return slip_part(r, geo, t_s, dy_m, tx0, ty0, ex0, ey0, Ip, Ixp, turn, s);
+  }
+  // slip throughout: the integral of ds/g is exact at the strip ends, by the midpoint rule inside
+  auto turn = [&] {
+    const double inv_g = x_hi >= a || x_lo <= -a ? a / G * (clamped_asin(x_s / a) - clamped_asin(x_lo / a))
+                                                 : midpoint_inv_g(r, x_s, x_lo);
+    return slip_turn(alpha, dy_m, inv_g);
+  };
+  return slip_part(r, geo, t_s, dy_m, tx0, ty0, ex0, ey0, geo.load_N_per_m, geo.moment_N, turn, s);
+}
+
+// stick_then_slip for an interval from a slip node that sticks again at x_hi and crosses the bound
+// inside the interval (spin), kept out of the slip loops
+[[gnu::noinline]] inline StripNode spin_stick_then_slip(const StripRates& r, const StripNode& hi,
+                                                        const IntervalGeometry& geo, const StickStep& k,
+                                                        IntervalSums& s) {
+  return stick_then_slip(r, hi, geo, k, s);
+}
+
+}  // namespace detail
+
 // march_interval for a slip node hi and an interval strictly inside the strip (-a < x_lo < x_hi < a),
 // with the turn of the slip direction from turn(): interior_slip_turn, or slip_turns for all the
 // cells of a slip stretch at once
@@ -268,12 +541,13 @@ template <class TurnFn>
                                                             IntervalSums& s) {
   const detail::StickStep k = detail::stick_step(r, hi, geo, s);
   if (k.stick) return {k.px, k.py, hi.ex, hi.ey, true};
+  if (k.s_cross > 0) return detail::spin_stick_then_slip(r, hi, geo, k, s);  // spin: sticks, then crosses
   return slip_throughout(r, hi, geo, turn, s);
 }
 
 [[gnu::always_inline]] inline StripNode march_interval(const StripRates& r, const StripNode& hi, const IntervalGeometry& geo,
                                 IntervalSums& s) {
-  const double x_hi = geo.x_hi, x_lo = geo.x_lo, h = x_hi - x_lo, a = r.a_m;
+  const double x_hi = geo.x_hi, x_lo = geo.x_lo, a = r.a_m;
 
   // from slip inside the strip, the slip direction turns by the midpoint rule
   if (!hi.stick && x_hi < a && x_lo > -a)
@@ -281,49 +555,7 @@ template <class TurnFn>
 
   const detail::StickStep k = detail::stick_step(r, hi, geo, s);
   if (k.stick) return {k.px, k.py, hi.ex, hi.ey, true};
-  const double alpha = r.alpha_Pa_per_m, beta = k.beta, gamma = k.gamma, px = k.px, py = k.py;
-
-  // slip at x_lo; from stick, the slip starts where the stick line crosses the bound
-  const double G = r.bound_Pa;
-  double t_s = 0, tx0 = hi.tx, ty0 = hi.ty, ex0 = hi.ex, ey0 = hi.ey;
-  if (hi.stick) {
-    const double Dx = (hi.tx - px) / h, Dy = (hi.ty - py) / h;  // chord of the stick line
-    const double G2a2 = G * G / (a * a);
-    const double qa = Dx * Dx + Dy * Dy + G2a2;
-    const double qb = -2 * (hi.tx * Dx + hi.ty * Dy) - 2 * G2a2 * x_hi;
-    const double qc = std::min(0.0, hi.tx * hi.tx + hi.ty * hi.ty - G * G + G2a2 * x_hi * x_hi);
-    if (qa > 0) {
-      const double root = std::sqrt(qb * qb - 4 * qa * qc);
-      t_s = std::clamp(qb <= 0 ? (-qb + root) / (2 * qa) : (-2 * qc) / (qb + root), 0.0, h);
-    }
-    if (t_s > 0) {
-      detail::add_stick(r, hi, x_hi, beta, gamma, t_s, s);
-      tx0 = hi.tx - alpha * t_s;
-      ty0 = hi.ty - beta * t_s + gamma * t_s * t_s;
-    }
-    const double n0 = std::sqrt(tx0 * tx0 + ty0 * ty0);
-    const double np = std::sqrt(px * px + py * py);
-    ex0 = n0 > 0 ? tx0 / n0 : px / np;
-    ey0 = n0 > 0 ? ty0 / n0 : py / np;
-  }
-  const double x_s = x_hi - t_s;
-  const double dy_m = detail::midpoint_dy(r, x_hi, x_s, x_lo);
-  // from a crossing the integrals of ds/g, p and x p over the slip part are exact
-  if (t_s > 0) {
-    const detail::EllipsePoint ps(x_s / a), pl(x_lo / a);
-    const double Ip = r.peak_Pa * a * (ps.integral() - pl.integral());
-    const double Ixp = r.peak_Pa * a * a * (ps.moment() - pl.moment());
-    auto turn = [&] { return detail::slip_turn(alpha, dy_m, a / G * (ps.asin_u - pl.asin_u)); };
-    return detail::slip_part(r, geo, t_s, dy_m, tx0, ty0, ex0, ey0, Ip, Ixp, turn, s);
-  }
-  // slip throughout: the integral of ds/g is exact at the strip ends, by the midpoint rule inside
-  auto turn = [&] {
-    const double inv_g = x_hi >= a || x_lo <= -a
-                             ? a / G * (detail::clamped_asin(x_s / a) - detail::clamped_asin(x_lo / a))
-                             : detail::midpoint_inv_g(r, x_s, x_lo);
-    return detail::slip_turn(alpha, dy_m, inv_g);
-  };
-  return detail::slip_part(r, geo, t_s, dy_m, tx0, ty0, ex0, ey0, geo.load_N_per_m, geo.moment_N, turn, s);
+  return detail::stick_then_slip(r, hi, geo, k, s);
 }
 
 // The slip turns of the cells first down to last, as interior_slip_turn gives them (x[i] = x_edge(i)),

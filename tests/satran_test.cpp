@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <ostream>
 #include <stdexcept>
 #include <vector>
 
@@ -64,6 +65,79 @@ TEST(Satran, SteadyStateEqualsSteadySolverToRounding) {
   EXPECT_NEAR(last.stick_fraction, s.stick_fraction, kRounding);
   for (int j = 0; j < 40; ++j)
     EXPECT_NEAR(last_strips(j), s.strip_power_W_per_m(j), kRounding * s.strip_power_W_per_m.maxCoeff());
+}
+
+// Spin on grids coarse along x, where the stick parabola rises over the bound between nodes and slip
+// nodes stick again (lib/strip_march.h, detail::spin_sticks): the shift scheme's steady state must
+// still be the steady solver's to rounding, so that the SIMD stick pass, the whole kernel and the steady
+// solver's stick runs make the same decisions. Checked against solve_steady; along the way every step's
+// path means of tau stay within mu p (a snapshot at the end, and |F| <= mu F).
+struct SpinCase {
+  int n;
+  Creepages c;
+};
+void PrintTo(const SpinCase& c, std::ostream* os) {
+  *os << c.n << " x " << c.n << ", creepages " << c.c.xi << " " << c.c.eta << " " << c.c.phi_per_m;
+}
+class SatranSpin : public testing::TestWithParam<SpinCase> {};
+TEST_P(SatranSpin, SteadyStateEqualsSteadySolverToRounding) {
+  const SpinCase sc = GetParam();
+  TransientCase tc = paper_case(1.8, sc.c, sc.n);
+  const ContactPatch p = solve_normal_hertz(tc.bodies, tc.materials, 1500, tc.settings.grid);
+  // whole shift steps (dq = dx), steady from step n + 1 on: step n + 1 takes the SIMD stick pass, step
+  // n + 2 computes a snapshot (every interval through the whole kernel), then a part step ends the run
+  const double dt = p.grid.dx_m / 1.8;
+  tc.settings.t_end_s = (sc.n + 2.5) * dt;
+  tc.settings.snapshot_times_s = {(sc.n + 2) * dt};
+  std::vector<TransientRecord> steady;
+  std::vector<Eigen::ArrayXd> steady_strips;
+  const TransientResult res = run_transient(tc, [&](const TransientRecord& r, const Eigen::ArrayXd& strips) {
+    if (r.cfl != 1.0) return;  // the part step at the end
+    EXPECT_LE(std::hypot(r.Fx_N, r.Fy_N), 0.3 * 1500 * (1 + 1e-12)) << "step " << r.step;
+    if (r.step > sc.n) {
+      steady.push_back(r);
+      steady_strips.push_back(strips);
+    }
+  });
+  ASSERT_EQ(steady.size(), 2u);
+  const TangentialSolution s = solve_steady(p, make_tangential_problem(p, tc.materials, sc.c, 0.3, 1.8));
+  constexpr double kRounding = 1e-12;
+  const double F = std::hypot(s.Fx_N, s.Fy_N);
+  for (std::size_t k = 0; k < steady.size(); ++k) {
+    const TransientRecord& r = steady[k];
+    EXPECT_NEAR(r.Fx_N, s.Fx_N, kRounding * F) << "step " << r.step;
+    EXPECT_NEAR(r.Fy_N, s.Fy_N, kRounding * F) << "step " << r.step;
+    EXPECT_NEAR(r.Mz_N_m / s.Mz_N_m, 1, kRounding) << "step " << r.step;
+    EXPECT_NEAR(r.power_W / s.power_W, 1, kRounding) << "step " << r.step;
+    EXPECT_NEAR(r.stick_fraction, s.stick_fraction, kRounding) << "step " << r.step;
+    for (int j = 0; j < sc.n; ++j)
+      EXPECT_NEAR(steady_strips[k](j), s.strip_power_W_per_m(j), kRounding * s.strip_power_W_per_m.abs().maxCoeff())
+          << "step " << r.step << ", strip " << j;
+  }
+  ASSERT_EQ(res.snapshots.size(), 1u);
+  const Snapshot& snap = res.snapshots[0];
+  const Eigen::ArrayXXd tau = (snap.tau_x_Pa.square() + snap.tau_y_Pa.square()).sqrt();
+  EXPECT_LE(((tau - 0.3 * snap.pressure_Pa) / (0.3 * p.p0_Pa)).maxCoeff(), 1e-12);
+}
+INSTANTIATE_TEST_SUITE_P(Cases, SatranSpin,
+                         testing::Values(SpinCase{5, {0, 0, 100}}, SpinCase{8, {0, 3e-3, -30}},
+                                         SpinCase{12, {2e-4, 0, 60}}, SpinCase{6, {1e-3, 5e-4, 30}},
+                                         SpinCase{20, {0, 5e-4, 30}}));
+
+// Coulomb with mu = 0: no traction anywhere, so no force, moment or dissipation at any step, spin or not.
+TEST(Satran, FrictionlessSpinGivesNoForce) {
+  TransientCase tc = paper_case(1.8, {1e-3, 5e-4, 30}, 12);
+  tc.mu = 0;
+  tc.inputs.phi_per_m = ramp_history(0, 100, 1e-4, -30);
+  tc.settings.t_end_s = 2e-4;
+  const std::vector<TransientRecord> rows = run(tc);
+  ASSERT_GE(rows.size(), 10u);
+  for (const TransientRecord& r : rows) {
+    EXPECT_EQ(r.Fx_N, 0) << "step " << r.step;
+    EXPECT_EQ(r.Fy_N, 0) << "step " << r.step;
+    EXPECT_EQ(r.Mz_N_m, 0) << "step " << r.step;
+    EXPECT_EQ(r.power_W, 0) << "step " << r.step;
+  }
 }
 
 // Issue #3: |Fx(q) - Fx_closed_form(q)| within 0.5 % of |Fx_steady| for all q, 80 x 80. The

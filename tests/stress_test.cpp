@@ -240,13 +240,19 @@ constexpr double kSkipTol = 1e-9;          // the steady skips against marching 
 
 // Known findings (issue #6 stress suite; each kept as a DISABLED_ test below, counted here so the
 // sweep stays green while the rest is asserted):
-//   spin      the consistent scheme with spin (phi != 0) lets cell means of |tau| exceed mu p, and a
-//             strip's dissipation go slightly negative: StressSteady.DISABLED_SpinKeepsTractionWithinTheBound
+//   restick   with spin (phi != 0) the creep rate d = (alpha, eta/L2 + phi x/L3) turns along a strip, and a
+//             slip part of the consistent scheme cannot stick again inside an interval (lib/strip_march.h:
+//             one stick part, then one slip part): where the slip should stop within a cell, it goes on
+//             against the creep, and a strip's dissipation can go negative. Only on grids coarse along x
+//             (nx <= 12 in this sweep): StressSteady.DISABLED_SpinSlipSticksAgainInsideAnInterval
 // (Fixed: "classic", FASTSIM's stick fraction above 1: it counted dx of stick per cell centre inside
 // |x| < a_j against the exact 2 a_j; it now divides by the length it counts.)
+// (Finding "spin", |tau| above mu p between the nodes and forces at mu = 0, is fixed: Kalker's test
+// holds on the whole interval, detail::spin_sticks; asserted below for every case.)
 struct SteadyTally {
-  int spin_bound = 0, spin_negative_power = 0, spin_field_power = 0;
-  double spin_worst = 0;
+  int restick_negative_power = 0;
+  int restick_nx_max = 0;  // the finest grid along x where it was seen
+  double restick_worst = 0;  // the most negative strip dissipation, of its scale
 };
 
 TEST(StressSteady, RandomCasesStayFiniteBoundedAndBalanced) {
@@ -306,17 +312,10 @@ TEST(StressSteady, RandomCasesStayFiniteBoundedAndBalanced) {
       const Eigen::ArrayXXd excess = tau - bound * (1 + kBoundRounding) - kBoundRounding * mu * patch.p0_Pa;
       Eigen::Index ei = 0, ej = 0;
       const double worst_excess = excess.maxCoeff(&ei, &ej);
-      if (consistent && spin) {  // finding "spin": counted
-        if (worst_excess > 0) {
-          ++tally.spin_bound;
-          tally.spin_worst = std::max(tally.spin_worst, (tau - bound).maxCoeff() / (mu * patch.p0_Pa));
-        }
-      } else {
-        ASSERT_LE(worst_excess, 0) << w << ": |tau| " << tau(ei, ej) << " Pa > mu p " << bound(ei, ej)
-                                   << " Pa at cell (" << ei << ", " << ej << ")";
-        // the creep force cannot exceed mu times the load (classic: the load its centre values integrate to)
-        ASSERT_LE(std::hypot(s.Fx_N, s.Fy_N), bound.sum() * patch.grid.dx_m * patch.grid.dy_m * (1 + 1e-9)) << w;
-      }
+      ASSERT_LE(worst_excess, 0) << w << ": |tau| " << tau(ei, ej) << " Pa > mu p " << bound(ei, ej)
+                                 << " Pa at cell (" << ei << ", " << ej << ")";
+      // the creep force cannot exceed mu times the load (classic: the load its centre values integrate to)
+      ASSERT_LE(std::hypot(s.Fx_N, s.Fy_N), bound.sum() * patch.grid.dx_m * patch.grid.dy_m * (1 + 1e-9)) << w;
       ASSERT_GE(s.stick_fraction, 0) << w;
       ASSERT_LE(s.stick_fraction, 1 + 1e-12) << w;  // classic: of the length its cell centres count
       // dissipation >= 0 strip by strip; nothing dissipated without speed or friction
@@ -324,27 +323,29 @@ TEST(StressSteady, RandomCasesStayFiniteBoundedAndBalanced) {
       // cancel to nearly 0 on a strip at y = 0 in pure spin)
       const double pscale = s.strip_creep_power_W_per_m.abs().maxCoeff() + s.strip_trailing_W_per_m.abs().maxCoeff() +
                             s.strip_power_W_per_m.abs().maxCoeff() + V * pb.L_m_per_Pa * std::pow(mu * patch.p0_Pa, 2);
-      if (consistent && spin) {  // finding "spin": counted
-        tally.spin_negative_power += s.strip_power_W_per_m.minCoeff() < -kStripEnergyTol * pscale;
+      const double min_strip_power = s.strip_power_W_per_m.minCoeff();
+      if (consistent && spin && min_strip_power < -kStripEnergyTol * pscale) {  // finding "restick": counted
+        ++tally.restick_negative_power;
+        tally.restick_nx_max = std::max(tally.restick_nx_max, nx);
+        tally.restick_worst = std::min(tally.restick_worst, min_strip_power / pscale);
       } else {
         for (int j = 0; j < ny; ++j) {
           ASSERT_GE(s.strip_power_W_per_m(j), -kStripEnergyTol * pscale) << w << ": strip " << j;
         }
       }
-      if ((V == 0 || mu == 0) && !(consistent && spin)) {  // finding "spin": not so with spin
+      // nothing dissipated without speed or friction; no force without friction, spin or not (with
+      // mu = 0 the bound is 0 everywhere, so tau = 0 on every interval, to the bit)
+      if (V == 0 || mu == 0) {
         ASSERT_EQ(s.power_W, 0) << w;
       }
-      if (mu == 0 && !(consistent && spin)) {  // finding "spin": with mu = 0 it still has tractions
+      if (mu == 0) {
         ASSERT_EQ(std::hypot(s.Fx_N, s.Fy_N), 0) << w;
+        ASSERT_EQ(s.Mz_N_m, 0) << w;
       }
-      // the grid field and the strips carry the same power (finding "spin": not so with spin, counted)
+      // the grid field and the strips carry the same power
       const double cell = patch.grid.dx_m * patch.grid.dy_m;
       const double field_tol = kTotalsTol * (pscale * patch.grid.dy_m * ny) + 1e-300;
-      if (consistent && spin) {
-        tally.spin_field_power += std::abs(s.power_W_per_m2.sum() * cell - s.power_W) > field_tol;
-      } else {
-        ASSERT_NEAR(s.power_W_per_m2.sum() * cell, s.power_W, field_tol) << w;
-      }
+      ASSERT_NEAR(s.power_W_per_m2.sum() * cell, s.power_W, field_tol) << w;
       ASSERT_NEAR(s.strip_power_W_per_m.sum() * patch.grid.dy_m, s.power_W,
                   kTotalsTol * (pscale * patch.grid.dy_m * ny) + 1e-300)
           << w;
@@ -379,27 +380,24 @@ TEST(StressSteady, RandomCasesStayFiniteBoundedAndBalanced) {
   });
   std::printf("  a/b covered %.3g .. %.3g; worst strip energy residual %.2e (tol %.0e)\n", ab_min, ab_max, worst_energy,
               kStripEnergyTol);
-  std::printf("  known findings: consistent with spin: %d cases above mu p (worst by %.3g mu p0), %d with a strip's "
-              "dissipation < 0, %d whose power field does not sum to the strips' power\n",
-              tally.spin_bound, tally.spin_worst, tally.spin_negative_power, tally.spin_field_power);
+  std::printf("  known findings: restick (consistent, spin): %d cases with a strip's dissipation < 0 (worst %.3g of "
+              "its scale, grids up to nx %d)\n",
+              tally.restick_negative_power, tally.restick_worst, tally.restick_nx_max);
   if (loop.run_count() > 100) {
     EXPECT_LT(ab_min, 0.01);
     EXPECT_GT(ab_max, 100);
   }
 }
 
-// Finding "spin" (issue #6 stress suite): the consistent scheme with spin lets |tau| exceed mu p.
-// Kalker's test is made at the nodes only (strip_march.h, stick_step: |tau(x_lo)| <= mu p(x_lo)),
-// while with spin the stick solution within an interval is a parabola in x (gamma t^2) that can rise
-// above the semi-elliptic bound between two nodes that pass; the cell means written from that
-// reconstruction then exceed mu times the cell's mean pressure. Gross on coarse grids along x, small
-// on fine ones. Found by StressSteady.RandomCasesStayFiniteBoundedAndBalanced (base seed 20240606,
-// e.g. case 1061: 5x5, pure spin, centre cell 5.3x over the bound; case 1359: 45x57, 1.5 % over).
-// The paper's contact reproduces it: 5 x 5, phi = 100 1/m: 0.12 mu p0 above; 1 x 1, phi = 30 1/m:
-// 0.51 mu p0 above. With mu = 0 and spin the forces are not 0 (case 3174: 13 x 9, phi -206.8 1/m,
-// |F| 7.3 N), and a strip's dissipation can be < 0 (case 1459: 15 x 3, phi 44.35 1/m: P_l -1.9e-7 W/m);
-// Satran's shift steps share the kernel (final |tau| above mu p, steps with power < 0). Enable when fixed.
-TEST(StressSteady, DISABLED_SpinKeepsTractionWithinTheBound) {
+// Finding "spin" (issue #6 stress suite), fixed: the consistent scheme with spin let |tau| exceed mu p.
+// Kalker's test was made at the nodes only, while with spin the stick solution within an interval is a
+// parabola in x (gamma t^2) that can rise above the semi-elliptic bound between two nodes that pass
+// (base seed 20240606, case 1061: 5x5, pure spin, centre cell 5.3x over the bound; the paper's contact
+// 5 x 5, phi = 100 1/m: 0.12 mu p0 above; 1 x 1, phi = 30 1/m: 0.51 mu p0 above; with mu = 0 forces
+// of 7.3 N in case 3174). Now the interval sticks only if |tau| <= g on all of it (detail::spin_sticks),
+// and the stick part ends at the first crossing of the parabola. Checks against the Coulomb bound:
+// cell means of |tau| <= mu times the cell's mean pressure, and no force at mu = 0.
+TEST(StressSteady, SpinKeepsTractionWithinTheBound) {
   const ElasticPair steel{{210e9, 0.28}, {210e9, 0.28}};
   for (const auto& [n, phi] : {std::pair{5, 100.0}, std::pair{1, 30.0}, std::pair{3, 30.0}, std::pair{5, 30.0}}) {
     const ContactPatch p = solve_normal_hertz({{0.020, 0.500}, {0.025, kFlat}}, steel, 1500, {n, n});
@@ -407,6 +405,47 @@ TEST(StressSteady, DISABLED_SpinKeepsTractionWithinTheBound) {
     const Eigen::ArrayXXd tau = (s.tau_x_Pa.square() + s.tau_y_Pa.square()).sqrt();
     EXPECT_LE(((tau - 0.3 * p.pressure_Pa) / (0.3 * p.p0_Pa)).maxCoeff(), kBoundRounding)
         << "paper's contact, " << n << " x " << n << ", pure spin phi " << phi << " 1/m, mu 0.3";
+    const TangentialSolution f = solve_steady(p, make_tangential_problem(p, steel, {0, 0, phi}, 0.0, 1.0));
+    EXPECT_EQ(f.Fx_N, 0) << n << " x " << n << ", mu 0";
+    EXPECT_EQ(f.Fy_N, 0) << n << " x " << n << ", mu 0";
+    EXPECT_EQ(f.Mz_N_m, 0) << n << " x " << n << ", mu 0";
+  }
+}
+
+// Finding "restick" (issue #6 stress suite, found while fixing "spin"): with spin the creep rate
+// d = (alpha, eta/L2 + phi x/L3) turns along a strip, and where it turns within one interval the slip
+// should stop inside it and the material stick again (the slip's dissipation density g (g' - e . d)
+// falls to 0 there). The kernel (lib/strip_march.h) has one stick part and then one slip part per
+// interval: a slip node sticks again only at the interval's upstream node (where that density is <= 0
+// at x_hi), so a slip that should stop inside a cell goes on to x_lo against the creep and dissipates
+// < 0. Seen only on grids coarse along x: base seed 20240606, 38 cases, all with nx <= 12 (case 14116:
+// 1 x 36, P_l -0.17 of its scale; case 19349: 6 x 27, -0.028). The paper's contact on 1 x 5 in pure spin,
+// phi = 30 1/m: the centre strip's P_l is -12 W/m (stick to the crossing, then one slip part to the
+// trailing edge, against the creep beyond x = 0). Checks against PHYSICS.md §4: P_l = -integral(tau . s)
+// >= 0 for Coulomb friction. Enable when a slip part can stick again inside an interval.
+TEST(StressSteady, DISABLED_SpinSlipSticksAgainInsideAnInterval) {
+  struct Case {
+    Bodies bodies;
+    ElasticPair materials;
+    double load_N;
+    int nx, ny;
+    Creepages c;
+    double mu, V;
+  };
+  const ElasticPair steel{{210e9, 0.28}, {210e9, 0.28}};
+  const Bodies paper{{0.020, 0.500}, {0.025, kFlat}};
+  for (const Case& k : {Case{paper, steel, 1500, 1, 5, {0, 0, 30}, 0.3, 1.0},
+                        Case{paper, steel, 1500, 3, 5, {0, 3e-3, -30}, 0.3, 1.0},
+                        Case{{{0.00221978, 1.06586e-05}, {0.0437607, kFlat}},
+                             {{1.16e11, 0.1803}, {1.308e11, 0.1892}}, 144.068, 6, 27,
+                             {-3.48164e-06, -2.34969e-05, -306.233}, 0.713406, 62.7258}}) {
+    const ContactPatch p = solve_normal_hertz(k.bodies, k.materials, k.load_N, {k.nx, k.ny});
+    const TangentialProblem pb = make_tangential_problem(p, k.materials, k.c, k.mu, k.V);
+    const TangentialSolution s = solve_steady(p, pb);
+    const double pscale = s.strip_creep_power_W_per_m.abs().maxCoeff() + s.strip_trailing_W_per_m.abs().maxCoeff() +
+                          s.strip_power_W_per_m.abs().maxCoeff() + k.V * pb.L_m_per_Pa * std::pow(k.mu * p.p0_Pa, 2);
+    EXPECT_GE(s.strip_power_W_per_m.minCoeff(), -kStripEnergyTol * pscale)
+        << k.nx << " x " << k.ny << ", creepages " << k.c.xi << " " << k.c.eta << " " << k.c.phi_per_m << " 1/m";
   }
 }
 
@@ -461,8 +500,9 @@ std::string history_text(const History& h) {
 constexpr int kSatranCases = 3000;
 constexpr double kStepBalanceTol = 1e-9;  // |balance residual| / (power + elastic energy scale / dt)
 
-// Known findings, counted (see the steady ones above): "spin" (shift applies the steady kernel: steps
-// with power < 0 with spin) and
+// Known findings, counted (see the steady ones above): "negative power" (steps with power < 0: exact
+// shift steps without spin, and the node-based fallback steps, not analysed yet; with spin the exact
+// shift steps share the steady kernel and its finding "restick", none in this sweep), and
 // "node forces": upwind, lax-friedrichs and shift's fallback steps sum node tractions times dx (every
 // node inside the strip gets a whole dx), so |F| can exceed mu F on coarse grids while every node
 // keeps |tau| <= mu p (up to 24 % on a 2 x 6 grid, 0.08 % on 16 x 12 in the sweep): reported, not a
@@ -470,9 +510,8 @@ constexpr double kStepBalanceTol = 1e-9;  // |balance residual| / (power + elast
 struct SatranTally {
   double worst_balance = 0;
   long steps = 0;
-  int spin_negative_power = 0, node_forces = 0,
-      snapshot_bound = 0;
-  double node_forces_worst = 0;
+  int negative_power = 0, restick_negative_power = 0, node_forces = 0, snapshot_bound = 0, rescale_forces = 0;
+  double node_forces_worst = 0, rescale_forces_worst = 0;
 };
 
 void satran_case(Rng& r, const std::string& tag, TransientScheme scheme, SatranTally& tally, bool strict = false) {
@@ -551,6 +590,11 @@ void satran_case(Rng& r, const std::string& tag, TransientScheme scheme, SatranT
   }
   tally.steps += static_cast<long>(rows.size());
   const bool spin = tc.inputs.phi_per_m.value.front() != 0 || tc.inputs.phi_per_m.value.back() != 0;
+  // Kalker's mean flexibility L is constant when the creepages' ratio is: else tau = u/L is rescaled as L
+  // changes (lib/satran.h), which can leave tractions above mu p (finding "rescale": with spin, whose
+  // flexibility L3 differs most from L1 and L2, it reaches |F| 1.1 mu F in the sweep; reported)
+  const bool steady_flexibility = is_constant(tc.inputs.xi) && is_constant(tc.inputs.eta) &&
+                                  is_constant(tc.inputs.phi_per_m) && !load_ramp;
   ASSERT_TRUE(finite) << what << ": not finite at " << first_bad;
   ASSERT_FALSE(rows.empty()) << what;
   ASSERT_NEAR(res.t_end_s / t_end, 1, 1e-12) << what;
@@ -567,11 +611,16 @@ void satran_case(Rng& r, const std::string& tag, TransientScheme scheme, SatranT
     tally.worst_balance = std::max(tally.worst_balance, rel);
     ASSERT_LE(rel, kStepBalanceTol) << at << ": balance residual " << rec.balance_residual_W << " W against " << scale_W
                                     << " W";
-    if (!strict) {
-      // findings "spin" and "negative power": steps with power < 0 beyond rounding, with spin and
-      // without (shift case 1151 of the sweep: -3.2e-4 W; lax-friedrichs case 118: -0.29 W): counted,
-      // not analysed yet
-      tally.spin_negative_power += rec.power_W < -kStepBalanceTol * scale_W;
+    const bool exact_shift = scheme == TransientScheme::Shift && rec.cfl == 1;
+    if (!strict && rec.power_W < -kStepBalanceTol * scale_W) {
+      // findings "negative power" (steps with power < 0 beyond rounding without spin, or in the fallback
+      // steps: shift case 1151 of the sweep, -1.2e-4 of the scale; lax-friedrichs case 118: -0.29 W) and
+      // "restick" (exact shift steps with spin: the steady kernel's finding; none in the sweep): counted
+      if (exact_shift && spin) {
+        ++tally.restick_negative_power;
+      } else {
+        ++tally.negative_power;
+      }
     } else {
       ASSERT_GE(rec.power_W, -kStepBalanceTol * scale_W) << at;
     }
@@ -583,11 +632,15 @@ void satran_case(Rng& r, const std::string& tag, TransientScheme scheme, SatranT
                                     value_at(tc.inputs.normal_load_N, rec.t_s),
                                     value_at(tc.inputs.normal_load_N, rec.t_s + rec.dt_s)});
     const double F = std::hypot(rec.Fx_N, rec.Fy_N);
-    const bool exact_shift = scheme == TransientScheme::Shift && rec.cfl == 1;
     ASSERT_LE(rec.stick_fraction, 1 + 1e-12) << at;  // node-based steps: of the length their nodes count
-    if (exact_shift && !spin) {
+    if (exact_shift && (!spin || steady_flexibility)) {  // the path means of tau within mu p
       ASSERT_LE(F, tc.mu * F_step * (1 + 1e-9)) << at;
-    } else if (!exact_shift) {  // finding "node forces": counted
+    } else if (exact_shift) {  // finding "rescale": counted
+      if (F > tc.mu * F_step * (1 + 1e-9)) {
+        ++tally.rescale_forces;
+        tally.rescale_forces_worst = std::max(tally.rescale_forces_worst, F / (tc.mu * F_step) - 1);
+      }
+    } else {  // finding "node forces": counted
       if (F > tc.mu * F_step * (1 + 1e-9)) {
         ++tally.node_forces;
         tally.node_forces_worst = std::max(tally.node_forces_worst, F / (tc.mu * F_step) - 1);
@@ -622,8 +675,8 @@ void satran_case(Rng& r, const std::string& tag, TransientScheme scheme, SatranT
                         << " Pa, mu p " << bound << " Pa";
       }
   }
-  // snapshots: finite; and within the bound for exact shift steps (constant speed > 0) at a constant load
-  // without spin (step means of tau and of p; upwind's fields are node values halved onto cells)
+  // snapshots: finite; and within the bound for exact shift steps (constant speed > 0) at a constant load,
+  // spin or not (step means of tau and of p; upwind's fields are node values halved onto cells)
   // and every input constant: a changing creepage ratio changes L, and tau = u/L is rescaled (lib/satran.h),
   // which the sweep found to leave snapshot means above mu p (finding "rescale", reported)
   const bool exact_steps = scheme == TransientScheme::Shift && is_constant(tc.inputs.speed_m_per_s) && Vmax > 0 &&
@@ -632,12 +685,14 @@ void satran_case(Rng& r, const std::string& tag, TransientScheme scheme, SatranT
     ASSERT_TRUE(all_finite(s.tau_x_Pa) && all_finite(s.tau_y_Pa) && all_finite(s.slip_x_m_per_s) &&
                 all_finite(s.slip_y_m_per_s) && all_finite(s.pressure_Pa))
         << what << ": snapshot at " << s.t_s << " s not finite";
-    if (!load_ramp && exact_steps && !spin) {
+    if (!load_ramp && exact_steps) {
       const Eigen::ArrayXXd tau = (s.tau_x_Pa.square() + s.tau_y_Pa.square()).sqrt();
       const double excess =
           (tau - tc.mu * s.pressure_Pa * (1 + kBoundRounding) - kBoundRounding * tc.mu * hmax.p0_Pa).maxCoeff();
       // finding "snapshot": step means above mu p with every input constant (shift cases 513, 961 of the
-      // sweep, 0.3-0.7 % of mu p0): counted, not analysed yet
+      // sweep, up to 0.12 mu p0): counted, not analysed yet. In all 8 of the sweep (3 with spin) the
+      // snapshot's step is a fallback step at CFL < 1 (the longest step dt_s rolls less than dx), whose
+      // fields are node values, not the kernel's path means
       if (excess > 0 && !strict) {
         ++tally.snapshot_bound;
         continue;
@@ -650,10 +705,11 @@ void satran_case(Rng& r, const std::string& tag, TransientScheme scheme, SatranT
 void print_tally(const SatranTally& t) {
   std::printf("  %ld steps; worst step balance residual %.2e of the scale (tol %.0e)\n", t.steps, t.worst_balance,
               kStepBalanceTol);
-  std::printf("  snapshots above mu p at constant inputs: %d\n", t.snapshot_bound);
-  std::printf("  known findings: %d steps with power < 0 (spin or not); node-counting steps: "
-              "%d with |F| > mu F (worst by %.3g)\n",
-              t.spin_negative_power, t.node_forces, t.node_forces_worst);
+  std::printf("  snapshots above mu p at constant inputs: %d; exact shift steps with spin and a changing L: %d with |F| > "
+              "mu F (worst by %.3g)\n", t.snapshot_bound, t.rescale_forces, t.rescale_forces_worst);
+  std::printf("  known findings: negative power: %d steps with power < 0 (restick, exact shift steps with spin: %d); "
+              "node-counting steps: %d with |F| > mu F (worst by %.3g)\n",
+              t.negative_power, t.restick_negative_power, t.node_forces, t.node_forces_worst);
 }
 
 TEST(StressSatran, ShiftRandomHistoriesKeepTheBoundAndTheEnergyBalance) {
