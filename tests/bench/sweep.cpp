@@ -503,6 +503,15 @@ Row skip_row(const std::string& case_name, const std::string& skip, int n, bool 
   return r;
 }
 
+// the duty cycle of cases/start-stop-wear.yaml on its unworn contact, as the wear loop runs it
+TransientCase start_stop_duty_cycle() {
+  const wear::WearModel m = wear::make_wear_model(wear::read_wear_case(kSource + "/cases/start-stop-wear.yaml"));
+  wear::WearCache cache;
+  TransientCase t = *m.transient;
+  t.patch = wear::normal_state(m, wear::initial_state(m), cache).normal.patch;
+  return t;
+}
+
 // Each block times its rows with and without the skip, interleaved, before its locals go; the 'on'
 // row's err_* cells hold the change the skip makes to a result, relative (0 = none, bit for bit).
 void skips_study(const Options& o, std::vector<Row>& rows) {
@@ -566,11 +575,7 @@ void skips_study(const Options& o, std::vector<Row>& rows) {
   // 2. Satran's skip_steady: the start-stop duty cycle of cases/start-stop-wear.yaml (40 x 40, 0.5 s at 1.8 m/s)
   {
     begin();
-    const wear::WearCase c = wear::read_wear_case(kSource + "/cases/start-stop-wear.yaml");
-    const wear::WearModel m = wear::make_wear_model(c);
-    wear::WearCache cache;
-    TransientCase t = *m.transient;
-    t.patch = wear::normal_state(m, wear::initial_state(m), cache).normal.patch;
+    TransientCase t = start_stop_duty_cycle();
     TransientCase without = t;
     without.settings.skip_steady = false;
     t.settings.skip_steady = true;
@@ -734,11 +739,7 @@ void skips_study(const Options& o, std::vector<Row>& rows) {
     add(skip_row("paper", "mirror-steady", 80, false, "all 80 strips"),
         [&] { return solve_steady(p, pb, TangentialScheme::Consistent, SteadyOptions{false, false}).power_W; });
 
-    const wear::WearCase wc = wear::read_wear_case(kSource + "/cases/start-stop-wear.yaml");
-    const wear::WearModel m = wear::make_wear_model(wc);
-    wear::WearCache cache;
-    TransientCase t = *m.transient;
-    t.patch = wear::normal_state(m, wear::initial_state(m), cache).normal.patch;
+    const TransientCase t = start_stop_duty_cycle();
     TransientCase all = t;
     all.settings.skip_mirrored = false;
     const TransientResult ta = run_transient(t), tb = run_transient(all);
