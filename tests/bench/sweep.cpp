@@ -503,6 +503,14 @@ Row skip_row(const std::string& case_name, const std::string& skip, int n, bool 
   return r;
 }
 
+// the change a transient skip makes: the run's energy and its strip energies, with against without
+void transient_change(Row& on, const TransientResult& with, const TransientResult& without) {
+  on.err_P = rel(with.dissipated_J, without.dissipated_J);
+  on.err_strip_P = (with.strip_energy_J_per_m - without.strip_energy_J_per_m).abs().maxCoeff() /
+                   without.strip_energy_J_per_m.abs().maxCoeff();
+  on.steps = with.steps;
+}
+
 // the duty cycle of cases/start-stop-wear.yaml on its unworn contact, as the wear loop runs it
 TransientCase start_stop_duty_cycle() {
   const wear::WearModel m = wear::make_wear_model(wear::read_wear_case(kSource + "/cases/start-stop-wear.yaml"));
@@ -583,10 +591,7 @@ void skips_study(const Options& o, std::vector<Row>& rows) {
     Row on = skip_row("start-stop-wear", "satran-skip-steady", t.patch->grid.nx, true,
                       "the same duty cycle without skip_steady (test "
                       "SatranSkip.SteadyStretchSkippedChangesNothingButTheStepCount)");
-    on.err_P = rel(a.dissipated_J, b.dissipated_J);
-    on.err_strip_P = (a.strip_energy_J_per_m - b.strip_energy_J_per_m).abs().maxCoeff() /
-                     b.strip_energy_J_per_m.abs().maxCoeff();
-    on.steps = a.steps;
+    transient_change(on, a, b);
     add(on, [&] { return run_transient(t).dissipated_J; });
     Row off = skip_row("start-stop-wear", "satran-skip-steady", t.patch->grid.nx, false, "every step of the duty cycle");
     off.steps = b.steps;
@@ -746,10 +751,7 @@ void skips_study(const Options& o, std::vector<Row>& rows) {
     Row ton = skip_row("start-stop-wear", "mirror-satran", t.patch->grid.nx, true,
                        "the duty cycle (skip_steady on) stepping half the strips against all (test "
                        "SatranSkip.MirroredStripsChangeNothing)");
-    ton.err_P = rel(ta.dissipated_J, tb.dissipated_J);
-    ton.err_strip_P = (ta.strip_energy_J_per_m - tb.strip_energy_J_per_m).abs().maxCoeff() /
-                      tb.strip_energy_J_per_m.abs().maxCoeff();
-    ton.steps = ta.steps;
+    transient_change(ton, ta, tb);
     add(ton, [&] { return run_transient(t).dissipated_J; }, 200);
     Row toff = skip_row("start-stop-wear", "mirror-satran", t.patch->grid.nx, false, "all strips");
     toff.steps = tb.steps;
