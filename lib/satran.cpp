@@ -249,7 +249,10 @@ StripEnergy shift_strip(const ContactPatch& patch, const StripRates& r, int j, d
         const Block bound_hi = r.mu * BlockMap(edge_p + b + 1);
         const Block room = (bound_hi.min(bound) * (1 - kMargin) - at(scratch.bulge)).max(0.0);
         clear = hi2_lane.max(lo2_lane) - room * room;
-        hull = clear.maxCoeff() >= 0;
+        if (clear.maxCoeff() >= 0) {  // the hull, if a stick node's interval that passes at x_lo needs it
+          for (int q = 0; q < kBlock && !hull; ++q)
+            hull = node[b + 1 + q].stick && excess(q) <= 0 && clear(q) >= 0;
+        }
         if (hull) {
           inner = detail::hull_excess(detail::stick_excess<Block, BlockMap>(
               r.alpha_Pa_per_m, bound_q, tx, ty, x_hi, h, {at(scratch.beta_t), at(scratch.gamma_t2)}));
