@@ -25,7 +25,7 @@
 //     again at x_hi and the stick solution is followed to its first crossing, as from a stick node.
 //     (An interval has one stick part and then one slip part: a slip that should stop inside a cell
 //     goes on to x_lo. On grids coarse along x with spin this can make a strip's dissipation < 0;
-//     docs/stress-suite.md, finding "restick".)
+//     docs/stress-suite.md, finding 10, "restick".)
 //   slip part: |tau| = g = mu p integrated exactly, direction the mean of the end directions. The
 //     direction at the downstream node solves the slip-direction equation exactly for the creep
 //     rate d = (alpha, beta) frozen at the interval's midpoint: with psi the angle between tau and
@@ -46,14 +46,17 @@
 //     D is the formula above with the run's end nodes (it telescopes). Kalker's tests at the run's
 //     nodes, and with spin between them (each interval's quartic from the run's solution at its upper
 //     node, as the kernel takes it), are independent of each other: they go in vectorised blocks, and
-//     a block passes at once when |tau| <= |tau_s - (alpha, beta) t| + |gamma| t^2 (convex plus growing
-//     in t) stays below its smallest bound by a margin far above rounding. The interval where a test
-//     fails goes through the full kernel (the crossing).
+//     a block passes at once when a bound of |tau| over it stays below its smallest bound by a margin
+//     far above rounding (without spin |tau_s - (alpha, beta) t|, convex in t; with spin the ends'
+//     |tau| plus the parabola's bulge over its chord, |gamma| (t_b - t_a)^2 / 4). The interval where a
+//     test fails goes through the full kernel (the crossing).
 //   slip stretches: consecutive slip intervals go one at a time (the direction of tau is a chain of
 //     dependent operations); the turns of the direction (|d|, the exponential) depend on the geometry
 //     alone and are computed for all the strip's remaining cells at once. The stretch's D is the
 //     formula above with its end nodes.
 //   two strips march in turn in one loop, so that the CPU overlaps their chains.
+//   the march is compiled with and without spin (has_spin, the same for every strip of a problem):
+//     without spin it asks nothing of the interior and costs what it did before the interior test.
 // Writing the fields (per interval) changes none of the totals.
 //
 // Classic scheme: Kalker's FASTSIM on the cell centres, tau_pred = tau_prev - (c/(V L)) dx, bound at
