@@ -98,9 +98,10 @@ void add_sums(IntervalSums& into, const IntervalSums& s) {
 }
 
 // the whole kernel for one interval, kept out of the loops over the strip
+template <bool kSpin>
 [[gnu::noinline]] StripNode whole_kernel(const StripRates& r, const StripNode& hi, const IntervalGeometry& geo,
                                          IntervalSums& s) {
-  return march_interval(r, hi, geo, s);
+  return march_interval<kSpin>(r, hi, geo, s);
 }
 
 // The stick pass takes a strip's interior intervals in blocks; an Eigen array of a block is a run of
@@ -117,13 +118,15 @@ struct ShiftScratch {
   // that involve neither tau nor alpha, so that they are the same on every strip
   Eigen::ArrayXd t, beta_t, gamma_t2;                                // the prediction's
   Eigen::ArrayXd t2_2, beta_t2_2, gamma_t3_3, beta_t3_3, gamma_t4_4;  // the integrals'
+  Eigen::ArrayXd bulge;  // |gamma| t^2 / 4: how far the stick parabola can rise over its chord
   std::vector<int> failed;             // a strip's interior intervals whose stick test failed
   std::vector<StripNode> failed_hi;    // their old upstream nodes
   std::vector<char> failed_between;    // spin: the interior test failed, or a slip node sticks again
   std::vector<detail::SlipTurn> turn;  // their slip turns, from a slip node
   ShiftScratch(const Grid& g, const StripRates& r)
       : x(g.nx + 1), t(g.nx), beta_t(g.nx), gamma_t2(g.nx), t2_2(g.nx), beta_t2_2(g.nx), gamma_t3_3(g.nx),
-        beta_t3_3(g.nx), gamma_t4_4(g.nx), failed(g.nx), failed_hi(g.nx), failed_between(g.nx), turn(g.nx) {
+        beta_t3_3(g.nx), gamma_t4_4(g.nx), bulge(g.nx), failed(g.nx), failed_hi(g.nx), failed_between(g.nx),
+        turn(g.nx) {
     for (int i = 0; i <= g.nx; ++i) x(i) = g.x_edge(i);
     for (int i = 0; i < g.nx; ++i) {
       t(i) = x(i + 1) - x(i);
@@ -137,6 +140,7 @@ struct ShiftScratch {
       gamma_t3_3(i) = sm.gamma_t3_3;
       beta_t3_3(i) = sm.beta_t3_3;
       gamma_t4_4(i) = sm.gamma_t4_4;
+      bulge(i) = std::abs(sg.gamma_t2) / 4;
     }
   }
 };
@@ -149,7 +153,7 @@ struct ShiftScratch {
 // all at once so that they overlap, as in the steady march; from a stick node the whole kernel finds the
 // crossing into slip. The strip's two end intervals go through the whole kernel. The fields need each
 // interval's integrals: when they are written, every interval goes through the whole kernel.
-template <bool kFields>
+template <bool kFields, bool kSpin>
 StripEnergy shift_strip(const ContactPatch& patch, const StripRates& r, int j, double L, const StepKinematics& k,
                         ShiftScratch& scratch, TransientState& state, StepResult* fields) {
   const Grid& g = patch.grid;
@@ -200,7 +204,7 @@ StripEnergy shift_strip(const ContactPatch& patch, const StripRates& r, int j, d
     if (!(geo.x_hi > geo.x_lo)) return;
     const StripNode hi = geo.x_hi < a ? node[i + 1] : StripNode{};
     IntervalSums cell;
-    const StripNode lo = whole_kernel(r, hi, geo, cell);
+    const StripNode lo = whole_kernel<kSpin>(r, hi, geo, cell);
     record(i, geo, hi, lo, cell);
   };
 
@@ -216,20 +220,19 @@ StripEnergy shift_strip(const ContactPatch& patch, const StripRates& r, int j, d
     // the stick pass, in blocks from the trailing side up; the last block is moved back to end at `last`,
     // and its intervals below `from` were done by the block before. With spin Kalker's test also asks
     // whether the stick solution stays inside the bound between the nodes, and a slip node whose slip
-    // stops dissipating sticks again (stick_step, spin_sticks): those intervals go to the whole kernel
-    const bool spin = r.phi_L3_Pa_per_m2 / 2 != 0;
+    // stops dissipating sticks again (stick_step, spin_sticks): those intervals go to the whole kernel.
+    // (kSpin: compiled apart, so that without spin it does nothing more)
     const detail::BoundQuadratic bound_q = detail::bound_quadratic(r);
     int n_failed = 0;
     for (int from = first; from <= last; from += kBlock) {
       const int b = std::min(from, last - kBlock + 1);  // the block's intervals are b .. b + kBlock - 1
       Block tx, ty;  // the old tau at x_hi: nodes b + 1 and up are not written yet
+      bool slip_node = false;  // one of them slips (asked with spin only)
       for (int q = 0; q < kBlock; ++q) {
         tx(q) = node[b + 1 + q].tx;
         ty(q) = node[b + 1 + q].ty;
+        if constexpr (kSpin) slip_node |= !node[b + 1 + q].stick;
       }
-      Block slips;  // 1 where the old node at x_hi slips (spin only)
-      if (spin)
-        for (int q = 0; q < kBlock; ++q) slips(q) = node[b + 1 + q].stick ? 0.0 : 1.0;
       auto at = [b](const Eigen::ArrayXd& v) { return BlockMap(v.data() + b); };
       const BlockMap x_hi(x + b + 1), h = at(scratch.t);
       const Block bound = r.mu * BlockMap(edge_p + b);
@@ -237,23 +240,32 @@ StripEnergy shift_strip(const ContactPatch& patch, const StripRates& r, int j, d
           r.alpha_Pa_per_m, tx, ty, h, {at(scratch.beta_t), at(scratch.gamma_t2)});
       const Block lo2_lane = p.px * p.px + p.py * p.py;
       const Block excess = lo2_lane - bound * bound;  // > 0 exactly where stick_step's node test fails
-      // with spin, spin_sticks' excess F: its hull > 0 where the interior test needs first_crossing, and
-      // F'(0) <= 0 where a slip node sticks again
-      Block inner, rising;
-      if (spin) {
-        detail::StickExcess<Block> ex = detail::stick_excess<Block, BlockMap>(
-            r.alpha_Pa_per_m, bound_q, tx, ty, x_hi, h, {at(scratch.beta_t), at(scratch.gamma_t2)});
-        // a slip node on the bound: d0 = 0, and its slip goes on where F'(0) = d1 > 0 (else rising <= 0)
-        const auto slipping = (slips > 0) && detail::on_bound(ex.d0, bound_q);
-        ex.d0 = slipping.select(0.0, ex.d0);
-        inner = detail::hull_excess(ex);
-        rising = slipping.select(ex.d1, 0.0);
-      }
       const detail::StickIntegrals<Block> I = detail::stick_integrals<Block, BlockMap>(
           r.alpha_Pa_per_m, tx, ty, x_hi, h,
           {at(scratch.t2_2), at(scratch.beta_t2_2), at(scratch.gamma_t3_3), at(scratch.beta_t3_3),
            at(scratch.gamma_t4_4)});
       const Block hi2_lane = tx * tx + ty * ty;
+      // With spin, from a stick node: first a sufficient pass, rigorous with a margin far above rounding,
+      // |tau| <= max(|tau_hi|, |p|) + |gamma| h^2 / 4 (the parabola is its chord, convex in |.|, plus
+      // gamma t (t - h) e_y) below min(g_hi, g_lo) (g is concave in x), where clear < 0; where it does
+      // not settle it, the hull of spin_sticks' excess F, > 0 where the interior test needs
+      // first_crossing. The intervals from slip nodes are decided one by one below.
+      Block clear, inner;
+      bool hull = false;
+      if constexpr (kSpin) {
+        constexpr double kMargin = 1e-12;
+        const Block bound_hi = r.mu * BlockMap(edge_p + b + 1);
+        const Block room = (bound_hi.min(bound) * (1 - kMargin) - at(scratch.bulge)).max(0.0);
+        clear = hi2_lane.max(lo2_lane) - room * room;
+        if (clear.maxCoeff() >= 0) {  // the hull, if a stick node's interval that passes at x_lo needs it
+          for (int q = 0; q < kBlock && !hull; ++q)
+            hull = node[b + 1 + q].stick && excess(q) <= 0 && clear(q) >= 0;
+        }
+        if (hull) {
+          inner = detail::hull_excess(detail::stick_excess<Block, BlockMap>(
+              r.alpha_Pa_per_m, bound_q, tx, ty, x_hi, h, {at(scratch.beta_t), at(scratch.gamma_t2)}));
+        }
+      }
       // the new nodes from the trailing side up, so that node i+1 still holds the old tau when node i is
       // written; an interval whose test fails keeps its old upstream node for later
       auto stick = [&](int q) {
@@ -265,7 +277,8 @@ StripEnergy shift_strip(const ContactPatch& patch, const StripRates& r, int j, d
         lo.ey = hi.ey;
         lo.stick = true;
       };
-      if (b == from && excess.maxCoeff() <= 0 && (!spin || inner.maxCoeff() <= 0)) {  // the whole block sticks
+      if (b == from && excess.maxCoeff() <= 0 &&
+          (!kSpin || (!slip_node && (!hull || ((clear < 0) || (inner <= 0)).all())))) {  // the whole block sticks
         strip.Ix += I.Ix.sum();
         strip.Iy += I.Iy.sum();
         strip.Ixy += I.Ixy.sum();
@@ -276,11 +289,24 @@ StripEnergy shift_strip(const ContactPatch& patch, const StripRates& r, int j, d
         continue;
       }
       for (int q = from - b; q < kBlock; ++q) {
-        // the whole kernel with spin: the node passes but the interior may not, or a slip node sticks again
-        const bool between = spin && (excess(q) <= 0 ? inner(q) > 0 : slips(q) > 0 && !(rising(q) > 0));
-        if (excess(q) > 0 || between) {
+        // with spin: from a stick node the whole kernel also where the interior test may fail; from a slip
+        // node what spin_sticks decides (stick, slip on, or the whole kernel where it sticks again)
+        bool fails = excess(q) > 0, between = false;
+        if constexpr (kSpin) {
+          const StripNode& hi = node[b + q + 1];
+          if (hi.stick) {
+            between = !fails && hull && clear(q) >= 0 && inner(q) > 0;
+          } else {
+            const int i = b + q;
+            const detail::SlipNodeStep step = detail::slip_node_step(
+                r, bound_q, hi, x[i + 1], scratch.t(i), {scratch.beta_t(i), scratch.gamma_t2(i)}, !fails);
+            fails = step != detail::SlipNodeStep::kSticks;
+            between = step == detail::SlipNodeStep::kKernel;
+          }
+        }
+        if (fails || between) {
           scratch.failed[n_failed] = b + q;
-          scratch.failed_between[n_failed] = between;
+          if constexpr (kSpin) scratch.failed_between[n_failed] = between;
           scratch.failed_hi[n_failed++] = node[b + q + 1];
           continue;
         }
@@ -301,7 +327,7 @@ StripEnergy shift_strip(const ContactPatch& patch, const StripRates& r, int j, d
     const bool turns = r.eta_L2_Pa_per_m != 0 || r.phi_L3_Pa_per_m2 != 0;
     for (int f = 0; turns && f < n_failed; ++f) {
       const int i = scratch.failed[f];
-      if (!scratch.failed_hi[f].stick && !scratch.failed_between[f])
+      if (!scratch.failed_hi[f].stick && !(kSpin && scratch.failed_between[f]))
         scratch.turn[f] = detail::interior_slip_turn(r, x[i + 1], x[i]);
     }
     for (int f = 0; f < n_failed; ++f) {
@@ -310,8 +336,8 @@ StripEnergy shift_strip(const ContactPatch& patch, const StripRates& r, int j, d
       const IntervalGeometry geo = geometry(i);
       auto turn = [&] { return turns ? scratch.turn[f] : detail::interior_slip_turn(r, x[i + 1], x[i]); };
       IntervalSums cell;
-      const StripNode lo = hi.stick || scratch.failed_between[f] ? whole_kernel(r, hi, geo, cell)
-                                                                 : slip_throughout(r, hi, geo, turn, cell);
+      const StripNode lo = hi.stick || (kSpin && scratch.failed_between[f]) ? whole_kernel<kSpin>(r, hi, geo, cell)
+                                                                            : slip_throughout(r, hi, geo, turn, cell);
       record(i, geo, hi, lo, cell);
     }
 
@@ -460,6 +486,17 @@ StepResult satran_step(const ContactPatch& patch, const TangentialProblem& probl
   std::vector<StripNode> old(exact_shift ? 0 : g.nx + 1);
   std::optional<ShiftScratch> scratch;
   if (exact_shift) scratch.emplace(g, strip_rates(patch, rates_problem, 0));
+  // the shift step compiled with or without spin (phi/L3 is the same on every strip)
+  const bool spin = exact_shift && has_spin(strip_rates(patch, rates_problem, 0));
+  auto shift = [&](int j) {
+    const StripRates rj = strip_rates(patch, rates_problem, j);
+    if (fields) {
+      return spin ? shift_strip<true, true>(patch, rj, j, L, k, *scratch, state, &r)
+                  : shift_strip<true, false>(patch, rj, j, L, k, *scratch, state, &r);
+    }
+    return spin ? shift_strip<false, true>(patch, rj, j, L, k, *scratch, state, nullptr)
+                : shift_strip<false, false>(patch, rj, j, L, k, *scratch, state, nullptr);
+  };
   // without spin, on a mirror-symmetric patch and state, strips from `strips` up are mirror images
   const int strips = skip_mirrored && k.spin_rad == 0 && state.mirror_images ? first_mirrored_strip(patch, 0.0) : g.ny;
   state.mirror_images = strips < g.ny;  // after this step
@@ -480,10 +517,7 @@ StepResult satran_step(const ContactPatch& patch, const TangentialProblem& probl
         r.slip_y_m_per_s.col(j) = r.slip_y_m_per_s.col(m);
       }
     } else {
-      e = exact_shift ? (fields ? shift_strip<true>(patch, strip_rates(patch, rates_problem, j), j, L, k, *scratch,
-                                                    state, &r)
-                                : shift_strip<false>(patch, strip_rates(patch, rates_problem, j), j, L, k,
-                                                     *scratch, state, nullptr))
+      e = exact_shift ? shift(j)
                       : explicit_strip(patch, problem, j, k, scheme == TransientScheme::LaxFriedrichs, state, old,
                                        fields ? &r : nullptr);
     }

@@ -25,7 +25,7 @@
 //     again at x_hi and the stick solution is followed to its first crossing, as from a stick node.
 //     (An interval has one stick part and then one slip part: a slip that should stop inside a cell
 //     goes on to x_lo. On grids coarse along x with spin this can make a strip's dissipation < 0;
-//     docs/stress-suite.md, finding "restick".)
+//     docs/stress-suite.md, finding 10, "restick".)
 //   slip part: |tau| = g = mu p integrated exactly, direction the mean of the end directions. The
 //     direction at the downstream node solves the slip-direction equation exactly for the creep
 //     rate d = (alpha, beta) frozen at the interval's midpoint: with psi the angle between tau and
@@ -46,14 +46,17 @@
 //     D is the formula above with the run's end nodes (it telescopes). Kalker's tests at the run's
 //     nodes, and with spin between them (each interval's quartic from the run's solution at its upper
 //     node, as the kernel takes it), are independent of each other: they go in vectorised blocks, and
-//     a block passes at once when |tau| <= |tau_s - (alpha, beta) t| + |gamma| t^2 (convex plus growing
-//     in t) stays below its smallest bound by a margin far above rounding. The interval where a test
-//     fails goes through the full kernel (the crossing).
+//     a block passes at once when a bound of |tau| over it stays below its smallest bound by a margin
+//     far above rounding (without spin |tau_s - (alpha, beta) t|, convex in t; with spin the ends'
+//     |tau| plus the parabola's bulge over its chord, |gamma| (t_b - t_a)^2 / 4). The interval where a
+//     test fails goes through the full kernel (the crossing).
 //   slip stretches: consecutive slip intervals go one at a time (the direction of tau is a chain of
 //     dependent operations); the turns of the direction (|d|, the exponential) depend on the geometry
 //     alone and are computed for all the strip's remaining cells at once. The stretch's D is the
 //     formula above with its end nodes.
 //   two strips march in turn in one loop, so that the CPU overlaps their chains.
+//   the march is compiled with and without spin (has_spin, the same for every strip of a problem):
+//     without spin it asks nothing of the interior and costs what it did before the interior test.
 // Writing the fields (per interval) changes none of the totals.
 //
 // Classic scheme: Kalker's FASTSIM on the cell centres, tau_pred = tau_prev - (c/(V L)) dx, bound at
@@ -125,47 +128,65 @@ struct StickLine {
   //   |tau(t)| <= |tau_s - (alpha, beta) t| + |gamma| t^2,
   // the first term convex in t (largest at an end), the second growing; "clearly" is a margin far
   // above the rounding of the tests. With spin the block's intervals are covered, from the node above
-  // it, and the bound along them is smallest at an end (g is concave in x).
+  // it, with the parabola's bulge over its chord (parabola_below_bound), and the bound along them is
+  // smallest at an end (g is concave in x).
+  // (kSpin = has_spin: without spin the node tests alone)
+  template <bool kSpin>
   int first_slip_node(const double* x, const double* edge_p, double mu, int first, int last) const {
     constexpr int kBlock = 16;
     using Block = Eigen::Array<double, kBlock, 1>;
     if (first - last < kBlock) {  // a short strip
       int k = first;
-      while (k > last && sticks_at(x[k], mu * edge_p[k]) && sticks_between(k == first ? x_s : x[k + 1], x[k])) --k;
+      if constexpr (kSpin) {
+        while (k > last && sticks_at(x[k], mu * edge_p[k]) && sticks_between(k == first ? x_s : x[k + 1], x[k])) --k;
+      } else {
+        while (k > last && sticks_at(x[k], mu * edge_p[k])) --k;
+      }
       return k;
     }
-    const bool spin = gamma != 0;
+    constexpr bool spin = kSpin;
     for (int k = first; k > last; k -= kBlock) {
       const int base = std::max(k - kBlock + 1, last + 1);  // nodes base .. base + kBlock - 1
       const int top = base + kBlock - 1;
       const double g_min = mu * Block::Map(edge_p + base).minCoeff();
-      if (!spin) {
+      if constexpr (!spin) {
         if (below_bound(x_s - x[top], x_s - x[base], g_min)) continue;
       } else {  // from the node above the block (edge_p is 0 outside the strip, as the bound at x_s = a)
         const double x_above = top == first ? x_s : x[top + 1];
-        if (below_bound(x_s - x_above, x_s - x[base], std::min(g_min, mu * edge_p[top + 1]))) continue;
+        if (parabola_below_bound(x_s - x_above, x_s - x[base], std::min(g_min, mu * edge_p[top + 1]))) continue;
       }
       const Block t = x_s - Block::Map(x + base);
       const Block px = start.tx - alpha * t, py = start.ty - beta * t + gamma * t * t;
       const Block g = mu * Block::Map(edge_p + base);
-      const Block excess = px * px + py * py - g * g;  // > 0 where Kalker's test fails
-      Block inner;  // > 0 where the interior test (spin) needs first_crossing
-      if (spin) {
-        Block x_hi = Block::Map(x + base + 1);
-        if (top == first) x_hi(kBlock - 1) = x_s;
-        const Block t_hi = x_s - x_hi;
-        const Block tx_hi = start.tx - alpha * t_hi, ty_hi = start.ty - beta * t_hi + gamma * t_hi * t_hi;
-        const Block h = x_hi - Block::Map(x + base);
-        const detail::StickExcess<Block> e = detail::stick_excess<Block, Block>(
-            alpha, detail::bound_quadratic(r), tx_hi, ty_hi, x_hi, h,
-            detail::stick_geometry<Block>(r, detail::stick_beta<Block>(r, x_hi), h));
-        inner = detail::hull_excess(e);
-      }
-      if (excess.maxCoeff() > 0 || (spin && inner.maxCoeff() > 0)) {
-        for (int q = kBlock - 1; q >= 0; --q) {
-          if (excess(q) > 0) return base + q;
-          if (spin && inner(q) > 0 && !sticks_between(base + q == first ? x_s : x[base + q + 1], x[base + q]))
-            return base + q;
+      const Block lo2 = px * px + py * py;
+      const Block excess = lo2 - g * g;  // > 0 where Kalker's test fails
+      if constexpr (!spin) {
+        if (excess.maxCoeff() > 0) {
+          for (int q = kBlock - 1; q >= 0; --q)
+            if (excess(q) > 0) return base + q;
+        }
+      } else {
+        // between the nodes: a lane is clear where the run's stick solution stays below min(g_hi, g_lo) by
+        // a margin far above rounding, |tau| <= max(|tau_hi|, |tau_lo|) + |gamma| h^2 / 4 (the parabola is
+        // its chord plus gamma (t - t_hi)(t - t_lo) e_y); elsewhere sticks_between asks the kernel's test
+        constexpr double kMargin = 1e-12;
+        const double x_above = top == first ? x_s : x[top + 1];
+        const StripNode above = at(x_above);
+        Block hi2, g_hi, h;
+        hi2.head(kBlock - 1) = lo2.tail(kBlock - 1);
+        hi2(kBlock - 1) = above.tx * above.tx + above.ty * above.ty;
+        g_hi.head(kBlock - 1) = g.tail(kBlock - 1);
+        g_hi(kBlock - 1) = mu * edge_p[top + 1];
+        h.head(kBlock - 1) = Block::Map(x + base + 1).head(kBlock - 1) - Block::Map(x + base).head(kBlock - 1);
+        h(kBlock - 1) = x_above - x[top];
+        const Block room = (g.min(g_hi) * (1 - kMargin) - std::abs(gamma) / 4 * h * h).max(0.0);
+        const Block clear = lo2.max(hi2) - room * room;  // < 0: clear
+        if (excess.maxCoeff() > 0 || clear.maxCoeff() >= 0) {
+          for (int q = kBlock - 1; q >= 0; --q) {
+            if (excess(q) > 0) return base + q;
+            if (clear(q) >= 0 && !sticks_between(base + q == first ? x_s : x[base + q + 1], x[base + q]))
+              return base + q;
+          }
         }
       }
     }
@@ -173,6 +194,19 @@ struct StickLine {
   }
 
  private:
+  // with spin: over [t_a, t_b] the parabola is its chord plus gamma (t - t_a)(t - t_b) e_y, so
+  //   |tau(t)| <= max(|tau(t_a)|, |tau(t_b)|) + |gamma| (t_b - t_a)^2 / 4,
+  // and that stays below g_min by a margin far above rounding
+  bool parabola_below_bound(double t_a, double t_b, double g_min) const {
+    constexpr double kMargin = 1e-12;
+    const double ax = start.tx - alpha * t_a, ay = start.ty - beta * t_a + gamma * t_a * t_a;
+    const double bx = start.tx - alpha * t_b, by = start.ty - beta * t_b + gamma * t_b * t_b;
+    const double bulge = std::abs(gamma) * (t_b - t_a) * (t_b - t_a) / 4;
+    const double bound = std::sqrt(std::max(ax * ax + ay * ay, bx * bx + by * by)) + bulge;
+    const double terms = std::abs(start.tx) + std::abs(start.ty) + (std::abs(alpha) + std::abs(beta)) * t_b +
+                         std::abs(gamma) * t_b * t_b;
+    return bound + kMargin * (bound + terms) < g_min;
+  }
   // |tau| stays below g_min by a margin far above rounding for t in [t_a, t_b], 0 <= t_a <= t_b
   bool below_bound(double t_a, double t_b, double g_min) const {
     constexpr double kMargin = 1e-12;
@@ -233,8 +267,8 @@ struct FieldWriter {
 // The consistent march along one strip, one step at a time: a step is a stick run and one interval
 // through the full kernel, or one interval of a slip stretch. Two strips step in turn in one loop, so
 // that the CPU overlaps their chains of dependent operations (the crossing into slip, the slip
-// direction).
-template <bool kFields>
+// direction). kSpin = has_spin: with spin Kalker's test asks more of each interval.
+template <bool kFields, bool kSpin>
 class StripMarch {
  public:
   // x: the grid's nodes x_edge(i) (nx + 1); turn: room for the strip's slip turns (nx)
@@ -282,7 +316,7 @@ class StripMarch {
     const IntervalGeometry geo{x_[i + 1], x_[i], r_.mu * edge_p_[i], patch_.pressure_Pa(i, j_) * dx,
                                patch_.pressure_moment_Pa_m(i, j_) * dx};
     IntervalSums cell;
-    const StripNode lo = march_slip_interval(r_, node_, geo, turn, cell);
+    const StripNode lo = march_slip_interval<kSpin>(r_, node_, geo, turn, cell);
     if constexpr (kFields)
       out_.interval(i, cell, geo.x_hi - geo.x_lo, VL_ * dissipation_per_VL(r_, node_, lo, cell));
     accumulate(stretch_, cell);
@@ -306,7 +340,7 @@ class StripMarch {
     // test; the tests are independent of each other, the run's integrals are closed forms
     if (node_.stick && i_ > i_bot_) {
       const StickLine line(r_, node_, x_hi_of(i_));
-      const int k = line.first_slip_node(x_, edge_p_, r_.mu, i_, i_bot_);
+      const int k = line.template first_slip_node<kSpin>(x_, edge_p_, r_.mu, i_, i_bot_);
       if (k < i_) {  // intervals i down to k + 1 stick
         const double x_end = x_[k + 1];
         const StripNode end = line.at(x_end);
@@ -328,7 +362,7 @@ class StripMarch {
     geo.load_N_per_m = patch_.pressure_Pa(i, j_) * dx;
     geo.moment_N = patch_.pressure_moment_Pa_m(i, j_) * dx;
     IntervalSums sums;
-    const StripNode lo = march_interval(r_, node_, geo, sums);
+    const StripNode lo = march_interval<kSpin>(r_, node_, geo, sums);
     add(node_, lo, sums);
     if constexpr (kFields)
       out_.interval(i, sums, geo.x_hi - geo.x_lo, VL_ * dissipation_per_VL(r_, node_, lo, sums));
@@ -407,7 +441,7 @@ std::vector<StripTotals> pure_xi_strips(const ContactPatch& patch, const Tangent
 }
 
 // the consistent march of the strips below `strips`, two at a time
-template <bool kFields>
+template <bool kFields, bool kSpin>
 std::vector<StripTotals> march_consistent(const ContactPatch& patch, const TangentialProblem& pb,
                                           TangentialSolution& s, int strips) {
   const Grid& g = patch.grid;
@@ -416,13 +450,13 @@ std::vector<StripTotals> march_consistent(const ContactPatch& patch, const Tange
   std::vector<detail::SlipTurn> turns(2 * static_cast<size_t>(g.nx));
   const double VL = pb.speed_m_per_s * pb.L_m_per_Pa;
   auto strip = [&](int j, detail::SlipTurn* turn) {
-    return StripMarch<kFields>(patch, pb, j, x.data(), turn, {kFields ? &s : nullptr, j, g.dx_m, VL});
+    return StripMarch<kFields, kSpin>(patch, pb, j, x.data(), turn, {kFields ? &s : nullptr, j, g.dx_m, VL});
   };
 
   std::vector<StripTotals> totals(g.ny);
   int j = 0;
   for (; j + 1 < strips; j += 2) {
-    StripMarch<kFields> a = strip(j, turns.data()), b = strip(j + 1, turns.data() + g.nx);
+    StripMarch<kFields, kSpin> a = strip(j, turns.data()), b = strip(j + 1, turns.data() + g.nx);
     while (!a.done() || !b.done()) {
       while (a.in_slip() && b.in_slip()) {  // the common case, without the branches of step()
         a.slip_interval();
@@ -435,11 +469,20 @@ std::vector<StripTotals> march_consistent(const ContactPatch& patch, const Tange
     totals[j + 1] = b.totals();
   }
   if (j < strips) {
-    StripMarch<kFields> a = strip(j, turns.data());
+    StripMarch<kFields, kSpin> a = strip(j, turns.data());
     while (!a.done()) a.step();
     totals[j] = a.totals();
   }
   return totals;
+}
+
+// the march compiled with or without spin (phi/L3 is the same on every strip)
+template <bool kFields>
+std::vector<StripTotals> march_consistent_strips(const ContactPatch& patch, const TangentialProblem& pb,
+                                                 TangentialSolution& s, int strips) {
+  const bool spin = patch.grid.ny > 0 && has_spin(strip_rates(patch, pb, 0));
+  return spin ? march_consistent<kFields, true>(patch, pb, s, strips)
+              : march_consistent<kFields, false>(patch, pb, s, strips);
 }
 
 StripTotals march_classic(const ContactPatch& patch, const TangentialProblem& pb, int j, FieldWriter out) {
@@ -535,8 +578,8 @@ TangentialSolution solve_steady(const ContactPatch& patch, const TangentialProbl
   std::vector<StripTotals> totals =
       scheme == TangentialScheme::Classic ? march_classic_strips(patch, problem, s, options.fields, strips)
       : closed_form                       ? pure_xi_strips(patch, problem, strips)
-      : options.fields                    ? march_consistent<true>(patch, problem, s, strips)
-                                          : march_consistent<false>(patch, problem, s, strips);
+      : options.fields                    ? march_consistent_strips<true>(patch, problem, s, strips)
+                                          : march_consistent_strips<false>(patch, problem, s, strips);
   for (int j = strips; j < g.ny; ++j) {  // the mirror images: tau(x, -y) = tau(x, y)
     const int m = g.ny - 1 - j;
     totals[j] = totals[m];

@@ -163,18 +163,19 @@ inline BoundQuadratic bound_quadratic(const StripRates& r) {
   return {G2, r.a_m > 0 ? G2 / (r.a_m * r.a_m) : 0.0};
 }
 
-// min(v, 0) and max(a, b), the same lane by lane for an Eigen array of a block
+// min(v, 0) and max(a, b), lane by lane for an Eigen array of a block (SIMD min and max: they may differ
+// from the scalar ones in the sign of a zero, which no test below sees)
 [[gnu::always_inline]] inline double nonpositive(double v) { return v > 0 ? 0.0 : v; }
 template <class D>
 [[gnu::always_inline]] inline auto nonpositive(const Eigen::ArrayBase<D>& v) {
   using A = typename D::PlainObject;
-  return A((v > 0).select(0.0, v));
+  return A(v.min(0.0));
 }
 [[gnu::always_inline]] inline double larger(double a, double b) { return a < b ? b : a; }
 template <class D>
 [[gnu::always_inline]] inline auto larger(const Eigen::ArrayBase<D>& a, const Eigen::ArrayBase<D>& b) {
   using A = typename D::PlainObject;
-  return A((a < b).select(b, a));
+  return A(a.max(b));
 }
 
 // the excess F(s) = |tau|^2 - g^2 of the stick solution over an interval: its power coefficients
@@ -207,8 +208,9 @@ constexpr double kNoCrossing = 2;  // first_crossing: F <= 0 on all of [0, 1]
 
 // The first s in [0, 1] where F > 0 (kNoCrossing if none, to rounding). F(0) = d0 <= 0. Pieces of
 // [0, 1] are taken from the left: a piece whose Bernstein coefficients are all <= 0 has F <= 0; a piece
-// whose coefficients increase has F increasing, so if F > 0 at its right end the first crossing is
-// its one root, found by Newton's method kept inside the bracket; any other piece is halved.
+// whose coefficients increase (F increasing) or are convex (F convex), with F <= 0 at its left end and
+// > 0 at its right end, holds one root, the first crossing, found by Newton's method kept inside the
+// bracket; any other piece is halved.
 [[gnu::noinline]] inline double first_crossing(const StickExcess<double>& e) {
   const double d[5] = {e.d0, e.d1, e.d2, e.d3, e.d4};
   // on the bound at s = 0: the first nonzero term says whether F rises at once
@@ -221,13 +223,25 @@ constexpr double kNoCrossing = 2;  // first_crossing: F <= 0 on all of [0, 1]
   }
   auto F = [&](double s) { return d[0] + s * (d[1] + s * (d[2] + s * (d[3] + s * d[4]))); };
   auto dF = [&](double s) { return d[1] + s * (2 * d[2] + s * (3 * d[3] + s * 4 * d[4])); };
-  // the root of F in (lo, hi], F(lo) <= 0 < F(hi), F increasing
+  // the rounding of F(s): F is 0 within it
+  auto F_rounding = [&](double s) {
+    const double size = std::abs(d[3]) + s * std::abs(d[4]);
+    return 8e-16 * (std::abs(d[0]) + s * (std::abs(d[1]) + s * (std::abs(d[2]) + s * size)));
+  };
+  // the root of F in (lo, hi], F(lo) <= 0 < F(hi), F's only one there; Newton's method starts from the
+  // root of F's quadratic part (the crossing without spin) where that lies inside the bracket
   auto root = [&](double lo, double hi) {
     if (F(lo) > 0) return lo;
     if (F(hi) <= 0) return hi;
     double s = hi;
+    if (d[2] > 0) {
+      const double q = std::sqrt(std::max(0.0, d[1] * d[1] - 4 * d[2] * d[0]));
+      const double s_q = d[1] <= 0 ? (-d[1] + q) / (2 * d[2]) : (-2 * d[0]) / (d[1] + q);
+      if (s_q > lo && s_q < hi) s = s_q;
+    }
     for (int it = 0; it < 100; ++it) {
       const double f = F(s);
+      if (std::abs(f) <= F_rounding(s)) return s;
       if (f > 0) {
         hi = s;
       } else {
@@ -258,7 +272,8 @@ constexpr double kNoCrossing = 2;  // first_crossing: F <= 0 on all of [0, 1]
     const double* b = p.b;
     if (std::max({b[0], b[1], b[2], b[3], b[4]}) <= 0) continue;  // F <= 0 on the piece
     const bool rising = b[0] <= b[1] && b[1] <= b[2] && b[2] <= b[3] && b[3] <= b[4];
-    if (b[4] > 0 && (rising || p.depth >= kMaxDepth)) return root(p.s0, p.s1);
+    const bool convex = b[2] - b[1] >= b[1] - b[0] && b[3] - b[2] >= b[2] - b[1] && b[4] - b[3] >= b[3] - b[2];
+    if (b[4] > 0 && (rising || convex || p.depth >= kMaxDepth)) return root(p.s0, p.s1);
     if (p.depth >= kMaxDepth) continue;
     // halve (de Casteljau): the left piece is taken first
     Piece left{p.s0, (p.s0 + p.s1) / 2, {}, p.depth + 1}, right{left.s1, p.s1, {}, p.depth + 1};
@@ -278,8 +293,8 @@ constexpr double kNoCrossing = 2;  // first_crossing: F <= 0 on all of [0, 1]
 
 // the direction in which the stick solution leaves t: tau(t) = (tx, ty), or where that is 0, its
 // first derivative in t that is not
-inline void leaving_direction(double alpha, double beta, double gamma, double t, double tx, double ty, double& ex,
-                              double& ey) {
+[[gnu::noinline]] inline void leaving_direction(double alpha, double beta, double gamma, double t, double tx,
+                                                double ty, double& ex, double& ey) {
   double vx = tx, vy = ty;
   if (vx == 0 && vy == 0) {
     vx = -alpha;
@@ -405,26 +420,52 @@ template <class T>
   return d0 >= -kOnBound * q.G2;
 }
 
+// What spin_sticks decides for an interval from a slip node, short of first_crossing: it sticks
+// throughout (kSticks), its slip goes on (kSlips: slip_throughout), or the whole kernel must look
+// (kKernel). node: Kalker's test at x_lo passed. Where it did not, d0 and d1 settle it.
+enum class SlipNodeStep { kSticks, kSlips, kKernel };
+[[gnu::always_inline]] inline SlipNodeStep slip_node_step(const StripRates& r, const BoundQuadratic& q,
+                                                          const StripNode& hi, double x_hi, double h,
+                                                          const StickGeometry<double>& sg, bool node) {
+  if (!node) {  // d0 and d1 alone, as stick_excess has them
+    const double Dx = r.alpha_Pa_per_m * h, Dy = sg.beta_t;
+    const double d0 = nonpositive(hi.tx * hi.tx + hi.ty * hi.ty - (q.G2 - q.k * x_hi * x_hi));
+    const double d1 = -2.0 * (hi.tx * Dx + hi.ty * Dy) - 2.0 * q.k * x_hi * h;
+    return on_bound(d0, q) && d1 > 0 ? SlipNodeStep::kSlips : SlipNodeStep::kKernel;
+  }
+  StickExcess<double> e = stick_excess(r.alpha_Pa_per_m, q, hi.tx, hi.ty, x_hi, h, sg);
+  const bool slipping = on_bound(e.d0, q);
+  if (slipping) e.d0 = 0;
+  if (hull_excess(e) <= 0) return SlipNodeStep::kSticks;
+  if (slipping && e.d1 > 0) return SlipNodeStep::kSlips;
+  return SlipNodeStep::kKernel;
+}
+
 // Spin, Kalker's test on the whole interval, asked where the node test passes or the upstream node
 // slips. A slip node on the bound has d0 = 0, and F'(0) = d1 = 2 h g (g' - e . d) is the slip's
 // dissipation density there: the slip goes on while it is positive; where it is not, the material
 // sticks again at x_hi, and the stick solution is followed to its first crossing (possibly through
 // the inside of the bound to its other side), as from a stick node.
-[[gnu::always_inline]] inline bool spin_sticks(const StripRates& r, const StripNode& hi, double x_hi, double h,
-                                               const StickGeometry<double>& sg, StickStep& k) {
+[[gnu::noinline]] inline bool spin_sticks(const StripRates& r, const StripNode& hi, double x_hi, double h,
+                                          const StickGeometry<double>& sg, StickStep& k) {
   const BoundQuadratic q = bound_quadratic(r);
-  StickExcess<double> e = stick_excess(r.alpha_Pa_per_m, q, hi.tx, hi.ty, x_hi, h, sg);
-  const bool slipping = !hi.stick && on_bound(e.d0, q);
-  if (slipping) e.d0 = 0;
-  if (k.node && hull_excess(e) <= 0) return true;
-  if (slipping && e.d1 > 0) {
-    k.s_cross = 0;
-    return false;
+  if (!hi.stick) {
+    const SlipNodeStep step = slip_node_step(r, q, hi, x_hi, h, sg, k.node);
+    if (step == SlipNodeStep::kSticks) return true;
+    if (step == SlipNodeStep::kSlips) {
+      k.s_cross = 0;
+      return false;
+    }
   }
+  StickExcess<double> e = stick_excess(r.alpha_Pa_per_m, q, hi.tx, hi.ty, x_hi, h, sg);
+  if (!hi.stick && on_bound(e.d0, q)) e.d0 = 0;
+  if (hi.stick && k.node && hull_excess(e) <= 0) return true;
   k.s_cross = first_crossing(e);
   return k.node && k.s_cross > 1;
 }
 
+// Kalker's test for the interval from hi: at x_lo, and with spin (kSpin, gamma != 0) on its interior
+template <bool kSpin>
 [[gnu::always_inline]] inline StickStep stick_step(const StripRates& r, const StripNode& hi, const IntervalGeometry& geo,
                                                    IntervalSums& s) {
   const double x_hi = geo.x_hi, h = x_hi - geo.x_lo;
@@ -437,12 +478,18 @@ template <class T>
   k.py = p.py;
   k.node = k.px * k.px + k.py * k.py <= geo.bound_lo_Pa * geo.bound_lo_Pa;
   k.stick = k.node;
-  if (k.gamma != 0 && (k.node || !hi.stick)) k.stick = spin_sticks(r, hi, x_hi, h, sg, k);
+  if constexpr (kSpin) {
+    if (k.node || !hi.stick) k.stick = spin_sticks(r, hi, x_hi, h, sg, k);
+  }
   if (k.stick) add_stick(r, hi, x_hi, k.beta, k.gamma, h, s);
   return k;
 }
 
 }  // namespace detail
+
+// With spin the march asks more of each interval (detail::spin_sticks); it is compiled for both cases,
+// chosen once for a problem (phi/L3 is the same on every strip), so that without spin it does nothing more.
+inline bool has_spin(const StripRates& r) { return r.phi_L3_Pa_per_m2 / 2 != 0; }
 
 // march_slip_interval once Kalker's test has failed: the interval slips throughout
 template <class TurnFn>
@@ -454,11 +501,23 @@ template <class TurnFn>
 
 namespace detail {
 
+// spin: the first crossing t_s of the parabola with the bound (stick_step found it unless a stick node
+// failed at x_lo); none, or past x_lo, only by rounding where the node test failed: stick up to x_lo
+[[gnu::noinline]] inline double spin_crossing_time(const StripRates& r, const StripNode& hi, double x_hi, double h,
+                                                   const StickStep& k) {
+  double s_cross = k.s_cross;
+  if (s_cross < 0)
+    s_cross = first_crossing(stick_excess(r.alpha_Pa_per_m, bound_quadratic(r), hi.tx, hi.ty, x_hi, h,
+                                          stick_geometry(r, k.beta, h)));
+  return std::min(s_cross, 1.0) * h;
+}
+
 // The interval does not stick throughout: stick from x_hi to the crossing x_s = x_hi - t_s of the stick
 // solution with the bound, slip from there to x_lo. From a stick node the crossing is located on the
 // stick solution (without spin a quadratic in t, exact; with spin the first root of the quartic F).
 // From a slip node whose stick solution fails at x_lo the interval slips throughout (t_s = 0), but with
 // spin only while the slip dissipates at x_hi (spin_sticks); else it sticks up to the crossing.
+template <bool kSpin>
 [[gnu::always_inline]] inline StripNode stick_then_slip(const StripRates& r, const StripNode& hi,
                                                         const IntervalGeometry& geo, const StickStep& k,
                                                         IntervalSums& s) {
@@ -468,16 +527,18 @@ namespace detail {
   // slip at x_lo; from stick, the slip starts where the stick solution crosses the bound
   const double G = r.bound_Pa;
   double t_s = 0, tx0 = hi.tx, ty0 = hi.ty, ex0 = hi.ex, ey0 = hi.ey;
-  if (gamma != 0) {
-    // spin: the first crossing of the parabola (stick_step found it unless a stick node failed at x_lo);
-    // none, or past x_lo, only by rounding where the node test failed: stick up to x_lo
-    double s_cross = k.s_cross;
-    if (s_cross < 0)
-      s_cross = first_crossing(
-          stick_excess(alpha, bound_quadratic(r), hi.tx, hi.ty, x_hi, h, stick_geometry(r, beta, h)));
-    t_s = std::min(s_cross, 1.0) * h;
+  if constexpr (kSpin) {
+    // the first crossing of the parabola; the slip starts along tau there
+    t_s = spin_crossing_time(r, hi, x_hi, h, k);
+    if (t_s > 0) {
+      add_stick(r, hi, x_hi, beta, gamma, t_s, s);
+      tx0 = hi.tx - alpha * t_s;
+      ty0 = hi.ty - beta * t_s + gamma * t_s * t_s;
+    }
+    if (hi.stick || t_s > 0) leaving_direction(alpha, beta, gamma, t_s, tx0, ty0, ex0, ey0);
   } else if (hi.stick) {
-    const double Dx = (hi.tx - px) / h, Dy = (hi.ty - py) / h;  // the stick line, straight without spin
+    // the crossing of the stick line, straight without spin, a quadratic in t
+    const double Dx = (hi.tx - px) / h, Dy = (hi.ty - py) / h;
     const double G2a2 = G * G / (a * a);
     const double qa = Dx * Dx + Dy * Dy + G2a2;
     const double qb = -2 * (hi.tx * Dx + hi.ty * Dy) - 2 * G2a2 * x_hi;
@@ -486,22 +547,15 @@ namespace detail {
       const double root = std::sqrt(qb * qb - 4 * qa * qc);
       t_s = std::clamp(qb <= 0 ? (-qb + root) / (2 * qa) : (-2 * qc) / (qb + root), 0.0, h);
     }
-  }
-  if (t_s > 0) {
-    add_stick(r, hi, x_hi, beta, gamma, t_s, s);
-    tx0 = hi.tx - alpha * t_s;
-    ty0 = hi.ty - beta * t_s + gamma * t_s * t_s;
-  }
-  // the slip starts along tau at the crossing
-  if (hi.stick || t_s > 0) {
-    if (gamma != 0) {
-      leaving_direction(alpha, beta, gamma, t_s, tx0, ty0, ex0, ey0);
-    } else {
-      const double n0 = std::sqrt(tx0 * tx0 + ty0 * ty0);
-      const double np = std::sqrt(px * px + py * py);
-      ex0 = n0 > 0 ? tx0 / n0 : px / np;
-      ey0 = n0 > 0 ? ty0 / n0 : py / np;
+    if (t_s > 0) {
+      add_stick(r, hi, x_hi, beta, gamma, t_s, s);
+      tx0 = hi.tx - alpha * t_s;
+      ty0 = hi.ty - beta * t_s + gamma * t_s * t_s;
     }
+    const double n0 = std::sqrt(tx0 * tx0 + ty0 * ty0);
+    const double np = std::sqrt(px * px + py * py);
+    ex0 = n0 > 0 ? tx0 / n0 : px / np;
+    ey0 = n0 > 0 ? ty0 / n0 : py / np;
   }
   const double x_s = x_hi - t_s;
   const double dy_m = midpoint_dy(r, x_hi, x_s, x_lo);
@@ -527,35 +581,45 @@ namespace detail {
 [[gnu::noinline]] inline StripNode spin_stick_then_slip(const StripRates& r, const StripNode& hi,
                                                         const IntervalGeometry& geo, const StickStep& k,
                                                         IntervalSums& s) {
-  return stick_then_slip(r, hi, geo, k, s);
+  return stick_then_slip<true>(r, hi, geo, k, s);
 }
 
 }  // namespace detail
 
 // march_interval for a slip node hi and an interval strictly inside the strip (-a < x_lo < x_hi < a),
 // with the turn of the slip direction from turn(): interior_slip_turn, or slip_turns for all the
-// cells of a slip stretch at once
-template <class TurnFn>
+// cells of a slip stretch at once; kSpin = has_spin(r)
+template <bool kSpin, class TurnFn>
 [[gnu::always_inline]] inline StripNode march_slip_interval(const StripRates& r, const StripNode& hi,
                                                             const IntervalGeometry& geo, TurnFn&& turn,
                                                             IntervalSums& s) {
-  const detail::StickStep k = detail::stick_step(r, hi, geo, s);
+  const detail::StickStep k = detail::stick_step<kSpin>(r, hi, geo, s);
   if (k.stick) return {k.px, k.py, hi.ex, hi.ey, true};
-  if (k.s_cross > 0) return detail::spin_stick_then_slip(r, hi, geo, k, s);  // spin: sticks, then crosses
+  if constexpr (kSpin) {
+    if (k.s_cross > 0) return detail::spin_stick_then_slip(r, hi, geo, k, s);  // sticks again, then crosses
+  }
   return slip_throughout(r, hi, geo, turn, s);
 }
 
-[[gnu::always_inline]] inline StripNode march_interval(const StripRates& r, const StripNode& hi, const IntervalGeometry& geo,
-                                IntervalSums& s) {
+// one interval of the consistent march from the node hi at x_hi; kSpin = has_spin(r)
+template <bool kSpin>
+[[gnu::always_inline]] inline StripNode march_interval(const StripRates& r, const StripNode& hi,
+                                                       const IntervalGeometry& geo, IntervalSums& s) {
   const double x_hi = geo.x_hi, x_lo = geo.x_lo, a = r.a_m;
 
   // from slip inside the strip, the slip direction turns by the midpoint rule
   if (!hi.stick && x_hi < a && x_lo > -a)
-    return march_slip_interval(r, hi, geo, [&] { return detail::interior_slip_turn(r, x_hi, x_lo); }, s);
+    return march_slip_interval<kSpin>(r, hi, geo, [&] { return detail::interior_slip_turn(r, x_hi, x_lo); }, s);
 
-  const detail::StickStep k = detail::stick_step(r, hi, geo, s);
+  const detail::StickStep k = detail::stick_step<kSpin>(r, hi, geo, s);
   if (k.stick) return {k.px, k.py, hi.ex, hi.ey, true};
-  return detail::stick_then_slip(r, hi, geo, k, s);
+  return detail::stick_then_slip<kSpin>(r, hi, geo, k, s);
+}
+
+// the same, with or without spin as r has it
+inline StripNode march_interval(const StripRates& r, const StripNode& hi, const IntervalGeometry& geo,
+                                IntervalSums& s) {
+  return has_spin(r) ? march_interval<true>(r, hi, geo, s) : march_interval<false>(r, hi, geo, s);
 }
 
 // The slip turns of the cells first down to last, as interior_slip_turn gives them (x[i] = x_edge(i)),
