@@ -414,11 +414,11 @@ class Solver {
   // varying w = sqrt(g/t) and a are taken at the centre, the kernel integrated exactly (Psi)
   double boussinesq_integral(const Evaluation& ev) const {
     static const KernelTable psi;
-    double width = 0;
-    for (const ContactRun& run : ev.runs) width += run.r - run.l;
     double J = 0;
     for (const ContactRun& run : ev.runs) {
-      const int n = std::max(4, static_cast<int>(std::lround(cells_ * (run.r - run.l) / width)));
+      // every patch its own cells: shared out by width, a patch's count changed by rounding as the
+      // patches grew, and J (so F(delta)) jumped with it (finding 6, docs/stress-suite.md)
+      const int n = cells_;
       const double mid = (run.l + run.r) / 2, half = (run.r - run.l) / 2;
       // sin and cos of theta by rotation, theta from -pi/2 in steps of pi/(2n): edges and centres
       const double c_step = std::cos(kPi / (2 * n)), s_step = std::sin(kPi / (2 * n));
@@ -522,6 +522,7 @@ SemiHertzResult solve_semi_hertz(const Profiles& profiles, double Rx1_m, double 
   }
   double lo = 0, hi = std::numeric_limits<double>::infinity();
   double prev_ld = 0, prev_lf = 0, residual = std::numeric_limits<double>::infinity();
+  double last_abs_residual = std::numeric_limits<double>::infinity(), residual_lo = 0, residual_hi = 0;
   Evaluation ev;
   int it = 0;
   bool converged = false;
@@ -535,15 +536,28 @@ SemiHertzResult solve_semi_hertz(const Profiles& profiles, double Rx1_m, double 
       converged = true;
       break;
     }
-    if (ev.F < F) lo = delta; else hi = delta;
-    if (hi / lo - 1 < 1e-15) break;
+    if (ev.F < F) {
+      lo = delta;
+      residual_lo = residual;
+    } else {
+      hi = delta;
+      residual_hi = residual;
+    }
+    if (hi / lo - 1 < 1e-15) break;  // the bracket is a point: F(delta) jumps across the load there
     const double ld = std::log(delta), lf = std::log(ev.F);
     double slope = 1.5;  // Hertz: F ~ delta^(3/2)
     if (it > 1 && ld != prev_ld) slope = std::clamp((lf - prev_lf) / (ld - prev_ld), 0.5, 4.0);
     prev_ld = ld;
     prev_lf = lf;
     double next = delta * std::exp((std::log(F) - lf) / slope);
-    if (!(next > lo && next < hi)) next = std::isinf(hi) ? 4 * lo : (lo > 0 ? std::sqrt(lo * hi) : hi / 4);
+    // safeguard: a secant step that did not halve the residual is followed by a bisection once the
+    // root is bracketed, so the bracket shrinks at least geometrically (a secant can crawl along one
+    // side of a bracket where F(delta) bends, finding 6); a smooth F converges before it matters
+    const bool bracketed = lo > 0 && std::isfinite(hi);
+    const bool crawling = std::abs(residual) > 0.5 * last_abs_residual;
+    last_abs_residual = std::abs(residual);
+    if (!(next > lo && next < hi) || (bracketed && crawling))
+      next = std::isinf(hi) ? 4 * lo : (lo > 0 ? std::sqrt(lo * hi) : hi / 4);
     delta = next;
   }
 
@@ -562,6 +576,11 @@ SemiHertzResult solve_semi_hertz(const Profiles& profiles, double Rx1_m, double 
   std::snprintf(msg, sizeof msg, "load residual %.1e %s tol %.1e after %d evaluations", std::abs(residual),
                 converged ? "<=" : ">", options.load_rtol, it);
   res.status.message = msg;
+  if (!converged && lo > 0 && std::isfinite(hi)) {
+    std::snprintf(msg, sizeof msg, "; F(delta)/F - 1 jumps from %+.2e to %+.2e within delta [%.9e, %.9e] m", residual_lo,
+                  residual_hi, lo, hi);
+    res.status.message += msg;
+  }
   res.status.kind = converged ? SolveStatus::Kind::Converged : SolveStatus::Kind::MaxIterations;
   if (!converged) spdlog::warn("semi-Hertz: approach not found: {}", res.status.message);
   if (ev.reaches_edge) {
@@ -583,35 +602,54 @@ SemiHertzResult solve_semi_hertz(const Profiles& profiles, double Rx1_m, double 
   patch.half_length_m = Eigen::ArrayXd::Zero(g.ny);
   patch.strip_peak_Pa = Eigen::ArrayXd::Zero(g.ny);
   Eigen::ArrayXd row_load_N = Eigen::ArrayXd::Zero(g.ny);
+  bool centre_in_contact = false;
   {
+    // Row j carries line_load_per_g times the integral of g_+ over the row, exactly: its mean
+    // gbar_j of g_+ sets the load. The strip's half length is the midpoint's, a(y_j) = sqrt(g_j/A_mod),
+    // which gives p_j = p0 gbar_j / sqrt(t g_j). Where g_j is small against the row's g (a row cut
+    // by a patch's edge, or a neck between two lobes), that p_j exceeds every pressure of the field
+    // in the row: up to 7.9e13 Pa against p0 3.4e9 Pa (finding 5, docs/stress-suite.md), and the
+    // tangential solvers take mu p_j as the traction bound. So the strip's peak is capped at the
+    // field's largest peak over the row, p0 sqrt(gmax_j/t), and the strip lengthened to carry the
+    // row's load at it:
+    //   a_j = sqrt(max(g_j, gbar_j^2 / gmax_j) / A_mod),   so  p_j = min(midpoint's, p0 sqrt(gmax_j/t)).
+    // On a row where g is linear or concave (every row of a convex gap: Hertz, crowns, flat bands),
+    // gbar_j <= g_j <= gmax_j and the midpoint stands; it also stands on gently curved rows of a worn
+    // gap. Then a_j <= the row's largest a(y), p_j <= p0, and a row whose centre misses the contact
+    // keeps its own load: it no longer hands it to the nearest row in contact, which could lie in
+    // another patch.
     const double line_load_per_g = ev.p0 * (kPi / 2) / std::sqrt(ev.t * ev.A_mod);  // (pi/2) p a = this * g
-    Solver::March rows(gap, ev.t), centres(gap, ev.t);
+    Solver::March rows(gap, ev.t), centres(gap, ev.t), ends(gap, ev.t);
     double below = rows.integral_to(res.contact_y_min_m);
+    std::size_t node = 0;  // the first gap node right of the current row's left edge
+    double yl = res.contact_y_min_m;
     for (int j = 0; j < g.ny; ++j) {
       const double yr = j + 1 == g.ny ? res.contact_y_max_m : res.grid_y0_m + g.y_edge(j + 1);
       const double upto = rows.integral_to(yr);
+      const double g_mean = (upto - below) / (yr - yl);
       row_load_N(j) = line_load_per_g * (upto - below);
       below = upto;
-      patch.half_length_m(j) = std::sqrt(std::max(centres.g_at(res.grid_y0_m + g.y_m(j)), 0.0) / ev.A_mod);
+      // g's largest value on [yl, yr]: at an end or at a node (g is piecewise linear)
+      double g_max = ends.g_at(yl);
+      g_max = std::max(g_max, ends.g_at(yr));
+      while (node < gap.y.size() && gap.y[node] <= yl) ++node;
+      for (; node < gap.y.size() && gap.y[node] < yr; ++node) g_max = std::max(g_max, ev.t - gap.h[node]);
+      yl = yr;
+      const double g_centre = centres.g_at(res.grid_y0_m + g.y_m(j));
+      centre_in_contact = centre_in_contact || g_centre > 0;
+      if (g_mean > 0 && g_max > 0)
+        patch.half_length_m(j) = std::sqrt(std::max(g_centre, g_mean * g_mean / g_max) / ev.A_mod);
+      else
+        row_load_N(j) = 0;  // a row between patches (its integral is rounding)
     }
   }
-  // a row whose centre misses the contact hands its load to the nearest row in contact
-  for (int j = 0; j < g.ny; ++j) {
-    if (patch.half_length_m(j) > 0 || row_load_N(j) == 0) continue;
-    for (int d = 1; d < g.ny; ++d) {
-      const int k = j - d >= 0 && patch.half_length_m(j - d) > 0 ? j - d
-                    : j + d < g.ny && patch.half_length_m(j + d) > 0 ? j + d : -1;
-      if (k < 0) continue;
-      row_load_N(k) += row_load_N(j);
-      row_load_N(j) = 0;
-      break;
-    }
-  }
-  const double carried_N = (patch.half_length_m > 0).select(row_load_N, 0.0).sum();
-  if (!(carried_N > 0))
+  // a grid none of whose strip centres lies in the contact cannot resolve it (the wear loop refines)
+  if (!centre_in_contact)
     throw std::invalid_argument("semi-Hertz: no strip centre lies in the contact: ny " + std::to_string(g.ny) +
                                 " is too small for its " + std::to_string(res.patches) + " patches");
-  row_load_N *= F / carried_N;  // exact to rounding (carried = F(delta) within load_rtol)
+  const double carried_N = row_load_N.sum();  // F(delta), to rounding
+  const double scale = F / carried_N;         // exact to rounding (carried = F(delta) within load_rtol)
+  row_load_N *= scale;
   for (int j = 0; j < g.ny; ++j)
     if (patch.half_length_m(j) > 0) patch.strip_peak_Pa(j) = row_load_N(j) / (kPi / 2 * patch.half_length_m(j) * g.dy_m);
   fill_strip_pressures(patch);
@@ -627,7 +665,7 @@ SemiHertzResult solve_semi_hertz(const Profiles& profiles, double Rx1_m, double 
   }
   patch.b_m = width / 2;
   patch.a_m = area / (kPi * patch.b_m);
-  patch.p0_Pa = ev.p0;
+  patch.p0_Pa = ev.p0 * scale;  // the peak of the field the strips carry (F, not F(delta))
   patch.normal_load_N = F;
   patch.approach_m = ev.delta;
 

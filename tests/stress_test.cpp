@@ -796,19 +796,20 @@ Profile random_profile(Rng& r, bool upper, double width_m, std::string& kind) {
 }
 
 struct SemiHertzTally {
-  int edge = 0, patches2 = 0, peaks_above = 0, refused = 0, unconverged = 0;
-  double worst_peak = 0;
+  int edge = 0, patches2 = 0, refused = 0;
+  double worst_peak = 0;      // max p_j / p0
+  double worst_residual = 0;  // the root find's load residual, where it converged
+  int jumps = 0;              // finding 6b: F(delta) jumps across the load (lobes of contact merging)
+  int jumps_inside = 0;       // of them, contacts within both bodies
+  double worst_jump_residual = 0;
 };
 
-// strict: an unconverged root find fails (the DISABLED_ test of the finding) instead of being counted
+// strict: a root find that ends on a jump of F(delta) fails (the DISABLED_ test of finding 6b)
 void semi_hertz_case(Rng& r, const std::string& tag, SemiHertzTally& t, bool strict) {
   int& edge = t.edge;
   int& patches2 = t.patches2;
-  int& peaks_above = t.peaks_above;
   int& refused = t.refused;
-  int& unconverged = t.unconverged;
-  double& worst_peak = t.worst_peak;
-    std::string k1, k2;
+  std::string k1, k2;
   const double w1 = r.uniform(0.004, 0.05), w2 = w1 * r.uniform(1.0, 3.0);
   Profiles pr;
   pr.body1 = random_profile(r, true, w1, k1);
@@ -839,16 +840,22 @@ void semi_hertz_case(Rng& r, const std::string& tag, SemiHertzTally& t, bool str
   const ContactPatch& p = s.patch;
   edge += s.reaches_edge;
   patches2 += s.patches > 1;
-  // finding "root find": the load's root find may stop unconverged (a status and a warning, as
-  // semi_hertz.h says; counted, StressSemiHertz.DISABLED_RootFindConvergesOnSmoothProfiles)
-  const bool converged = s.status.converged() || s.reaches_edge;
-  if (!converged) {
+  // finding 6: the root find of F(delta) = load converges, also where the contact reaches a body's
+  // edge (status Failed for the edge, and its one warning), but where F(delta) itself jumps across the
+  // load (6b, when two lobes of contact merge: counted, StressSemiHertz.DISABLED_RootFindConvergesWhereLobesMerge).
+  // There the bracket has closed on the jump and the status says so, with a warning.
+  const bool jump = s.status.residual > SemiHertzOptions{}.load_rtol;
+  if (jump) {
     ASSERT_FALSE(strict) << what << ": " << s.status.message;
-    ++unconverged;
-    ASSERT_GE(warnings.count(), 1) << what << ": " << s.status.message << " without a warning";
-  } else if (!s.reaches_edge) {
-    ASSERT_EQ(warnings.count(), 0) << what << ": " << warnings.messages()[0];
+    ASSERT_NE(s.status.message.find("jumps from"), std::string::npos) << what << ": " << s.status.message;
+    ++t.jumps;
+    t.jumps_inside += !s.reaches_edge;
+    t.worst_jump_residual = std::max(t.worst_jump_residual, s.status.residual);
+  } else {
+    t.worst_residual = std::max(t.worst_residual, s.status.residual);
   }
+  ASSERT_EQ(warnings.count(), (s.reaches_edge ? 1 : 0) + (jump ? 1 : 0))
+      << what << ": " << s.status.message << (warnings.count() > 0 ? "; " + warnings.messages()[0] : "");
   ASSERT_TRUE(std::isfinite(p.a_m) && std::isfinite(p.b_m) && std::isfinite(p.p0_Pa) && std::isfinite(s.approach_m))
       << what << ": a " << p.a_m << " b " << p.b_m << " p0 " << p.p0_Pa << " delta " << s.approach_m;
   ASSERT_GT(p.a_m, 0) << what;
@@ -864,58 +871,69 @@ void semi_hertz_case(Rng& r, const std::string& tag, SemiHertzTally& t, bool str
     ASSERT_TRUE(p.strip_xi_offset.allFinite()) << what;
   }
   // load balance: the field carries the normal load
-  if (converged) {
-    ASSERT_NEAR(p.pressure_Pa.sum() * p.grid.dx_m * p.grid.dy_m / F, 1, 1e-9) << what;
-  }
-  // semi_hertz.h: p0 is the continuous field's peak, >= max p_j (finding "strip peaks": not so where
-  // rows hand their load on; counted, StressSemiHertz.DISABLED_StripPeaksAtMostP0)
-  if (p.strip_peak_Pa.maxCoeff() > p.p0_Pa * (1 + 1e-9)) {
-    ++peaks_above;
-    worst_peak = std::max(worst_peak, p.strip_peak_Pa.maxCoeff() / p.p0_Pa);
-  }
+  ASSERT_NEAR(p.pressure_Pa.sum() * p.grid.dx_m * p.grid.dy_m / F, 1, 1e-9) << what;
+  // finding 5 (fixed): p0 is the continuous field's peak, >= every strip peak p_j (semi_hertz.h)
+  const double peak = p.strip_peak_Pa.maxCoeff() / p.p0_Pa;
+  ASSERT_LE(peak, 1 + 1e-12) << what << ": max p_j " << p.strip_peak_Pa.maxCoeff() << " Pa, p0 " << p.p0_Pa << " Pa";
+  t.worst_peak = std::max(t.worst_peak, peak);
 }
 
 TEST(StressSemiHertz, RandomProfilesGiveFinitePatchesThatCarryTheLoad) {
   CaseLoop loop(10000);
   SemiHertzTally t;
   loop.run([&](Rng& r, const std::string& tag) { semi_hertz_case(r, tag, t, false); });
-  const int edge = t.edge, patches2 = t.patches2, peaks_above = t.peaks_above, refused = t.refused,
-            unconverged = t.unconverged;
-  const double worst_peak = t.worst_peak;
-  std::printf("  %d contacts reached a body's edge, %d had several patches, %d grids refused as too coarse\n", edge,
-              patches2, refused);
-  std::printf("  known findings: %d patches with a strip peak above p0 (worst %.3g p0); %d root finds unconverged\n",
-              peaks_above, worst_peak, unconverged);
+  std::printf("  %d contacts reached a body's edge, %d had several patches, %d grids refused as too coarse\n", t.edge,
+              t.patches2, t.refused);
+  std::printf("  largest strip peak %.6g p0 (finding 5 fixed); largest load residual of a converged root find %.2g\n",
+              t.worst_peak, t.worst_residual);
+  std::printf("  known finding 6b: %d root finds ended on a jump of F(delta) across the load, %d within both bodies "
+              "(worst residual %.2g)\n",
+              t.jumps, t.jumps_inside, t.worst_jump_residual);
 }
 
-// Finding "strip peaks" (issue #6 stress suite): semi_hertz.h says p0 is the continuous field's peak,
-// >= max p_j; where rows hand their load on (a row whose centre misses the contact) or the contact is
-// conforming, p_j exceeds p0, by orders of magnitude at a conforming edge. Found by
-// StressSemiHertz.RandomProfilesGiveFinitePatchesThatCarryTheLoad (base seed 20240606, case 478: a flat
-// roller on a concave path, contact at the path's rims: p_j 7.9e13 Pa against p0 3.4e9 Pa). The
-// tangential solvers take p_j as the traction bound. Enable when fixed (or when the header is changed).
-TEST(StressSemiHertz, DISABLED_StripPeaksAtMostP0) {
-  const rollwear_test::ExpectWarnings warnings;  // the contact reaches the path's edge
+// Finding 5, fixed (docs/stress-suite.md): semi_hertz.h says p0 is the continuous field's peak,
+// >= max p_j. Found by StressSemiHertz.RandomProfilesGiveFinitePatchesThatCarryTheLoad (base seed
+// 20240606, case 478: a flat roller on a concave path, contact at the path's rims): the middle row's
+// centre had g -> 0 while the row carried load, and p_j = 7.9e13 Pa against p0 3.4e9 Pa. The strip
+// peak is now capped at the field's largest peak over its row (solve_semi_hertz). (This contact's
+// root find also ends on a jump of F(delta): finding 6b, asserted in the sweep.)
+TEST(StressSemiHertz, StripPeaksAtMostP0) {
+  const rollwear_test::ExpectWarnings warnings;  // the contact reaches the roller's edges
   const Profiles pr{flat_profile(0.0336787), arc_profile(-2.84365, 0.0369259)};
   const SemiHertzResult r =
       solve_normal_on_profiles(pr, 0.40826, 0.0497155, {{2.0e11, 0.3}, {2.0e11, 0.3}}, 64197.6, {24, 31});
+  EXPECT_TRUE(r.reaches_edge);
   EXPECT_LE(r.patch.strip_peak_Pa.maxCoeff(), r.patch.p0_Pa) << r.status.message;
+  const Grid& g = r.patch.grid;
+  EXPECT_NEAR(r.patch.pressure_Pa.sum() * g.dx_m * g.dy_m / 64197.6, 1, 1e-9);
 }
 
-// Finding "root find" (issue #6 stress suite): on some smooth profiles the semi-Hertzian root find of
-// F(delta) = load stops unconverged within a body (status MaxIterations and a warning, load residual
-// up to 0.46). Found by StressSemiHertz.RandomProfilesGiveFinitePatchesThatCarryTheLoad (base seed
-// 20240606): case 7103 (crown Ry 0.222 m worn flat over +-6.3 mm, 21.6 mm wide, on a concave path R
-// -3.48 m, Rx1 0.0583 m, Rx2 0.113 m, 979 N, 14 x 43: residual 0.46 after 49 evaluations), case 4293
-// (9.0e-3), case 8117 (3.7e-3). Reproduce with ROLLWEAR_STRESS_CASE=7103 --gtest_filter='StressSemiHertz.*'
-// (the materials are random). Enable when fixed.
-TEST(StressSemiHertz, DISABLED_RootFindConvergesOnSmoothProfiles) {
-  // the sweep's cases 7103, 4293 and 8117 by their case seeds (valid while the generator is unchanged)
-  for (const std::uint64_t seed : {4504698901862353341ull, 4504698901862350531ull, 4504698901862354355ull}) {
+// Finding 6a, fixed (docs/stress-suite.md): on some smooth profiles the root find of F(delta) = load
+// stopped unconverged within a body (status MaxIterations, a warning) because F(delta) jumped where a
+// patch's share of the Boussinesq quadrature cells changed by rounding (cases 4293 and 8117 of
+// StressSemiHertz.RandomProfilesGiveFinitePatchesThatCarryTheLoad, base seed 20240606: jumps of 1.0 %
+// and 0.4 % of the load, residuals 9.0e-3 and 3.7e-3). Rerun one with ROLLWEAR_STRESS_CASE=4293
+// --gtest_filter='StressSemiHertz.*'.
+TEST(StressSemiHertz, RootFindConvergesOnSmoothProfiles) {
+  // the sweep's cases 4293 and 8117 by their case seeds (valid while the generator is unchanged)
+  for (const std::uint64_t seed : {4504698901862350531ull, 4504698901862354355ull}) {
     Rng r(seed);
     SemiHertzTally t;
     semi_hertz_case(r, fmt::format("[case seed {}]", seed), t, true);
   }
+}
+
+// Finding 6b (docs/stress-suite.md): where two lobes of contact merge through a neck, the reference
+// point (the centroid of g_+ over the patch holding the gap's minimum) jumps from one lobe's centroid
+// into the neck, where g -> 0, and F(delta) jumps across the load: no approach carries it. Case 7103
+// (crown Ry 0.222 m worn flat over +-6.3 mm, 21.6 mm wide, on a concave path R -3.48 m, Rx1 0.0583 m,
+// Rx2 0.113 m, 979 N, 14 x 43): F(delta)/F - 1 jumps from -0.17 to +0.46 at delta = 7.92 um. The root
+// find now closes its bracket on the jump and says so (status MaxIterations and a warning). Rerun with
+// ROLLWEAR_STRESS_CASE=7103 --gtest_filter='StressSemiHertz.*'. Enable when fixed.
+TEST(StressSemiHertz, DISABLED_RootFindConvergesWhereLobesMerge) {
+  Rng r(4504698901862353341ull);  // the sweep's case 7103 (valid while the generator is unchanged)
+  SemiHertzTally t;
+  semi_hertz_case(r, "[case seed 4504698901862353341]", t, true);
 }
 
 // ==== the wear loop ====
