@@ -19,7 +19,10 @@
 // Along a strip, integral sqrt(1 - x^2/a^2) / sqrt(x^2 + eta^2) dx = 2 (sqrt(a^2 + eta^2)/a) (K(k) - E(k)),
 // k^2 = a^2/(a^2 + eta^2); its log singularity at eta = 0 is integrated exactly. The load
 // F(delta) = p0 integral (pi/2) a(y) sqrt(g/(eps delta)) dy rises with delta; a bracketed secant in
-// log delta finds F(delta) = normal load.
+// log delta, with a bisection after any step that does not halve the residual, finds F(delta) =
+// normal load. Where two lobes of contact merge, y0 jumps into the neck and F(delta) can jump across
+// the load (docs/stress-suite.md, finding 6b): the bracket then closes on the jump, and the status
+// (MaxIterations, with a warning) gives F(delta)/F - 1 on both sides.
 #pragma once
 
 #include <Eigen/Core>
@@ -46,12 +49,16 @@ struct SemiHertzOptions {
 struct SemiHertzResult {
   // The patch: grid over the contact's bounding box, x in +-max a(y), y over [contact_y_min_m,
   // contact_y_max_m] (so centred on the contact, not on the profiles' y = 0: see grid_y0_m).
-  // a_j = a(y_j) at the strip centres (0 for rows between disconnected patches); p_j such that
-  // (pi/2) p_j a_j dy is the load of row j exactly (integrated over the row; a row whose centre
-  // misses the contact hands its load to the nearest row in contact), total = normal load.
+  // p_j such that (pi/2) p_j a_j dy is the load of row j exactly (integrated over the row; every row
+  // keeps its own load), total = normal load. a_j = a(y_j) at the strip centre, unless that would put
+  // p_j above the field's largest peak over the row (g(y_j) small against the row's g: a row cut by
+  // a patch's edge, or a neck); then p_j is that peak and a_j = sqrt(gbar^2/gmax / A_mod) carries the
+  // row's load (gbar, gmax the row's mean and largest g_+). 0 for rows between disconnected patches.
+  // So a_j <= the row's largest a(y) and p_j <= the row's largest p(y) <= p0.
   // a_m, b_m: the equivalent ellipse for Kalker's coefficients, b = half the summed width of the
-  // patches, a = contact area / (pi b) (both exact for Hertz). p0_Pa: the continuous field's peak,
-  // p0 above (>= max p_j, which are row means). approach_m = delta.
+  // patches, a = contact area / (pi b) (both exact for Hertz). p0_Pa: the continuous field's peak p0
+  // above, scaled with the strips to carry the normal load (F/F(delta), within load_rtol of 1).
+  // approach_m = delta.
   ContactPatch patch;
   double grid_y0_m = 0;      // profiles' y of the grid's y = 0: strip j lies at grid_y0_m + grid.y_m(j)
   double reference_y_m = 0;  // profiles' y of the reference point y0 (Boussinesq point; where the
