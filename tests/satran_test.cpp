@@ -339,7 +339,7 @@ TEST(SatranSkip, MirroredStripsChangeNothing) {
     c.settings.dt_s = k.scheme == TransientScheme::Upwind ? 2e-6 : 0;
     c.settings.t_end_s = 6e-4;
     TransientCase all = c;
-    all.settings.skip_mirrored = false;
+    all.settings.skips.mirrored = false;
     std::vector<TransientRecord> rows_skip, rows_all;
     const TransientResult skip = run_transient(c, [&](const TransientRecord& r, const Eigen::ArrayXd&) { rows_skip.push_back(r); });
     const TransientResult full = run_transient(all, [&](const TransientRecord& r, const Eigen::ArrayXd&) { rows_all.push_back(r); });
@@ -365,6 +365,46 @@ TEST(SatranSkip, MirroredStripsChangeNothing) {
     if (k.phi != 0) {
       EXPECT_EQ(skip.dissipated_J, full.dissipated_J) << k.what;  // the skip does not apply
     }
+  }
+}
+
+// Without lateral creepage or spin, from a state without tau_y, the shift step's stick pass leaves tau_y
+// out (TransientSkips::lateral): tau_y = 0 stays 0 (the full run's final state shows it), and every record,
+// the strip energies and the final state are those of the full step, bit for bit. Pure xi with Heathcote
+// offsets from rest through a speed ramp (fallback steps at CFL < 1 too); and eta that falls back to 0,
+// after which the state holds tau_y and the skip must not be taken.
+TEST(SatranSkip, LateralFreeStepsChangeNothing) {
+  struct Case { const char* what; History eta; bool skipped; };
+  for (const Case& k : {Case{"pure xi", constant_history(0.0), true},
+                       Case{"eta, then 0", {{0, 4e-4, 5e-4}, {2e-4, 2e-4, 0}}, false}}) {
+    TransientCase c = paper_case(0, {1e-3, 0, 0}, 21);
+    c.inputs.speed_m_per_s = ramp_history(0, 0, 2e-4, 1.8);
+    c.inputs.eta = k.eta;
+    c.settings.t_end_s = 6e-4;
+    c.settings.skips.mirrored = false;  // all strips stepped, so that both skips are not mixed up
+    TransientCase all = c;
+    all.settings.skips.lateral = false;
+    std::vector<TransientRecord> rows_skip, rows_all;
+    const TransientResult skip = run_transient(c, [&](const TransientRecord& r, const Eigen::ArrayXd&) { rows_skip.push_back(r); });
+    const TransientResult full = run_transient(all, [&](const TransientRecord& r, const Eigen::ArrayXd&) { rows_all.push_back(r); });
+    ASSERT_EQ(rows_skip.size(), rows_all.size()) << k.what;
+    for (std::size_t s = 0; s < rows_all.size(); ++s) {
+      EXPECT_EQ(rows_skip[s].Fx_N, rows_all[s].Fx_N) << k.what << ", step " << s;
+      EXPECT_EQ(rows_skip[s].Fy_N, rows_all[s].Fy_N) << k.what << ", step " << s;
+      EXPECT_EQ(rows_skip[s].Mz_N_m, rows_all[s].Mz_N_m) << k.what << ", step " << s;
+      EXPECT_EQ(rows_skip[s].power_W, rows_all[s].power_W) << k.what << ", step " << s;
+      EXPECT_EQ(rows_skip[s].balance_residual_W, rows_all[s].balance_residual_W) << k.what << ", step " << s;
+    }
+    EXPECT_TRUE((skip.strip_energy_J_per_m == full.strip_energy_J_per_m).all()) << k.what;
+    double ty_max = 0;
+    for (std::size_t n = 0; n < full.final_state.nodes.size(); ++n) {
+      EXPECT_EQ(skip.final_state.nodes[n].tx, full.final_state.nodes[n].tx) << k.what << ", node " << n;
+      EXPECT_EQ(skip.final_state.nodes[n].ty, full.final_state.nodes[n].ty) << k.what << ", node " << n;
+      ty_max = std::max(ty_max, std::abs(full.final_state.nodes[n].ty));
+    }
+    EXPECT_NE(rows_all.back().Fx_N, 0) << k.what;  // the run carries traction
+    EXPECT_EQ(ty_max == 0, k.skipped) << k.what << ": the largest tau_y " << ty_max << " Pa";
+    EXPECT_EQ(skip.final_state.lateral_free, k.skipped) << k.what;  // the skip was taken to the end, or not at all
   }
 }
 

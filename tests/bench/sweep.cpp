@@ -746,7 +746,7 @@ void skips_study(const Options& o, std::vector<Row>& rows) {
 
     const TransientCase t = start_stop_duty_cycle();
     TransientCase all = t;
-    all.settings.skip_mirrored = false;
+    all.settings.skips.mirrored = false;
     const TransientResult ta = run_transient(t), tb = run_transient(all);
     Row ton = skip_row("start-stop-wear", "mirror-satran", t.patch->grid.nx, true,
                        "the duty cycle (skip_steady on) stepping half the strips against all (test "
