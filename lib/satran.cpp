@@ -467,13 +467,33 @@ StepResult satran_step(const ContactPatch& patch, const TangentialProblem& probl
   r.strip_energy_J_per_m = Eigen::ArrayXd::Zero(g.ny);
   if (fields) allocate_fields(r, g);
 
-  // a new flexibility rescales tau = u/L with u carried
+  // a new flexibility rescales tau = u/L with u carried; where that lifts tau above the bound mu p of the
+  // step's contact (L smaller), the node slips back onto the bound at once, and the step starts within it
+  // (stress finding "rescale": the path means of the step exceeded mu F). The energy the springs lose
+  // counts with the rescale's.
   if (state.L_m_per_Pa > 0 && state.L_m_per_Pa != L) {
     const double before = state.L_m_per_Pa * dx / 2 * node_energy_sum(state) * g.dy_m;
     const double scale = state.L_m_per_Pa / L;
     for (StripNode& n : state.nodes) {
       n.tx *= scale;
       n.ty *= scale;
+    }
+    if (scale > 1) {
+      for (int j = 0; j < g.ny; ++j) {
+        const double a = patch.half_length_m(j);
+        for (int i = 0; i <= g.nx; ++i) {
+          const double x = g.x_edge(i);
+          if (!(x > -a && x < a)) continue;  // released below
+          StripNode& n = state.node(i, j);
+          const double bound = problem.mu * patch.edge_pressure_Pa(i, j), norm = std::hypot(n.tx, n.ty);
+          if (!(norm > bound)) continue;
+          n.ex = n.tx / norm;
+          n.ey = n.ty / norm;
+          n.tx = bound * n.ex;
+          n.ty = bound * n.ey;
+          n.stick = false;
+        }
+      }
     }
     r.flexibility_J = L * dx / 2 * node_energy_sum(state) * g.dy_m - before;
   }
@@ -838,8 +858,8 @@ TransientResult run_transient(const TransientCase& c, const StepObserver& observ
       const History* inputs[] = {&c.inputs.speed_m_per_s, &c.inputs.xi, &c.inputs.eta, &c.inputs.phi_per_m,
                                  &c.inputs.normal_load_N};
       double since = 0, until = set.t_end_s;
-      for (const History* h : inputs) {
-        since = std::max(since, constant_since(*h, t - k.dt_s));
+      for (const History* h : inputs) {  // constant on [since, until], the last step [t - dt, t] included
+        since = std::max(since, constant_since(*h, t));
         until = std::min(until, constant_until(*h, t));
       }
       if (next_snap < snaps.size()) until = std::min(until, snaps[next_snap]);

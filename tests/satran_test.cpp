@@ -12,6 +12,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "lib/case.h"
 #include "lib/steady.h"
 #include "tests/closed_forms.h"
 #include "tests/log_capture.h"
@@ -405,6 +406,61 @@ TEST(SatranSkip, LateralFreeStepsChangeNothing) {
     EXPECT_NE(rows_all.back().Fx_N, 0) << k.what;  // the run carries traction
     EXPECT_EQ(ty_max == 0, k.skipped) << k.what << ": the largest tau_y " << ty_max << " Pa";
     EXPECT_EQ(skip.final_state.lateral_free, k.skipped) << k.what;  // the skip was taken to the end, or not at all
+  }
+}
+
+// A speed step that falls inside a shift step, with skip_steady: that step's dt is not the steady dx/V, so
+// no constant stretch may be skipped from it, and the rolled distance must stay the integral of V (stress
+// seed 777, case 2931: the skip took the straddling step for steady and q_end lost 2.7 %). The jump is put
+// at 16 places across one step, so that some fall inside one.
+TEST(SatranSkip, SpeedStepInsideAStepKeepsTheRolledDistance) {
+  TransientCase c = paper_case(0, {1e-3, 0, 0}, 20);
+  const Grid g = transient_grid(c);
+  const double V0 = 1.8, V1 = 2.0, dt0 = g.dx_m / V0;
+  c.settings.skip_steady = true;
+  int skipped_runs = 0;
+  for (int k = 0; k < 16; ++k) {
+    const double t_jump = 40 * dt0 + (k + 0.5) / 16 * dt0;
+    c.inputs.speed_m_per_s = {{0, t_jump, t_jump * (1 + 1e-9)}, {V0, V0, V1}};
+    c.settings.t_end_s = t_jump + 60 * g.dx_m / V1;
+    bool skipped = false;
+    const TransientResult r =
+        run_transient(c, [&](const TransientRecord& rec, const Eigen::ArrayXd&) { skipped |= rec.skipped; });
+    skipped_runs += skipped;
+    const double q = integral(c.inputs.speed_m_per_s, 0, c.settings.t_end_s);
+    EXPECT_NEAR(r.q_end_m, q, 1e-12 * q) << "jump at " << t_jump << " s";
+  }
+  EXPECT_EQ(skipped_runs, 16);  // the stretches before and after the jump are still skipped
+}
+
+// A smaller Kalker flexibility L (here: eta falling, so that the creepage ratio and L change) rescales
+// tau = u/L upwards; nodes lifted above mu p slip back onto it before the step, so that the path means of
+// every exact shift step stay within mu F (stress seed 777, case 1102, whose parameters these are: |F| was
+// 0.30 % above mu F; with spin the sweep saw 15 %). Checked against the bound, not a reference solution.
+TEST(Satran, RescaledTractionsStayWithinTheBound) {
+  for (const double phi : {0.0, 300.0}) {
+    TransientCase c;
+    c.bodies = {{0.310582, 0.649836}, {0.552273, 0.00615219}};
+    c.materials = {{2.237e11, 0.09698}, {6.61e10, 0.07216}};
+    c.mu = 0.335781;
+    const double load_N = 0.501619;
+    c.inputs.speed_m_per_s = {{0, 2.29362e-06}, {0, 27.8064}};
+    c.inputs.xi = constant_history(-7.28725e-05);
+    c.inputs.eta = {{1.01033e-05, 3.34655e-05}, {0.00609188, 0}};
+    c.inputs.phi_per_m = constant_history(phi);
+    c.inputs.normal_load_N = constant_history(load_N);
+    c.settings.grid = {19, 21};
+    c.settings.t_end_s = 3.49889e-05;
+    c.settings.dt_s = 1.84152e-06;
+    const std::vector<TransientRecord> rows = run(c);
+    int exact = 0;
+    for (const TransientRecord& r : rows) {
+      if (r.cfl != 1 || r.skipped) continue;
+      ++exact;
+      EXPECT_LE(std::hypot(r.Fx_N, r.Fy_N), c.mu * load_N * (1 + 1e-9)) << "phi " << phi << ", step " << r.step;
+      EXPECT_NEAR(r.balance_residual_W, 0, 1e-9 * std::abs(r.power_W) + 1e-15) << "phi " << phi << ", step " << r.step;
+    }
+    EXPECT_GT(exact, 20) << "phi " << phi;
   }
 }
 
