@@ -1022,9 +1022,10 @@ int depth_reversals(const Eigen::ArrayXd& h, double delta) {
 constexpr double kVolumeTol = 1e-10;     // worn volume / (k_E x energy) - 1: the same Runge-Kutta sums
 constexpr double kRoughDepthFraction = 0.1;  // depth_reversals counts reversals by more than this x max depth
 constexpr int kMaxDepthReversals = 5;        // up to three worn humps
-// A life whose error tolerance relative to its depth, rtol + atol / max depth, is at most this (the
-// shipped default rtol) must not be rough. Looser lives may be: finding 9 (the roughness is the
-// adaptive step's error, gone at rtol 1e-5; docs/stress-suite.md).
+// A life of the sweeps whose error tolerance relative to its depth, rtol + atol / max depth, is at most
+// this (the shipped default rtol) must not be rough; looser lives may be. Finding 9 (docs/stress-suite.md):
+// the roughness is the adaptive step's error, gone at rtol 1e-3 on the lives measured but one, a depth
+// of some 40 elastic approaches that needs a still smaller tolerance (DISABLED_WornProfilesStaySmooth).
 constexpr double kSmoothEffectiveRtol = 1e-3;
 
 // Known findings of the wear loop (issue #6 stress suite; docs/stress-suite.md), counted and printed by
@@ -1325,13 +1326,20 @@ TEST(StressWear, DISABLED_WornContactSplitIntoNarrowPatchesIsSolved) {
   }
 }
 
-// Finding 9, kept until fixed (--gtest_also_run_disabled_tests): the random lives 16 and 21 (seed
-// 20240606, both at rtol 0.1) are rough, 19 and 25 reversals by a tenth of the depth; at rtol 1e-5 they
-// have 1.
+// Finding 9, kept until fixed (--gtest_also_run_disabled_tests): random life 16 (seed 20240606, rtol 0.1,
+// effective 0.11) has 17 reversals by a tenth of its depth, and 1 at rtol 1e-3, 1e-5 and 1e-6. Life 3
+// (a flat worn band at 1.2 mN, worn 17 nm deep, some 40 times its elastic approach) still has 15 at rtol
+// 1e-5 and atol 1e-11 (effective 6.1e-4): there the tolerance must be small against the approach, not
+// only against the depth.
 TEST(StressWear, DISABLED_WornProfilesStaySmooth) {
-  for (const std::uint64_t seed : {5818732027616048379ull, 5818732027616048384ull}) {
+  for (const std::uint64_t seed : {5818732027616048379ull, 5818732027616048366ull}) {
     std::string what;
-    const wear::WearCase c = random_life_of_seed(seed, what);
+    wear::WearCase c = random_life_of_seed(seed, what);
+    if (seed == 5818732027616048366ull) {
+      c.wear.stepping.rtol = 1e-5;
+      c.wear.stepping.atol_m = 1e-11;
+      what += ", now at rtol 1e-5 atol 1e-11";
+    }
     WearFindings found;
     const LifeCheck lc = run_checked_life(c, what, found);
     EXPECT_LE(lc.worst_reversals, kMaxDepthReversals) << what;
