@@ -3,8 +3,8 @@
 // input, not a closed form:
 //   finite outputs; |tau| <= mu p everywhere (to rounding); the energy identity of PHYSICS.md §4
 //   (steady: P_l = creep power - trailing power per strip; Satran: the step balance residual); the
-//   wear loop's worn volume = k_E x dissipated energy at every step, non-negative depths, no
-//   oscillation in the worn profile, no runaway of the step control; the semi-Hertzian solver's load
+//   wear loop's worn volume = k_E x dissipated energy at every step, non-negative depths, no rough
+//   worn profile at the shipped tolerance, no runaway of the step control; the semi-Hertzian solver's load
 //   balance on random smooth profiles.
 // Ranges (issue #6): mu 0..1, creepages 1e-8..1 of both signs and spin, a/b 0.01..100 (from the
 // radii), load 1e-3 N..1e6 N, speed 0..100 m/s with ramps and steps, lives of 1e9 revolutions.
@@ -967,7 +967,7 @@ RandomWear random_wear_case(Rng& r, double load_lo = 1e-3, double load_hi = 1e6)
   c.wear.limits = {r.chance(0.5) ? r.log_uniform(1e-6, 3e-4) : 0.0, 0, true};
   c.wear.smoothing_wavelength_m = r.chance(0.2) ? 0.0 : r.uniform(1e-4, 1e-3);
   c.wear.stepping.method = "adaptive";
-  // the reader takes rtol up to 0.1: a third of the lives run at that loosest tolerance
+  // the reader takes rtol up to 0.1: a fifth of the lives (ln 5 / ln 5000) run at that loosest tolerance
   c.wear.stepping.rtol = std::min(r.log_uniform(1e-4, 0.5), 0.1);
   c.wear.stepping.atol_m = c.wear.stepping.rtol * 1e-6;
   c.wear.stepping.max_steps = 2000;
