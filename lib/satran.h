@@ -21,8 +21,9 @@
 // of |tau|^2:
 //   dissipated = creep work - (E_end - E_start) - carried out at the trailing edge - transport loss,
 // with E_start taken after two changes at the start of the step, both reported: nodes that left
-// the contact (load decreased) release their energy, and a change of L (load, contact size or creepage ratio) rescales tau = u/L with u carried; the
-// energy that changes with it is reported as the flexibility term. For shift the balance is exact
+// the contact (load decreased) release their energy, and a change of L (load, contact size or
+// creepage ratio) rescales tau = u/L with u carried, where a smaller L lifts tau above mu p slipping
+// back onto the bound; the energy that changes with both is reported as the flexibility term. For shift the balance is exact
 // to rounding with no transport loss; upwind and Lax-Friedrichs lose energy in their transport
 // (numerical diffusion), reported as its own term, not as dissipation by slip (which would wear).
 #pragma once
