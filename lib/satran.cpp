@@ -52,6 +52,7 @@ TransientState rest_state(const Grid& grid) {
   s.ny = grid.ny;
   s.nodes.assign(static_cast<size_t>(grid.nx + 1) * grid.ny, StripNode{});
   s.mirror_images = true;
+  s.lateral_free = true;
   return s;
 }
 
@@ -153,7 +154,7 @@ struct ShiftScratch {
 // all at once so that they overlap, as in the steady march; from a stick node the whole kernel finds the
 // crossing into slip. The strip's two end intervals go through the whole kernel. The fields need each
 // interval's integrals: when they are written, every interval goes through the whole kernel.
-template <bool kFields, bool kSpin>
+template <bool kFields, bool kSpin, bool kLateral>
 StripEnergy shift_strip(const ContactPatch& patch, const StripRates& r, int j, double L, const StepKinematics& k,
                         ShiftScratch& scratch, TransientState& state, StepResult* fields) {
   const Grid& g = patch.grid;
@@ -226,25 +227,35 @@ StripEnergy shift_strip(const ContactPatch& patch, const StripRates& r, int j, d
     int n_failed = 0;
     for (int from = first; from <= last; from += kBlock) {
       const int b = std::min(from, last - kBlock + 1);  // the block's intervals are b .. b + kBlock - 1
-      Block tx, ty;  // the old tau at x_hi: nodes b + 1 and up are not written yet
+      Block tx, ty = Block::Zero();  // the old tau at x_hi: nodes b + 1 and up are not written yet
       bool slip_node = false;  // one of them slips (asked with spin only)
       for (int q = 0; q < kBlock; ++q) {
         tx(q) = node[b + 1 + q].tx;
-        ty(q) = node[b + 1 + q].ty;
+        if constexpr (kLateral) ty(q) = node[b + 1 + q].ty;
         if constexpr (kSpin) slip_node |= !node[b + 1 + q].stick;
       }
       auto at = [b](const Eigen::ArrayXd& v) { return BlockMap(v.data() + b); };
       const BlockMap x_hi(x + b + 1), h = at(scratch.t);
       const Block bound = r.mu * BlockMap(edge_p + b);
-      const detail::StickPrediction<Block> p = detail::stick_prediction<Block, BlockMap>(
-          r.alpha_Pa_per_m, tx, ty, h, {at(scratch.beta_t), at(scratch.gamma_t2)});
-      const Block lo2_lane = p.px * p.px + p.py * p.py;
+      // without lateral work tau_y = 0 stays 0 (beta = gamma = 0): the x parts alone, the same numbers
+      detail::StickPrediction<Block> p;
+      detail::StickIntegrals<Block> I;
+      Block lo2_lane, hi2_lane;
+      if constexpr (kLateral) {
+        p = detail::stick_prediction<Block, BlockMap>(r.alpha_Pa_per_m, tx, ty, h,
+                                                      {at(scratch.beta_t), at(scratch.gamma_t2)});
+        I = detail::stick_integrals<Block, BlockMap>(r.alpha_Pa_per_m, tx, ty, x_hi, h,
+                                                     {at(scratch.t2_2), at(scratch.beta_t2_2), at(scratch.gamma_t3_3),
+                                                      at(scratch.beta_t3_3), at(scratch.gamma_t4_4)});
+        lo2_lane = p.px * p.px + p.py * p.py;
+        hi2_lane = tx * tx + ty * ty;
+      } else {
+        p.px = tx - r.alpha_Pa_per_m * h;
+        I.Ix = tx * h - r.alpha_Pa_per_m * at(scratch.t2_2);
+        lo2_lane = p.px * p.px;
+        hi2_lane = tx * tx;
+      }
       const Block excess = lo2_lane - bound * bound;  // > 0 exactly where stick_step's node test fails
-      const detail::StickIntegrals<Block> I = detail::stick_integrals<Block, BlockMap>(
-          r.alpha_Pa_per_m, tx, ty, x_hi, h,
-          {at(scratch.t2_2), at(scratch.beta_t2_2), at(scratch.gamma_t3_3), at(scratch.beta_t3_3),
-           at(scratch.gamma_t4_4)});
-      const Block hi2_lane = tx * tx + ty * ty;
       // With spin, from a stick node: first a sufficient pass, rigorous with a margin far above rounding,
       // |tau| <= max(|tau_hi|, |p|) + |gamma| h^2 / 4 (the parabola is its chord, convex in |.|, plus
       // gamma t (t - h) e_y) below min(g_hi, g_lo) (g is concave in x), where clear < 0; where it does
@@ -272,7 +283,7 @@ StripEnergy shift_strip(const ContactPatch& patch, const StripRates& r, int j, d
         const StripNode& hi = node[b + q + 1];
         StripNode& lo = node[b + q];
         lo.tx = p.px(q);
-        lo.ty = p.py(q);
+        lo.ty = kLateral ? p.py(q) : 0.0;
         lo.ex = hi.ex;
         lo.ey = hi.ey;
         lo.stick = true;
@@ -280,8 +291,10 @@ StripEnergy shift_strip(const ContactPatch& patch, const StripRates& r, int j, d
       if (b == from && excess.maxCoeff() <= 0 &&
           (!kSpin || (!slip_node && (!hull || ((clear < 0) || (inner <= 0)).all())))) {  // the whole block sticks
         strip.Ix += I.Ix.sum();
-        strip.Iy += I.Iy.sum();
-        strip.Ixy += I.Ixy.sum();
+        if constexpr (kLateral) {
+          strip.Iy += I.Iy.sum();
+          strip.Ixy += I.Ixy.sum();
+        }
         strip.stick_length_m += h.sum();
         hi2 += hi2_lane.sum();
         lo2 += lo2_lane.sum();
@@ -311,8 +324,10 @@ StripEnergy shift_strip(const ContactPatch& patch, const StripRates& r, int j, d
           continue;
         }
         strip.Ix += I.Ix(q);
-        strip.Iy += I.Iy(q);
-        strip.Ixy += I.Ixy(q);
+        if constexpr (kLateral) {
+          strip.Iy += I.Iy(q);
+          strip.Ixy += I.Ixy(q);
+        }
         strip.stick_length_m += h(q);
         hi2 += hi2_lane(q);
         lo2 += lo2_lane(q);
@@ -437,7 +452,7 @@ StripEnergy explicit_strip(const ContactPatch& patch, const TangentialProblem& p
 }  // namespace
 
 StepResult satran_step(const ContactPatch& patch, const TangentialProblem& problem, const StepKinematics& k,
-                       TransientScheme scheme, TransientState& state, bool fields, bool skip_mirrored) {
+                       TransientScheme scheme, TransientState& state, bool fields, TransientSkips skips) {
   const Grid& g = patch.grid;
   if (state.nx != g.nx || state.ny != g.ny)
     throw std::invalid_argument("satran: the state's grid (" + std::to_string(state.nx) + " x " +
@@ -452,13 +467,33 @@ StepResult satran_step(const ContactPatch& patch, const TangentialProblem& probl
   r.strip_energy_J_per_m = Eigen::ArrayXd::Zero(g.ny);
   if (fields) allocate_fields(r, g);
 
-  // a new flexibility rescales tau = u/L with u carried
+  // a new flexibility rescales tau = u/L with u carried; where that lifts tau above the bound mu p of the
+  // step's contact (L smaller), the node slips back onto the bound at once, and the step starts within it
+  // (stress finding "rescale": the path means of the step exceeded mu F). The energy the springs lose
+  // counts with the rescale's.
   if (state.L_m_per_Pa > 0 && state.L_m_per_Pa != L) {
     const double before = state.L_m_per_Pa * dx / 2 * node_energy_sum(state) * g.dy_m;
     const double scale = state.L_m_per_Pa / L;
     for (StripNode& n : state.nodes) {
       n.tx *= scale;
       n.ty *= scale;
+    }
+    if (scale > 1) {
+      for (int j = 0; j < g.ny; ++j) {
+        const double a = patch.half_length_m(j);
+        for (int i = 0; i <= g.nx; ++i) {
+          const double x = g.x_edge(i);
+          if (!(x > -a && x < a)) continue;  // released below
+          StripNode& n = state.node(i, j);
+          const double bound = problem.mu * patch.edge_pressure_Pa(i, j), norm = std::hypot(n.tx, n.ty);
+          if (!(norm > bound)) continue;
+          n.ex = n.tx / norm;
+          n.ey = n.ty / norm;
+          n.tx = bound * n.ex;
+          n.ty = bound * n.ey;
+          n.stick = false;
+        }
+      }
     }
     r.flexibility_J = L * dx / 2 * node_energy_sum(state) * g.dy_m - before;
   }
@@ -486,19 +521,27 @@ StepResult satran_step(const ContactPatch& patch, const TangentialProblem& probl
   std::vector<StripNode> old(exact_shift ? 0 : g.nx + 1);
   std::optional<ShiftScratch> scratch;
   if (exact_shift) scratch.emplace(g, strip_rates(patch, rates_problem, 0));
-  // the shift step compiled with or without spin (phi/L3 is the same on every strip)
+  // the shift step compiled with or without spin (phi/L3 is the same on every strip), and without the
+  // lateral work where tau_y = 0 stays 0: no lateral creepage or spin from a state without tau_y
   const bool spin = exact_shift && has_spin(strip_rates(patch, rates_problem, 0));
+  const bool lateral_free = state.lateral_free && k.slip_y_m == 0 && k.spin_rad == 0;
   auto shift = [&](int j) {
     const StripRates rj = strip_rates(patch, rates_problem, j);
-    if (fields) {
-      return spin ? shift_strip<true, true>(patch, rj, j, L, k, *scratch, state, &r)
-                  : shift_strip<true, false>(patch, rj, j, L, k, *scratch, state, &r);
+    StepResult* out = fields ? &r : nullptr;
+    if (spin) {
+      return fields ? shift_strip<true, true, true>(patch, rj, j, L, k, *scratch, state, out)
+                    : shift_strip<false, true, true>(patch, rj, j, L, k, *scratch, state, out);
     }
-    return spin ? shift_strip<false, true>(patch, rj, j, L, k, *scratch, state, nullptr)
-                : shift_strip<false, false>(patch, rj, j, L, k, *scratch, state, nullptr);
+    if (lateral_free && skips.lateral) {
+      return fields ? shift_strip<true, false, false>(patch, rj, j, L, k, *scratch, state, out)
+                    : shift_strip<false, false, false>(patch, rj, j, L, k, *scratch, state, out);
+    }
+    return fields ? shift_strip<true, false, true>(patch, rj, j, L, k, *scratch, state, out)
+                  : shift_strip<false, false, true>(patch, rj, j, L, k, *scratch, state, out);
   };
+  state.lateral_free = lateral_free;  // after this step (every scheme keeps tau_y = 0 then)
   // without spin, on a mirror-symmetric patch and state, strips from `strips` up are mirror images
-  const int strips = skip_mirrored && k.spin_rad == 0 && state.mirror_images ? first_mirrored_strip(patch, 0.0) : g.ny;
+  const int strips = skips.mirrored && k.spin_rad == 0 && state.mirror_images ? first_mirrored_strip(patch, 0.0) : g.ny;
   state.mirror_images = strips < g.ny;  // after this step
   std::vector<StripEnergy> energies(g.ny);
   double stick_area = 0, area = 0, E_start = 0, E_end = 0;  // sums of |tau|^2 over interior nodes
@@ -704,7 +747,7 @@ TransientResult run_transient(const TransientCase& c, const StepObserver& observ
       k.spin_rad = cr.phi_per_m * k.dq_m;
       const ContactPatch& patch = patches.at(F);
       const TangentialProblem pb = make_tangential_problem(patch, c.materials, cr, c.mu, V);
-      r = satran_step(patch, pb, k, set.scheme, state, reaches_snapshot(k.dt_s), set.skip_mirrored);
+      r = satran_step(patch, pb, k, set.scheme, state, reaches_snapshot(k.dt_s), set.skips);
     } else {
       // the roller's spin at the end of the step balances the creep torque over the step (implicit)
       const RollerInertia& in = *c.inertia;
@@ -727,7 +770,7 @@ TransientResult run_transient(const TransientCase& c, const StepObserver& observ
         const TangentialProblem pb = make_tangential_problem(patch, c.materials, ratio, c.mu, Vm);
         trial_state = state;
         out = satran_step(patch, pb, kk, TransientScheme::Shift, trial_state, reaches_snapshot(longest),
-                          set.skip_mirrored);
+                          set.skips);
         // J1 (omega_end - omega1) = (-R1 Fx - T_res) dt
         return in.J1_kg_m2 * (omega_end - omega1) - (-in.R1_m * out.Fx_N - in.T_res_N_m) * kk.dt_s;
       };
@@ -815,8 +858,8 @@ TransientResult run_transient(const TransientCase& c, const StepObserver& observ
       const History* inputs[] = {&c.inputs.speed_m_per_s, &c.inputs.xi, &c.inputs.eta, &c.inputs.phi_per_m,
                                  &c.inputs.normal_load_N};
       double since = 0, until = set.t_end_s;
-      for (const History* h : inputs) {
-        since = std::max(since, constant_since(*h, t - k.dt_s));
+      for (const History* h : inputs) {  // constant on [since, until], the last step [t - dt, t] included
+        since = std::max(since, constant_since(*h, t));
         until = std::min(until, constant_until(*h, t));
       }
       if (next_snap < snaps.size()) until = std::min(until, snaps[next_snap]);

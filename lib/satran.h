@@ -21,8 +21,9 @@
 // of |tau|^2:
 //   dissipated = creep work - (E_end - E_start) - carried out at the trailing edge - transport loss,
 // with E_start taken after two changes at the start of the step, both reported: nodes that left
-// the contact (load decreased) release their energy, and a change of L (load, contact size or creepage ratio) rescales tau = u/L with u carried; the
-// energy that changes with it is reported as the flexibility term. For shift the balance is exact
+// the contact (load decreased) release their energy, and a change of L (load, contact size or
+// creepage ratio) rescales tau = u/L with u carried, where a smaller L lifts tau above mu p slipping
+// back onto the bound; the energy that changes with both is reported as the flexibility term. For shift the balance is exact
 // to rounding with no transport loss; upwind and Lax-Friedrichs lose energy in their transport
 // (numerical diffusion), reported as its own term, not as dissipation by slip (which would wear).
 #pragma once
@@ -61,8 +62,11 @@ struct TransientState {
   std::vector<StripNode> nodes;  // (nx+1) x ny: node i of strip j sits at x_edge(i), index i + j (nx+1)
   double L_m_per_Pa = 0;         // the flexibility the tractions refer to (u = L tau); 0 = not set yet
   // strips j and ny - 1 - j hold the same nodes, bit for bit: true at rest and after a step that
-  // mirrored its strips (satran_step's skip_mirrored); whoever writes the nodes otherwise clears it
+  // mirrored its strips (TransientSkips::mirrored); whoever writes the nodes otherwise clears it
   bool mirror_images = false;
+  // every node's tau_y is 0: true at rest and after a step without lateral creepage or spin from such a
+  // state (TransientSkips::lateral); whoever writes the nodes otherwise clears it
+  bool lateral_free = false;
 
   StripNode& node(int i, int j) { return nodes[i + j * (nx + 1)]; }
   const StripNode& node(int i, int j) const { return nodes[i + j * (nx + 1)]; }
@@ -93,15 +97,25 @@ struct StepResult {
   Eigen::ArrayXXd tau_x_Pa, tau_y_Pa, slip_x_m_per_s, slip_y_m_per_s;
 };
 
+// What satran_step may leave out (each off only for its tests and benchmarks):
+//   mirrored: without spin, on a mirror-symmetric patch (first_mirrored_strip) whose state holds mirror
+//     images (TransientState::mirror_images), half the strips are stepped and the others take their
+//     mirror images (the same to rounding);
+//   lateral: without lateral creepage or spin, from a state without tau_y (TransientState::lateral_free),
+//     the shift step's stick pass does not compute tau_y, which stays 0 (the same to the bit).
+struct TransientSkips {
+  bool mirrored = true;
+  bool lateral = true;
+};
+
 // One step on the contact `patch` with the flexibilities (L1, L2, L3, L) and friction of `problem`;
 // the rigid kinematics `k` drive it (problem.creepages and speed are not used). For shift, k.dq_m is
 // dx or less (less: an upwind step at CFL dq/dx). Throws std::invalid_argument for a CFL number
-// above 1 or a state on another grid. skip_mirrored: without spin, on a mirror-symmetric patch
-// (first_mirrored_strip) whose state holds mirror images (state.mirror_images), half the strips are
-// stepped and the others take their mirror images (the same to rounding; docs/accuracy-and-speed.md).
+// above 1 or a state on another grid. `skips` leaves out work that cannot change the result beyond
+// rounding (docs/accuracy-and-speed.md).
 StepResult satran_step(const ContactPatch& patch, const TangentialProblem& problem, const StepKinematics& k,
                        TransientScheme scheme, TransientState& state, bool fields = false,
-                       bool skip_mirrored = true);
+                       TransientSkips skips = {});
 
 // ---- runs over a time history ----
 
@@ -139,8 +153,8 @@ struct TransientSettings {
   // or t_end_s) is one record with the last step's strip powers times its duration, instead of a step
   // per dx rolled. The steps after it fall where they would without the skip.
   bool skip_steady = false;
-  // Skip the mirror images (satran_step): on by default, exact to rounding; off for its tests and benchmarks.
-  bool skip_mirrored = true;
+  // the skips of satran_step: on by default, exact to rounding; off for their tests and benchmarks
+  TransientSkips skips;
 };
 
 struct TransientCase {

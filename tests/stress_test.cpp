@@ -3,8 +3,8 @@
 // input, not a closed form:
 //   finite outputs; |tau| <= mu p everywhere (to rounding); the energy identity of PHYSICS.md §4
 //   (steady: P_l = creep power - trailing power per strip; Satran: the step balance residual); the
-//   wear loop's worn volume = k_E x dissipated energy at every step, non-negative depths, no
-//   oscillation in the worn profile, no runaway of the step control; the semi-Hertzian solver's load
+//   wear loop's worn volume = k_E x dissipated energy at every step, non-negative depths, no rough
+//   worn profile at the shipped tolerance, no runaway of the step control; the semi-Hertzian solver's load
 //   balance on random smooth profiles.
 // Ranges (issue #6): mu 0..1, creepages 1e-8..1 of both signs and spin, a/b 0.01..100 (from the
 // radii), load 1e-3 N..1e6 N, speed 0..100 m/s with ramps and steps, lives of 1e9 revolutions.
@@ -510,8 +510,8 @@ constexpr double kStepBalanceTol = 1e-9;  // |balance residual| / (power + elast
 struct SatranTally {
   double worst_balance = 0;
   long steps = 0;
-  int negative_power = 0, restick_negative_power = 0, node_forces = 0, snapshot_bound = 0, rescale_forces = 0;
-  double node_forces_worst = 0, rescale_forces_worst = 0;
+  int negative_power = 0, restick_negative_power = 0, node_forces = 0, snapshot_bound = 0;
+  double node_forces_worst = 0;
 };
 
 void satran_case(Rng& r, const std::string& tag, TransientScheme scheme, SatranTally& tally, bool strict = false) {
@@ -590,11 +590,6 @@ void satran_case(Rng& r, const std::string& tag, TransientScheme scheme, SatranT
   }
   tally.steps += static_cast<long>(rows.size());
   const bool spin = tc.inputs.phi_per_m.value.front() != 0 || tc.inputs.phi_per_m.value.back() != 0;
-  // Kalker's mean flexibility L is constant when the creepages' ratio is: else tau = u/L is rescaled as L
-  // changes (lib/satran.h), which can leave tractions above mu p (finding "rescale": with spin, whose
-  // flexibility L3 differs most from L1 and L2, it reaches |F| 1.1 mu F in the sweep; reported)
-  const bool steady_flexibility = is_constant(tc.inputs.xi) && is_constant(tc.inputs.eta) &&
-                                  is_constant(tc.inputs.phi_per_m) && !load_ramp;
   ASSERT_TRUE(finite) << what << ": not finite at " << first_bad;
   ASSERT_FALSE(rows.empty()) << what;
   ASSERT_NEAR(res.t_end_s / t_end, 1, 1e-12) << what;
@@ -633,13 +628,10 @@ void satran_case(Rng& r, const std::string& tag, TransientScheme scheme, SatranT
                                     value_at(tc.inputs.normal_load_N, rec.t_s + rec.dt_s)});
     const double F = std::hypot(rec.Fx_N, rec.Fy_N);
     ASSERT_LE(rec.stick_fraction, 1 + 1e-12) << at;  // node-based steps: of the length their nodes count
-    if (exact_shift && (!spin || steady_flexibility)) {  // the path means of tau within mu p
+    // the path means of tau within mu p, also where L changes (was finding "rescale": tau = u/L rescaled
+    // for a smaller L started the step above the bound; such nodes now slip back onto it, satran_step)
+    if (exact_shift) {
       ASSERT_LE(F, tc.mu * F_step * (1 + 1e-9)) << at;
-    } else if (exact_shift) {  // finding "rescale": counted
-      if (F > tc.mu * F_step * (1 + 1e-9)) {
-        ++tally.rescale_forces;
-        tally.rescale_forces_worst = std::max(tally.rescale_forces_worst, F / (tc.mu * F_step) - 1);
-      }
     } else {  // finding "node forces": counted
       if (F > tc.mu * F_step * (1 + 1e-9)) {
         ++tally.node_forces;
@@ -705,8 +697,7 @@ void satran_case(Rng& r, const std::string& tag, TransientScheme scheme, SatranT
 void print_tally(const SatranTally& t) {
   std::printf("  %ld steps; worst step balance residual %.2e of the scale (tol %.0e)\n", t.steps, t.worst_balance,
               kStepBalanceTol);
-  std::printf("  snapshots above mu p at constant inputs: %d; exact shift steps with spin and a changing L: %d with |F| > "
-              "mu F (worst by %.3g)\n", t.snapshot_bound, t.rescale_forces, t.rescale_forces_worst);
+  std::printf("  snapshots above mu p at constant inputs: %d\n", t.snapshot_bound);
   std::printf("  known findings: negative power: %d steps with power < 0 (restick, exact shift steps with spin: %d); "
               "node-counting steps: %d with |F| > mu F (worst by %.3g)\n",
               t.negative_power, t.restick_negative_power, t.node_forces, t.node_forces_worst);
@@ -985,7 +976,8 @@ RandomWear random_wear_case(Rng& r, double load_lo = 1e-3, double load_hi = 1e6)
   c.wear.limits = {r.chance(0.5) ? r.log_uniform(1e-6, 3e-4) : 0.0, 0, true};
   c.wear.smoothing_wavelength_m = r.chance(0.2) ? 0.0 : r.uniform(1e-4, 1e-3);
   c.wear.stepping.method = "adaptive";
-  c.wear.stepping.rtol = r.log_uniform(1e-4, 0.5);
+  // the reader takes rtol up to 0.1: a fifth of the lives (ln 5 / ln 5000) run at that loosest tolerance
+  c.wear.stepping.rtol = std::min(r.log_uniform(1e-4, 0.5), 0.1);
   c.wear.stepping.atol_m = c.wear.stepping.rtol * 1e-6;
   c.wear.stepping.max_steps = 2000;
   w.text = fmt::format(
@@ -1009,10 +1001,77 @@ double k_E_of(const wear::WearModel& m) {
                               : law.k_E_m3_per_J;
 }
 
-// Oscillation of a worn profile: sign changes of its curvature (the slopes' differences between
-// neighbouring intervals, any node spacing), counting only curvatures above 1e-3 of the largest, so
-// that rounding on flat stretches does not count. A worn hump has 2 (convex flanks, concave top), a
-// worn band with shoulders a few more; an oscillating profile one per node or two.
+// Roughness of a worn profile (finding 9, "wavy", docs/stress-suite.md): the reversals of the depth
+// by more than delta, counted with hysteresis: after a rise, a reversal counts once the depth has fallen
+// more than delta below its highest value since (and after a fall likewise). A worn hump has 1, a band
+// worn at both edges 3. Steps that go one way add none, however many and however sharp: the staircase
+// that strips of piecewise-constant wear leave on the profile's nodes (176 curvature sign changes on
+// a 12 x 18 grid without smoothing, one reversal) is no roughness. A profile oscillating by more than
+// delta has one per half wave.
+int depth_reversals(const Eigen::ArrayXd& h, double delta) {
+  int direction = 0, reversals = 0;
+  double high = h(0), low = h(0);  // the extremes since the last reversal
+  for (Eigen::Index i = 1; i < h.size(); ++i) {
+    const double v = h(i);
+    high = std::max(high, v);
+    low = std::min(low, v);
+    if (direction >= 0 && high - v > delta) {
+      reversals += direction > 0;
+      direction = -1;
+      low = high = v;
+    } else if (direction <= 0 && v - low > delta) {
+      reversals += direction < 0;
+      direction = 1;
+      low = high = v;
+    }
+  }
+  return reversals;
+}
+
+constexpr double kVolumeTol = 1e-10;     // worn volume / (k_E x energy) - 1: the same Runge-Kutta sums
+constexpr double kRoughDepthFraction = 0.1;  // depth_reversals counts reversals by more than this x max depth
+constexpr int kMaxDepthReversals = 5;        // up to three worn humps
+// A life of the sweeps whose error tolerance relative to its depth, rtol + atol / max depth, is at most
+// this (the shipped default rtol) must not be rough; looser lives may be. Finding 9 (docs/stress-suite.md):
+// the roughness is the adaptive step's error, gone at rtol 1e-3 on the lives measured but one, a depth
+// of some 40 elastic approaches that needs a still smaller tolerance (DISABLED_WornProfilesStaySmooth).
+constexpr double kSmoothEffectiveRtol = 1e-3;
+
+// Known findings of the wear loop (issue #6 stress suite; docs/stress-suite.md), counted and printed by
+// each test over its own lives (ctest runs every test in a process of its own):
+//   "patches" (7)  a worn profile splits the contact into patches that no strip centre hits, even at
+//                  8 x ny: the life ends, status failed, at its last accepted step (asserted);
+//   "wavy" (9)     the worn profile is rough, more than kMaxDepthReversals reversals by a tenth of its
+//                  depth, at a tolerance looser than kSmoothEffectiveRtol (asserted at or below it).
+// A contact narrower than 4 profile nodes is refused up front (wear_loop.cpp): counted as "refused".
+// Each finding is kept as a DISABLED_ test below that runs its own lives and fails until it is fixed.
+// (Fixed: "absurd", a fixed step far too large wearing the profile deeper than its width: the fixed
+// modes' stability control halves such a step, wear/integrator.h; any throw from a life is a failure.)
+struct WearFindings {
+  int refused = 0, unresolved = 0, rough = 0;
+  std::string first_unresolved, first_rough;
+};
+
+void print_wear_findings(const WearFindings& f) {
+  std::printf("  known findings of the wear loop: %d refused (profile too coarse for the contact), %d ended by contact "
+              "patches no strip centre hits (finding 7), %d rough profiles at loose tolerances (finding 9)\n",
+              f.refused, f.unresolved, f.rough);
+  if (!f.first_unresolved.empty()) std::printf("    first patches: %s\n", f.first_unresolved.c_str());
+  if (!f.first_rough.empty()) std::printf("    first rough: %s\n", f.first_rough.c_str());
+}
+
+struct LifeCheck {
+  bool ok = true;        // no failure recorded, and the life ran to a limit or its budget
+  wear::LifeResult life;
+  long steps = 0;
+  int worst_reversals = 0;        // depth_reversals at kRoughDepthFraction, over the steps
+  int worst_curvature_changes = 0;  // the old metric, printed for comparison
+  double worst_volume = 0;
+  double effective_rtol = 0;      // rtol + atol / max depth at the end (adaptive); inf for the fixed modes
+};
+
+// sign changes of the worn depth's curvature (the slopes' differences), counting curvatures above 1e-3
+// of the largest: finding 9's first metric, which counts the strips' staircase too (printed only)
 int curvature_sign_changes(const Eigen::ArrayXd& y, const Eigen::ArrayXd& h) {
   const Eigen::Index n = y.size();
   if (n < 3) return 0;
@@ -1030,45 +1089,24 @@ int curvature_sign_changes(const Eigen::ArrayXd& y, const Eigen::ArrayXd& h) {
   return changes;
 }
 
-constexpr double kVolumeTol = 1e-10;     // worn volume / (k_E x energy) - 1: the same Runge-Kutta sums
-constexpr int kMaxCurvatureChanges = 8;  // see curvature_sign_changes
-
-// Known findings of the wear loop (issue #6 stress suite), counted and printed, not failed: over these
-// wide random ranges (loads from 1e-3 N, no smoothing, huge fixed steps, rtol 0.1),
-//   "patches"  a worn profile splits the contact into patches narrower than a strip even at 8 x ny:
-//              semi-Hertz throws and the life stops;
-//   "wavy"     the worn profile has more curvature sign changes than a worn hump or band
-//              (kMaxCurvatureChanges): on grids of 8 to 24 strips, without smoothing or at rtol 0.1.
-// A contact narrower than 4 profile nodes is refused up front (wear_loop.cpp): counted as "refused".
-// Each is kept as a DISABLED_ test below that fails on the first case found. (Fixed: "absurd", a fixed
-// step far too large wearing the profile deeper than its width: the fixed modes' stability control
-// halves such a step, wear/integrator.h; any throw from a life is now a failure.)
-struct WearFindings {
-  int refused = 0, patches = 0, wavy = 0;
-  std::string first_patches, first_wavy;
-};
-WearFindings g_wear_findings;
-
-struct LifeCheck {
-  bool ok = true;  // no failure recorded
-  bool finding = false;  // ended by a known finding (counted in g_wear_findings)
-  wear::LifeResult life;
-  long steps = 0;
-  int worst_changes = 0;
-  double worst_volume = 0;
-};
-
-// runs a life and checks every step: finite, non-negative depths, volume = k_E x energy
-LifeCheck run_checked_life(const wear::WearCase& c, const std::string& what) {
+// Runs a life and checks every step: finite, non-negative depths, volume = k_E x energy. A life ended by
+// a contact the strips cannot resolve (finding 7) must end with status failed, its message naming the
+// cause, at its last accepted step, with a warning; it is counted, not failed. The roughness is checked
+// by the caller (check_roughness).
+LifeCheck run_checked_life(const wear::WearCase& c, const std::string& what, WearFindings& found) {
   LifeCheck out;
   const wear::WearModel m = wear::make_wear_model(c);
   const double kE = k_E_of(m);
   wear::WearCache cache;
   wear::LifeHooks hooks;
   std::string bad;
+  double last_N = 0;
+  Eigen::VectorXd last_state = wear::initial_state(m);
   hooks.on_step = [&](const wear::LifeStep& s) {
     ++out.steps;
     const Eigen::VectorXd& state = *s.state;
+    last_N = s.N;
+    last_state = state;
     const Eigen::ArrayXd h = state.head(m.n1).array();
     if (!state.allFinite()) {
       bad = fmt::format("step {} at N {:.6g}: the state is not finite", s.step, s.N);
@@ -1087,64 +1125,100 @@ LifeCheck run_checked_life(const wear::WearCase& c, const std::string& what) {
                         kE * energy);
       return false;
     }
-    out.worst_changes = std::max(out.worst_changes, curvature_sign_changes(m.profiles.body1.y_m, h));
+    if (hmax > 0) out.worst_reversals = std::max(out.worst_reversals, depth_reversals(h, kRoughDepthFraction * hmax));
+    out.worst_curvature_changes = std::max(out.worst_curvature_changes, curvature_sign_changes(m.profiles.body1.y_m, h));
     return true;
   };
+  const rollwear_test::ExpectWarnings warnings;  // the contact reaching the edge, max_steps, finding 7
   try {
     out.life = wear::run_life(m, c, wear::LifeStart{}, hooks, cache);
   } catch (const std::exception& e) {
     const std::string message = e.what();
     out.ok = false;
-    out.finding = true;
-    if (message.find("too coarse for the contact") != std::string::npos) {
-      ++g_wear_findings.refused;  // a clear refusal, as designed
-    } else if (message.find("no strip centre lies in the contact") != std::string::npos) {
-      if (g_wear_findings.patches++ == 0) g_wear_findings.first_patches = what + ": " + message;
-    } else {  // "absurd" profiles from too large fixed steps are refused by the stability control now
-      out.finding = false;
+    if (message.find("too coarse for the contact") != std::string::npos)
+      ++found.refused;  // a clear refusal, as designed, before the life starts
+    else
       ADD_FAILURE() << what << ": run_life threw " << message;
-    }
     return out;
   }
   EXPECT_TRUE(bad.empty()) << what << ": " << bad;
   EXPECT_TRUE(out.life.state.allFinite()) << what;
   out.ok = bad.empty() && out.life.state.allFinite();
+  const double hmax = wear::max_depth_m(m, out.life.state);
+  out.effective_rtol = c.wear.stepping.method == "adaptive"
+                           ? c.wear.stepping.rtol + c.wear.stepping.atol_m / std::max(hmax, 1e-300)
+                           : std::numeric_limits<double>::infinity();
+  if (out.life.ended_by == "failed" && out.life.message.find("no strip centre hits") != std::string::npos) {
+    // finding 7: the life ends where it was last solved, and says why
+    EXPECT_EQ(out.life.N, last_N) << what << ": " << out.life.message;
+    EXPECT_EQ(out.life.state, last_state) << what << ": the state is not the last accepted step's";
+    EXPECT_GE(warnings.count(), 1) << what << ": " << out.life.message << " without a warning";
+    if (found.unresolved++ == 0) found.first_unresolved = what + ": " + out.life.message;
+    std::printf("    finding 7 (patches) at N %.6g: %s\n", out.life.N, what.substr(0, what.find(']') + 1).c_str());
+    out.ok = false;
+    return out;
+  }
+  EXPECT_NE(out.life.ended_by, "failed") << what << ": " << out.life.message;
+  out.ok = out.ok && out.life.ended_by != "failed";
   return out;
+}
+
+// finding 9: a rough profile fails at a tolerance at or below kSmoothEffectiveRtol, and is counted above
+void check_roughness(const LifeCheck& lc, const std::string& what, WearFindings& found) {
+  if (lc.worst_reversals <= kMaxDepthReversals) return;
+  const std::string text = fmt::format("{}: {} reversals of the depth by a tenth of its largest ({} curvature sign "
+                                       "changes), effective rtol {:.3g}",
+                                       what, lc.worst_reversals, lc.worst_curvature_changes, lc.effective_rtol);
+  if (lc.effective_rtol <= kSmoothEffectiveRtol) {
+    ADD_FAILURE() << text;
+  } else {
+    if (found.rough++ == 0) found.first_rough = text;
+    std::printf("    finding 9 (rough), %d reversals at effective rtol %.3g: %s\n", lc.worst_reversals, lc.effective_rtol,
+                what.substr(0, what.find(']') + 1).c_str());
+  }
 }
 
 TEST(StressWear, RandomLivesConserveVolumeAndKeepDepthsSmooth) {
   CaseLoop loop(24);
+  WearFindings found;
   double worst_volume = 0;
-  int worst_changes = 0;
+  int worst_reversals = 0, worst_changes = 0, smooth_asserted = 0;
   long steps = 0;
   std::map<std::string, int> ended;
   loop.run([&](Rng& r, const std::string& tag) {
     const RandomWear w = random_wear_case(r);
     const std::string what = tag + " " + w.text + ", " + stepping_text(w.c.wear.stepping) + ", 1e9 revolutions";
     set_current_case(what);
-    const rollwear_test::ExpectWarnings warnings;  // the contact reaching the edge, max_steps
-    const LifeCheck lc = run_checked_life(w.c, what);
+    const LifeCheck lc = run_checked_life(w.c, what, found);
     if (!lc.ok) return;
     steps += lc.steps;
     ++ended[lc.life.ended_by];
     worst_volume = std::max(worst_volume, lc.worst_volume);
-    worst_changes = std::max(worst_changes, lc.worst_changes);
-    EXPECT_NE(lc.life.ended_by, "failed") << what << ": " << lc.life.message;
+    worst_changes = std::max(worst_changes, lc.worst_curvature_changes);
     // max_steps is a budget the case sets (2000 here), an honest end: counted in 'ended by'
-    if (lc.worst_changes > kMaxCurvatureChanges && g_wear_findings.wavy++ == 0)  // finding "wavy"
-      g_wear_findings.first_wavy = what + ": " + std::to_string(lc.worst_changes) + " curvature sign changes";
+    check_roughness(lc, what, found);
+    if (lc.effective_rtol <= kSmoothEffectiveRtol) {
+      ++smooth_asserted;
+      worst_reversals = std::max(worst_reversals, lc.worst_reversals);
+    }
   });
   std::string endings;
   for (const auto& [why, n] : ended) endings += fmt::format(" {} {}", why, n);
   std::printf("  %ld accepted steps; ended by:%s; worst |volume / (k_E E) - 1| %.2e; most curvature sign changes %d\n",
               steps, endings.c_str(), worst_volume, worst_changes);
+  std::printf("  %d lives at an effective rtol <= %.0e: most depth reversals %d (limit %d)\n", smooth_asserted,
+              kSmoothEffectiveRtol, worst_reversals, kMaxDepthReversals);
+  print_wear_findings(found);
 }
 
-// A fixed step far too large for the wear's time scale: explicit Euler with no step control. Volume
-// and non-negativity must still hold, and the profile must not oscillate.
-TEST(StressWear, TooLargeFixedStepKeepsVolumeAndDoesNotOscillate) {
+// A fixed step far too large for the wear's time scale: explicit Euler with no error control, only the
+// stability control that halves a step whose end rate differs from its start rate by more than its size.
+// Volume and non-negativity must still hold. The profile may be rough (finding 9: no tolerance controls
+// the error); counted.
+TEST(StressWear, TooLargeFixedStepKeepsVolumeAndDoesNotThrow) {
   CaseLoop loop(12);
-  int worst_changes = 0;
+  WearFindings found;
+  int worst_reversals = 0;
   loop.run([&](Rng& r, const std::string& tag) {
     RandomWear w = random_wear_case(r, 100, 1e4);
     wear::WearStepping& s = w.c.wear.stepping;
@@ -1158,22 +1232,23 @@ TEST(StressWear, TooLargeFixedStepKeepsVolumeAndDoesNotOscillate) {
     w.c.wear.limits.max_depth_m = 0;
     const std::string what = tag + " " + w.text + ", " + stepping_text(s) + ", 1e9 revolutions";
     set_current_case(what);
-    const rollwear_test::ExpectWarnings warnings;
-    const LifeCheck lc = run_checked_life(w.c, what);
+    const LifeCheck lc = run_checked_life(w.c, what, found);
     if (!lc.ok) return;
-    worst_changes = std::max(worst_changes, lc.worst_changes);
-    EXPECT_NE(lc.life.ended_by, "failed") << what << ": " << lc.life.message;
-    if (lc.worst_changes > kMaxCurvatureChanges && g_wear_findings.wavy++ == 0)  // finding "wavy"
-      g_wear_findings.first_wavy = what + ": " + std::to_string(lc.worst_changes) + " curvature sign changes";
+    worst_reversals = std::max(worst_reversals, lc.worst_reversals);
+    check_roughness(lc, what, found);
   });
-  std::printf("  most curvature sign changes %d\n", worst_changes);
+  std::printf("  most depth reversals %d\n", worst_reversals);
+  print_wear_findings(found);
 }
 
 // Adaptive stepping at the loosest tolerance the reader takes (rtol 0.1) must not run away: few
-// rejected steps, few steps, and the worn depth near a tight run's.
+// rejected steps, few steps, and the worn depth near a tight run's. The tight run (rtol 1e-5) must be
+// smooth: a roughness of the model itself, not of the step, would survive the tolerance.
 TEST(StressWear, LooseToleranceDoesNotRunAway) {
   CaseLoop loop(6);
+  WearFindings found;
   double worst_depth = 0;
+  int worst_tight_reversals = 0, worst_loose_reversals = 0;
   loop.run([&](Rng& r, const std::string& tag) {
     RandomWear w = random_wear_case(r, 100, 1e4);
     w.c.wear.revolutions = r.log_uniform(1e7, 1e9);
@@ -1185,9 +1260,8 @@ TEST(StressWear, LooseToleranceDoesNotRunAway) {
     w.c.wear.stepping.atol_m = 1e-7;
     const std::string what = fmt::format("{} {}, {:.6g} revolutions, rtol 0.1 against 1e-5", tag, w.text, w.c.wear.revolutions);
     set_current_case(what);
-    const rollwear_test::ExpectWarnings warnings;
-    const LifeCheck loose = run_checked_life(w.c, what);
-    const LifeCheck ref = run_checked_life(tight, what + " (the tight run)");
+    const LifeCheck loose = run_checked_life(w.c, what, found);
+    const LifeCheck ref = run_checked_life(tight, what + " (the tight run)", found);
     if (!loose.ok || !ref.ok) return;
     ASSERT_EQ(loose.life.ended_by, "revolutions") << what << ": " << loose.life.message;
     ASSERT_EQ(ref.life.ended_by, "revolutions") << what << ": " << ref.life.message;
@@ -1198,28 +1272,87 @@ TEST(StressWear, LooseToleranceDoesNotRunAway) {
     EXPECT_LE(rel, 0.5) << what << ": max depth " << d_loose << " m against " << d_ref << " m";
     EXPECT_LE(loose.life.rejected, loose.life.steps / 2 + 2) << what << ": " << loose.life.steps << " steps";
     EXPECT_LE(loose.life.steps, 200) << what;
-    if (loose.worst_changes > kMaxCurvatureChanges && g_wear_findings.wavy++ == 0)  // finding "wavy"
-      g_wear_findings.first_wavy = what + ": " + std::to_string(loose.worst_changes) + " curvature sign changes";
+    check_roughness(ref, what + " (the tight run)", found);
+    check_roughness(loose, what, found);
+    worst_tight_reversals = std::max(worst_tight_reversals, ref.worst_reversals);
+    worst_loose_reversals = std::max(worst_loose_reversals, loose.worst_reversals);
   });
-  std::printf("  worst |max depth / tight - 1| at rtol 0.1: %.3g\n", worst_depth);
+  std::printf("  worst |max depth / tight - 1| at rtol 0.1: %.3g; most depth reversals %d at rtol 0.1, %d at 1e-5\n",
+              worst_depth, worst_loose_reversals, worst_tight_reversals);
+  print_wear_findings(found);
 }
 
-// the wear loop's known findings over the StressWear tests above (run in this order by gtest)
-TEST(StressWear, ZzKnownFindingsSummary) {
-  const WearFindings& f = g_wear_findings;
-  std::printf("  known findings of the wear loop: %d refused (profile too coarse for the contact), %d stopped by "
-              "contact patches narrower than a strip, %d wavy profiles\n",
-              f.refused, f.patches, f.wavy);
-  if (!f.first_patches.empty()) std::printf("    first patches: %s\n", f.first_patches.c_str());
-  if (!f.first_wavy.empty()) std::printf("    first wavy: %s\n", f.first_wavy.c_str());
+// The metric of finding 9 on closed forms: a hump, two humps, a staircase, an oscillation.
+TEST(StressWear, DepthReversalsCountHumpsNotStairs) {
+  const int n = 401;
+  Eigen::ArrayXd y = Eigen::ArrayXd::LinSpaced(n, -1, 1), hump(n), two(n), stairs(n), wavy(n);
+  for (int i = 0; i < n; ++i) {
+    hump(i) = 1 - y(i) * y(i);
+    two(i) = std::exp(-50 * std::pow(y(i) - 0.5, 2)) + std::exp(-50 * std::pow(y(i) + 0.5, 2));
+    stairs(i) = std::floor(12 * hump(i)) / 12;  // 12 steps up, 12 down: 44 curvature sign changes
+    wavy(i) = hump(i) * (1 + 0.3 * std::sin(40 * kPi * y(i)));  // 20 waves of +-30 %
+  }
+  EXPECT_EQ(depth_reversals(hump, 0.1), 1);
+  EXPECT_EQ(depth_reversals(two, 0.1), 3);
+  EXPECT_EQ(depth_reversals(stairs, 0.1), 1);
+  EXPECT_GT(curvature_sign_changes(y, stairs), 40);
+  EXPECT_GT(depth_reversals(wavy, 0.1), 30);
+  EXPECT_EQ(depth_reversals(Eigen::ArrayXd::Zero(n), 0.0), 0);
 }
 
-// Known findings kept as tests that fail until they are fixed (run with --gtest_also_run_disabled_tests).
+// The case seeds below are those of StressWear.RandomLivesConserveVolumeAndKeepDepthsSmooth's cases
+// under the default base seed, valid while random_wear_case is unchanged.
+wear::WearCase random_life_of_seed(std::uint64_t seed, std::string& what) {
+  Rng r(seed);
+  RandomWear w = random_wear_case(r);
+  what = fmt::format("[case seed {}] {}, {}", seed, w.text, stepping_text(w.c.wear.stepping));
+  return w.c;
+}
+
+// Finding 7 ("patches"): the lives that end on a contact no strip centre hits end with status failed,
+// at their last accepted step, saying why (case 11, which ends after 2748 revolutions: a flat worn
+// band, 0.68 N, 9 x 10, no smoothing).
+TEST(StressWear, ContactNoStripResolvesEndsTheLifeAtItsLastStep) {
+  std::string what;
+  const wear::WearCase c = random_life_of_seed(5818732027616048374ull, what);
+  WearFindings found;
+  const LifeCheck lc = run_checked_life(c, what, found);
+  EXPECT_EQ(found.unresolved, 1) << what << ": ended by " << lc.life.ended_by << ": " << lc.life.message;
+  EXPECT_EQ(lc.life.ended_by, "failed") << what;
+  EXPECT_GT(lc.life.N, 0) << what;
+  EXPECT_LT(lc.life.N, c.wear.revolutions) << what;
+}
+
+// Finding 7, kept until fixed (--gtest_also_run_disabled_tests): the random lives 7, 11 and 22 (seed
+// 20240606), whose contacts split into patches no strip centre hits even at 8 x ny, run to their ends.
 TEST(StressWear, DISABLED_WornContactSplitIntoNarrowPatchesIsSolved) {
-  EXPECT_EQ(g_wear_findings.patches, 0) << g_wear_findings.first_patches;
+  for (const std::uint64_t seed : {5818732027616048370ull, 5818732027616048374ull, 5818732027616048385ull}) {
+    std::string what;
+    const wear::WearCase c = random_life_of_seed(seed, what);
+    WearFindings found;
+    const LifeCheck lc = run_checked_life(c, what, found);
+    EXPECT_EQ(found.unresolved, 0) << lc.life.message;
+  }
 }
+
+// Finding 9, kept until fixed (--gtest_also_run_disabled_tests): random life 16 (seed 20240606, rtol 0.1,
+// effective 0.11) has 17 reversals by a tenth of its depth, and 1 at rtol 1e-3, 1e-5 and 1e-6. Life 3
+// (a flat worn band at 1.2 mN, worn 17 nm deep, some 40 times its elastic approach) still has 15 at rtol
+// 1e-5 and atol 1e-11 (effective 6.1e-4): there the tolerance must be small against the approach, not
+// only against the depth.
 TEST(StressWear, DISABLED_WornProfilesStaySmooth) {
-  EXPECT_EQ(g_wear_findings.wavy, 0) << g_wear_findings.first_wavy;
+  for (const std::uint64_t seed : {5818732027616048379ull, 5818732027616048366ull}) {
+    std::string what;
+    wear::WearCase c = random_life_of_seed(seed, what);
+    if (seed == 5818732027616048366ull) {
+      c.wear.stepping.rtol = 1e-5;
+      c.wear.stepping.atol_m = 1e-11;
+      what += ", now at rtol 1e-5 atol 1e-11";
+    }
+    WearFindings found;
+    const LifeCheck lc = run_checked_life(c, what, found);
+    EXPECT_LE(lc.worst_reversals, kMaxDepthReversals) << what;
+  }
 }
 
 }  // namespace

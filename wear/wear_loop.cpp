@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <exception>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -171,8 +172,13 @@ NormalState normal_state(const WearModel& m, const Eigen::VectorXd& state, WearC
     } catch (const std::invalid_argument& e) {
       // a worn profile can split the contact into narrow patches that no strip centre of the case's grid
       // hits: twice the strips, up to 8 times (the wear maps from any strips onto the nodes)
-      if (refinement == 3 || std::string(e.what()).find("no strip centre lies in the contact") == std::string::npos)
-        throw;
+      if (std::string(e.what()).find("no strip centre lies in the contact") == std::string::npos) throw;
+      if (refinement == 3)
+        throw UnresolvedContact(fmt::format(
+            "the worn contact splits into patches that no strip centre hits, even with {} strips ({}): the strips "
+            "cannot carry its load (docs/stress-suite.md, finding 7); wear.smoothing_wavelength_m of about a strip's "
+            "width spreads the sharp steps of the worn profile where such patches form",
+            grid.ny, e.what()));
       grid.ny *= 2;
       spdlog::debug("wear: {}; solving again with ny = {}", e.what(), grid.ny);
     }
@@ -277,6 +283,18 @@ void check_profile_resolves_contact(const WearModel& m, const NormalState& n) {
 }
 const char* const kLimitNames[kLimits] = {"max_depth", "max_pressure", "edge"};
 
+// whether e, or an exception nested in it (wear::integrate nests what f threw), is an UnresolvedContact
+bool is_unresolved(const std::exception& e) {
+  if (dynamic_cast<const UnresolvedContact*>(&e)) return true;
+  try {
+    std::rethrow_if_nested(e);
+  } catch (const std::exception& inner) {
+    return is_unresolved(inner);
+  } catch (...) {
+  }
+  return false;
+}
+
 }  // namespace
 
 LifeResult run_life(const WearModel& m, const WearCase& c, const LifeStart& start, const LifeHooks& hooks,
@@ -332,6 +350,7 @@ LifeResult run_life(const WearModel& m, const WearCase& c, const LifeStart& star
     options.max_steps = c.wear.stepping.max_steps - life.steps;
     if (options.max_steps <= 0) return end_with("max_steps", fmt::format("max_steps {} reached", c.wear.stepping.max_steps));
     const long steps0 = life.steps, rhs0 = life.rhs_evals, rejected0 = life.rejected;
+    LifeStart last{life.N, life.state, 0, life.steps, life.rhs_evals, life.rejected};  // the last accepted step
     const OnStep on_step = [&](const StepInfo& info, const Eigen::VectorXd& h) {
       LifeStep s;
       s.step = steps0 + info.steps;
@@ -342,9 +361,23 @@ LifeResult run_life(const WearModel& m, const WearCase& c, const LifeStart& star
       s.info.rhs_evals = rhs0 + info.rhs_evals;
       s.info.rejected = rejected0 + info.rejected;
       s.contact = wear_rate(m, h, cache).contact;
+      last = {s.N, h, s.info.next_step, s.step, s.info.rhs_evals, s.info.rejected};
       return hooks.on_step ? hooks.on_step(s) : true;
     };
-    const IntegratorResult r = integrate(f, roots, kLimits, life.N, life.state, N_end, options, on_step);
+    IntegratorResult r;
+    try {
+      r = integrate(f, roots, kLimits, life.N, life.state, N_end, options, on_step);
+    } catch (const std::exception& e) {
+      // a contact the strips cannot resolve ends the life at its last accepted step, status failed
+      if (!is_unresolved(e)) throw;
+      life.N = last.N;
+      life.state = last.state;
+      life.steps = last.steps;
+      life.rhs_evals = last.rhs_evals;
+      life.rejected = last.rejected;
+      spdlog::warn("wear: {}; the life ends at N {:.10g}, its last accepted step", e.what(), life.N);
+      return end_with("failed", fmt::format("ended at N {:.10g}, the last accepted step: {}", life.N, e.what()));
+    }
     life.N = r.N;
     life.state = r.h_m;
     life.steps = steps0 + r.steps;

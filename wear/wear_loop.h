@@ -21,6 +21,7 @@
 #include <cstdint>
 #include <functional>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -112,6 +113,13 @@ struct WearCache {
   WearCounters counters;
 };
 
+// Thrown by normal_state when a worn profile splits the contact into patches that no strip centre
+// hits, even with 8 times the case's strips (finding 7, "patches", docs/stress-suite.md): the strips
+// cannot carry the load. run_life ends the life on it, at its last accepted step.
+struct UnresolvedContact : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
 NormalState normal_state(const WearModel& m, const Eigen::VectorXd& state, WearCache& cache);
 WearRate wear_rate(const WearModel& m, const Eigen::VectorXd& state, WearCache& cache);
 
@@ -145,7 +153,9 @@ struct LifeHooks {
 };
 
 struct LifeResult {
-  std::string ended_by;  // max_depth | max_pressure | edge | revolutions | max_steps | stopped | failed
+  // max_depth | max_pressure | edge | revolutions | max_steps | stopped | failed (ARKODE gave up, or
+  // UnresolvedContact: the state is then the last accepted step's, and the message says why)
+  std::string ended_by;
   std::string message;
   double N = 0;
   Eigen::VectorXd state;

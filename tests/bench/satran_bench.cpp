@@ -36,10 +36,12 @@ TransientCase paper_startup(int n, bool all_creepages) {
   return c;
 }
 
-// args: n, all creepages, the mirror skip (pure xi on the paper's symmetric patch steps half the strips)
+// args: n, all creepages, the skips as bits (TransientSkips): 1 the mirror images (pure xi on the paper's
+// symmetric patch steps half the strips), 2 the lateral work (pure xi: no tau_y in the stick pass)
 void BM_SatranShift(benchmark::State& st) {
   TransientCase c = paper_startup(static_cast<int>(st.range(0)), st.range(1) != 0);
-  c.settings.skip_mirrored = st.range(2) != 0;
+  c.settings.skips.mirrored = (st.range(2) & 1) != 0;
+  c.settings.skips.lateral = (st.range(2) & 2) != 0;
   double sink = 0;
   int steps = 0;
   for (auto _ : st) {
@@ -51,10 +53,12 @@ void BM_SatranShift(benchmark::State& st) {
   st.counters["steps"] = steps;
 }
 BENCHMARK(BM_SatranShift)
+    ->Args({80, 0, 3})
     ->Args({80, 0, 1})
+    ->Args({80, 0, 2})
     ->Args({80, 0, 0})
-    ->Args({80, 1, 1})
-    ->Args({20, 1, 1})
+    ->Args({80, 1, 3})
+    ->Args({20, 1, 3})
     ->Unit(benchmark::kMillisecond);
 
 // the baseline: plain classic upwind at CFL 1, node by node

@@ -720,6 +720,21 @@ void skips_study(const Options& o, std::vector<Row>& rows) {
       add(skip_row("paper", name, 80, false, "the march of every strip"),
           [&] { return solve_steady(q, pb, TangentialScheme::Consistent, SteadyOptions{false, false}).power_W; });
     }
+    // Satran: cases/paper-startup.yaml (80 x 80, pure xi, mirror skip on in both) without its snapshots,
+    // the shift step's stick pass without tau_y against with (TransientSkips::lateral)
+    TransientCase t = transient_case_of(read_contact_case(kSource + "/cases/paper-startup.yaml"));
+    t.settings.snapshot_times_s.clear();
+    TransientCase full = t;
+    full.settings.skips.lateral = false;
+    const TransientResult ta = run_transient(t), tb = run_transient(full);
+    Row ton = skip_row("paper-startup", "pure-xi-satran-lateral", t.settings.grid.nx, true,
+                       "the start-up run without tau_y in the stick pass against with (test "
+                       "SatranSkip.LateralFreeStepsChangeNothing)");
+    transient_change(ton, ta, tb);
+    add(ton, [&] { return run_transient(t).dissipated_J; }, 200);
+    Row toff = skip_row("paper-startup", "pure-xi-satran-lateral", t.settings.grid.nx, false, "tau_y computed");
+    toff.steps = tb.steps;
+    add(toff, [&] { return run_transient(full).dissipated_J; }, 200);
     end();
   }
 
@@ -746,7 +761,7 @@ void skips_study(const Options& o, std::vector<Row>& rows) {
 
     const TransientCase t = start_stop_duty_cycle();
     TransientCase all = t;
-    all.settings.skip_mirrored = false;
+    all.settings.skips.mirrored = false;
     const TransientResult ta = run_transient(t), tb = run_transient(all);
     Row ton = skip_row("start-stop-wear", "mirror-satran", t.patch->grid.nx, true,
                        "the duty cycle (skip_steady on) stepping half the strips against all (test "
