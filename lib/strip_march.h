@@ -661,8 +661,10 @@ constexpr int kRestickParts = 4;  // slip parts in one interval, at most (the la
       lo = path.slip_to(x_lo, geo.bound_lo_Pa, s);
       return true;
     }
+    // the part ends on the bound at x_r (of length 0 where it stops at once: a node that a transient's
+    // rescaling left off its bound comes onto it, as a slip part from it would take it)
     const double x_r = slip_stop(path, pa, pb);
-    const StripNode on = x_r < x_c ? path.slip_to(x_r, path.at(x_r).g, s) : StripNode{tx, ty, ex, ey, false};
+    const StripNode on = path.slip_to(x_r, path.at(x_r).g, s);
     // stick from x_r, inside the bound at first
     const double h = x_r - x_lo, beta = stick_beta(r, x_r);
     const StickGeometry<double> sg = stick_geometry(r, beta, h);
