@@ -90,14 +90,6 @@ struct StripEnergy {
   double Fx = 0, Fy = 0, Mz = 0;
 };
 
-// the sums that make a strip's totals
-void add_sums(IntervalSums& into, const IntervalSums& s) {
-  into.Ix += s.Ix;
-  into.Iy += s.Iy;
-  into.Ixy += s.Ixy;
-  into.stick_length_m += s.stick_length_m;
-}
-
 // the whole kernel for one interval, kept out of the loops over the strip
 template <bool kSpin>
 [[gnu::noinline]] StripNode whole_kernel(const StripRates& r, const StripNode& hi, const IntervalGeometry& geo,
@@ -183,7 +175,7 @@ StripEnergy shift_strip(const ContactPatch& patch, const StripRates& r, int j, d
   // carries its energy out of the contact)
   auto record = [&](int i, const IntervalGeometry& geo, const StripNode& hi, const StripNode& lo,
                     const IntervalSums& cell) {
-    add_sums(strip, cell);
+    add_interval_sums(strip, cell);
     hi2 += hi.tx * hi.tx + hi.ty * hi.ty;
     lo2 += lo.tx * lo.tx + lo.ty * lo.ty;
     if (geo.x_lo > -a) {
@@ -335,7 +327,8 @@ StripEnergy shift_strip(const ContactPatch& patch, const StripRates& r, int j, d
       }
     }
 
-    // the intervals whose test failed: from a slip node the interval slips throughout, from a stick node
+    // the intervals whose test failed: from a slip node the interval slips throughout (with spin until its
+    // slip stops dissipating, then it sticks again inside the interval, as in the kernel), from a stick node
     // the whole kernel finds the crossing into slip, and so it does for the intervals of spin marked
     // above. With a lateral creep rate the slip direction turns, and the turns from slip nodes
     // are taken first, all at once (with xi alone they are asked for only where tau is not along x)
@@ -352,7 +345,7 @@ StripEnergy shift_strip(const ContactPatch& patch, const StripRates& r, int j, d
       auto turn = [&] { return turns ? scratch.turn[f] : detail::interior_slip_turn(r, x[i + 1], x[i]); };
       IntervalSums cell;
       const StripNode lo = hi.stick || (kSpin && scratch.failed_between[f]) ? whole_kernel<kSpin>(r, hi, geo, cell)
-                                                                            : slip_throughout(r, hi, geo, turn, cell);
+                                                                            : slip_throughout<kSpin>(r, hi, geo, turn, cell);
       record(i, geo, hi, lo, cell);
     }
 

@@ -23,9 +23,11 @@
 //     along the strip, and the slip goes on only while it dissipates at x_hi: F'(0) = 2 h g (g' - e . d)
 //     > 0 (the stick solution from the node leaves the bound at once); otherwise the material sticks
 //     again at x_hi and the stick solution is followed to its first crossing, as from a stick node.
-//     (An interval has one stick part and then one slip part: a slip that should stop inside a cell
-//     goes on to x_lo. On grids coarse along x with spin this can make a strip's dissipation < 0;
-//     docs/stress-suite.md, finding 10, "restick".)
+//   slip -> stick inside an interval (spin only): a slip part ends where its dissipation density
+//     g lambda = -k x - g e . d(x) (k = G^2/a^2) falls to 0, located by a bracketed root find along the
+//     slip part; the material sticks from there and the stick solution is followed to its first crossing,
+//     then slips again (lib/strip_march.h, detail::restick). Without spin d is constant and the density
+//     only grows downstream, so this never happens and nothing is asked.
 //   slip part: |tau| = g = mu p integrated exactly, direction the mean of the end directions. The
 //     direction at the downstream node solves the slip-direction equation exactly for the creep
 //     rate d = (alpha, beta) frozen at the interval's midpoint: with psi the angle between tau and
@@ -81,14 +83,6 @@ struct StripTotals {
   double stick_length = 0;
   double counted_length = 0;  // classic: the length its cell centres stand for (0: the exact 2 a_j)
 };
-
-// the sums that make the strip's totals
-void accumulate(IntervalSums& into, const IntervalSums& s) {
-  into.Ix += s.Ix;
-  into.Iy += s.Iy;
-  into.Ixy += s.Ixy;
-  into.stick_length_m += s.stick_length_m;
-}
 
 // the stick solution from a node at x_s (PHYSICS.md §3): tau_x linear, tau_y quadratic in t = x_s - x
 struct StickLine {
@@ -319,7 +313,7 @@ class StripMarch {
     const StripNode lo = march_slip_interval<kSpin>(r_, node_, geo, turn, cell);
     if constexpr (kFields)
       out_.interval(i, cell, geo.x_hi - geo.x_lo, VL_ * dissipation_per_VL(r_, node_, lo, cell));
-    accumulate(stretch_, cell);
+    add_interval_sums(stretch_, cell);
     node_ = lo;
     --i_;
     if (node_.stick || i_ == i_bot_) {

@@ -6,7 +6,8 @@
 // steady solver's slip stretches can take the turns of all their cells at once (slip_turns). The pieces
 // of the stick solution are templates, so that Satran's shift step can take them for a block of
 // intervals at once (SIMD). Kalker's test holds on the whole interval, not only at x_lo: with spin the
-// stick solution is a parabola that can leave the bound between two nodes (stick_excess, first_crossing).
+// stick solution is a parabola that can leave the bound between two nodes (stick_excess, first_crossing),
+// and a slip part can stop dissipating inside an interval and stick again (slip_on, restick).
 #pragma once
 
 #include <algorithm>
@@ -48,6 +49,16 @@ struct IntervalSums {
   double stick_length_m = 0;
   double slip_x = 0, slip_y = 0;   // integral of s/(V L) over the interval (m)
 };
+
+// into += s: the sums of a stretch of intervals, or of an interval's parts
+inline void add_interval_sums(IntervalSums& into, const IntervalSums& s) {
+  into.Ix += s.Ix;
+  into.Iy += s.Iy;
+  into.Ixy += s.Ixy;
+  into.stick_length_m += s.stick_length_m;
+  into.slip_x += s.slip_x;
+  into.slip_y += s.slip_y;
+}
 
 // -integral(tau . s dx) / (V L) of an interval: zero in stick, telescoping along a strip
 inline double dissipation_per_VL(const StripRates& r, const StripNode& hi, const StripNode& lo,
@@ -355,6 +366,22 @@ struct EllipsePoint {
   return slip_turn(r.alpha_Pa_per_m, midpoint_dy(r, x_hi, x_hi, x_lo), midpoint_inv_g(r, x_hi, x_lo));
 }
 
+// the slip direction at the end of a slip part that starts along e0 = (ex0, ey0), with u = -d = (ux, uy)
+// (not normalised) frozen over it and its turn t: d psi/ds = -|d| sin(psi)/g solved exactly,
+// tan(psi/2) decaying by t.k; s0u = u x e0 (!= 0: e0 is not along u, else e stays e0)
+[[gnu::always_inline]] inline void turned_direction(double ex0, double ey0, double ux, double uy, double s0u,
+                                                    const SlipTurn& t, double& ex, double& ey) {
+  const double c0 = (ex0 * ux + ey0 * uy) * t.inv_dn, s0 = s0u * t.inv_dn;
+  const double c1 = 1 + c0, ks = t.k * s0;
+  const double norm = c1 * c1 + ks * ks;
+  if (norm > 1e-300) {
+    const double scale = t.inv_dn / norm;
+    const double A = (c1 * c1 - ks * ks) * scale, B = 2 * ks * c1 * scale;
+    ex = A * ux - B * uy;
+    ey = A * uy + B * ux;
+  }
+}
+
 // the slip part of an interval, from x_s = x_hi - t_s (traction tau0, direction e0) to x_lo, with
 // d = (alpha, dy_m) frozen at its midpoint and Ip, Ixp the integrals of p and x p over it; turn() gives
 // its SlipTurn, asked for only when e0 turns
@@ -370,18 +397,7 @@ template <class TurnFn>
   double ex = ex0, ey = ey0;
   const double ux = -alpha, uy = -dy_m;  // -d, not yet normalised
   const double s0u = ux * ey0 - uy * ex0;
-  if (s0u != 0 && r.bound_Pa > 0) {
-    const SlipTurn t = turn();
-    const double c0 = (ex0 * ux + ey0 * uy) * t.inv_dn, s0 = s0u * t.inv_dn;
-    const double c1 = 1 + c0, ks = t.k * s0;
-    const double norm = c1 * c1 + ks * ks;
-    if (norm > 1e-300) {
-      const double scale = t.inv_dn / norm;
-      const double A = (c1 * c1 - ks * ks) * scale, B = 2 * ks * c1 * scale;
-      ex = A * ux - B * uy;
-      ey = A * uy + B * ux;
-    }
-  }
+  if (s0u != 0 && r.bound_Pa > 0) turned_direction(ex0, ey0, ux, uy, s0u, turn(), ex, ey);
   const StripNode lo{geo.bound_lo_Pa * ex, geo.bound_lo_Pa * ey, ex, ey, false};
 
   // |tau| = mu p exactly over the slip part, direction the mean of its end directions
@@ -491,12 +507,220 @@ template <bool kSpin>
 // chosen once for a problem (phi/L3 is the same on every strip), so that without spin it does nothing more.
 inline bool has_spin(const StripRates& r) { return r.phi_L3_Pa_per_m2 / 2 != 0; }
 
-// march_slip_interval once Kalker's test has failed: the interval slips throughout
-template <class TurnFn>
+namespace detail {
+
+// ---- spin: a slip part that stops dissipating sticks again inside the interval ("restick") ----
+// On a slip part tau = g e, and s = V L (d - dtau/dx) = -V L lambda e with lambda = g' - e . d (g' = dg/dx,
+// d = (alpha, eta/L2 + phi x/L3)): the slip's dissipation density is -tau . s = V L g lambda. It is >= 0
+// while the part slips; where it falls to 0, the slip stops and the material sticks again. With g^2 =
+// G^2 - k x^2, g g' = -k x, so
+//   g lambda = -k x - g e . d(x),
+// and at a slip node d1 of stick_excess is 2 h times it (the stick solution leaves the bound at once
+// while it is > 0). Without spin it cannot fall to 0 downstream: d is constant, e turns towards -d (e . d
+// falls) and g' grows downstream (g is concave), so lambda grows. With spin d_y turns along the strip.
+
+// g lambda at x on the bound g, along e (Pa^2/m)
+[[gnu::always_inline]] inline double slip_density(const StripRates& r, const BoundQuadratic& q, double x, double g,
+                                                  double ex, double ey) {
+  return -q.k * x - g * (r.alpha_Pa_per_m * ex + (r.eta_L2_Pa_per_m + r.phi_L3_Pa_per_m2 * x) * ey);
+}
+
+// A slip part from x_c (traction tau_c, direction e_c) towards x_end < x_c, with d frozen at the midpoint
+// x_m of [x_end, x_c] (u = -d_m) and the exact integrals of ds/g, p and x p: its direction e(x) at any x in
+// between (tan(psi/2) decays with the integral of ds/g from x_c, psi the angle between e and u), and its
+// density g lambda there with the exact d(x). A part ended at x (slip_to) ends along e(x), the same
+// arithmetic, so that where the root finder saw the slip stop, the part ends on it.
+struct SlipPath {
+  const StripRates& r;
+  BoundQuadratic q;
+  double x_c, tx_c, ty_c, ex_c, ey_c;
+  double x_m, dy_m, ux, uy, s0u;
+  EllipsePoint pc;
+
+  SlipPath(const StripRates& rates, const BoundQuadratic& bq, double x, double tx, double ty, double ex, double ey,
+           double x_end)
+      : r(rates), q(bq), x_c(x), tx_c(tx), ty_c(ty), ex_c(ex), ey_c(ey), x_m((x + x_end) / 2),
+        dy_m(midpoint_dy(rates, x, x, x_end)), ux(-rates.alpha_Pa_per_m), uy(-dy_m), s0u(ux * ey - uy * ex),
+        pc(x / rates.a_m) {}
+
+  SlipTurn turn(const EllipsePoint& px) const {
+    return slip_turn(r.alpha_Pa_per_m, dy_m, r.a_m / r.bound_Pa * (pc.asin_u - px.asin_u));
+  }
+  struct Point {
+    double x, g, ex, ey, density;
+  };
+  Point at(double x) const {
+    const EllipsePoint px(x / r.a_m);
+    Point p{x, r.bound_Pa * px.w, ex_c, ey_c, 0};
+    if (s0u != 0 && r.bound_Pa > 0) turned_direction(ex_c, ey_c, ux, uy, s0u, turn(px), p.ex, p.ey);
+    p.density = slip_density(r, q, x, p.g, p.ex, p.ey);
+    return p;
+  }
+  // A lower bound of lambda = density/g on [x_b, x_a] from its upper end a: there g' >= g'(x_a) (g is
+  // concave), -e . d_m = |d_m| cos psi >= its value at x_a (|psi| only falls downstream), and
+  // -e . (d - d_m) >= -|phi/L3| |x - x_m|. Without a bound at x_a (g = 0) -infinity.
+  double lambda_below(const Point& a, double x_b) const {
+    if (!(a.g > 0)) return -HUGE_VAL;
+    const double spread = std::max(std::abs(a.x - x_m), std::abs(x_b - x_m));
+    return -q.k * a.x / a.g + (ux * a.ex + uy * a.ey) - std::abs(r.phi_L3_Pa_per_m2) * spread;
+  }
+  // the part from x_c down to x_e, ending on the bound g_e there (sums added to s)
+  StripNode slip_to(double x_e, double g_e, IntervalSums& s) const {
+    const EllipsePoint pe(x_e / r.a_m);
+    const double a = r.a_m;
+    IntervalGeometry geo;
+    geo.x_hi = x_c;
+    geo.x_lo = x_e;
+    geo.bound_lo_Pa = g_e;
+    const double Ip = r.peak_Pa * a * (pc.integral() - pe.integral());
+    const double Ixp = r.peak_Pa * a * a * (pc.moment() - pe.moment());
+    return slip_part(r, geo, 0.0, dy_m, tx_c, ty_c, ex_c, ey_c, Ip, Ixp, [&] { return turn(pe); }, s);
+  }
+};
+
+// Where a slip part's density first falls below 0 on (x_lo, x_c): a bracket [b, a], density(a) >= 0 >
+// density(b), or false if it stays >= 0. Pieces of the part are taken from upstream: a piece whose lower
+// bound of lambda (lambda_below) is >= 0 slips on throughout; any other is halved, down to 2^-kStopDepth of
+// the part, and the first piece of that size whose lower end's density is < 0 is the bracket. (A dip below
+// 0 between two samples 2^-kStopDepth of the part apart is not looked for.)
+constexpr int kStopDepth = 5;
+inline bool slip_stop_bracket(const SlipPath& path, double x_lo, SlipPath::Point& a, SlipPath::Point& b) {
+  struct Piece {
+    SlipPath::Point hi, lo;
+    int depth;
+  };
+  Piece stack[kStopDepth + 2];
+  int n = 0;
+  stack[n++] = {path.at(path.x_c), path.at(x_lo), 0};
+  if (stack[0].hi.density < 0) {  // stops at once (rounding): the bracket is the point
+    a = b = stack[0].hi;
+    return true;
+  }
+  while (n > 0) {
+    const Piece p = stack[--n];
+    if (path.lambda_below(p.hi, p.lo.x) >= 0) continue;
+    const double x_mid = p.hi.x + (p.lo.x - p.hi.x) / 2;
+    if (p.depth >= kStopDepth || !(x_mid < p.hi.x && x_mid > p.lo.x)) {
+      if (!(p.lo.density < 0)) continue;
+      a = p.hi;
+      b = p.lo;
+      return true;
+    }
+    const SlipPath::Point mid = path.at(x_mid);
+    stack[n++] = {mid, p.lo, p.depth + 1};  // the lower half after the upper one
+    stack[n++] = {p.hi, mid, p.depth + 1};
+  }
+  return false;
+}
+
+// the root of a slip part's density in a bracket [b, a] (density(a) >= 0 > density(b)): regula falsi with
+// the Illinois modification, halving where a step would leave the bracket and every 8th step; the end of
+// the final bracket on the side where the density is <= 0, so that the part ends where its slip has stopped
+inline double slip_stop(const SlipPath& path, SlipPath::Point a, SlipPath::Point b) {
+  double xa = a.x, fa = a.density, xb = b.x, fb = b.density;
+  if (!(fa > 0)) return xa;
+  int side = 0;
+  for (int it = 0; it < 200 && xa - xb > 4e-16 * path.r.a_m; ++it) {
+    double xm = (xa * fb - xb * fa) / (fb - fa);
+    if (!(xm > xb && xm < xa) || it % 8 == 7) xm = xb + (xa - xb) / 2;
+    if (!(xm > xb && xm < xa)) break;
+    const double fm = path.at(xm).density;
+    if (fm > 0) {
+      xa = xm;
+      fa = fm;
+      if (side == 1) fb /= 2;
+      side = 1;
+    } else {
+      xb = xm;
+      fb = fm;
+      if (side == -1) fa /= 2;
+      side = -1;
+      if (fm == 0) break;
+    }
+  }
+  return xb;
+}
+
+constexpr int kRestickParts = 4;  // slip parts in one interval, at most (the last one slips on to x_lo)
+
+// A slip part from x_c (tau_c, e_c) to geo.x_lo whose lower bound of lambda (slip_on) did not clear it: where
+// its density falls below 0 (slip_stop_bracket) it ends at the root x_r (slip_stop), and the material sticks
+// from there. The stick solution from x_r starts on the bound and goes inside it (its excess F has F(0) = 0
+// and F'(0) = 2 h g lambda <= 0); it is followed to its first crossing with the bound (first_crossing), where
+// the material slips again along tau, and so on to x_lo. False, with nothing added to s, if the first part
+// slips on to x_lo; else lo is the node at x_lo.
+[[gnu::noinline]] inline bool restick(const StripRates& r, const IntervalGeometry& geo, double x_c, double tx,
+                                      double ty, double ex, double ey, IntervalSums& s, StripNode& lo) {
+  const BoundQuadratic q = bound_quadratic(r);
+  const double alpha = r.alpha_Pa_per_m, gamma = r.phi_L3_Pa_per_m2 / 2, x_lo = geo.x_lo;
+  for (int part = 1;; ++part) {
+    const SlipPath path(r, q, x_c, tx, ty, ex, ey, x_lo);
+    SlipPath::Point pa, pb;
+    if (part == kRestickParts || !slip_stop_bracket(path, x_lo, pa, pb)) {
+      if (part == 1) return false;
+      lo = path.slip_to(x_lo, geo.bound_lo_Pa, s);
+      return true;
+    }
+    // the part ends on the bound at x_r (of length 0 where it stops at once: a node that a transient's
+    // rescaling left off its bound comes onto it, as a slip part from it would take it)
+    const double x_r = slip_stop(path, pa, pb);
+    const StripNode on = path.slip_to(x_r, path.at(x_r).g, s);
+    // stick from x_r, inside the bound at first
+    const double h = x_r - x_lo, beta = stick_beta(r, x_r);
+    const StickGeometry<double> sg = stick_geometry(r, beta, h);
+    StickExcess<double> e = stick_excess(alpha, q, on.tx, on.ty, x_r, h, sg);
+    e.d0 = 0;
+    e.d1 = nonpositive(e.d1);
+    const double s_cross = first_crossing(e);
+    if (s_cross >= 1) {
+      add_stick(r, on, x_r, beta, gamma, h, s);
+      const StickPrediction<double> p = stick_prediction(alpha, on.tx, on.ty, h, sg);
+      lo = {p.px, p.py, on.ex, on.ey, true};
+      return true;
+    }
+    const double t_c = s_cross * h;
+    add_stick(r, on, x_r, beta, gamma, t_c, s);
+    tx = on.tx - alpha * t_c;
+    ty = on.ty - beta * t_c + gamma * t_c * t_c;
+    leaving_direction(alpha, beta, gamma, t_c, tx, ty, ex, ey);
+    x_c = x_r - t_c;
+  }
+}
+
+// A slip part from x_s = geo.x_hi - t_s to geo.x_lo (slip_part's arguments). With spin (kSpin) it is first
+// cleared at once where lambda_below holds over the whole part (a few operations; g > 0 at x_s, e0 its
+// direction there, d_m = (alpha, dy_m)); where it does not, restick looks for where its slip stops.
+template <bool kSpin, class TurnFn>
+[[gnu::always_inline]] inline StripNode slip_on(const StripRates& r, const IntervalGeometry& geo, double t_s,
+                                                double dy_m, double tx0, double ty0, double ex0, double ey0, double Ip,
+                                                double Ixp, TurnFn&& turn, IntervalSums& s) {
+  if constexpr (!kSpin) {
+    return slip_part(r, geo, t_s, dy_m, tx0, ty0, ex0, ey0, Ip, Ixp, turn, s);
+  } else {
+    IntervalSums part;
+    const StripNode lo = slip_part(r, geo, t_s, dy_m, tx0, ty0, ex0, ey0, Ip, Ixp, turn, part);
+    const double x_s = geo.x_hi - t_s, u = x_s / r.a_m;
+    const double g_s = r.bound_Pa * std::sqrt(std::max(0.0, 1 - u * u));
+    const double lambda_s = -(r.alpha_Pa_per_m * ex0 + dy_m * ey0) -
+                            std::abs(r.phi_L3_Pa_per_m2) * (x_s - geo.x_lo) / 2;  // + g'(x_s) below
+    if (r.bound_Pa > 0 && !(g_s > 0 && g_s * lambda_s - bound_quadratic(r).k * x_s >= 0)) {
+      StripNode re;
+      if (restick(r, geo, x_s, tx0, ty0, ex0, ey0, s, re)) return re;
+    }
+    add_interval_sums(s, part);
+    return lo;
+  }
+}
+
+}  // namespace detail
+
+// march_slip_interval once Kalker's test has failed: the interval slips throughout (with spin, until its
+// slip stops dissipating: detail::slip_on); kSpin = has_spin(r)
+template <bool kSpin, class TurnFn>
 [[gnu::always_inline]] inline StripNode slip_throughout(const StripRates& r, const StripNode& hi,
                                                         const IntervalGeometry& geo, TurnFn&& turn, IntervalSums& s) {
-  return detail::slip_part(r, geo, 0.0, detail::midpoint_dy(r, geo.x_hi, geo.x_hi, geo.x_lo), hi.tx, hi.ty, hi.ex,
-                           hi.ey, geo.load_N_per_m, geo.moment_N, turn, s);
+  return detail::slip_on<kSpin>(r, geo, 0.0, detail::midpoint_dy(r, geo.x_hi, geo.x_hi, geo.x_lo), hi.tx, hi.ty,
+                                hi.ex, hi.ey, geo.load_N_per_m, geo.moment_N, turn, s);
 }
 
 namespace detail {
@@ -516,7 +740,8 @@ namespace detail {
 // solution with the bound, slip from there to x_lo. From a stick node the crossing is located on the
 // stick solution (without spin a quadratic in t, exact; with spin the first root of the quartic F).
 // From a slip node whose stick solution fails at x_lo the interval slips throughout (t_s = 0), but with
-// spin only while the slip dissipates at x_hi (spin_sticks); else it sticks up to the crossing.
+// spin only while the slip dissipates at x_hi (spin_sticks); else it sticks up to the crossing. With spin
+// the slip part sticks again where it stops dissipating (slip_on).
 template <bool kSpin>
 [[gnu::always_inline]] inline StripNode stick_then_slip(const StripRates& r, const StripNode& hi,
                                                         const IntervalGeometry& geo, const StickStep& k,
@@ -565,7 +790,7 @@ template <bool kSpin>
     const double Ip = r.peak_Pa * a * (ps.integral() - pl.integral());
     const double Ixp = r.peak_Pa * a * a * (ps.moment() - pl.moment());
     auto turn = [&] { return slip_turn(alpha, dy_m, a / G * (ps.asin_u - pl.asin_u)); };
-    return slip_part(r, geo, t_s, dy_m, tx0, ty0, ex0, ey0, Ip, Ixp, turn, s);
+    return slip_on<kSpin>(r, geo, t_s, dy_m, tx0, ty0, ex0, ey0, Ip, Ixp, turn, s);
   }
   // slip throughout: the integral of ds/g is exact at the strip ends, by the midpoint rule inside
   auto turn = [&] {
@@ -573,7 +798,7 @@ template <bool kSpin>
                                                  : midpoint_inv_g(r, x_s, x_lo);
     return slip_turn(alpha, dy_m, inv_g);
   };
-  return slip_part(r, geo, t_s, dy_m, tx0, ty0, ex0, ey0, geo.load_N_per_m, geo.moment_N, turn, s);
+  return slip_on<kSpin>(r, geo, t_s, dy_m, tx0, ty0, ex0, ey0, geo.load_N_per_m, geo.moment_N, turn, s);
 }
 
 // stick_then_slip for an interval from a slip node that sticks again at x_hi and crosses the bound
@@ -598,7 +823,7 @@ template <bool kSpin, class TurnFn>
   if constexpr (kSpin) {
     if (k.s_cross > 0) return detail::spin_stick_then_slip(r, hi, geo, k, s);  // sticks again, then crosses
   }
-  return slip_throughout(r, hi, geo, turn, s);
+  return slip_throughout<kSpin>(r, hi, geo, turn, s);
 }
 
 // one interval of the consistent march from the node hi at x_hi; kSpin = has_spin(r)

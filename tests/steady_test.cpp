@@ -372,7 +372,9 @@ TEST(SteadyKernel, FirstCrossingIsTheFirstRootOfTheExcess) {
 // t (2a - t) = (2 G/(a phi/L3))^2, first at t_s = a - sqrt(a^2 - (2 G/(a phi/L3))^2). On one cell (its
 // prediction at the trailing edge is 0, inside the bound: Kalker's node test alone let the whole cell
 // stick) and on two (the node test fails at x = 0; the crossing is on the parabola, not its chord), the
-// first interval sticks up to that crossing and slips after it. Checked against that closed form.
+// first interval sticks up to that crossing and slips after it. Checked against that closed form. (On one
+// cell the slip stops at x = 0 and the interval sticks again, to x_c = -a sqrt(1 - (1 - u_s)^2), u_s =
+// 2 G/(a^2 phi/L3): SteadySpinRestick below; its stick length counts that part too.)
 class SteadySpinCrossing : public testing::TestWithParam<int> {};
 TEST_P(SteadySpinCrossing, StickPartEndsWhereTheParabolaCrossesTheBound) {
   const int n = GetParam();
@@ -394,13 +396,72 @@ TEST_P(SteadySpinCrossing, StickPartEndsWhereTheParabolaCrossesTheBound) {
   geo.moment_N = p.pressure_moment_Pa_m(n - 1, 0) * g.dx_m;
   IntervalSums sums;
   const StripNode lo = march_interval(r, StripNode{}, geo, sums);
-  EXPECT_NEAR(sums.stick_length_m / t_s, 1, 1e-12);
+  const double u_s = c / a, restuck = n == 1 ? a * std::sqrt(1 - (1 - u_s) * (1 - u_s)) : 0.0;
+  EXPECT_NEAR(sums.stick_length_m / (t_s + restuck), 1, 1e-12);
   EXPECT_FALSE(lo.stick);
   EXPECT_NEAR(std::hypot(lo.tx, lo.ty), geo.bound_lo_Pa, 1e-12 * G);
   // the cell's mean traction within mu times its mean pressure
   EXPECT_LE(std::hypot(sums.Ix, sums.Iy), r.mu * geo.load_N_per_m * (1 + 1e-12));
 }
 INSTANTIATE_TEST_SUITE_P(Cells, SteadySpinCrossing, testing::Values(1, 2));
+
+// A slip part that stops dissipating sticks again inside its interval (finding "restick"). Pure spin on the
+// strip y = 0 (alpha = 0, phi > 0, k_phi = phi/L3) is one-dimensional, tau = tau_y e_y, and has a closed
+// form. With G = mu p_j, k = G^2/a^2 and u_s = 2 G/(k_phi a^2) < 1:
+//   stick from the leading edge, tau_y = (k_phi/2)(x^2 - a^2), to its crossing x_s = a sqrt(1 - u_s^2);
+//   slip on the bound, tau_y = -g, while its dissipation density g lambda = -k x - g e . d = x (g k_phi - k)
+//     is > 0: up to x = 0 (g k_phi > k there), where d = 0 and the density changes sign;
+//   stick from x = 0, tau_y = -G + (k_phi/2) x^2, inside the bound until it crosses it on the other side,
+//     at x_c = -a sqrt(1 - (1 - u_s)^2) with tau_y = G (1 - u_s) = g(x_c);
+//   slip on the bound, tau_y = +g, to the trailing edge (density |x| (k + g k_phi) > 0).
+// Before the fix the slip went on from x_s through x = 0 to the trailing edge against the creep (on 1 x 5 at
+// phi = 30 1/m the centre strip dissipated -12 W/m). Every piece is integrated exactly by the kernel (e stays
+// along e_y), so the strip's force, moment, power and stick length equal the closed form on any grid.
+class SteadySpinRestick : public testing::TestWithParam<int> {};
+TEST_P(SteadySpinRestick, SlipStopsWhereItStopsDissipatingAndSticksAgain) {
+  const int nx = GetParam();
+  for (const double phi : {20.0, 30.0, -30.0}) {
+    const ContactPatch p = paper_patch(nx, 1);
+    const TangentialProblem pb = problem(p, {0, 0, phi});
+    const StripRates r = strip_rates(p, pb, 0);
+    ASSERT_EQ(r.y_m, 0);
+    ASSERT_EQ(r.alpha_Pa_per_m, 0);
+    const double a = r.a_m, G = r.bound_Pa, kp = std::abs(r.phi_L3_Pa_per_m2), sign = phi > 0 ? 1 : -1;
+    const double u_s = 2 * G / (kp * a * a);
+    ASSERT_LT(u_s, 1) << "phi " << phi;  // the stick parabola crosses the bound before x = 0
+    const double x_s = a * std::sqrt(1 - u_s * u_s), x_c = -a * std::sqrt(1 - (1 - u_s) * (1 - u_s));
+    // integrals of g and x g from -a to x (semi-ellipse), of the two stick parabolas
+    auto Ig = [&](double x) {
+      const double u = x / a;
+      return G * a * ((u * std::sqrt(1 - u * u) + std::asin(u)) / 2 + kPi / 4);
+    };
+    auto Ixg = [&](double x) {
+      const double u = x / a;
+      return -G * a * a * std::pow(1 - u * u, 1.5) / 3;
+    };
+    // tau_y for phi > 0 (phi < 0 mirrors it: tau_y -> -tau_y)
+    const double F1 = kp / 2 * ((a * a * a - x_s * x_s * x_s) / 3 - a * a * (a - x_s));
+    const double M1 = kp / 2 * ((a * a * a * a - x_s * x_s * x_s * x_s) / 4 - a * a * (a * a - x_s * x_s) / 2);
+    const double F2 = -(Ig(x_s) - Ig(0)), M2 = -(Ixg(x_s) - Ixg(0));
+    const double F3 = G * x_c - kp * x_c * x_c * x_c / 6, M3 = G * x_c * x_c / 2 - kp * x_c * x_c * x_c * x_c / 8;
+    const double F4 = Ig(x_c) - Ig(-a), M4 = Ixg(x_c) - Ixg(-a);
+    const double Fy = sign * (F1 + F2 + F3 + F4), Mz = sign * (M1 + M2 + M3 + M4);
+    const double VL = pb.speed_m_per_s * pb.L_m_per_Pa;
+    const double P = -VL * r.phi_L3_Pa_per_m2 * Mz;  // -V L integral(tau . d); tau(-a) = 0
+    const double stick = (a - x_s) - x_c;
+    ASSERT_GT(P, 0);
+
+    const TangentialSolution s = solve_steady(p, pb);
+    const double dy = p.grid.dy_m;
+    const std::string what = std::to_string(nx) + " x 1, phi " + std::to_string(phi);
+    EXPECT_NEAR(s.strip_force_y_N_per_m(0) / Fy, 1, 1e-11) << what;
+    EXPECT_NEAR(s.strip_force_x_N_per_m(0), 0, 1e-12 * std::abs(Fy)) << what;
+    EXPECT_NEAR(s.Mz_N_m / (Mz * dy), 1, 1e-11) << what;
+    EXPECT_NEAR(s.strip_power_W_per_m(0) / P, 1, 1e-10) << what;
+    EXPECT_NEAR(s.stick_fraction / (stick / (2 * a)), 1, 1e-11) << what;
+  }
+}
+INSTANTIATE_TEST_SUITE_P(Cells, SteadySpinRestick, testing::Values(1, 2, 3, 5, 8, 13, 40));
 
 // Coulomb's law with spin on grids coarse along x, where the stick parabola can rise over the bound
 // between two nodes: the mean |tau| of every cell within mu times the cell's mean pressure, and |F| <= mu F.
