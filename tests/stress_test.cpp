@@ -1040,14 +1040,15 @@ constexpr double kSmoothEffectiveRtol = 1e-3;
 // (Fixed: "absurd", a fixed step far too large wearing the profile deeper than its width: the fixed
 // modes' stability control halves such a step, wear/integrator.h; any throw from a life is a failure.)
 struct WearFindings {
-  int refused = 0, unresolved = 0, rough = 0;
+  int refused = 0, unresolved = 0, rough = 0, worn_through = 0;
   std::string first_unresolved, first_rough;
 };
 
 void print_wear_findings(const WearFindings& f) {
   std::printf("  known findings of the wear loop: %d refused (profile too coarse for the contact), %d ended by contact "
-              "patches no strip centre hits (finding 7), %d rough profiles at loose tolerances (finding 9)\n",
-              f.refused, f.unresolved, f.rough);
+              "patches no strip centre hits (finding 7), %d rough profiles at loose tolerances (finding 9), %d bodies worn "
+              "through (finding 13)\n",
+              f.refused, f.unresolved, f.rough, f.worn_through);
   if (!f.first_unresolved.empty()) std::printf("    first patches: %s\n", f.first_unresolved.c_str());
   if (!f.first_rough.empty()) std::printf("    first rough: %s\n", f.first_rough.c_str());
 }
@@ -1147,6 +1148,15 @@ LifeCheck run_checked_life(const wear::WearCase& c, const std::string& what, Wea
     EXPECT_GE(warnings.count(), 1) << what << ": " << out.life.message << " without a warning";
     if (found.unresolved++ == 0) found.first_unresolved = what + ": " + out.life.message;
     std::printf("    finding 7 (patches) at N %.6g: %s\n", out.life.N, what.substr(0, what.find(']') + 1).c_str());
+    out.ok = false;
+    return out;
+  }
+  if (out.life.ended_by == "failed" && out.life.message.find("is worn through") != std::string::npos) {
+    // finding 13: a body worn deeper than wide (no depth limit) ends the life where it was last solved
+    EXPECT_EQ(out.life.N, last_N) << what << ": " << out.life.message;
+    EXPECT_EQ(out.life.state, last_state) << what << ": the state is not the last accepted step's";
+    ++found.worn_through;
+    std::printf("    finding 13 (worn through) at N %.6g: %s\n", out.life.N, what.substr(0, what.find(']') + 1).c_str());
     out.ok = false;
     return out;
   }

@@ -262,6 +262,33 @@ TEST(WearLoop, KthWithOneCoefficientIsArchard) {
 
 // A limit already passed at the start ends the life there, and says which: the unworn crown's p0 is
 // 1192 MPa, above a 1 GPa limit.
+// A body worn deeper than it is wide (a life without a depth limit, stress finding 13) is not a profile
+// any more: normal_state throws WornThrough, which run_life takes as the end of the life at its last
+// accepted step (as for UnresolvedContact), instead of the profile check's "looks like millimetres".
+TEST(WearLoop, BodyWornThroughEndsTheLife) {
+  const WearModel m = make_wear_model(paper_wear(20));
+  const contact::Profile& p = m.profiles.body1;
+  const double width_m = p.y_m(p.y_m.size() - 1) - p.y_m(0);
+  Eigen::VectorXd state = initial_state(m);
+  state(m.n1 / 2) = 0.99 * width_m - p.z_m(m.n1 / 2);  // deep, but not through
+  WearCache cache;
+  EXPECT_NO_THROW({
+    try {
+      normal_state(m, state, cache);
+    } catch (const WornThrough&) {
+      throw;
+    } catch (const std::exception&) {  // the contact of such a profile may be anything else
+    }
+  });
+  state(m.n1 / 2) = 1.01 * width_m - p.z_m(m.n1 / 2);
+  try {
+    normal_state(m, state, cache);
+    ADD_FAILURE() << "no throw";
+  } catch (const WornThrough& e) {
+    EXPECT_NE(std::string(e.what()).find("body 1 is worn through"), std::string::npos) << e.what();
+  }
+}
+
 TEST(WearLoop, PressureLimitAlreadyExceededEndsTheLifeAtTheStart) {
   WearCase c = paper_wear();
   c.wear.limits.max_pressure_Pa = 1e9;

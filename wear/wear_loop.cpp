@@ -152,6 +152,16 @@ contact::Profiles worn_profiles(const WearModel& m, const Eigen::VectorXd& state
 
 NormalState normal_state(const WearModel& m, const Eigen::VectorXd& state, WearCache& cache) {
   const contact::Profiles profiles = worn_profiles(m, state);
+  // a body worn deeper than it is wide: no profile can be (contact::check_profile), the life ends
+  for (const auto& [body, p] : {std::pair{1, &profiles.body1}, std::pair{2, &profiles.body2}}) {
+    const double width_m = p->y_m(p->y_m.size() - 1) - p->y_m(0);
+    Eigen::Index deepest = 0;
+    const double depth_m = p->z_m.abs().maxCoeff(&deepest);
+    if (depth_m > width_m)
+      throw WornThrough(fmt::format("body {} is worn through: its worn profile is {:.6g} m deep at y = {:.6g} m, "
+                                    "more than its width {:.6g} m (wear.limits.max_depth_m ends a life before that)",
+                                    body, depth_m, p->y_m(deepest), width_m));
+  }
   const std::uint64_t key = contact::profile_hash(profiles);
   if (cache.reuse && cache.normal_valid && cache.normal_key == key) return cache.normal;
 
@@ -283,13 +293,13 @@ void check_profile_resolves_contact(const WearModel& m, const NormalState& n) {
 }
 const char* const kLimitNames[kLimits] = {"max_depth", "max_pressure", "edge"};
 
-// whether e, or an exception nested in it (wear::integrate nests what f threw), is an UnresolvedContact
-bool is_unresolved(const std::exception& e) {
-  if (dynamic_cast<const UnresolvedContact*>(&e)) return true;
+// whether e, or an exception nested in it (wear::integrate nests what f threw), is a LifeEndingGeometry
+bool ends_life(const std::exception& e) {
+  if (dynamic_cast<const LifeEndingGeometry*>(&e)) return true;
   try {
     std::rethrow_if_nested(e);
   } catch (const std::exception& inner) {
-    return is_unresolved(inner);
+    return ends_life(inner);
   } catch (...) {
   }
   return false;
@@ -368,8 +378,9 @@ LifeResult run_life(const WearModel& m, const WearCase& c, const LifeStart& star
     try {
       r = integrate(f, roots, kLimits, life.N, life.state, N_end, options, on_step);
     } catch (const std::exception& e) {
-      // a contact the strips cannot resolve ends the life at its last accepted step, status failed
-      if (!is_unresolved(e)) throw;
+      // a contact the strips cannot resolve, or a body worn through, ends the life at its last accepted
+      // step, status failed
+      if (!ends_life(e)) throw;
       life.N = last.N;
       life.state = last.state;
       life.steps = last.steps;

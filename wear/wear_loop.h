@@ -113,11 +113,20 @@ struct WearCache {
   WearCounters counters;
 };
 
-// Thrown by normal_state when a worn profile splits the contact into patches that no strip centre
-// hits, even with 8 times the case's strips (finding 7, "patches", docs/stress-suite.md): the strips
-// cannot carry the load. run_life ends the life on it, at its last accepted step.
-struct UnresolvedContact : std::runtime_error {
+// Thrown by normal_state where the worn geometry ends the life: run_life ends it at its last accepted
+// step, status failed, with the message (docs/stress-suite.md):
+//   UnresolvedContact: a worn profile splits the contact into patches that no strip centre hits, even
+//     with 8 times the case's strips (finding 7, "patches"): the strips cannot carry the load;
+//   WornThrough: a body's worn profile is deeper than the body is wide (finding 13), which no profile
+//     may be; wear.limits.max_depth_m ends a life before that.
+struct LifeEndingGeometry : std::runtime_error {
   using std::runtime_error::runtime_error;
+};
+struct UnresolvedContact : LifeEndingGeometry {
+  using LifeEndingGeometry::LifeEndingGeometry;
+};
+struct WornThrough : LifeEndingGeometry {
+  using LifeEndingGeometry::LifeEndingGeometry;
 };
 
 NormalState normal_state(const WearModel& m, const Eigen::VectorXd& state, WearCache& cache);
@@ -154,7 +163,7 @@ struct LifeHooks {
 
 struct LifeResult {
   // max_depth | max_pressure | edge | revolutions | max_steps | stopped | failed (ARKODE gave up, or
-  // UnresolvedContact: the state is then the last accepted step's, and the message says why)
+  // LifeEndingGeometry: the state is then the last accepted step's, and the message says why)
   std::string ended_by;
   std::string message;
   double N = 0;
