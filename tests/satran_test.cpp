@@ -44,6 +44,17 @@ std::vector<TransientRecord> run(const TransientCase& c) {
   return rows;
 }
 
+// a run's result and its records
+struct RunWithRecords {
+  TransientResult result;
+  std::vector<TransientRecord> rows;
+};
+RunWithRecords run_with_records(const TransientCase& c) {
+  RunWithRecords out;
+  out.result = run_transient(c, [&](const TransientRecord& r, const Eigen::ArrayXd&) { out.rows.push_back(r); });
+  return out;
+}
+
 TEST(Satran, SteadyStateEqualsSteadySolverToRounding) {
   const Creepages c{1e-3, 4e-4, 0.6};
   TransientCase tc = paper_case(1.8, c, 40);
@@ -345,9 +356,8 @@ TEST(SatranSkip, MirroredStripsChangeNothing) {
     c.settings.t_end_s = 6e-4;
     TransientCase all = c;
     all.settings.skips.mirrored = false;
-    std::vector<TransientRecord> rows_skip, rows_all;
-    const TransientResult skip = run_transient(c, [&](const TransientRecord& r, const Eigen::ArrayXd&) { rows_skip.push_back(r); });
-    const TransientResult full = run_transient(all, [&](const TransientRecord& r, const Eigen::ArrayXd&) { rows_all.push_back(r); });
+    const auto [skip, rows_skip] = run_with_records(c);
+    const auto [full, rows_all] = run_with_records(all);
     ASSERT_EQ(rows_skip.size(), rows_all.size()) << k.what;
     constexpr double kRounding = 1e-12;
     const double F_scale = 0.3 * 1500, P_scale = F_scale * 1.8 * 1e-3;
@@ -375,8 +385,8 @@ TEST(SatranSkip, MirroredStripsChangeNothing) {
 
 // Without lateral creepage or spin, from a state without tau_y, the shift step's stick pass leaves tau_y
 // out (TransientSkips::lateral): tau_y = 0 stays 0 (the full run's final state shows it), and every record,
-// the strip energies and the final state are those of the full step, bit for bit. Pure xi with Heathcote
-// offsets from rest through a speed ramp (fallback steps at CFL < 1 too); and eta that falls back to 0,
+// the strip energies and the final state are those of the full step, bit for bit. Pure xi from rest
+// through a speed ramp (fallback steps at CFL < 1 too); and eta that falls back to 0,
 // after which the state holds tau_y and the skip must not be taken.
 TEST(SatranSkip, LateralFreeStepsChangeNothing) {
   struct Case { const char* what; History eta; bool skipped; };
@@ -389,9 +399,8 @@ TEST(SatranSkip, LateralFreeStepsChangeNothing) {
     c.settings.skips.mirrored = false;  // all strips stepped, so that both skips are not mixed up
     TransientCase all = c;
     all.settings.skips.lateral = false;
-    std::vector<TransientRecord> rows_skip, rows_all;
-    const TransientResult skip = run_transient(c, [&](const TransientRecord& r, const Eigen::ArrayXd&) { rows_skip.push_back(r); });
-    const TransientResult full = run_transient(all, [&](const TransientRecord& r, const Eigen::ArrayXd&) { rows_all.push_back(r); });
+    const auto [skip, rows_skip] = run_with_records(c);
+    const auto [full, rows_all] = run_with_records(all);
     ASSERT_EQ(rows_skip.size(), rows_all.size()) << k.what;
     for (std::size_t s = 0; s < rows_all.size(); ++s) {
       EXPECT_EQ(rows_skip[s].Fx_N, rows_all[s].Fx_N) << k.what << ", step " << s;

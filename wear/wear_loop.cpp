@@ -152,7 +152,10 @@ contact::Profiles worn_profiles(const WearModel& m, const Eigen::VectorXd& state
 
 NormalState normal_state(const WearModel& m, const Eigen::VectorXd& state, WearCache& cache) {
   const contact::Profiles profiles = worn_profiles(m, state);
-  // a body worn deeper than it is wide: no profile can be (contact::check_profile), the life ends
+  const std::uint64_t key = contact::profile_hash(profiles);
+  if (cache.reuse && cache.normal_valid && cache.normal_key == key) return cache.normal;
+  // a body worn deeper than it is wide (a cached profile passed): no profile can be (contact::check_profile),
+  // the life ends
   for (const auto& [body, p] : {std::pair{1, &profiles.body1}, std::pair{2, &profiles.body2}}) {
     const double width_m = p->y_m(p->y_m.size() - 1) - p->y_m(0);
     Eigen::Index deepest = 0;
@@ -162,8 +165,6 @@ NormalState normal_state(const WearModel& m, const Eigen::VectorXd& state, WearC
                                     "more than its width {:.6g} m (wear.limits.max_depth_m ends a life before that)",
                                     body, depth_m, p->y_m(deepest), width_m));
   }
-  const std::uint64_t key = contact::profile_hash(profiles);
-  if (cache.reuse && cache.normal_valid && cache.normal_key == key) return cache.normal;
 
   // normal problem on the current worn geometry: Hertz while unworn profiles have constant curvature,
   // semi-Hertz once anything is worn (never back: the switch is a jump in f of up to 6.4e-4,
