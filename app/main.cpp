@@ -24,12 +24,12 @@
 #include <spdlog/sinks/stdout_color_sinks.h>
 #include <spdlog/spdlog.h>
 
-#include "lib/case.h"
-#include "lib/csv.h"
-#include "lib/hertz.h"
-#include "lib/satran.h"
-#include "lib/steady.h"
-#include "lib/tangential.h"
+#include "lib/io/case.h"
+#include "lib/io/csv.h"
+#include "lib/normal/hertz.h"
+#include "lib/tangential/satran.h"
+#include "lib/tangential/steady.h"
+#include "lib/tangential/tangential.h"
 #include "app/plot.h"
 #include "wear/wear_case.h"
 #include "wear/wear_loop.h"

@@ -27,7 +27,7 @@
 
 #include <spdlog/fmt/fmt.h>
 
-#include "lib/csv.h"
+#include "lib/io/csv.h"
 
 extern char** environ;
 
@@ -55,7 +55,7 @@ std::string trim(const std::string& s) {
   return s.substr(first, s.find_last_not_of(" \t\r") + 1 - first);
 }
 
-// one CSV line's cells, with RFC 4180 quoting (lib/csv.h csv_text) undone
+// one CSV line's cells, with RFC 4180 quoting (lib/io/csv.h csv_text) undone
 std::vector<std::string> split_csv(const std::string& line) {
   std::vector<std::string> cells(1);
   bool quoted = false;

@@ -1,6 +1,6 @@
 // The case reader: every error names the file, the line and column, and the key path
 // (STYLE.md, "Cases"). The YAML texts below number their lines in the comments on the right.
-#include "lib/case.h"
+#include "lib/io/case.h"
 
 #include <gtest/gtest.h>
 
@@ -15,10 +15,10 @@
 #include <vector>
 
 #include "lib/grid.h"
-#include "lib/hertz.h"
+#include "lib/normal/hertz.h"
 #include "lib/history.h"
-#include "lib/profile.h"
-#include "lib/satran.h"
+#include "lib/normal/profile.h"
+#include "lib/tangential/satran.h"
 
 namespace contact {
 namespace {

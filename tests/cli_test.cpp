@@ -1,5 +1,5 @@
-// The output files (lib/csv.h) and the command line (app/main.cpp, run as a process).
-#include "lib/csv.h"
+// The output files (lib/io/csv.h) and the command line (app/main.cpp, run as a process).
+#include "lib/io/csv.h"
 
 #include <gtest/gtest.h>
 
@@ -19,8 +19,8 @@
 #include <vector>
 
 #include "lib/grid.h"
-#include "lib/hertz.h"
-#include "lib/satran.h"
+#include "lib/normal/hertz.h"
+#include "lib/tangential/satran.h"
 #include "tests/test_text.h"
 
 namespace contact {

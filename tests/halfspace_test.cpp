@@ -1,6 +1,6 @@
 // The exact half-space normal solver (halfspace.h) against Boussinesq's point load, a direct
 // summation of the influence coefficients, and Hertz's closed forms (PHYSICS.md §2).
-#include "lib/halfspace.h"
+#include "lib/normal/halfspace.h"
 
 #include <gtest/gtest.h>
 
@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "lib/hertz.h"
+#include "lib/normal/hertz.h"
 #include "tests/log_capture.h"
 
 namespace contact {

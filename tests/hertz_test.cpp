@@ -1,5 +1,5 @@
 // Hertz's normal problem against closed forms (PHYSICS.md §2).
-#include "lib/hertz.h"
+#include "lib/normal/hertz.h"
 
 #include <gtest/gtest.h>
 

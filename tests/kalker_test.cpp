@@ -1,7 +1,7 @@
-// Tests of lib/kalker.h against Kalker's published table of creepage coefficients and his asymptotic
+// Tests of lib/tangential/kalker.h against Kalker's published table of creepage coefficients and his asymptotic
 // forms below the table (PHYSICS.md §3). Expected values are written here again from the published
 // table and the formulas, never taken from the implementation.
-#include "lib/kalker.h"
+#include "lib/tangential/kalker.h"
 
 #include <gtest/gtest.h>
 
@@ -263,7 +263,7 @@ TEST(Kalker, JumpAtTableEdgeIsBounded) {
 }
 
 TEST(Kalker, JumpAtTableEdgeMatchesDocumentedSize) {
-  // lib/kalker.cpp quotes asymptote(g just below 0.1) / table(0.1) - 1 at nu = 0.28
+  // lib/tangential/kalker.cpp quotes asymptote(g just below 0.1) / table(0.1) - 1 at nu = 0.28
   constexpr double kQuotedTol = 5e-5;  // quoted to 0.01 %
   const double below = std::nextafter(0.1, 0.0);
   const double a_over_b[4] = {-0.0042, -0.0213, -0.0525, -0.0014};

@@ -1,6 +1,6 @@
-// Lateral profiles (lib/profile.h): interpolation, generators against their closed forms, the CSV
+// Lateral profiles (lib/normal/profile.h): interpolation, generators against their closed forms, the CSV
 // reader's errors naming the file and the line, the shipped profiles, the parabola fit and the hash.
-#include "lib/profile.h"
+#include "lib/normal/profile.h"
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
 // Satran, the transient tangential solver: its steady state against the steady solver, start from
 // rest against the closed form of PHYSICS.md §4, the energy balance at every step, the CFL rules,
 // standstill, and the roller's inertia against the gross-sliding closed form (PHYSICS.md §5).
-#include "lib/satran.h"
+#include "lib/tangential/satran.h"
 
 #include <gtest/gtest.h>
 
@@ -12,8 +12,8 @@
 #include <stdexcept>
 #include <vector>
 
-#include "lib/case.h"
-#include "lib/steady.h"
+#include "lib/io/case.h"
+#include "lib/tangential/steady.h"
 #include "tests/closed_forms.h"
 #include "tests/log_capture.h"
 
@@ -80,7 +80,7 @@ TEST(Satran, SteadyStateEqualsSteadySolverToRounding) {
 }
 
 // Spin on grids coarse along x, where the stick parabola rises over the bound between nodes and slip
-// nodes stick again (lib/strip_march.h, detail::spin_sticks): the shift scheme's steady state must
+// nodes stick again (lib/tangential/strip_march.h, detail::spin_sticks): the shift scheme's steady state must
 // still be the steady solver's to rounding, so that the SIMD stick pass, the whole kernel and the steady
 // solver's stick runs make the same decisions. Checked against solve_steady; along the way every step's
 // path means of tau stay within mu p (a snapshot at the end, and |F| <= mu F).

@@ -1,7 +1,7 @@
-// The semi-Hertzian normal solver (lib/semi_hertz.h): Hertz reproduced on profiles of constant
+// The semi-Hertzian normal solver (lib/normal/semi_hertz.h): Hertz reproduced on profiles of constant
 // curvature (PHYSICS.md §2), the strips' loads, the Heathcote offset, worn and disconnected contacts,
 // contacts reaching a body's edge, and the tangential solver consuming the patch unchanged.
-#include "lib/semi_hertz.h"
+#include "lib/normal/semi_hertz.h"
 
 #include <gtest/gtest.h>
 
@@ -12,9 +12,9 @@
 #include <tuple>
 #include <vector>
 
-#include "lib/hertz.h"
-#include "lib/steady.h"
-#include "lib/tangential.h"
+#include "lib/normal/hertz.h"
+#include "lib/tangential/steady.h"
+#include "lib/tangential/tangential.h"
 #include "tests/log_capture.h"
 
 namespace contact {

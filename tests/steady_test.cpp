@@ -1,7 +1,7 @@
 // Steady tangential solver against closed forms (PHYSICS.md §3-4): the steady strip for pure xi,
 // Kalker's linear theory in the stick limit, saturation, symmetry, the energy balance, and a
 // measured convergence order with xi, eta and phi together.
-#include "lib/steady.h"
+#include "lib/tangential/steady.h"
 
 #include <gtest/gtest.h>
 
@@ -10,8 +10,8 @@
 #include <ostream>
 #include <string>
 
-#include "lib/hertz.h"
-#include "lib/strip_march.h"
+#include "lib/normal/hertz.h"
+#include "lib/tangential/strip_march.h"
 
 namespace contact {
 namespace {
@@ -204,7 +204,7 @@ TEST(SteadyTangential, ZeroCreepageOrFrictionOrSpeedDissipatesNothing) {
   EXPECT_EQ(standstill.power_W, 0);
 }
 
-// The consistent scheme one interval at a time through the shared kernel (lib/strip_march.h, as
+// The consistent scheme one interval at a time through the shared kernel (lib/tangential/strip_march.h, as
 // Satran applies it): the definition that the steady solver's stick runs (closed forms from the run's
 // start) and slip stretches (slip turns taken together, strips two at a time) must reproduce.
 struct IntervalByInterval {
@@ -334,7 +334,7 @@ TEST(SteadyTangential, FieldsDoNotChangeTheTotals) {
   }
 }
 
-// ---- spin: Kalker's test on the whole interval (lib/strip_march.h, detail::spin_sticks) ----
+// ---- spin: Kalker's test on the whole interval (lib/tangential/strip_march.h, detail::spin_sticks) ----
 
 // The excess F(s) of the stick solution over the bound is a quartic; first_crossing must give its first
 // root where it turns positive. Checked against quartics built from their roots.

@@ -36,13 +36,13 @@
 #include <string>
 #include <vector>
 
-#include "lib/hertz.h"
-#include "lib/kalker.h"
-#include "lib/profile.h"
-#include "lib/satran.h"
-#include "lib/semi_hertz.h"
-#include "lib/steady.h"
-#include "lib/tangential.h"
+#include "lib/normal/hertz.h"
+#include "lib/tangential/kalker.h"
+#include "lib/normal/profile.h"
+#include "lib/tangential/satran.h"
+#include "lib/normal/semi_hertz.h"
+#include "lib/tangential/steady.h"
+#include "lib/tangential/tangential.h"
 #include "tests/log_capture.h"
 #include "wear/profile_update.h"
 #include "wear/wear_case.h"
@@ -243,7 +243,7 @@ constexpr double kSkipTol = 1e-9;          // the steady skips against marching 
 // slip part of the consistent scheme could not stick again inside an interval; where the slip should stop
 // within a cell it went on against the creep, and a strip's dissipation went negative (38 cases at the
 // default seed, worst -0.165 of its scale, grids up to nx 12). A slip part now ends where its dissipation
-// density falls to 0 and the material sticks again (lib/strip_march.h, detail::restick): strip dissipation
+// density falls to 0 and the material sticks again (lib/tangential/strip_march.h, detail::restick): strip dissipation
 // >= 0 is asserted with spin too (and StressSteady.SpinSlipSticksAgainInsideAnInterval).
 // "classic": FASTSIM's stick fraction above 1: it counted dx of stick per cell centre inside |x| < a_j
 // against the exact 2 a_j; it now divides by the length it counts.
@@ -405,7 +405,7 @@ TEST(StressSteady, SpinKeepsTractionWithinTheBound) {
 // Was finding "restick" (issue #6 stress suite, found while fixing "spin"): with spin the creep rate
 // d = (alpha, eta/L2 + phi x/L3) turns along a strip, and where it turns within one interval the slip
 // should stop inside it and the material stick again (the slip's dissipation density g (g' - e . d)
-// falls to 0 there). The kernel (lib/strip_march.h) had one stick part and then one slip part per
+// falls to 0 there). The kernel (lib/tangential/strip_march.h) had one stick part and then one slip part per
 // interval, so a slip that should stop inside a cell went on to x_lo against the creep and dissipated
 // < 0. Seen only on grids coarse along x: base seed 20240606, 38 cases, all with nx <= 12 (case 14116:
 // 1 x 36, P_l -0.17 of its scale; case 19349: 6 x 27, -0.028). The paper's contact on 1 x 5 in pure spin,
@@ -443,7 +443,7 @@ TEST(StressSteady, SpinSlipSticksAgainInsideAnInterval) {
 // Was finding "classic" (issue #6 stress suite): classic FASTSIM's stick fraction exceeded 1. It added dx
 // of stick for each cell centre inside |x| < a_j against the contact area 2 a_j dy: on the paper's
 // contact in full stick (xi 1e-7) 1.155 on 2 x 2, 1.204 on 3 x 3, 1.025 on 13 x 13, 1.005 on 40 x 40.
-// Fixed: the fraction is of the length the scheme counts (lib/steady.cpp march_classic; Satran's node
+// Fixed: the fraction is of the length the scheme counts (lib/tangential/steady.cpp march_classic; Satran's node
 // steps likewise, explicit_strip), so full stick is 1.
 TEST(StressSteady, ClassicStickFractionAtMostOne) {
   const ElasticPair steel{{210e9, 0.28}, {210e9, 0.28}};
@@ -661,7 +661,7 @@ void satran_case(Rng& r, const std::string& tag, TransientScheme scheme, SatranT
   }
   // snapshots: finite; and within the bound for exact shift steps (constant speed > 0) at a constant load,
   // spin or not (step means of tau and of p; upwind's fields are node values halved onto cells)
-  // and every input constant: a changing creepage ratio changes L, and tau = u/L is rescaled (lib/satran.h),
+  // and every input constant: a changing creepage ratio changes L, and tau = u/L is rescaled (lib/tangential/satran.h),
   // which the sweep found to leave snapshot means above mu p (finding "rescale", reported)
   const bool exact_steps = scheme == TransientScheme::Shift && is_constant(tc.inputs.speed_m_per_s) && Vmax > 0 &&
                            is_constant(tc.inputs.xi) && is_constant(tc.inputs.eta) && is_constant(tc.inputs.phi_per_m);
@@ -712,13 +712,13 @@ TEST(StressSatran, UpwindAndLaxFriedrichsRandomHistoriesKeepTheBoundAndTheEnergy
 }
 
 // Finding "small load" (issue #6 stress suite): a transient run whose load history reaches small
-// loads throws. The grid covers the largest contact (lib/satran.h); at a load whose Hertz ellipse is
+// loads throws. The grid covers the largest contact (lib/tangential/satran.h); at a load whose Hertz ellipse is
 // narrower than half a strip, no strip centre lies in it and hertz_patch throws std::invalid_argument
 // "hertz: the grid's strips miss the contact ellipse". A load ramp from 0 (which the case reader
 // accepts: values >= 0, positive somewhere) meets such loads at its start whenever ny is even. Found by
 // StressSatran.ShiftRandomHistoriesKeepTheBoundAndTheEnergyBalance (base seed 20240606, case 117: load
 // ramp 0 -> 0.97 N, grid 2 x 4; case 142: ramp 123.6 -> 1.27 N, grid 13 x 4). Fixed: such a load has
-// no strip in contact and carries no traction, with a warning (lib/satran.cpp contact_at); the two
+// no strip in contact and carries no traction, with a warning (lib/tangential/satran.cpp contact_at); the two
 // cases run below, and the sweeps no longer allow a throw.
 // Finding "load fall" (issue #6 stress suite): when the load falls during a step, the final state's
 // tractions exceed mu p of the contact at the end: shift, case 223 (load ramp 90617 -> 6186 N ending

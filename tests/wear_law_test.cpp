@@ -12,9 +12,9 @@
 #include <stdexcept>
 #include <string>
 
-#include "lib/hertz.h"
-#include "lib/satran.h"
-#include "lib/steady.h"
+#include "lib/normal/hertz.h"
+#include "lib/tangential/satran.h"
+#include "lib/tangential/steady.h"
 #include "tests/test_text.h"
 
 namespace wear {

@@ -16,7 +16,7 @@
 #include <string>
 #include <vector>
 
-#include "lib/case.h"
+#include "lib/io/case.h"
 #include "tests/log_capture.h"
 #include "wear/profile_update.h"
 #include "wear/wear_output.h"

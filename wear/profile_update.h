@@ -1,6 +1,6 @@
 // Putting the wear of a revolution onto the worn body's lateral profile (PHYSICS.md §6): the wear
 // law gives a depth per contact strip j, piecewise constant over the strip's width dy; the profile
-// (lib/profile.h) is a set of nodes y_i with z interpolated linearly between them.
+// (lib/normal/profile.h) is a set of nodes y_i with z interpolated linearly between them.
 //
 // control volumes  node i stands for its dual cell, the interval between the midpoints to its
 //                  neighbours (half cells at the ends), of width

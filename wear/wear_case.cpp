@@ -7,7 +7,7 @@
 
 #include <spdlog/fmt/fmt.h>
 
-#include "lib/yaml_reader.h"
+#include "lib/io/yaml_reader.h"
 
 namespace wear {
 

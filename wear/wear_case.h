@@ -1,9 +1,9 @@
-// A wear case: a contact case (lib/case.h) with a wear: section, read in one pass with the same
+// A wear case: a contact case (lib/io/case.h) with a wear: section, read in one pass with the same
 // errors (file, line, column, key path). The duty cycle is the case's kinematic history:
 //   no transient: section  steady running, every history a constant; one duty cycle = one
 //                          revolution of the reference body (the first body that wears);
 //   transient: section     the histories over [0, transient.t_end_s], run by Satran (shift) with
-//                          its steady stretches skipped (lib/satran.h, skip_steady), repeated over
+//                          its steady stretches skipped (lib/tangential/satran.h, skip_steady), repeated over
 //                          the life. The load must be constant (the worn profiles' contact is solved
 //                          once per evaluation), and the law energy or archard (the per-cell laws
 //                          read steady fields).
@@ -26,7 +26,7 @@
 #include <string>
 #include <vector>
 
-#include "lib/case.h"
+#include "lib/io/case.h"
 #include "wear/integrator.h"
 #include "wear/wear_law.h"
 

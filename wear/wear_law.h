@@ -49,8 +49,8 @@
 #include <vector>
 
 #include "lib/patch.h"
-#include "lib/satran.h"
-#include "lib/tangential.h"
+#include "lib/tangential/satran.h"
+#include "lib/tangential/tangential.h"
 
 namespace wear {
 

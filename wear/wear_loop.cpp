@@ -11,8 +11,8 @@
 #include <spdlog/fmt/fmt.h>
 #include <spdlog/spdlog.h>
 
-#include "lib/case.h"
-#include "lib/steady.h"
+#include "lib/io/case.h"
+#include "lib/tangential/steady.h"
 #include "wear/profile_update.h"
 
 namespace wear {

@@ -25,10 +25,10 @@
 #include <string>
 #include <vector>
 
-#include "lib/profile.h"
-#include "lib/satran.h"
-#include "lib/semi_hertz.h"
-#include "lib/tangential.h"
+#include "lib/normal/profile.h"
+#include "lib/tangential/satran.h"
+#include "lib/normal/semi_hertz.h"
+#include "lib/tangential/tangential.h"
 #include "wear/integrator.h"
 #include "wear/wear_case.h"
 #include "wear/wear_law.h"

@@ -6,7 +6,7 @@
 
 #include <string>
 
-#include "lib/case.h"
+#include "lib/io/case.h"
 
 namespace bench {
 

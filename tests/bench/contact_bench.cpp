@@ -17,12 +17,12 @@
 #include <string>
 #include <utility>
 
-#include "lib/case.h"
+#include "lib/io/case.h"
 #include "lib/elastic.h"
-#include "lib/hertz.h"
+#include "lib/normal/hertz.h"
 #include "lib/patch.h"
-#include "lib/steady.h"
-#include "lib/tangential.h"
+#include "lib/tangential/steady.h"
+#include "lib/tangential/tangential.h"
 
 namespace {
 

@@ -14,14 +14,14 @@
 #include <filesystem>
 #include <string>
 
-#include "lib/case.h"
+#include "lib/io/case.h"
 #include "lib/elastic.h"
 #include "lib/grid.h"
-#include "lib/halfspace.h"
-#include "lib/hertz.h"
+#include "lib/normal/halfspace.h"
+#include "lib/normal/hertz.h"
 #include "lib/patch.h"
-#include "lib/profile.h"
-#include "lib/semi_hertz.h"
+#include "lib/normal/profile.h"
+#include "lib/normal/semi_hertz.h"
 
 namespace {
 

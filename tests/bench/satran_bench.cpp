@@ -10,8 +10,8 @@
 #include <cmath>
 #include <vector>
 
-#include "lib/hertz.h"
-#include "lib/satran.h"
+#include "lib/normal/hertz.h"
+#include "lib/tangential/satran.h"
 
 namespace {
 

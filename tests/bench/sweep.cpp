@@ -57,12 +57,12 @@
 #include <string>
 #include <vector>
 
-#include "lib/case.h"
-#include "lib/csv.h"
-#include "lib/hertz.h"
-#include "lib/satran.h"
-#include "lib/semi_hertz.h"
-#include "lib/steady.h"
+#include "lib/io/case.h"
+#include "lib/io/csv.h"
+#include "lib/normal/hertz.h"
+#include "lib/tangential/satran.h"
+#include "lib/normal/semi_hertz.h"
+#include "lib/tangential/steady.h"
 #include "wear/wear_case.h"
 #include "wear/wear_loop.h"
 #include "tests/closed_forms.h"
@@ -557,7 +557,7 @@ void skips_study(const Options& o, std::vector<Row>& rows) {
     t.inputs.normal_load_N = constant_history(s.F);
     t.settings.grid = {n, n};
     const Grid g = transient_grid(t);
-    t.settings.t_end_s = (2 * g.half_x_m + 3 * g.dx_m) / s.V;  // steady once q > 2a + 2 dx (lib/satran.h)
+    t.settings.t_end_s = (2 * g.half_x_m + 3 * g.dx_m) / s.V;  // steady once q > 2a + 2 dx (lib/tangential/satran.h)
     const TangentialSolution st = steady();
     TransientRecord last;
     Eigen::ArrayXd strips;

@@ -22,7 +22,7 @@
 #include <string>
 #include <system_error>
 
-#include "lib/case.h"
+#include "lib/io/case.h"
 #include "wear/wear_case.h"
 
 namespace {

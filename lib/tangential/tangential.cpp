@@ -1,4 +1,4 @@
-#include "lib/tangential.h"
+#include "lib/tangential/tangential.h"
 
 #include <algorithm>
 #include <cmath>

@@ -2,7 +2,7 @@
 //
 // Shift step. Node i of a strip receives the material that sat at node i+1 (or entered at the
 // leading edge) one step earlier; the interval between them is updated with the steady kernel
-// (lib/strip_march.h), whose integrals are those of the material's path through the interval. With
+// (lib/tangential/strip_march.h), whose integrals are those of the material's path through the interval. With
 // rates per rolled distance (w/V = creepages) and dq = dx the interval's dissipated energy is
 //   L dq [ -alpha Ix - (eta/L2) Iy - (phi/L3) Ixy + (|tau_hi|^2 - |tau_lo|^2)/2 ],
 // and summed over a strip the last term telescopes to E_start - E_end - (L dx/2)|tau(-a)|^2, with
@@ -14,7 +14,7 @@
 //
 // Upwind and Lax-Friedrichs steps update the interior nodes from the old values of their neighbours
 // (0 outside the contact) and clip to mu p at the node; see explicit_strip for their energy.
-#include "lib/satran.h"
+#include "lib/tangential/satran.h"
 
 #include <spdlog/spdlog.h>
 
@@ -26,7 +26,7 @@
 #include <string>
 #include <vector>
 
-#include "lib/kalker.h"
+#include "lib/tangential/kalker.h"
 
 namespace contact {
 

@@ -24,7 +24,7 @@
 // (Kalker.JumpAtTableEdgeIsBounded in tests/kalker_test.cpp keeps each below 10 %).
 //
 // Flexibilities: L1 = 8a / (3 C11 G),  L2 = 8a / (3 C22 G),  L3 = pi a sqrt(a/b) / (4 C23 G).
-#include "lib/kalker.h"
+#include "lib/tangential/kalker.h"
 
 #include <spdlog/fmt/fmt.h>
 

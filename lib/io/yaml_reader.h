@@ -27,7 +27,7 @@
 #include <spdlog/fmt/fmt.h>
 #include <yaml-cpp/yaml.h>
 
-#include "lib/case.h"
+#include "lib/io/case.h"
 
 namespace contact {
 

@@ -1,6 +1,6 @@
 // The contact case file: one reader per section, the per-key ranges next to the keys, then the
 // cross-key checks of validate(). The generic machinery (marking keys, locations) is yaml_reader.h.
-#include "lib/case.h"
+#include "lib/io/case.h"
 
 #include <algorithm>
 #include <cmath>
@@ -11,9 +11,9 @@
 
 #include <spdlog/spdlog.h>
 
-#include "lib/halfspace.h"
-#include "lib/semi_hertz.h"
-#include "lib/yaml_reader.h"
+#include "lib/normal/halfspace.h"
+#include "lib/normal/semi_hertz.h"
+#include "lib/io/yaml_reader.h"
 
 namespace contact {
 namespace {
@@ -282,7 +282,7 @@ void check_inertia_kinematics(const ContactCase& c) {
                     "from the roller's spin (V = (omega1 R1 + V2)/2, xi = (V2 - omega1 R1)/V); remove " +
                     (keys.size() > 1 ? "them" : "it") + " and give inertia.path_speed_m_per_s");
   }
-  // the inertia run carries longitudinal creep only (lib/satran.h)
+  // the inertia run carries longitudinal creep only (lib/tangential/satran.h)
   for (const auto& [key, h] : {std::pair<const char*, const History*>{"kinematics.eta", &c.kinematics.eta},
                                {"kinematics.phi_per_m", &c.kinematics.phi_per_m}})
     if (!h->value.empty() && (min_value(*h) != 0 || max_value(*h) != 0))

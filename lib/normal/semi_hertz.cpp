@@ -18,7 +18,7 @@
 //
 // Strips: the line load (pi/2) p(y) a(y) is proportional to g_+(y), piecewise linear, so each grid
 // row's load is integrated exactly; p_j = row load / ((pi/2) a_j dy), a_j = a(y_j).
-#include "lib/semi_hertz.h"
+#include "lib/normal/semi_hertz.h"
 
 #include <spdlog/spdlog.h>
 
@@ -29,7 +29,7 @@
 #include <string>
 #include <vector>
 
-#include "lib/hertz.h"
+#include "lib/normal/hertz.h"
 
 namespace contact {
 

@@ -1,4 +1,4 @@
-// One interval of the consistent strip march (the derivation is at the top of lib/steady.cpp):
+// One interval of the consistent strip march (the derivation is at the top of lib/tangential/steady.cpp):
 // from the traction at the upstream node x_hi to the downstream node x_lo, with the integrals of
 // the reconstruction over the interval. The steady solver chains it along each strip; Satran's
 // shift scheme applies it to the previous step's node values (PHYSICS.md §3-4). march_slip_interval
@@ -14,7 +14,7 @@
 #include <cmath>
 
 #include "lib/patch.h"
-#include "lib/tangential.h"
+#include "lib/tangential/tangential.h"
 
 namespace contact {
 

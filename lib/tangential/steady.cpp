@@ -11,7 +11,7 @@
 //     nodes means F <= 0 in between: the test at x_lo (the prediction inside mu p(x_lo)) is the whole
 //     test, and it costs nothing more;
 //   with spin a quartic (the parabola's gamma t^2 term): the stick parabola can rise over the bound
-//     between two nodes that pass, so the interior is tested too (lib/strip_march.h, stick_excess:
+//     between two nodes that pass, so the interior is tested too (lib/tangential/strip_march.h, stick_excess:
 //     Bernstein coefficients of F bound it from above; where they do not settle it, first_crossing
 //     finds F's first root by subdivision and a bracketed Newton step).
 // Within an interval:
@@ -26,7 +26,7 @@
 //   slip -> stick inside an interval (spin only): a slip part ends where its dissipation density
 //     g lambda = -k x - g e . d(x) (k = G^2/a^2) falls to 0, located by a bracketed root find along the
 //     slip part; the material sticks from there and the stick solution is followed to its first crossing,
-//     then slips again (lib/strip_march.h, detail::restick). Without spin d is constant and the density
+//     then slips again (lib/tangential/strip_march.h, detail::restick). Without spin d is constant and the density
 //     only grows downstream, so this never happens and nothing is asked.
 //   slip part: |tau| = g = mu p integrated exactly, direction the mean of the end directions. The
 //     direction at the downstream node solves the slip-direction equation exactly for the creep
@@ -42,7 +42,7 @@
 //   P_l = -integral(tau . c dx) - V L |tau(-a_j)|^2 / 2.
 // For pure xi the reconstruction is the closed form of §4, so Fx and P are exact along x on any grid.
 //
-// The march, arranged for speed (the same scheme; the kernel is lib/strip_march.h):
+// The march, arranged for speed (the same scheme; the kernel is lib/tangential/strip_march.h):
 //   stick runs: consecutive stick intervals share one stick solution, the polynomials above from the
 //     run's first node, so the run's integrals are add_stick's closed forms over the whole run and its
 //     D is the formula above with the run's end nodes (it telescopes). Kalker's tests at the run's
@@ -63,9 +63,9 @@
 //
 // Classic scheme: Kalker's FASTSIM on the cell centres, tau_pred = tau_prev - (c/(V L)) dx, bound at
 // the centre, s = V L (tau - tau_pred)/dx, P = -sum tau . s dx dy (PHYSICS.md §3, §5).
-#include "lib/steady.h"
+#include "lib/tangential/steady.h"
 
-#include "lib/strip_march.h"
+#include "lib/tangential/strip_march.h"
 
 #include <spdlog/spdlog.h>
 

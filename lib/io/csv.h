@@ -9,8 +9,8 @@
 
 #include "lib/grid.h"
 #include "lib/patch.h"
-#include "lib/satran.h"
-#include "lib/tangential.h"
+#include "lib/tangential/satran.h"
+#include "lib/tangential/tangential.h"
 
 namespace contact {
 
@@ -70,7 +70,7 @@ std::string strips_csv(const ContactPatch& patch, const TangentialSolution& solu
 std::string summary_csv(const std::string& name, const ContactPatch& patch, const TangentialProblem& problem,
                         const TangentialSolution& solution, TangentialScheme scheme);
 
-// ---- the transient run (lib/satran.h) ----
+// ---- the transient run (lib/tangential/satran.h) ----
 
 // timeseries.csv: the header, then one row per step (transient_row):
 //   step,t_s,q_m,dt_s,speed_m_per_s,xi,eta,phi_per_m,normal_load_N,omega1_rad_per_s,Fx_N,Fy_N,Mz_N_m,

@@ -10,7 +10,7 @@
 #include <string>
 
 #include "lib/elastic.h"
-#include "lib/kalker.h"
+#include "lib/tangential/kalker.h"
 #include "lib/patch.h"
 
 namespace contact {

@@ -32,7 +32,7 @@
 // The residual of halfspace.h is measured on g at the start of each iteration. When a step clips no
 // cell and loads no overlap, p_new = scale (p - tau t) and so K p_new = scale (K p - tau K t): the
 // next iteration needs no convolution for g. The final residual is always judged on a fresh K p.
-#include "lib/halfspace.h"
+#include "lib/normal/halfspace.h"
 
 #include <fftw3.h>
 #include <spdlog/fmt/fmt.h>

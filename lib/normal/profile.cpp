@@ -6,7 +6,7 @@
 // so the chord error of the linear interpolation stays below 1 nm and y = 0 is a node. Arcs use
 //   z = R - sign(R) sqrt(R^2 - y^2) = y^2 / (R + sign(R) sqrt(R^2 - y^2)),
 // the second form free of cancellation near the crown.
-#include "lib/profile.h"
+#include "lib/normal/profile.h"
 
 #include <cstring>
 

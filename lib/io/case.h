@@ -25,12 +25,12 @@
 
 #include "lib/elastic.h"
 #include "lib/grid.h"
-#include "lib/hertz.h"
+#include "lib/normal/hertz.h"
 #include "lib/history.h"
 #include "lib/patch.h"
-#include "lib/profile.h"
-#include "lib/satran.h"
-#include "lib/tangential.h"
+#include "lib/normal/profile.h"
+#include "lib/tangential/satran.h"
+#include "lib/tangential/tangential.h"
 
 namespace contact {
 
@@ -59,7 +59,7 @@ struct KinematicsSection {  // histories; the steady command takes constants onl
 struct FrictionSection {
   double mu = 0;  // required, >= 0
 };
-// Lateral profiles of the bodies (lib/profile.h), each one of
+// Lateral profiles of the bodies (lib/normal/profile.h), each one of
 //   body1: { file: profiles/x.csv }                       # relative to the case file's directory, or absolute
 //   body1: { crowned: { Ry_m: 0.5, width_m: 0.02 } }
 //   body1: { flat: { width_m: 0.03 } }
@@ -75,14 +75,14 @@ struct SolverSection {
   std::string tangential = "consistent";  // consistent | classic
   int nx = 80, ny = 80;
 };
-struct TransientSection {  // the 'transient' command's run (lib/satran.h)
+struct TransientSection {  // the 'transient' command's run (lib/tangential/satran.h)
   std::string scheme = "shift";     // shift | upwind | lax-friedrichs
   double t_end_s = 0;               // required, > 0
   double dt_s = 0;                  // upwind, lax-friedrichs: the step; shift: the longest step (0 = no limit)
   bool substep = false;             // split a step that breaks CFL <= 1 instead of refusing it
   std::vector<double> snapshots_s;  // increasing, in [0, t_end_s]: fields at the end of the step reaching each
 };
-struct InertiaSection {  // the roller spins up under the creep force (lib/satran.h, RollerInertia)
+struct InertiaSection {  // the roller spins up under the creep force (lib/tangential/satran.h, RollerInertia)
   double R1_m = 0;                // required, > 0: the roller's rolling radius
   double J1_kg_m2 = 0;            // required, > 0: its polar moment of inertia
   double T_res_N_m = 0;           // resisting torque on the roller
@@ -113,7 +113,7 @@ struct ContactCase {
   KeyLocations locations;  // where each value was read; empty for a case built in code
 };
 
-class YamlMap;  // lib/yaml_reader.h
+class YamlMap;  // lib/io/yaml_reader.h
 // the sections a command reads beyond the contact's (e.g. wear/wear_case.h's wear:), from the same
 // top-level mapping and with the same errors; a section nobody reads stays an error
 using ExtraSections = std::function<void(YamlMap& top_level)>;
@@ -168,7 +168,7 @@ Creepages creepages_of(const ContactCase& c);
 TransientCase transient_case_of(const ContactCase& c);
 
 // the grid run_transient puts the contact on: it covers the largest contact of the run
-// (lib/satran.cpp); callers use it to label per-strip output while the run streams
+// (lib/tangential/satran.cpp); callers use it to label per-strip output while the run streams
 Grid transient_grid(const TransientCase& t);
 
 // run_transient's refusal of the settings (std::invalid_argument "dt_s: ...") as a CaseError at the

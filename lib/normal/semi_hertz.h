@@ -30,7 +30,7 @@
 #include "lib/elastic.h"
 #include "lib/grid.h"
 #include "lib/patch.h"
-#include "lib/profile.h"
+#include "lib/normal/profile.h"
 #include "lib/solve_status.h"
 
 namespace contact {

@@ -1,4 +1,4 @@
-#include "lib/csv.h"
+#include "lib/io/csv.h"
 
 #include <unistd.h>
 

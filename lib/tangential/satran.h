@@ -7,7 +7,7 @@
 // Schemes (the state is the node tractions at the cell edges; the strip ends carry tau = 0 at the
 // leading edge and the bound, 0 for a semi-elliptic pressure, at the trailing edge):
 //   shift          steps of rolled distance dq = dx: material moves exactly one node, and the
-//                  interval update is the steady solver's (lib/strip_march.h) applied to the previous
+//                  interval update is the steady solver's (lib/tangential/strip_march.h) applied to the previous
 //                  step's upstream node. Its steady state is the steady solver's to rounding, and the
 //                  discrete energy balance of §4 holds to rounding at every step. Where rolling does
 //                  not cover dx within the longest allowed step (V = 0, standstill or sliding), the
@@ -34,10 +34,10 @@
 #include <vector>
 
 #include "lib/elastic.h"
-#include "lib/hertz.h"
+#include "lib/normal/hertz.h"
 #include "lib/history.h"
-#include "lib/strip_march.h"
-#include "lib/tangential.h"
+#include "lib/tangential/strip_march.h"
+#include "lib/tangential/tangential.h"
 
 namespace contact {
 
@@ -164,7 +164,7 @@ struct TransientCase {
   TransientInputs inputs;
   std::optional<RollerInertia> inertia;
   TransientSettings settings;
-  // The contact on its own grid (e.g. semi-Hertzian on worn profiles, lib/semi_hertz.h), used at
+  // The contact on its own grid (e.g. semi-Hertzian on worn profiles, lib/normal/semi_hertz.h), used at
   // every step in place of Hertz's from the bodies; the load history must then be the constant
   // patch->normal_load_N (throws std::invalid_argument otherwise), settings.grid is not used.
   std::optional<ContactPatch> patch;

@@ -8,7 +8,7 @@
 // Strips: a_j = a sqrt(1 - (y_j/b)^2). Strip j carries the load of its whole cell row,
 //   F_j = (pi/2) p0 a  integral over the row of (1 - y^2/b^2) dy,
 // so p_j = F_j / ((pi/2) a_j dy); the row's load is exact and the field integrates to F.
-#include "lib/hertz.h"
+#include "lib/normal/hertz.h"
 
 #include <spdlog/spdlog.h>
 

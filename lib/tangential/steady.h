@@ -2,7 +2,7 @@
 // to its trailing edge, with the traction bound |tau| <= mu p (PHYSICS.md §3, §4).
 #pragma once
 
-#include "lib/tangential.h"
+#include "lib/tangential/tangential.h"
 
 namespace contact {
 
