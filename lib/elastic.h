@@ -1,6 +1,6 @@
 // Elastic constants of the two bodies, and the combinations the contact problems use.
 //
-// Quasi-identity is assumed (PHYSICS.md §1): the normal and tangential problems are uncoupled.
+// Quasi-identity is assumed (docs/physics.md §1): the normal and tangential problems are uncoupled.
 //   normal problem:      1/E* = (1 - nu1^2)/E1 + (1 - nu2^2)/E2
 //   tangential problem:  1/G  = (1/G1 + 1/G2)/2,   nu = G (nu1/G1 + nu2/G2)/2,   Gk = Ek/(2(1+nuk))
 #pragma once

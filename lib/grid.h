@@ -1,4 +1,4 @@
-// The one Cartesian grid of a contact (PHYSICS.md §1): nx x ny uniform cells over a bounding box
+// The one Cartesian grid of a contact (docs/physics.md §1): nx x ny uniform cells over a bounding box
 // centred on the contact. Cell i (along x) spans [x_edge(i), x_edge(i+1)]; strip j is the grid row
 // at fixed y_j. Rolling runs from the leading edge x = +half_x to the trailing edge x = -half_x.
 #pragma once

@@ -1,5 +1,5 @@
 // The solution of a normal problem as the tangential solvers consume it: strips with a
-// semi-elliptic pressure along x (Hertz and the semi-Hertzian methods alike, PHYSICS.md §2),
+// semi-elliptic pressure along x (Hertz and the semi-Hertzian methods alike, docs/physics.md §2),
 //   p(x, y_j) = p_j sqrt(1 - (x/a_j)^2)   for |x| < a_j,
 // sampled on one Cartesian grid. The strip ends +-a_j are exact and cut the end cells; the
 // tangential solvers use them. Each strip carries the load of its whole cell row exactly, so the
@@ -25,7 +25,7 @@ struct ContactPatch {
   Eigen::ArrayXXd pressure_moment_Pa_m;  // (nx x ny) mean over each full cell of x p (first moment)
   Eigen::ArrayXXd edge_pressure_Pa;  // (nx+1 x ny) p at the cell edges x_edge(i), 0 outside
   Eigen::ArrayXd strip_xi_offset;  // (ny) Heathcote slip: xi(y_j) = xi + offset_j from the rolling
-                                   // radii varying across profiled bodies (PHYSICS.md §2); empty = none
+                                   // radii varying across profiled bodies (docs/physics.md §2); empty = none
 };
 
 // Fills the pressure fields of a patch from its strips (grid, half_length_m, strip_peak_Pa set).

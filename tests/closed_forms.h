@@ -7,7 +7,7 @@
 
 namespace rollwear_test {
 
-// PHYSICS.md §4, start from rest, pure xi: |tau(x, q)| = min(k min(q, a - x), g(x)), g = mu p.
+// docs/physics.md §4, start from rest, pure xi: |tau(x, q)| = min(k min(q, a - x), g(x)), g = mu p.
 // The strip force, integrated exactly piece by piece between the break points of the min.
 inline double strip_force_from_rest(double a, double p, double k, double mu, double q) {
   if (!(a > 0)) return 0;  // a strip out of contact

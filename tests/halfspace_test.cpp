@@ -1,5 +1,5 @@
 // The exact half-space normal solver (halfspace.h) against Boussinesq's point load, a direct
-// summation of the influence coefficients, and Hertz's closed forms (PHYSICS.md §2).
+// summation of the influence coefficients, and Hertz's closed forms (docs/physics.md §2).
 #include "lib/normal/halfspace.h"
 
 #include <gtest/gtest.h>
@@ -27,7 +27,7 @@ struct HertzCase {
   double normal_load_N;
 };
 
-// two equal spheres; the paper's roller on its path (PHYSICS.md §2: a = 0.230290 mm, b = 2.610098 mm,
+// two equal spheres; the paper's roller on its path (docs/physics.md §2: a = 0.230290 mm, b = 2.610098 mm,
 // p0 = 1191.517 MPa, delta = 9.1991 um); the same turned by 90 degrees (the long axis along x)
 std::vector<HertzCase> hertz_cases() {
   return {{"two_spheres", {{0.010, 0.010}, {0.010, 0.010}}, 100},

@@ -1,4 +1,4 @@
-// Hertz's normal problem against closed forms (PHYSICS.md §2).
+// Hertz's normal problem against closed forms (docs/physics.md §2).
 #include "lib/normal/hertz.h"
 
 #include <gtest/gtest.h>
@@ -14,7 +14,7 @@ constexpr double kPi = 3.14159265358979323846;
 Bodies paper_bodies() { return {{0.020, 0.500}, {0.025, kFlat}}; }
 ElasticPair steel() { return {{210e9, 0.28}, {210e9, 0.28}}; }
 
-// PHYSICS.md §2 quotes the paper's case to six digits; the paper itself prints a = 0.229 mm,
+// docs/physics.md §2 quotes the paper's case to six digits; the paper itself prints a = 0.229 mm,
 // b = 2.627 mm, p0 = 1190 MPa from approximate formulas (about 0.7 % off).
 TEST(HertzNormal, PaperCaseMatchesReferenceValues) {
   constexpr double kSixDigits = 5e-6;  // the reference values are given to 6-7 significant digits

@@ -276,7 +276,7 @@ TEST(Integrator, FixedStepIsExplicitEuler) {
   EXPECT_EQ(r.rejected, 0);  // lambda dN = 0.06: the stability control leaves the step alone
 }
 
-// Issue #6: a fixed step far too large is refused by the step control, not taken into an oscillating
+// Stability control: a fixed step far too large is refused by the step control, not taken into an oscillating
 // profile. h' = -lambda h with lambda dN = 10: plain Euler multiplies h by -9 per step. The control
 // halves each step until its rate changes by at most the rate's size, i.e. lambda dN <= 1 for this
 // linear decay (Euler's factor in [0, 1]): h decays monotonically and stays >= 0, and the run still

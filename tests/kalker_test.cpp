@@ -1,5 +1,5 @@
 // Tests of lib/tangential/kalker.h against Kalker's published table of creepage coefficients and his asymptotic
-// forms below the table (PHYSICS.md §3). Expected values are written here again from the published
+// forms below the table (docs/physics.md §3). Expected values are written here again from the published
 // table and the formulas, never taken from the implementation.
 #include "lib/tangential/kalker.h"
 
@@ -236,8 +236,8 @@ INSTANTIATE_TEST_SUITE_P(Kalker, KalkerAsymptote,
 
 TEST(Kalker, PaperCaseC11IsThinStripLimit) {
   // a/b = 0.088, nu = 0.28 (the paper's case, just below the table): C11 = pi^2 / (4 * 0.72) = 3.4269,
-  // the value PHYSICS.md §4 uses
-  constexpr double kQuotedTol = 5e-5;  // PHYSICS.md quotes four decimals
+  // the value docs/physics.md §4 uses
+  constexpr double kQuotedTol = 5e-5;  // docs/physics.md quotes four decimals
   EXPECT_NEAR(kalker_coefficients(0.088, 1, 0.28).C11, 3.4269, kQuotedTol);
   // and C11 -> pi^2 / (4 (1 - nu)) as a/b -> 0, for every nu
   for (const double nu : {0.0, 0.1, 0.25, 0.3, 0.5})

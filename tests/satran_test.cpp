@@ -1,6 +1,6 @@
 // Satran, the transient tangential solver: its steady state against the steady solver, start from
-// rest against the closed form of PHYSICS.md §4, the energy balance at every step, the CFL rules,
-// standstill, and the roller's inertia against the gross-sliding closed form (PHYSICS.md §5).
+// rest against the closed form of docs/physics.md §4, the energy balance at every step, the CFL rules,
+// standstill, and the roller's inertia against the gross-sliding closed form (docs/physics.md §5).
 #include "lib/tangential/satran.h"
 
 #include <gtest/gtest.h>
@@ -156,7 +156,7 @@ TEST(Satran, FrictionlessSpinGivesNoForce) {
   }
 }
 
-// Issue #3: |Fx(q) - Fx_closed_form(q)| within 0.5 % of |Fx_steady| for all q, 80 x 80. The
+// Accuracy target: |Fx(q) - Fx_closed_form(q)| within 0.5 % of |Fx_steady| for all q, 80 x 80. The
 // forces of a step are its path averages, reported at the middle of the step.
 TEST(Satran, StartFromRestFollowsClosedFormWithinHalfPercent) {
   const double xi = 1e-3, V = 1.0;
@@ -209,7 +209,7 @@ TEST(Satran, UpwindAndLaxFriedrichsSmearTheStart) {
   }
 }
 
-// PHYSICS.md §4: dissipated = creep work - dE - trailing (- the transport loss of fallback steps),
+// docs/physics.md §4: dissipated = creep work - dE - trailing (- the transport loss of fallback steps),
 // with changing load (contact size), creepages and speed, at every step.
 TEST(Satran, EnergyBalanceHoldsAtEveryStepWithChangingInputs) {
   TransientCase tc = paper_case(1.0, {0, 0, 0}, 30);
@@ -567,7 +567,7 @@ double omega_at(const std::vector<TransientRecord>& rows, double t) {
 }
 
 // A light steel roller (40 mm x 20 mm: J1 = m R^2/2 = 3.9e-5 kg m^2) has a torsional period near
-// 67 us on this contact (PHYSICS.md §5). The implicit coupling must stay stable at steps larger
+// 67 us on this contact (docs/physics.md §5). The implicit coupling must stay stable at steps larger
 // than period/pi (21 us) and converge as the step shrinks.
 TEST(SatranInertia, LightRollerStableAboveTorsionalPeriodAndConverges) {
   const double R = 0.020, w = 0.020, rho = 7850;

@@ -1,5 +1,5 @@
 // The semi-Hertzian normal solver (lib/normal/semi_hertz.h): Hertz reproduced on profiles of constant
-// curvature (PHYSICS.md §2), the strips' loads, the Heathcote offset, worn and disconnected contacts,
+// curvature (docs/physics.md §2), the strips' loads, the Heathcote offset, worn and disconnected contacts,
 // contacts reaching a body's edge, and the tangential solver consuming the patch unchanged.
 #include "lib/normal/semi_hertz.h"
 
@@ -92,7 +92,7 @@ INSTANTIATE_TEST_SUITE_P(SemiHertzCrownsAndLoads, SemiHertzConstantCurvature,
                                   std::to_string(static_cast<int>(std::get<1>(param.param))) + "N";
                          });
 
-// PHYSICS.md §2: the paper's case, a = 0.230290 mm, b = 2.610098 mm, p0 = 1191.517 MPa, delta = 9.1991 um
+// docs/physics.md §2: the paper's case, a = 0.230290 mm, b = 2.610098 mm, p0 = 1191.517 MPa, delta = 9.1991 um
 TEST(SemiHertz, PaperCaseMatchesReferenceValues) {
   const SemiHertzResult r = solve_semi_hertz(crowned_on_flat(0.5), kRx1, kRx2, steel(), 1500, {80, 80});
   EXPECT_NEAR(r.patch.a_m / 0.230290e-3, 1, kHertzTol);

@@ -1,4 +1,4 @@
-// Steady tangential solver against closed forms (PHYSICS.md §3-4): the steady strip for pure xi,
+// Steady tangential solver against closed forms (docs/physics.md §3-4): the steady strip for pure xi,
 // Kalker's linear theory in the stick limit, saturation, symmetry, the energy balance, and a
 // measured convergence order with xi, eta and phi together.
 #include "lib/tangential/steady.h"
@@ -24,7 +24,7 @@ ContactPatch paper_patch(int nx, int ny) {
   return solve_normal_hertz({{0.020, 0.500}, {0.025, kFlat}}, {{kE, kNu}, {kE, kNu}}, 1500, {nx, ny});
 }
 
-// the problem of PHYSICS.md §4's example: C11 = pi^2/(4(1 - nu)) = 3.4269 (Kalker's a/b -> 0 limit);
+// the problem of docs/physics.md §4's example: C11 = pi^2/(4(1 - nu)) = 3.4269 (Kalker's a/b -> 0 limit);
 // C22, C23 are set by hand here so that these tests do not depend on the coefficient table
 TangentialProblem problem(const ContactPatch& p, Creepages c, double mu = 0.3, double V = 1.0) {
   TangentialProblem pb;
@@ -38,7 +38,7 @@ TangentialProblem problem(const ContactPatch& p, Creepages c, double mu = 0.3, d
   return pb;
 }
 
-// PHYSICS.md §4, steady strip, pure xi > 0: stick |tau| = k (a - x) from the leading edge, slip
+// docs/physics.md §4, steady strip, pure xi > 0: stick |tau| = k (a - x) from the leading edge, slip
 // |tau| = mu p from x_s = a (1 - m^2)/(1 + m^2), m = mu p_i L1/(xi a); the strip force is
 //   k (a - x_s)^2 / 2 + mu p_i a [ (u sqrt(1-u^2) + asin u)/2 + pi/4 ],  u = x_s/a.
 double strip_force_closed_form(double a, double p_i, double xi, double L1, double mu) {
@@ -61,10 +61,10 @@ double total_force_closed_form(double a, double b, double p0, double xi, double 
 }
 
 TEST(SteadyTangential, ClosedFormExampleOfPhysicsReference) {
-  // PHYSICS.md §4: Fx = -159.882 N, P = 0.159882 W at V = 1 m/s (mu 0.3, xi 1e-3, C11 3.4269)
+  // docs/physics.md §4: Fx = -159.882 N, P = 0.159882 W at V = 1 m/s (mu 0.3, xi 1e-3, C11 3.4269)
   const ContactPatch p = paper_patch(80, 80);
   TangentialProblem pb = problem(p, {1e-3, 0, 0});
-  pb.flex.L1_m_per_Pa = 8 * p.a_m / (3 * 3.4269 * kG);  // C11 as PHYSICS.md gives it, 5 digits
+  pb.flex.L1_m_per_Pa = 8 * p.a_m / (3 * 3.4269 * kG);  // C11 as docs/physics.md gives it, 5 digits
   const double F = total_force_closed_form(p.a_m, p.b_m, p.p0_Pa, 1e-3, pb.flex.L1_m_per_Pa, 0.3);
   EXPECT_NEAR(F, 159.882, 0.0005);
 }
@@ -86,7 +86,7 @@ TEST_P(SteadyStripExact, PureXiStripForceAndPowerEqualClosedForm) {
 }
 INSTANTIATE_TEST_SUITE_P(Grids, SteadyStripExact, testing::Values(1, 2, 3, 7, 20, 80, 333));
 
-// Issue #2: Fx and P within 0.5 % of the closed form at 80 x 80, 1 % at 20 x 20 (paper's case).
+// Accuracy target: Fx and P within 0.5 % of the closed form at 80 x 80, 1 % at 20 x 20 (paper's case).
 // The remaining error is the midpoint rule across strips (y), O(dy^2).
 struct GridTol { int n; double tol; };
 class SteadyPaperAccuracy : public testing::TestWithParam<GridTol> {};
@@ -104,7 +104,7 @@ INSTANTIATE_TEST_SUITE_P(Grids, SteadyPaperAccuracy,
                          testing::Values(GridTol{80, 0.005}, GridTol{20, 0.01}, GridTol{40, 0.005}),
                          [](const testing::TestParamInfo<GridTol>& p) { return "nx" + std::to_string(p.param.n); });
 
-// PHYSICS.md §5 reports classic FASTSIM on the 80 x 80 Cartesian grid at Fx +1.4 %, P -19 %; the
+// docs/physics.md §5 reports classic FASTSIM on the 80 x 80 Cartesian grid at Fx +1.4 %, P -19 %; the
 // classic scheme is kept for comparison and must show that error, not the consistent scheme's.
 TEST(SteadyTangential, ClassicSchemeShowsItsKnownPowerError) {
   const ContactPatch p = paper_patch(80, 80);
@@ -160,7 +160,7 @@ TEST(SteadyTangential, LateralCreepageAndSpinFlipWithTheirSigns) {
   EXPECT_NEAR(e.Fy_N, -f.Fy_N, 1e-12 * std::abs(f.Fy_N));
 }
 
-// PHYSICS.md §4: P_l = -integral(tau . c dx) - V L |tau(-a_j)|^2 / 2, strip by strip, to rounding.
+// docs/physics.md §4: P_l = -integral(tau . c dx) - V L |tau(-a_j)|^2 / 2, strip by strip, to rounding.
 class SteadyEnergy : public testing::TestWithParam<TangentialScheme> {};
 TEST_P(SteadyEnergy, DissipatedPowerBalancesCreepPowerStripByStrip) {
   const ContactPatch p = paper_patch(25, 20);

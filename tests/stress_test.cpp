@@ -1,12 +1,12 @@
 // The stress suite (ctest label "stress": suites named Stress*, run apart from the quick tests and in
 // CI by `scripts/test stress`): random cases over wide ranges, each asserting what must hold for any
 // input, not a closed form:
-//   finite outputs; |tau| <= mu p everywhere (to rounding); the energy identity of PHYSICS.md §4
+//   finite outputs; |tau| <= mu p everywhere (to rounding); the energy identity of docs/physics.md §4
 //   (steady: P_l = creep power - trailing power per strip; Satran: the step balance residual); the
 //   wear loop's worn volume = k_E x dissipated energy at every step, non-negative depths, no rough
 //   worn profile at the shipped tolerance, no runaway of the step control; the semi-Hertzian solver's load
 //   balance on random smooth profiles.
-// Ranges (issue #6): mu 0..1, creepages 1e-8..1 of both signs and spin, a/b 0.01..100 (from the
+// Ranges: mu 0..1, creepages 1e-8..1 of both signs and spin, a/b 0.01..100 (from the
 // radii), load 1e-3 N..1e6 N, speed 0..100 m/s with ramps and steps, lives of 1e9 revolutions.
 //
 // Reproducing a failure: every assertion message names the case's seed and its parameters. The
@@ -238,7 +238,7 @@ constexpr double kStripEnergyTol = 1e-10;  // consistent: |P_l - (C_l - T_l)| / 
 constexpr double kTotalsTol = 1e-11;       // sums of the strips against the grid fields and the totals
 constexpr double kSkipTol = 1e-9;          // the steady skips against marching every strip (of mu F, of the power scale)
 
-// Fixed findings (issue #6 stress suite), asserted below for every case:
+// Fixed findings (stress suite, docs/stress-suite.md), asserted below for every case:
 // "restick": with spin (phi != 0) the creep rate d = (alpha, eta/L2 + phi x/L3) turns along a strip, and a
 // slip part of the consistent scheme could not stick again inside an interval; where the slip should stop
 // within a cell it went on against the creep, and a strip's dissipation went negative (38 cases at the
@@ -341,7 +341,7 @@ TEST(StressSteady, RandomCasesStayFiniteBoundedAndBalanced) {
                   kTotalsTol * (pscale * patch.grid.dy_m * ny) + 1e-300)
           << w;
       if (consistent) {
-        // PHYSICS.md §4: P_l = C_l - T_l to rounding, and so P <= the creep power
+        // docs/physics.md §4: P_l = C_l - T_l to rounding, and so P <= the creep power
         for (int j = 0; j < ny; ++j) {
           const double balance = s.strip_creep_power_W_per_m(j) - s.strip_trailing_W_per_m(j);
           const double err = std::abs(s.strip_power_W_per_m(j) - balance) / (pscale + 1e-300);
@@ -379,7 +379,7 @@ TEST(StressSteady, RandomCasesStayFiniteBoundedAndBalanced) {
   }
 }
 
-// Finding "spin" (issue #6 stress suite), fixed: the consistent scheme with spin let |tau| exceed mu p.
+// Finding "spin" (stress suite, docs/stress-suite.md), fixed: the consistent scheme with spin let |tau| exceed mu p.
 // Kalker's test was made at the nodes only, while with spin the stick solution within an interval is a
 // parabola in x (gamma t^2) that can rise above the semi-elliptic bound between two nodes that pass
 // (base seed 20240606, case 1061: 5x5, pure spin, centre cell 5.3x over the bound; the paper's contact
@@ -402,7 +402,7 @@ TEST(StressSteady, SpinKeepsTractionWithinTheBound) {
   }
 }
 
-// Was finding "restick" (issue #6 stress suite, found while fixing "spin"): with spin the creep rate
+// Was finding "restick" (stress suite, found while fixing "spin"): with spin the creep rate
 // d = (alpha, eta/L2 + phi x/L3) turns along a strip, and where it turns within one interval the slip
 // should stop inside it and the material stick again (the slip's dissipation density g (g' - e . d)
 // falls to 0 there). The kernel (lib/tangential/strip_march.h) had one stick part and then one slip part per
@@ -412,7 +412,7 @@ TEST(StressSteady, SpinKeepsTractionWithinTheBound) {
 // phi = 30 1/m: the centre strip's P_l was -12 W/m (stick to the crossing, then one slip part to the
 // trailing edge, against the creep beyond x = 0). Fixed: a slip part ends where its dissipation density
 // falls to 0 and the stick solution is followed from there (detail::restick; its closed form on the strip
-// y = 0: tests/steady_test.cpp SteadySpinRestick). Checks against PHYSICS.md §4: P_l = -integral(tau . s)
+// y = 0: tests/steady_test.cpp SteadySpinRestick). Checks against docs/physics.md §4: P_l = -integral(tau . s)
 // >= 0 for Coulomb friction.
 TEST(StressSteady, SpinSlipSticksAgainInsideAnInterval) {
   struct Case {
@@ -440,7 +440,7 @@ TEST(StressSteady, SpinSlipSticksAgainInsideAnInterval) {
   }
 }
 
-// Was finding "classic" (issue #6 stress suite): classic FASTSIM's stick fraction exceeded 1. It added dx
+// Was finding "classic" (stress suite, docs/stress-suite.md): classic FASTSIM's stick fraction exceeded 1. It added dx
 // of stick for each cell centre inside |x| < a_j against the contact area 2 a_j dy: on the paper's
 // contact in full stick (xi 1e-7) 1.155 on 2 x 2, 1.204 on 3 x 3, 1.025 on 13 x 13, 1.005 on 40 x 40.
 // Fixed: the fraction is of the length the scheme counts (lib/tangential/steady.cpp march_classic; Satran's node
@@ -711,7 +711,7 @@ TEST(StressSatran, UpwindAndLaxFriedrichsRandomHistoriesKeepTheBoundAndTheEnergy
   print_tally(tally);
 }
 
-// Finding "small load" (issue #6 stress suite): a transient run whose load history reaches small
+// Finding "small load" (stress suite, docs/stress-suite.md): a transient run whose load history reaches small
 // loads throws. The grid covers the largest contact (lib/tangential/satran.h); at a load whose Hertz ellipse is
 // narrower than half a strip, no strip centre lies in it and hertz_patch throws std::invalid_argument
 // "hertz: the grid's strips miss the contact ellipse". A load ramp from 0 (which the case reader
@@ -720,7 +720,7 @@ TEST(StressSatran, UpwindAndLaxFriedrichsRandomHistoriesKeepTheBoundAndTheEnergy
 // ramp 0 -> 0.97 N, grid 2 x 4; case 142: ramp 123.6 -> 1.27 N, grid 13 x 4). Fixed: such a load has
 // no strip in contact and carries no traction, with a warning (lib/tangential/satran.cpp contact_at); the two
 // cases run below, and the sweeps no longer allow a throw.
-// Finding "load fall" (issue #6 stress suite): when the load falls during a step, the final state's
+// Finding "load fall" (stress suite, docs/stress-suite.md): when the load falls during a step, the final state's
 // tractions exceed mu p of the contact at the end: shift, case 223 (load ramp 90617 -> 6186 N ending
 // 1.4e-6 s before t_end, no spin, 10 x 1): |tau| 3.20e8 Pa at node (3, 0) against mu p 1.84e8 Pa;
 // case 319 (0.884 -> 0.876 N, 24 x 22): 0.05 % above. Fixed: a step's contact is the one at its end
@@ -1029,7 +1029,7 @@ constexpr int kMaxDepthReversals = 5;        // up to three worn humps
 // of some 40 elastic approaches that needs a still smaller tolerance (DISABLED_WornProfilesStaySmooth).
 constexpr double kSmoothEffectiveRtol = 1e-3;
 
-// Known findings of the wear loop (issue #6 stress suite; docs/stress-suite.md), counted and printed by
+// Known findings of the wear loop (stress suite; docs/stress-suite.md), counted and printed by
 // each test over its own lives (ctest runs every test in a process of its own):
 //   "patches" (7)  a worn profile splits the contact into patches that no strip centre hits, even at
 //                  8 x ny: the life ends, status failed, at its last accepted step (asserted);

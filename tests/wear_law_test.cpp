@@ -1,4 +1,4 @@
-// Wear laws (PHYSICS.md §6, wear/wear_law.h): the energy law against its formula and its volume
+// Wear laws (docs/physics.md §6, wear/wear_law.h): the energy law against its formula and its volume
 // balance, Archard as the energy law with k_E = K/(H mu) on the paper's steady case (and the power
 // error a naive p |s| sum on classic FASTSIM carries), the KTH map's regions, the USFD function's
 // branches, convention and unit conversion on hand-computed cells, zero creepage, and the errors.
@@ -32,7 +32,7 @@ constexpr double kRounding = 1e-13;  // relative: a few hundred additions and pr
 const contact::Bodies kPaperBodies{{0.020, 0.500}, {0.025, contact::kFlat}};
 const contact::ElasticPair kSteel{{210e9, 0.28}, {210e9, 0.28}};
 
-// the paper's case (PHYSICS.md §1-2, tests/steady_test.cpp): F = 1500 N, mu 0.3, V 1 m/s
+// the paper's case (docs/physics.md §1-2, tests/steady_test.cpp): F = 1500 N, mu 0.3, V 1 m/s
 ContactPatch paper_patch(int n) { return contact::solve_normal_hertz(kPaperBodies, kSteel, 1500, {n, n}); }
 
 TangentialSolution paper_steady(const ContactPatch& p, Creepages c, TangentialScheme scheme = TangentialScheme::Consistent) {
@@ -72,7 +72,7 @@ CellFields one_cell(double p, double tx, double ty, double sx, double sy, double
 // ---- energy law ----
 
 TEST(WearLaw, EnergyLawDepthIsKETimesEnergyOverCircumference) {
-  // dh = k_E E_l / (2 pi R_w), PHYSICS.md §6
+  // dh = k_E E_l / (2 pi R_w), docs/physics.md §6
   Eigen::ArrayXd E(4);
   E << 0.0, 1.0, 2.5, 40.0;  // J/m
   const double k_E = 2e-13, R_w = 0.02;
@@ -142,7 +142,7 @@ TEST(WearLaw, ArchardWithZeroFrictionHasNoEnergyEquivalent) {
 }
 
 TEST(WearLaw, ArchardIsEnergyLawWithKOverHMuOnPaperCase) {
-  // PHYSICS.md §6: Archard = energy law with k_E = K/(H mu), on the same energy-consistent P_l
+  // docs/physics.md §6: Archard = energy law with k_E = K/(H mu), on the same energy-consistent P_l
   const ContactPatch p = paper_patch(80);
   const TangentialSolution s = paper_steady(p, {1e-3, 0, 0});
   const double K = 1e-4, H = 6e9, T = 10, R_w = 0.02;
@@ -157,7 +157,7 @@ TEST(WearLaw, ArchardIsEnergyLawWithKOverHMuOnPaperCase) {
 }
 
 // A naive Archard sum, K/H sum p |s| dx dy, on classic FASTSIM's cell fields inherits its power
-// error (PHYSICS.md §5: P 19 % low at 80 x 80); the energy route on the consistent scheme does not.
+// error (docs/physics.md §5: P 19 % low at 80 x 80); the energy route on the consistent scheme does not.
 // The same naive sum on the consistent scheme's cell means is off too, the other way (+4.5 %).
 TEST(WearLaw, NaivePSlipSumOnClassicFastsimShowsItsPowerError) {
   const ContactPatch p = paper_patch(80);
@@ -178,7 +178,7 @@ TEST(WearLaw, NaivePSlipSumOnClassicFastsimShowsItsPowerError) {
   RecordProperty("naive_consistent_error", std::to_string(naive_consistent));
   std::printf("naive sum p|s| dx dy against P/mu (80 x 80): classic %+.2f %%, consistent cell means %+.2f %%\n",
               100 * naive_classic, 100 * naive_consistent);
-  EXPECT_NEAR(naive_classic, -0.19, 0.02);     // measured -19.9 %: the power error of PHYSICS.md §5
+  EXPECT_NEAR(naive_classic, -0.19, 0.02);     // measured -19.9 %: the power error of docs/physics.md §5
   EXPECT_NEAR(naive_consistent, 0.045, 0.005);  // measured +4.5 %: cell-mean product (WearLawKth below)
 }
 

@@ -50,7 +50,7 @@ LifeResult run_to(const WearCase& c, double N, const LifeHooks& hooks = {}) {
   return run_life(m, k, LifeStart{}, hooks, cache);
 }
 
-// Identity (PHYSICS.md §6): the volume worn per revolution, 2 pi R_w sum_i w_i dh_i/dN after mapping and
+// Identity (docs/physics.md §6): the volume worn per revolution, 2 pi R_w sum_i w_i dh_i/dN after mapping and
 // smoothing, equals k_E x the energy dissipated per revolution, to rounding, on the unworn and on a
 // worn (semi-Hertzian) geometry.
 TEST(WearLoop, VolumeRateEqualsEnergyRateTimesCoefficient) {

@@ -1,4 +1,4 @@
-// Putting the wear of a revolution onto the worn body's lateral profile (PHYSICS.md §6): the wear
+// Putting the wear of a revolution onto the worn body's lateral profile (docs/physics.md §6): the wear
 // law gives a depth per contact strip j, piecewise constant over the strip's width dy; the profile
 // (lib/normal/profile.h) is a set of nodes y_i with z interpolated linearly between them.
 //

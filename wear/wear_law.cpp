@@ -1,4 +1,4 @@
-// Wear laws (PHYSICS.md §6); the formulas and their units are at the top of wear/wear_law.h.
+// Wear laws (docs/physics.md §6); the formulas and their units are at the top of wear/wear_law.h.
 //
 // Every law returns the depth per duty cycle per strip. The energy law and Archard read the strip
 // energies E_l(y_j), so their worn volume, summed over the strips and around the circumference, is

@@ -1,4 +1,4 @@
-// Wear laws (issue #5, PHYSICS.md §6): the depth removed per duty cycle at each strip y_j of the
+// Wear laws (docs/physics.md §6): the depth removed per duty cycle at each strip y_j of the
 // worn body, whose life is counted in its revolutions (radius R_w). A revolution carries each
 // surface point of the worn body through the contact once; a duty cycle's wear is spread evenly
 // around the circumference.
@@ -10,7 +10,7 @@
 //          constant mu, p |s| = -tau.s / mu wherever s != 0, so Archard is the energy law with
 //            k_E = K / (H mu)
 //          and uses the same energy-consistent E_l (never a separate p |s| sum, which would carry
-//          the discretisation's power error, PHYSICS.md §5). mu = 0 has no energy equivalent.
+//          the discretisation's power error, docs/physics.md §5). mu = 0 has no energy equivalent.
 // kth      Archard with K from the KTH wear map (Jendel 2002): regions of p/H and of the sliding
 //          speed |s|. Per cell (i, j) of a stretch of rolling at speed V, a surface point spends
 //          dt_cell = dx/V in the cell, so the depth per passage of strip j is

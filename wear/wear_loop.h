@@ -1,4 +1,4 @@
-// The wear loop (PHYSICS.md §6, docs/wear-loop.md): the worn depth h at the fixed lateral nodes of
+// The wear loop (docs/physics.md §6, docs/wear-loop.md): the worn depth h at the fixed lateral nodes of
 // each wearing body's profile obeys an ODE in the revolutions N of the reference body (the first body
 // that wears),
 //   dh/dN = f(h):  worn profiles z + h -> normal problem -> tangential problem over the duty cycle

@@ -1,4 +1,4 @@
-// The exact normal problem on the elastic half-space (PHYSICS.md §1-2): piecewise-constant pressure on
+// The exact normal problem on the elastic half-space (docs/physics.md §1-2): piecewise-constant pressure on
 // the grid's cells, Boussinesq influence coefficients (Love's closed form for a uniformly loaded
 // rectangle), solved by the bound-constrained conjugate gradient method of Polonsky & Keer (1999)
 // with the total load prescribed. It is the reference the Hertz and semi-Hertzian solutions are

@@ -1,5 +1,5 @@
 // Hertz's solution of the normal problem for two bodies with principal curvatures aligned with the
-// rolling (x) and lateral (y) directions (PHYSICS.md §2):
+// rolling (x) and lateral (y) directions (docs/physics.md §2):
 //   A = (1/Rx1 + 1/Rx2)/2,  B = (1/Ry1 + 1/Ry2)/2  (concave radius negative, infinite radius 0).
 // With k = minor/major semi-axis and e^2 = 1 - k^2, e is the root of
 //   (larger curvature)/(smaller curvature) = ((1/k^2) E(e) - K(e)) / (K(e) - E(e)),

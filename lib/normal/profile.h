@@ -1,4 +1,4 @@
-// Lateral profiles of the two bodies (PHYSICS.md §1-2): the curve z(y) of a body's surface across
+// Lateral profiles of the two bodies (docs/physics.md §1-2): the curve z(y) of a body's surface across
 // the rolling direction. y is lateral; z points into the body's material and is measured from the
 // body's rolling radius Rx at y = 0, so a crowned roller of radius Ry has z = Ry - sqrt(Ry^2 - y^2)
 // ~ y^2/(2 Ry) >= 0, and the body's rolling radius at y is Rx - z(y). Both bodies use the same

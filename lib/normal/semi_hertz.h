@@ -1,4 +1,4 @@
-// Semi-Hertzian normal problem on arbitrary lateral profiles (PHYSICS.md §2): Kik & Piotrowski's
+// Semi-Hertzian normal problem on arbitrary lateral profiles (docs/physics.md §2): Kik & Piotrowski's
 // virtual penetration (KP, 2008) with an equivalent-ellipse correction of the penetration ratio and
 // of the strip length, so that on a profile of constant curvature it reproduces Hertz exactly (up to
 // quadrature): in the spirit of CONTACT's KPEC, written from the equations below (docs/semi-hertz.md).

@@ -1,4 +1,4 @@
-// Kalker's creepage coefficients and the flexibilities of the simplified theory (PHYSICS.md §3).
+// Kalker's creepage coefficients and the flexibilities of the simplified theory (docs/physics.md §3).
 //
 // Table: Kalker's published C11, C22, C23, C33 for nu = 0, 0.25, 0.5 and g = min(a/b, b/a) = 0.1 ... 1.
 // Rows a/b <= 1 form one branch, rows b/a < 1 the other; the two meet at a/b = 1.

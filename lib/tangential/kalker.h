@@ -1,5 +1,5 @@
 // Kalker's creepage coefficients C11, C22, C23, C33 (linear theory) and the flexibilities of the
-// simplified theory derived from them (PHYSICS.md §3):
+// simplified theory derived from them (docs/physics.md §3):
 //   L1 = 8a / (3 C11 G),  L2 = 8a / (3 C22 G),  L3 = pi a sqrt(a/b) / (4 C23 G).
 // Table: Kalker's published values for nu = 0, 0.25, 0.5, g = min(a/b, b/a) from 0.1 to 1,
 // interpolated linearly in g and, across nu, by a quadratic fit of 1/C through the three columns.

@@ -6,7 +6,7 @@
 // rates per rolled distance (w/V = creepages) and dq = dx the interval's dissipated energy is
 //   L dq [ -alpha Ix - (eta/L2) Iy - (phi/L3) Ixy + (|tau_hi|^2 - |tau_lo|^2)/2 ],
 // and summed over a strip the last term telescopes to E_start - E_end - (L dx/2)|tau(-a)|^2, with
-// E = (L dx/2) sum over interior nodes of |tau|^2: the balance of PHYSICS.md §4 to rounding.
+// E = (L dx/2) sum over interior nodes of |tau|^2: the balance of docs/physics.md §4 to rounding.
 //
 // The shift step, arranged for speed (the same scheme; shift_strip): the intervals of a step form no
 // chain, and most of them stick, so a strip's interior intervals take the stick step in SIMD blocks,

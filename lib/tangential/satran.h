@@ -1,5 +1,5 @@
-// Satran: Kalker's simplified theory stepped in time (PHYSICS.md §3-4; the paper in
-// ../shared/reference/satran-paper.md). With u = L tau on every strip,
+// Satran: Kalker's simplified theory stepped in time (docs/physics.md §3-4; the paper is cited in
+// docs/physics.md §7). With u = L tau on every strip,
 //   du/dt - V du/dx = s - c,   c = L ( w_x/L1 - omega_z y/L3 ,  w_y/L2 + omega_z x/L3 ),
 // w = (w_x, w_y) = V (xi, eta) the rigid slip velocity and omega_z = V phi the spin rate, and the
 // Coulomb bound |tau| <= mu p. Built from w, c has no 0/0 at V = 0.
@@ -129,7 +129,7 @@ struct TransientInputs {
 
 // The roller's inertia (beyond the paper): the path's surface speed V2(t) is prescribed; the roller
 // (radius R1, polar moment J1, resisting torque T_res) spins up under the creep force,
-//   J1 d omega1/dt = -R1 Fx - T_res,  w_x = V2 - omega1 R1,  V = (omega1 R1 + V2)/2 (PHYSICS.md §5).
+//   J1 d omega1/dt = -R1 Fx - T_res,  w_x = V2 - omega1 R1,  V = (omega1 R1 + V2)/2 (docs/physics.md §5).
 // omega1 is advanced implicitly with the tractions: the end-of-step balance is solved for omega1.
 // Inertia runs use the shift scheme (with its fallback to time steps while rolling is slow).
 struct RollerInertia {

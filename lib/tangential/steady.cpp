@@ -1,4 +1,4 @@
-// Steady rolling on strips (PHYSICS.md §3-4).
+// Steady rolling on strips (docs/physics.md §3-4).
 //
 // Consistent scheme. Node values of tau sit at the cell edges inside the strip and at the exact
 // strip ends +-a_j; each interval between two nodes is the part of one cell in contact. Marching
@@ -62,7 +62,7 @@
 // Writing the fields (per interval) changes none of the totals.
 //
 // Classic scheme: Kalker's FASTSIM on the cell centres, tau_pred = tau_prev - (c/(V L)) dx, bound at
-// the centre, s = V L (tau - tau_pred)/dx, P = -sum tau . s dx dy (PHYSICS.md §3, §5).
+// the centre, s = V L (tau - tau_pred)/dx, P = -sum tau . s dx dy (docs/physics.md §3, §5).
 #include "lib/tangential/steady.h"
 
 #include "lib/tangential/strip_march.h"
@@ -84,7 +84,7 @@ struct StripTotals {
   double counted_length = 0;  // classic: the length its cell centres stand for (0: the exact 2 a_j)
 };
 
-// the stick solution from a node at x_s (PHYSICS.md §3): tau_x linear, tau_y quadratic in t = x_s - x
+// the stick solution from a node at x_s (docs/physics.md §3): tau_x linear, tau_y quadratic in t = x_s - x
 struct StickLine {
   const StripRates& r;
   StripNode start;
@@ -403,7 +403,7 @@ class StripMarch {
   StripTotals st_;
 };
 
-// Pure xi on strip j (eta = phi = 0): the consistent march's result in closed form (PHYSICS.md §4).
+// Pure xi on strip j (eta = phi = 0): the consistent march's result in closed form (docs/physics.md §4).
 // From the leading edge tau_x = -alpha t (t = a - x) sticks until it meets the bound g = G sqrt(1 - x^2/a^2),
 //   alpha^2 t^2 = (G/a)^2 t (2a - t)   =>   t_s = 2 a G^2 / (a^2 alpha^2 + G^2),
 // and slips on the bound from there to the trailing edge (the bound falls there faster than the stick line

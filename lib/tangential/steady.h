@@ -1,5 +1,5 @@
 // Steady rolling (du/dt = 0): each strip is marched from its leading edge x = +a_j, where tau = 0,
-// to its trailing edge, with the traction bound |tau| <= mu p (PHYSICS.md §3, §4).
+// to its trailing edge, with the traction bound |tau| <= mu p (docs/physics.md §3, §4).
 #pragma once
 
 #include "lib/tangential/tangential.h"

@@ -1,7 +1,7 @@
 // One interval of the consistent strip march (the derivation is at the top of lib/tangential/steady.cpp):
 // from the traction at the upstream node x_hi to the downstream node x_lo, with the integrals of
 // the reconstruction over the interval. The steady solver chains it along each strip; Satran's
-// shift scheme applies it to the previous step's node values (PHYSICS.md §3-4). march_slip_interval
+// shift scheme applies it to the previous step's node values (docs/physics.md §3-4). march_slip_interval
 // is its case of a slip node inside the strip with the turn of the slip direction given, so that the
 // steady solver's slip stretches can take the turns of all their cells at once (slip_turns). The pieces
 // of the stick solution are templates, so that Satran's shift step can take them for a block of
@@ -74,7 +74,7 @@ inline double creep_power_per_VL(const StripRates& r, const IntervalSums& s) {
 
 namespace detail {
 
-// The stick solution from tau = (tx, ty) at x_hi, with t = x_hi - x (PHYSICS.md §3):
+// The stick solution from tau = (tx, ty) at x_hi, with t = x_hi - x (docs/physics.md §3):
 //   tau_x = tx - alpha t,  tau_y = ty - beta t + gamma t^2,  beta = eta/L2 + (phi/L3) x_hi, gamma = phi/(2 L3).
 // Over an interval [x_hi - t, x_hi], the terms that involve neither tau at x_hi nor alpha (which varies
 // with y) are the same on every strip: the interval's StickGeometry and StickMoments. T is double for

@@ -1,4 +1,4 @@
-// Kalker's simplified theory ("bed of springs", PHYSICS.md §3): the quantities shared by the steady
+// Kalker's simplified theory ("bed of springs", docs/physics.md §3): the quantities shared by the steady
 // solver and Satran. The state is u = L tau; the slip velocity of body 1 relative to body 2 is
 //   s = c + du/dt - V du/dx,   c = V L ( xi/L1 - phi y/L3 ,  eta/L2 + phi x/L3 ),
 // with the mean flexibility
@@ -33,7 +33,7 @@ struct TangentialProblem {
   double speed_m_per_s = 0;    // rolling speed V >= 0
 };
 
-// Kalker's coefficients at the patch's a/b, flexibilities with the combined G and nu (PHYSICS.md §1)
+// Kalker's coefficients at the patch's a/b, flexibilities with the combined G and nu (docs/physics.md §1)
 TangentialProblem make_tangential_problem(const ContactPatch& patch, const ElasticPair& pair,
                                           const Creepages& creepages, double mu, double speed_m_per_s);
 
@@ -42,12 +42,12 @@ TangentialProblem make_tangential_problem(const ContactPatch& patch, const Elast
 //   Consistent: node values at the cell edges and the exact strip ends; within each cell the stick
 //               line is integrated exactly and its crossing with the semi-elliptic traction bound is
 //               located exactly; the dissipated power is -integral(tau . s) of that reconstruction,
-//               so the discrete energy balance of PHYSICS.md §4 holds to rounding, strip by strip.
+//               so the discrete energy balance of docs/physics.md §4 holds to rounding, strip by strip.
 enum class TangentialScheme { Classic, Consistent };
 
 std::string to_string(TangentialScheme scheme);
 
-// Skip for a symmetric case (issue #6, docs/accuracy-and-speed.md). Without spin the creep rates
+// Skip for a symmetric case (docs/accuracy-and-speed.md). Without spin the creep rates
 // (xi/L1, eta/L2) are the same on every strip, so on a patch that is its own mirror image in y = 0
 // the solution is too: strip ny - 1 - j is a copy of strip j. Mirror images within kMirrorTol: the
 // strips' positions, half lengths, peaks and Heathcote offsets agree to that fraction of their

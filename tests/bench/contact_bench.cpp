@@ -3,7 +3,7 @@
 // with both schemes, and a plain cell-by-cell loop of classic FASTSIM as the baseline the product is
 // compared against (docs/benchmarks.md).
 //
-// The baseline (Kalker's FASTSIM, PHYSICS.md §3) marches each strip from the leading edge with
+// The baseline (Kalker's FASTSIM, docs/physics.md §3) marches each strip from the leading edge with
 //   tau_pred = tau_prev - (xi/L1 - phi y/L3, eta/L2 + phi x/L3) dx,
 //   tau = tau_pred clipped to |tau| <= g = mu p_j sqrt(1 - (x/a_j)^2) at the cell centre,
 //   s = V L (tau - tau_pred) / dx,   P = -sum tau . s dx dy.

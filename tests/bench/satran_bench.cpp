@@ -1,4 +1,4 @@
-// Satran on the paper's start-up run: 80 x 80 grid, 200 steps (PHYSICS.md §3; the paper reports
+// Satran on the paper's start-up run: 80 x 80 grid, 200 steps (docs/physics.md §3; the paper reports
 // 42 s for it), beside a plain loop of the classic upwind update at CFL = 1 kept here as the
 // baseline the product is compared against (docs/benchmarks.md):
 //   tau*_i = tau_{i+1} - (xi/L1 - phi y/L3, eta/L2 + phi x_i/L3) dx,  clipped to mu p(x_i),

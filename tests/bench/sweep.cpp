@@ -1,4 +1,4 @@
-// The run-time-against-error study (issue #6, docs/accuracy-and-speed.md). For the shipped cases it
+// The run-time-against-error study (docs/accuracy-and-speed.md). For the shipped cases it
 // sweeps the grid, the scheme, the time step (CFL) and the wear tolerance, and records per point the
 // wall time and the errors against closed forms or converged fine runs; then it times every skip the
 // product makes, with and without. Wall time: the median of at least 6 runs, more until a point has had
@@ -7,7 +7,7 @@
 //
 //   steady     cases/paper.yaml (pure xi), nx = ny in {10 .. 320}, classic and consistent. Timed: the
 //              contact (Hertz patch, Kalker's coefficients, solve_steady without fields). Errors against
-//              the closed form of PHYSICS.md §4 (tests/steady_test.cpp, docs/steady-solver.md): the strip
+//              the closed form of docs/physics.md §4 (tests/steady_test.cpp, docs/steady-solver.md): the strip
 //              force integrated over y = b sin(theta) by Simpson (20000 panels), Fx = -159.8843 N,
 //              P = V xi |Fx|, with L1 = 8a/(3 C11 G) of the code's Kalker coefficient (C11 3.42695).
 //                err_Fx, err_P   value / closed form - 1 (signed)
@@ -17,7 +17,7 @@
 //   transient  cases/paper-startup.yaml (ramp to 1.8 m/s, pure xi, to 4e-4 s), nx = ny in {20 .. 160},
 //              shift, upwind at CFL 1 and 0.5, lax-friedrichs at CFL 0.5 (CFL at 1.8 m/s). Timed:
 //              run_transient without snapshots. Errors against the closed form of the start from rest
-//              (PHYSICS.md §4, tests/satran_test.cpp StartFromRestFollowsClosedFormWithinHalfPercent),
+//              (docs/physics.md §4, tests/satran_test.cpp StartFromRestFollowsClosedFormWithinHalfPercent),
 //              strip by strip on the run's own strips; it depends on the rolled distance q only, so it
 //              holds through the speed ramp:
 //                err_Fx   max over the whole steps of |Fx(q) - Fx_cf(q)| / |Fx_cf steady| (the last
@@ -30,7 +30,7 @@
 //                study rtol: against rtol 1e-8, atol 1e-14 on the same grid
 //                study grid: rtol 1e-8 on nx against rtol 1e-8 on 160 x 160 (the grid's own error)
 //                err_depth, err_volume   max depth (volume of body 1) / reference - 1 (signed)
-//   skips      each skip of issue #6 timed with and without (rows study = skip, param_value on / off);
+//   skips      each skip timed with and without (rows study = skip, param_value on / off);
 //              the err_* cells of the 'on' row hold the change the skip makes to a result (relative).
 //
 // CSV (atomically written): case,study,scheme,nx,param,param_value,repeats,time_median_s,err_Fx,err_P,
@@ -194,7 +194,7 @@ void print_from(const std::vector<Row>& rows, size_t first) {
 
 double rel(double value, double reference) { return value / reference - 1; }
 
-// ---- closed forms (PHYSICS.md §4; the same formulas as tests/steady_test.cpp, tests/satran_test.cpp) ----
+// ---- closed forms (docs/physics.md §4; the same formulas as tests/steady_test.cpp, tests/satran_test.cpp) ----
 
 // steady strip, pure xi > 0: stick |tau| = k (a - x) from the leading edge, slip |tau| = mu p from
 // x_s = a (1 - m^2)/(1 + m^2), m = mu p_i L1/(xi a); the strip force (per unit width)
@@ -278,7 +278,7 @@ void steady_study(const Options& o, std::vector<Row>& rows) {
       r.err_Fx = rel(-sol.Fx_N, F_cf);
       r.err_P = rel(sol.power_W, P_cf);
       r.err_strip_P = worst / largest;
-      r.reference = "closed form (PHYSICS.md 4): Fx -159.8843 N; strips: closed-form mean over each cell row";
+      r.reference = "closed form (docs/physics.md §4): Fx -159.8843 N; strips: closed-form mean over each cell row";
       timer.add(rows.size(), [contact] { return contact().second.power_W; });
       rows.push_back(r);
     }
@@ -374,7 +374,7 @@ void transient_study(const Options& o, std::vector<Row>& rows) {
       r.param_value = fmt::format("{:g}", pt.cfl);
       r.err_Fx = worst;
       r.err_P = rel(last_whole.power_W, last_whole.speed_m_per_s * xi * F_steady);
-      r.reference = "closed form of the start from rest (PHYSICS.md 4) on the run's strips";
+      r.reference = "closed form of the start from rest (docs/physics.md §4) on the run's strips";
       r.steps = last.step;
       notes.push_back(fmt::format("  {} {}: worst Fx error at q = {:.3f} x 2a", pt.name, n, q_worst / (2 * p.a_m)));
       if (partial_end)

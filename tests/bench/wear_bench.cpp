@@ -1,4 +1,4 @@
-// The wear loop's benchmark (issue #5): the paper's case (cases/paper-wear.yaml) to its 0.1 mm depth
+// The wear loop's benchmark: the paper's case (cases/paper-wear.yaml) to its 0.1 mm depth
 // limit. Goal: <= 1 s wall on one core. Reports the ARKODE steps, the evaluations of dh/dN and the
 // normal and tangential solves of one life as counters, and where the life ended.
 //   cmake --preset bench && cmake --build --preset bench -j2 --target wear_bench

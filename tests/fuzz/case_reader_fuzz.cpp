@@ -1,4 +1,4 @@
-// libFuzzer target for the YAML case readers (issue #6): the bytes become a case file, read by
+// libFuzzer target for the YAML case readers: the bytes become a case file, read by
 // contact::read_contact_case and wear::read_wear_case (and, when a case reads, the conversions the
 // commands apply next). A case that reads is fine; a contact::CaseError or std::invalid_argument is
 // a fine rejection if its message starts with the file's path (it names the file, as the README
