@@ -3,6 +3,7 @@
 //   integral of p dx   = p_j a_j   [S(ur) - S(ul)],  S(u) = (u sqrt(1-u^2) + asin u)/2 + pi/4,
 //   integral of x p dx = p_j a_j^2 [M(ur) - M(ul)],  M(u) = -(1 - u^2)^(3/2) / 3.
 #include "lib/patch.h"
+#include "lib/numeric.h"
 
 #include <algorithm>
 #include <cmath>
@@ -10,7 +11,6 @@
 namespace contact {
 
 namespace {
-constexpr double kPi = 3.14159265358979323846;
 }
 
 double semi_ellipse_integral(double u) {

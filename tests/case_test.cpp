@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include "lib/numeric.h"
 #include "tests/temp_dir.h"
 #include <spdlog/fmt/fmt.h>
 #include <unistd.h>
@@ -566,7 +567,6 @@ TEST_F(CaseReader, ShippedTransientCasesRead) {
   ASSERT_TRUE(r.inertia);
   // a steel disc 40 mm x 20 mm: J1 = pi R^4 w rho / 2
   const double R = 0.020, w = 0.020, rho = 7850;
-  constexpr double kPi = 3.14159265358979323846;
   EXPECT_NEAR(r.inertia->J1_kg_m2 / (kPi * R * R * R * R * w * rho / 2), 1, 1e-4);
   EXPECT_EQ(r.inertia->R1_m, R);
   EXPECT_EQ(value_at(r.inertia->path_speed_m_per_s, 0), 1.0);

@@ -11,12 +11,12 @@
 #include <vector>
 
 #include "lib/normal/hertz.h"
+#include "lib/numeric.h"
 #include "tests/log_capture.h"
 
 namespace contact {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kBox = 1.25;  // grid half-sizes, in Hertz semi-axes: room for the discrete edge
 
 ElasticPair steel() { return {{210e9, 0.28}, {210e9, 0.28}}; }

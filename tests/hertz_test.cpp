@@ -1,5 +1,6 @@
 // Hertz's normal problem against closed forms (docs/physics.md §2).
 #include "lib/normal/hertz.h"
+#include "lib/numeric.h"
 
 #include <gtest/gtest.h>
 
@@ -8,8 +9,6 @@
 
 namespace contact {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 Bodies paper_bodies() { return {{0.020, 0.500}, {0.025, kFlat}}; }
 ElasticPair steel() { return {{210e9, 0.28}, {210e9, 0.28}}; }

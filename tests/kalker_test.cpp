@@ -2,6 +2,7 @@
 // forms below the table (docs/physics.md §3). Expected values are written here again from the published
 // table and the formulas, never taken from the implementation.
 #include "lib/tangential/kalker.h"
+#include "lib/numeric.h"
 
 #include <gtest/gtest.h>
 
@@ -14,7 +15,6 @@
 namespace contact {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kTableTol = 1e-12;    // the 1/C fit passes through the table points, up to rounding
 constexpr double kFormulaTol = 1e-12;  // the same closed form, evaluated in another order
 constexpr double kNuColumns[3] = {0, 0.25, 0.5};

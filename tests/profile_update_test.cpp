@@ -14,13 +14,14 @@
 #include <random>
 #include <stdexcept>
 #include <string>
+#include "lib/numeric.h"
 #include "tests/test_text.h"
 
 namespace wear {
 namespace {
+using contact::kPi;
 using rollwear_test::message_of;
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kRounding = 1e-14;  // relative: sums of a few thousand non-negative terms in double
 
 // n nodes over [y0, y0 + width], spacings drawn from [0.2, 1.8] x mean (fixed seed)

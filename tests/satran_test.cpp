@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "lib/io/case.h"
+#include "lib/numeric.h"
 #include "lib/tangential/steady.h"
 #include "tests/closed_forms.h"
 #include "tests/log_capture.h"
@@ -21,8 +22,6 @@ namespace contact {
 namespace {
 
 using rollwear_test::strip_force_from_rest;
-
-constexpr double kPi = 3.14159265358979323846;
 
 TransientCase paper_case(double V, Creepages c, int n) {
   TransientCase tc;

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "lib/normal/hertz.h"
+#include "lib/numeric.h"
 #include "lib/tangential/steady.h"
 #include "lib/tangential/tangential.h"
 #include "tests/log_capture.h"
@@ -20,7 +21,6 @@
 namespace contact {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kRx1 = 0.020, kRx2 = 0.025;  // the paper's rolling radii
 // Semi-Hertz against Hertz on constant curvature: 64 quadrature cells give <= 7e-4 on a, b, p0 and
 // delta (docs/semi-hertz.md); the issue asks for 1e-2. The load is exact to rounding.

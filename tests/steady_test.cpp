@@ -11,12 +11,12 @@
 #include <string>
 
 #include "lib/normal/hertz.h"
+#include "lib/numeric.h"
 #include "lib/tangential/strip_march.h"
 
 namespace contact {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kNu = 0.28, kE = 210e9;
 const double kG = kE / (2 * (1 + kNu));
 

@@ -37,6 +37,7 @@
 #include <vector>
 
 #include "lib/normal/hertz.h"
+#include "lib/numeric.h"
 #include "lib/tangential/kalker.h"
 #include "lib/normal/profile.h"
 #include "lib/tangential/satran.h"
@@ -55,7 +56,6 @@ namespace fs = std::filesystem;
 using namespace contact;  // NOLINT: the suite spans lib/ and wear/
 
 constexpr std::uint64_t kDefaultSeed = 20240606;
-constexpr double kPi = 3.14159265358979323846;
 const fs::path kSource = ROLLWEAR_SOURCE_DIR;
 
 // ---- seeds and random cases ----

@@ -13,12 +13,14 @@
 #include <string>
 
 #include "lib/normal/hertz.h"
+#include "lib/numeric.h"
 #include "lib/tangential/satran.h"
 #include "lib/tangential/steady.h"
 #include "tests/test_text.h"
 
 namespace wear {
 namespace {
+using contact::kPi;
 using rollwear_test::message_of;
 
 using contact::ContactPatch;
@@ -26,7 +28,6 @@ using contact::Creepages;
 using contact::TangentialScheme;
 using contact::TangentialSolution;
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kRounding = 1e-13;  // relative: a few hundred additions and products in double
 
 const contact::Bodies kPaperBodies{{0.020, 0.500}, {0.025, contact::kFlat}};

@@ -17,15 +17,16 @@
 #include <vector>
 
 #include "lib/io/case.h"
+#include "lib/numeric.h"
 #include "tests/log_capture.h"
 #include "wear/profile_update.h"
 #include "wear/wear_output.h"
 
 namespace wear {
 namespace {
+using contact::kPi;
 
 namespace fs = std::filesystem;
-constexpr double kPi = 3.14159265358979323846;
 const fs::path kSource = ROLLWEAR_SOURCE_DIR;
 
 // the shipped case on a coarser grid (the identities hold on any grid)

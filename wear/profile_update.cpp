@@ -14,6 +14,7 @@
 // row adds its terms in pairs from both ends inwards; on mirrored nodes the mirrored row holds the
 // same terms in reverse order, so the pairs are the same and the sums bit-identical.
 #include "wear/profile_update.h"
+#include "lib/numeric.h"
 
 #include <spdlog/fmt/fmt.h>
 
@@ -26,9 +27,9 @@
 
 namespace wear {
 
-namespace {
+using contact::kPi;
 
-constexpr double kPi = 3.14159265358979323846;
+namespace {
 
 std::string number(double v) { return fmt::format("{:.6g}", v); }
 

@@ -7,6 +7,7 @@
 // KTH and USFD are sums over cells of the fields the tangential solver wrote; a stretch of duration
 // T at speed V counts V T / (2 pi R_w) passages.
 #include "wear/wear_law.h"
+#include "lib/numeric.h"
 
 #include <spdlog/fmt/fmt.h>
 #include <spdlog/spdlog.h>
@@ -17,9 +18,9 @@
 
 namespace wear {
 
-namespace {
+using contact::kPi;
 
-constexpr double kPi = 3.14159265358979323846;
+namespace {
 
 // 1 ug/mm^2 = 1e-9 kg / 1e-6 m^2 = 1e-3 kg/m^2
 constexpr double kKg_per_m2_per_ug_per_mm2 = 1e-3;

@@ -12,14 +12,16 @@
 #include <spdlog/spdlog.h>
 
 #include "lib/io/case.h"
+#include "lib/numeric.h"
 #include "lib/tangential/steady.h"
 #include "wear/profile_update.h"
 
 namespace wear {
 
+using contact::kPi;
+
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kNominalEnergyCoefficient_m3_per_J = 1e-13;  // scales e for the per-cell laws
 constexpr std::size_t kCachedRates = 4;  // an RK step's stages, the step end, a root's probes
 

@@ -11,12 +11,14 @@
 #include <spdlog/fmt/fmt.h>
 
 #include "lib/history.h"
+#include "lib/numeric.h"
 
 namespace wear {
 
+using contact::kPi;
+
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr const char* kCheckpointMagic = "rollwear-wear-checkpoint 1";
 
 std::string g17(double v) { return fmt::format("{:.17g}", v); }

@@ -33,6 +33,7 @@
 // cell and loads no overlap, p_new = scale (p - tau t) and so K p_new = scale (K p - tau K t): the
 // next iteration needs no convolution for g. The final residual is always judged on a fresh K p.
 #include "lib/normal/halfspace.h"
+#include "lib/numeric.h"
 
 #include <fftw3.h>
 #include <spdlog/fmt/fmt.h>
@@ -49,8 +50,6 @@
 namespace contact {
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 // antiderivative of 1/r in X and Y (top of file)
 double love_antiderivative(double X, double Y) {

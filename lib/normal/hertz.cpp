@@ -9,6 +9,7 @@
 //   F_j = (pi/2) p0 a  integral over the row of (1 - y^2/b^2) dy,
 // so p_j = F_j / ((pi/2) a_j dy); the row's load is exact and the field integrates to F.
 #include "lib/normal/hertz.h"
+#include "lib/numeric.h"
 
 #include <spdlog/spdlog.h>
 
@@ -20,8 +21,6 @@
 namespace contact {
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 double curvature_per_m(double R_m, const char* name) {
   if (R_m == 0 || std::isnan(R_m))

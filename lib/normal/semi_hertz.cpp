@@ -30,12 +30,11 @@
 #include <vector>
 
 #include "lib/normal/hertz.h"
+#include "lib/numeric.h"
 
 namespace contact {
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 std::string num(double v) {
   char buf[40];

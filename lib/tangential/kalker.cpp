@@ -25,6 +25,7 @@
 //
 // Flexibilities: L1 = 8a / (3 C11 G),  L2 = 8a / (3 C22 G),  L3 = pi a sqrt(a/b) / (4 C23 G).
 #include "lib/tangential/kalker.h"
+#include "lib/numeric.h"
 
 #include <spdlog/fmt/fmt.h>
 
@@ -37,7 +38,6 @@ namespace contact {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kLn4 = 1.38629436111989061883;
 constexpr double kLn16 = 2.77258872223978123767;
 constexpr double kTableMinG = 0.1;  // below: the asymptotic forms

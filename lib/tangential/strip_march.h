@@ -14,6 +14,7 @@
 #include <cmath>
 
 #include "lib/patch.h"
+#include "lib/numeric.h"
 #include "lib/tangential/tangential.h"
 
 namespace contact {
@@ -322,8 +323,6 @@ constexpr double kNoCrossing = 2;  // first_crossing: F <= 0 on all of [0, 1]
 struct SlipTurn {
   double inv_dn = 0, k = 1;
 };
-
-constexpr double kPi = 3.14159265358979323846;
 
 // asin of u clamped to [-1, 1], +-pi/2 at the ends without a call
 [[gnu::always_inline]] inline double clamped_asin(double u) {

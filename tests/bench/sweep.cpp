@@ -60,6 +60,7 @@
 #include "lib/io/case.h"
 #include "lib/io/csv.h"
 #include "lib/normal/hertz.h"
+#include "lib/numeric.h"
 #include "lib/tangential/satran.h"
 #include "lib/normal/semi_hertz.h"
 #include "lib/tangential/steady.h"
@@ -74,7 +75,6 @@ using rollwear_test::strip_force_from_rest;
 namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
 
-constexpr double kPi = 3.14159265358979323846;
 const std::string kSource = ROLLWEAR_SOURCE_DIR;
 
 // ---- options, timing, rows ----
@@ -218,7 +218,6 @@ double force_over_rows(double y0, double y1, double a, double b, double p0, doub
   }
   return sum * (t1 - t0) / panels / 3;
 }
-
 
 // ---- steady: grid x scheme on the paper's case ----
 
