@@ -504,9 +504,19 @@ struct SatranTally {
   long steps = 0;
   int negative_power = 0, restick_negative_power = 0, node_forces = 0, snapshot_bound = 0;
   double node_forces_worst = 0;
+  // the first case of each finding (its tag names the case seed): what the DISABLED_ tests rerun
+  std::string first_negative_power, first_node_forces, first_snapshot_bound;
 };
 
-void satran_case(Rng& r, const std::string& tag, TransientScheme scheme, SatranTally& tally, bool strict = false) {
+// A finding's count, and the first case that shows it.
+void count_finding(int& count, std::string& first, const std::string& tag) {
+  if (count++ == 0) first = tag.substr(0, tag.find(']') + 1);
+}
+
+// strict: the findings "negative power" and "snapshot" fail instead of being counted; strict_node_forces:
+// so does "node forces" (finding 2). The DISABLED_ tests of these findings run their cases strictly.
+void satran_case(Rng& r, const std::string& tag, TransientScheme scheme, SatranTally& tally, bool strict = false,
+                 bool strict_node_forces = false) {
   RandomContact rc = random_contact(r);
   TransientCase tc;
   tc.bodies = rc.bodies;
@@ -606,7 +616,7 @@ void satran_case(Rng& r, const std::string& tag, TransientScheme scheme, SatranT
       if (exact_shift && spin) {
         ++tally.restick_negative_power;
       } else {
-        ++tally.negative_power;
+        count_finding(tally.negative_power, tally.first_negative_power, tag);
       }
     } else {
       ASSERT_GE(rec.power_W, -kStepBalanceTol * scale_W) << at;
@@ -624,8 +634,11 @@ void satran_case(Rng& r, const std::string& tag, TransientScheme scheme, SatranT
     // for a smaller L started the step above the bound; such nodes now slip back onto it, satran_step)
     if (exact_shift) {
       ASSERT_LE(F, tc.mu * F_step * (1 + 1e-9)) << at;
+    } else if (strict_node_forces) {  // finding 2's DISABLED_ test
+      ASSERT_LE(F, tc.mu * F_step * (1 + 1e-9)) << at << ": a node-counted step";
     } else {  // finding "node forces": counted
       if (F > tc.mu * F_step * (1 + 1e-9)) {
+        if (tally.node_forces == 0) tally.first_node_forces = tag.substr(0, tag.find(']') + 1);
         ++tally.node_forces;
         tally.node_forces_worst = std::max(tally.node_forces_worst, F / (tc.mu * F_step) - 1);
       }
@@ -673,12 +686,12 @@ void satran_case(Rng& r, const std::string& tag, TransientScheme scheme, SatranT
       const Eigen::ArrayXXd tau = (s.tau_x_Pa.square() + s.tau_y_Pa.square()).sqrt();
       const double excess =
           (tau - tc.mu * s.pressure_Pa * (1 + kBoundRounding) - kBoundRounding * tc.mu * hmax.p0_Pa).maxCoeff();
-      // finding "snapshot": step means above mu p with every input constant (shift cases 513, 961 of the
+      // finding "snapshot": step means above mu p with every input constant (shift case 76 of the default
       // sweep, up to 0.12 mu p0): counted, not analysed yet. In all 8 of the sweep (3 with spin) the
       // snapshot's step is a fallback step at CFL < 1 (the longest step dt_s rolls less than dx), whose
       // fields are node values, not the kernel's path means
       if (excess > 0 && !strict) {
-        ++tally.snapshot_bound;
+        count_finding(tally.snapshot_bound, tally.first_snapshot_bound, tag);
         continue;
       }
       ASSERT_LE(excess, 0) << what << ": snapshot at " << s.t_s << " s exceeds mu p";
@@ -693,6 +706,10 @@ void print_tally(const SatranTally& t) {
   std::printf("  known findings: negative power: %d steps with power < 0 (restick, exact shift steps with spin: %d); "
               "node-counting steps: %d with |F| > mu F (worst by %.3g)\n",
               t.negative_power, t.restick_negative_power, t.node_forces, t.node_forces_worst);
+  for (const auto& [name, first] : {std::pair{"negative power", &t.first_negative_power},
+                                    std::pair{"node forces", &t.first_node_forces},
+                                    std::pair{"snapshot", &t.first_snapshot_bound}})
+    if (!first->empty()) std::printf("    first %s: %s\n", name, first->c_str());
 }
 
 TEST(StressSatran, ShiftRandomHistoriesKeepTheBoundAndTheEnergyBalance) {
@@ -740,6 +757,43 @@ TEST(StressSatran, LoadRampFromZeroRuns) {
     SatranTally t;
     satran_case(r, fmt::format("[case seed {}]", seed), TransientScheme::Shift, t, true);
   }
+}
+
+// Open findings of the Satran sweeps, kept until fixed (--gtest_also_run_disabled_tests); each reruns the
+// first case of the default seed (20240606) that shows it, by its case seed (valid while the generator
+// is unchanged), with that finding asserted instead of counted (docs/stress-suite.md).
+//
+// Finding 2, "node forces": upwind, Lax-Friedrichs and shift's fallback steps count a whole dx per node,
+// so |F| exceeds mu F on coarse grids while every node keeps |tau| <= mu p. Shift case 19 (a fallback
+// step) and upwind/Lax-Friedrichs case 1.
+TEST(StressSatran, DISABLED_NodeCountedStepsKeepTheForceWithinMuF) {
+  {
+    Rng r(3161848494750300625ull);
+    SatranTally t;
+    satran_case(r, "[shift case 19, case seed 3161848494750300625]", TransientScheme::Shift, t, false, true);
+  }
+  {
+    Rng r(4439027867387186420ull);  // as the sweep draws it: the scheme first
+    const TransientScheme scheme = r.chance(0.5) ? TransientScheme::Upwind : TransientScheme::LaxFriedrichs;
+    SatranTally t;
+    satran_case(r, "[upwind/lax-friedrichs case 1, case seed 4439027867387186420]", scheme, t, false, true);
+  }
+}
+
+// "negative power": a step with power < 0 beyond rounding, without spin or in a fallback step (shift case
+// 1151, -1.2e-4 of the scale).
+TEST(StressSatran, DISABLED_NoStepDissipatesLessThanZero) {
+  Rng r(3161848494750301757ull);
+  SatranTally t;
+  satran_case(r, "[shift case 1151, case seed 3161848494750301757]", TransientScheme::Shift, t, true);
+}
+
+// "snapshot": a snapshot's cell means above mu p with every input constant (shift case 76; in all 8 of the
+// sweep the snapshot's step is a fallback step at CFL < 1, whose fields are node values).
+TEST(StressSatran, DISABLED_SnapshotsAtConstantInputsStayWithinTheBound) {
+  Rng r(3161848494750300682ull);
+  SatranTally t;
+  satran_case(r, "[shift case 76, case seed 3161848494750300682]", TransientScheme::Shift, t, true);
 }
 
 // ==== the semi-Hertzian normal solver on random smooth profiles ====
@@ -1339,10 +1393,10 @@ TEST(StressWear, DISABLED_WornContactSplitIntoNarrowPatchesIsSolved) {
 }
 
 // Finding 9, kept until fixed (--gtest_also_run_disabled_tests): random life 16 (seed 20240606, rtol 0.1,
-// effective 0.11) has 17 reversals by a tenth of its depth, and 1 at rtol 1e-3, 1e-5 and 1e-6. Life 3
-// (a flat worn band at 1.2 mN, worn 17 nm deep, some 40 times its elastic approach) still has 15 at rtol
-// 1e-5 and atol 1e-11 (effective 6.1e-4): there the tolerance must be small against the approach, not
-// only against the depth.
+// effective 0.11) has 21 reversals by a tenth of its depth on 2026-11-24 (17 when this test was written),
+// and 1 at rtol 1e-3, 1e-5 and 1e-6. Life 3 (a flat worn band at 1.2 mN, worn 17 nm deep, some 40 times
+// its elastic approach) still has 9 (then 15) at rtol 1e-5 and atol 1e-11 (effective 6.1e-4): there the
+// tolerance must be small against the approach, not only against the depth.
 TEST(StressWear, DISABLED_WornProfilesStaySmooth) {
   for (const std::uint64_t seed : {5818732027616048379ull, 5818732027616048366ull}) {
     std::string what;
@@ -1358,5 +1412,24 @@ TEST(StressWear, DISABLED_WornProfilesStaySmooth) {
   }
 }
 
-}  // namespace
+// Finding 13's open part, kept until fixed (--gtest_also_run_disabled_tests): with seed 31415, case 3 of
+// StressWear.LooseToleranceDoesNotRunAway (case seed 10493433607780625003) has 7 reversals of the depth by
+// a tenth of its largest in its tight run (rtol 1e-5, atol 1e-12, effective 1.0e-5), above
+// kMaxDepthReversals; the loose run (rtol 0.1) has 7 too, its depth within 1.8 % of the tight one's.
+TEST(StressWear, DISABLED_TightRunOfSeed31415Case3StaysSmooth) {
+  const std::uint64_t seed = 10493433607780625003ull;
+  Rng r(seed);  // drawn as LooseToleranceDoesNotRunAway draws it
+  RandomWear w = random_wear_case(r, 100, 1e4);
+  w.c.wear.revolutions = r.log_uniform(1e7, 1e9);
+  w.c.wear.limits = {0, 0, false};
+  w.c.wear.stepping.rtol = 1e-5;
+  w.c.wear.stepping.atol_m = 1e-12;
+  w.c.wear.stepping.max_steps = 20000;
+  const std::string what = fmt::format("[case seed {}] {}, {:.6g} revolutions, rtol 1e-5", seed, w.text,
+                                       w.c.wear.revolutions);
+  WearFindings found;
+  const LifeCheck lc = run_checked_life(w.c, what, found);
+  EXPECT_LE(lc.worst_reversals, kMaxDepthReversals) << what;
+}
 
+}  // namespace
