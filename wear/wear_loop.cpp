@@ -430,14 +430,28 @@ struct LifeTally {
   }
 };
 
+// what run_life works with: the model, the case, the caller's hooks, the cache and the life's counters
+struct LifeRun {
+  const WearModel& m;
+  const WearCase& c;
+  const LifeHooks& hooks;
+  WearCache& cache;
+  LifeTally tally;
+};
+
+// how the life ended, in words
+struct LifeEnding {
+  LifeEnd why = LifeEnd::NotRun;
+  std::string message;
+};
+
 // the life ends here: why, in words, and the contact at its end
-LifeResult& end_life(LifeResult& life, LifeEnd why, const std::string& message, const WearModel& m,
-                     WearCache& cache, const LifeTally& tally) {
-  life.ended_by = why;
-  life.message = message;
-  life.contact = wear_rate(m, life.state, cache).contact;
-  tally.add_solves(life.counters, cache);
-  if (why == LifeEnd::Edge)
+LifeResult& end_life(LifeRun& run, LifeResult& life, const LifeEnding& ending) {
+  life.ended_by = ending.why;
+  life.message = ending.message;
+  life.contact = wear_rate(run.m, life.state, run.cache).contact;
+  run.tally.add_solves(life.counters, run.cache);
+  if (ending.why == LifeEnd::Edge)
     spdlog::info("wear: the contact has spread to the edge of the narrower body at {:.6g} revolutions (step {}); "
                  "the life ends there (wear.limits.edge)",
                  life.N, life.counters.steps);
@@ -483,96 +497,111 @@ std::string to_string(LifeFailure f) {
   return "none";
 }
 
+namespace {
+
+// a limit already reached where the life starts (a resumed run, or an unworn contact at the edge)
+std::optional<LifeEnding> limit_reached_at_start(LifeRun& run, const LifeResult& life) {
+  const Eigen::VectorXd g = limit_values(run.m, life.state, run.cache);
+  for (int k = 0; k < kLimits; ++k)
+    if (g(k) >= 0)
+      return LifeEnding{kLimitEnds[k], fmt::format("{} reached at the start, N {:.10g}", to_string(kLimitEnds[k]),
+                                                   life.N)};
+  return std::nullopt;
+}
+
+// The wear from life.N to N_end, step by step (each reported to the hooks with the life's counters),
+// up to N_end or the first limit, located. Returns how the life ended in it, or nothing at N_end. The
+// worn geometry ending the life (a contact the strips cannot resolve, a body worn through) ends it at
+// its last accepted step, failed.
+std::optional<LifeEnding> wear_until(LifeRun& run, double N_end, LifeResult& life) {
+  const WearModel& m = run.m;
+  WearCache& cache = run.cache;
+  IntegratorOptions options = integrator_options(run.c.wear.stepping);
+  options.initial_step = life.next_step;
+  options.max_steps = run.c.wear.stepping.max_steps - life.counters.steps;
+  if (options.max_steps <= 0)
+    return LifeEnding{LifeEnd::MaxSteps, fmt::format("max_steps {} reached", run.c.wear.stepping.max_steps)};
+  run.tally.begin_segment(life.counters);
+
+  // dh/dN = f(h), the limits g(h), and each accepted step, kept as the last accepted state
+  const Rhs f = [&](double, const Eigen::VectorXd& h, Eigen::VectorXd& dhdN) {
+    dhdN = wear_rate(m, h, cache).dstate_dN;
+  };
+  const Roots roots = [&](double, const Eigen::VectorXd& h, Eigen::VectorXd& g) { g = limit_values(m, h, cache); };
+  LifeStart last{life.N, life.state, life.next_step, life.counters};
+  const OnStep on_step = [&](const StepInfo& info, const Eigen::VectorXd& h) {
+    LifeStep s;
+    s.N = info.N;
+    s.state = &h;
+    s.contact = wear_rate(m, h, cache).contact;
+    s.counters = run.tally.at(cache, info.steps, info.rhs_evals, info.rejected);
+    s.step = s.counters.steps;
+    s.info = info;
+    s.info.steps = s.counters.steps;
+    s.info.rhs_evals = s.counters.rhs_evals;
+    s.info.rejected = s.counters.rejected;
+    last = {s.N, h, info.next_step, s.counters};
+    return run.hooks.on_step ? run.hooks.on_step(s) : true;
+  };
+
+  IntegratorResult r;
+  try {
+    r = integrate(f, roots, kLimits, life.N, life.state, N_end, options, on_step);
+  } catch (const std::exception& e) {
+    const LifeFailure failure = geometry_failure(e);
+    if (failure == LifeFailure::None) throw;
+    life.N = last.N;
+    life.state = last.state;
+    life.counters = last.counters;
+    life.failure = failure;
+    spdlog::warn("wear: {}; the life ends at N {:.10g}, its last accepted step", e.what(), life.N);
+    return LifeEnding{LifeEnd::Failed, fmt::format("ended at N {:.10g}, the last accepted step: {}", life.N, e.what())};
+  }
+  life.N = r.N;
+  life.state = r.h_m;
+  life.counters = run.tally.at(cache, r.steps, r.rhs_evals, r.rejected);
+  if (r.next_step > 0) life.next_step = r.next_step;
+
+  const std::optional<LifeEnd> end = life_end_of(r);
+  if (!end) return std::nullopt;
+  if (*end == LifeEnd::Failed) life.failure = LifeFailure::Integrator;
+  if (r.status.kind != IntegratorStatus::Kind::RootFound) return LifeEnding{*end, r.status.message};
+  return LifeEnding{*end, fmt::format("{} reached at N {:.10g}, in step {}", to_string(*end), life.N,
+                                      life.counters.steps)};
+}
+
+// the worn profiles at a snapshot revolution, for the caller to write
+void take_snapshot(const LifeRun& run, double N_end, const LifeResult& life) {
+  const std::vector<double>& snapshots = run.c.wear.snapshots_revolutions;
+  if (run.hooks.on_snapshot && std::find(snapshots.begin(), snapshots.end(), N_end) != snapshots.end())
+    run.hooks.on_snapshot(life.N, life.state);
+}
+
+}  // namespace
+
 LifeResult run_life(const WearModel& m, const WearCase& c, const LifeStart& start, const LifeHooks& hooks,
                     WearCache& cache) {
+  LifeRun run{m, c, hooks, cache, LifeTally{start.counters, cache.counters, start.counters, 0}};
+
   // where the life starts: the unworn state, or a checkpoint's state and counters
   LifeResult life;
   life.N = start.N;
   life.state = start.state.size() ? start.state : initial_state(m);
   life.next_step = start.next_step;
   life.counters = start.counters;
-  LifeTally tally{start.counters, cache.counters, start.counters, 0};
 
   // the worn body's profile must resolve the contact: its nodes carry the wear
   check_profile_resolves_contact(m, solved_normal_state(m, life.state, cache));
+  if (const std::optional<LifeEnding> reached = limit_reached_at_start(run, life)) return end_life(run, life, *reached);
 
-  // a limit already reached (a resumed run, or an unworn contact at the edge) ends the life where it starts
-  const Eigen::VectorXd g0 = limit_values(m, life.state, cache);
-  for (int k = 0; k < kLimits; ++k)
-    if (g0(k) >= 0)
-      return end_life(life, kLimitEnds[k], fmt::format("{} reached at the start, N {:.10g}",
-                                                       to_string(kLimitEnds[k]), life.N), m, cache, tally);
-
-  // dh/dN = f(h) and the limits, for the integrator
-  const Rhs f = [&](double, const Eigen::VectorXd& h, Eigen::VectorXd& dhdN) {
-    dhdN = wear_rate(m, h, cache).dstate_dN;
-  };
-  const Roots roots = [&](double, const Eigen::VectorXd& h, Eigen::VectorXd& g) { g = limit_values(m, h, cache); };
-
-  // wear through each snapshot revolution, then to the budget; a limit, or a failure, ends the life
-  IntegratorOptions options = integrator_options(c.wear.stepping);
+  // wear through each snapshot revolution, then to the budget: a limit, or a failure, ends the life
   for (const double N_end : segment_ends(c, life.N)) {
-    options.initial_step = life.next_step;
-    options.max_steps = c.wear.stepping.max_steps - life.counters.steps;
-    if (options.max_steps <= 0)
-      return end_life(life, LifeEnd::MaxSteps, fmt::format("max_steps {} reached", c.wear.stepping.max_steps), m,
-                      cache, tally);
-    tally.begin_segment(life.counters);
-
-    // each accepted step: reported with the life's counters, and kept as the last accepted state
-    LifeStart last{life.N, life.state, 0, life.counters};
-    const OnStep on_step = [&](const StepInfo& info, const Eigen::VectorXd& h) {
-      LifeStep s;
-      s.N = info.N;
-      s.state = &h;
-      s.contact = wear_rate(m, h, cache).contact;
-      s.counters = tally.at(cache, info.steps, info.rhs_evals, info.rejected);
-      s.step = s.counters.steps;
-      s.info = info;
-      s.info.steps = s.counters.steps;
-      s.info.rhs_evals = s.counters.rhs_evals;
-      s.info.rejected = s.counters.rejected;
-      last = {s.N, h, info.next_step, s.counters};
-      return hooks.on_step ? hooks.on_step(s) : true;
-    };
-
-    IntegratorResult r;
-    try {
-      r = integrate(f, roots, kLimits, life.N, life.state, N_end, options, on_step);
-    } catch (const std::exception& e) {
-      // the worn geometry ends the life (a contact the strips cannot resolve, a body worn through): at its
-      // last accepted step, failed
-      const LifeFailure failure = geometry_failure(e);
-      if (failure == LifeFailure::None) throw;
-      life.N = last.N;
-      life.state = last.state;
-      life.counters = last.counters;
-      life.failure = failure;
-      spdlog::warn("wear: {}; the life ends at N {:.10g}, its last accepted step", e.what(), life.N);
-      return end_life(life, LifeEnd::Failed,
-                      fmt::format("ended at N {:.10g}, the last accepted step: {}", life.N, e.what()), m, cache,
-                      tally);
-    }
-    life.N = r.N;
-    life.state = r.h_m;
-    life.counters = tally.at(cache, r.steps, r.rhs_evals, r.rejected);
-    if (r.next_step > 0) life.next_step = r.next_step;
-
-    if (const std::optional<LifeEnd> end = life_end_of(r)) {
-      if (*end == LifeEnd::Failed) life.failure = LifeFailure::Integrator;
-      const std::string message =
-          r.status.kind == IntegratorStatus::Kind::RootFound
-              ? fmt::format("{} reached at N {:.10g}, in step {}", to_string(*end), life.N, life.counters.steps)
-              : r.status.message;
-      return end_life(life, *end, message, m, cache, tally);
-    }
-    const auto& snapshots = c.wear.snapshots_revolutions;
-    if (hooks.on_snapshot && std::find(snapshots.begin(), snapshots.end(), N_end) != snapshots.end())
-      hooks.on_snapshot(life.N, life.state);
+    if (const std::optional<LifeEnding> ending = wear_until(run, N_end, life)) return end_life(run, life, *ending);
+    take_snapshot(run, N_end, life);
   }
-  return end_life(life, LifeEnd::Revolutions,
-                  fmt::format("the life budget wear.revolutions = {:.10g} reached with no limit", c.wear.revolutions),
-                  m, cache, tally);
+  return end_life(run, life,
+                  {LifeEnd::Revolutions, fmt::format("the life budget wear.revolutions = {:.10g} reached with no limit",
+                                                     c.wear.revolutions)});
 }
 
 }  // namespace wear
