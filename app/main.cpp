@@ -479,8 +479,8 @@ int run_run_command(const RunOptions& opt) {
     if (cp.case_hash != fingerprint)
       throw std::invalid_argument(checkpoint_path.string() + ": the checkpoint belongs to another case, or " +
                                   opt.case_path + " (or a profile) changed since; run with --restart to start afresh");
-    summary = summary_up_to(summary_path, cp.start.steps);
-    spdlog::info("run: resuming at revolution {:.6g} (step {}) from {}", cp.start.N, cp.start.steps,
+    summary = summary_up_to(summary_path, cp.start.counters.steps);
+    spdlog::info("run: resuming at revolution {:.6g} (step {}) from {}", cp.start.N, cp.start.counters.steps,
                  checkpoint_path.string());
   } else {
     if (std::filesystem::exists(checkpoint_path) && !opt.restart)
@@ -493,6 +493,7 @@ int run_run_command(const RunOptions& opt) {
     LifeStep s0;
     s0.state = &cp.start.state;
     s0.contact = wear_rate(m, cp.start.state, cache).contact;
+    cp.start.counters = cache.counters;  // the life's solves include the unworn state's (step 0's row)
     summary = wear_summary_header(m) + wear_summary_row(m, s0, hours_per_rev);
   }
 
@@ -523,7 +524,7 @@ int run_run_command(const RunOptions& opt) {
   LifeHooks hooks;
   hooks.on_step = [&](const LifeStep& s) {
     summary += wear_summary_row(m, s, hours_per_rev);
-    cp.start = {s.N, *s.state, s.info.next_step, s.step, s.info.rhs_evals, s.info.rejected};
+    cp.start = {s.N, *s.state, s.info.next_step, s.counters};
     if (std::chrono::duration<double>(Clock::now() - last_save).count() >= c.wear.checkpoint_interval_s) {
       save({});
       last_save = Clock::now();
@@ -545,7 +546,7 @@ int run_run_command(const RunOptions& opt) {
   } catch (...) {
     progress.clear();
     save({});  // the last accepted step: --resume continues from there (e.g. with other settings)
-    spdlog::error("run: stopped at revolution {:.6g} (step {}); its state is saved in {}", cp.start.N, cp.start.steps,
+    spdlog::error("run: stopped at revolution {:.6g} (step {}); its state is saved in {}", cp.start.N, cp.start.counters.steps,
                   checkpoint_path.string());
     throw;
   }
@@ -554,12 +555,13 @@ int run_run_command(const RunOptions& opt) {
   // a limit located within a step ends the life between step ends: its state is the last row
   if (life.N > cp.start.N) {
     LifeStep end;
-    end.step = life.steps;
+    end.step = life.counters.steps;
     end.N = life.N;
     end.state = &life.state;
     end.info.step = life.N - cp.start.N;
-    end.info.rhs_evals = life.rhs_evals;
-    end.info.rejected = life.rejected;
+    end.info.rhs_evals = life.counters.rhs_evals;
+    end.info.rejected = life.counters.rejected;
+    end.counters = life.counters;
     end.contact = life.contact;
     summary += wear_summary_row(m, end, hours_per_rev);
   }
@@ -569,7 +571,6 @@ int run_run_command(const RunOptions& opt) {
   report.case_name = m.name;
   report.life = life;
   report.hours_per_revolution = hours_per_rev;
-  report.counters = cache.counters;
   report.wall_s = elapsed_s();
   report.resumed = opt.resume;
   std::vector<OutputFile> files = snapshot_files(life.N, life.state);
@@ -580,7 +581,7 @@ int run_run_command(const RunOptions& opt) {
   std::filesystem::remove(checkpoint_path);
   fmt::print("{}", report_text);
   spdlog::info("wrote summary.csv, report.txt and {} snapshots to {}", cp.snapshots_written, dir.string());
-  return life.ended_by == "failed" ? kExitFailure : 0;
+  return life.ended_by == LifeEnd::Failed || life.ended_by == LifeEnd::NotRun ? kExitFailure : 0;
 }
 
 int main(int argc, char** argv) {

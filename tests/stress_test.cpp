@@ -1195,7 +1195,7 @@ LifeCheck run_checked_life(const wear::WearCase& c, const std::string& what, Wea
   out.effective_rtol = c.wear.stepping.method == "adaptive"
                            ? c.wear.stepping.rtol + c.wear.stepping.atol_m / std::max(hmax, 1e-300)
                            : std::numeric_limits<double>::infinity();
-  if (out.life.ended_by == "failed" && out.life.message.find("no strip centre hits") != std::string::npos) {
+  if (out.life.failure == wear::LifeFailure::UnresolvedContact) {
     // finding 7: the life ends where it was last solved, and says why
     EXPECT_EQ(out.life.N, last_N) << what << ": " << out.life.message;
     EXPECT_EQ(out.life.state, last_state) << what << ": the state is not the last accepted step's";
@@ -1205,7 +1205,7 @@ LifeCheck run_checked_life(const wear::WearCase& c, const std::string& what, Wea
     out.ok = false;
     return out;
   }
-  if (out.life.ended_by == "failed" && out.life.message.find("is worn through") != std::string::npos) {
+  if (out.life.failure == wear::LifeFailure::WornThrough) {
     // finding 13: a body worn deeper than wide (no depth limit) ends the life where it was last solved
     EXPECT_EQ(out.life.N, last_N) << what << ": " << out.life.message;
     EXPECT_EQ(out.life.state, last_state) << what << ": the state is not the last accepted step's";
@@ -1214,8 +1214,8 @@ LifeCheck run_checked_life(const wear::WearCase& c, const std::string& what, Wea
     out.ok = false;
     return out;
   }
-  EXPECT_NE(out.life.ended_by, "failed") << what << ": " << out.life.message;
-  out.ok = out.ok && out.life.ended_by != "failed";
+  EXPECT_NE(out.life.ended_by, wear::LifeEnd::Failed) << what << ": " << out.life.message;
+  out.ok = out.ok && out.life.ended_by != wear::LifeEnd::Failed;
   return out;
 }
 
@@ -1248,7 +1248,7 @@ TEST(StressWear, RandomLivesConserveVolumeAndKeepDepthsSmooth) {
     const LifeCheck lc = run_checked_life(w.c, what, found);
     if (!lc.ok) return;
     steps += lc.steps;
-    ++ended[lc.life.ended_by];
+    ++ended[wear::to_string(lc.life.ended_by)];
     worst_volume = std::max(worst_volume, lc.worst_volume);
     worst_changes = std::max(worst_changes, lc.worst_curvature_changes);
     // max_steps is a budget the case sets (2000 here), an honest end: counted in 'ended by'
@@ -1320,15 +1320,15 @@ TEST(StressWear, LooseToleranceDoesNotRunAway) {
     const LifeCheck loose = run_checked_life(w.c, what, found);
     const LifeCheck ref = run_checked_life(tight, what + " (the tight run)", found);
     if (!loose.ok || !ref.ok) return;
-    ASSERT_EQ(loose.life.ended_by, "revolutions") << what << ": " << loose.life.message;
-    ASSERT_EQ(ref.life.ended_by, "revolutions") << what << ": " << ref.life.message;
+    ASSERT_EQ(loose.life.ended_by, wear::LifeEnd::Revolutions) << what << ": " << loose.life.message;
+    ASSERT_EQ(ref.life.ended_by, wear::LifeEnd::Revolutions) << what << ": " << ref.life.message;
     const wear::WearModel m = wear::make_wear_model(w.c);
     const double d_loose = wear::max_depth_m(m, loose.life.state), d_ref = wear::max_depth_m(m, ref.life.state);
     const double rel = d_ref > 0 ? std::abs(d_loose / d_ref - 1) : d_loose;
     worst_depth = std::max(worst_depth, rel);
     EXPECT_LE(rel, 0.5) << what << ": max depth " << d_loose << " m against " << d_ref << " m";
-    EXPECT_LE(loose.life.rejected, loose.life.steps / 2 + 2) << what << ": " << loose.life.steps << " steps";
-    EXPECT_LE(loose.life.steps, 200) << what;
+    EXPECT_LE(loose.life.counters.rejected, loose.life.counters.steps / 2 + 2) << what << ": " << loose.life.counters.steps << " steps";
+    EXPECT_LE(loose.life.counters.steps, 200) << what;
     check_roughness(ref, what + " (the tight run)", found);
     check_roughness(loose, what, found);
     worst_tight_reversals = std::max(worst_tight_reversals, ref.worst_reversals);
@@ -1374,8 +1374,8 @@ TEST(StressWear, ContactNoStripResolvesEndsTheLifeAtItsLastStep) {
   const wear::WearCase c = random_life_of_seed(5818732027616048374ull, what);
   WearFindings found;
   const LifeCheck lc = run_checked_life(c, what, found);
-  EXPECT_EQ(found.unresolved, 1) << what << ": ended by " << lc.life.ended_by << ": " << lc.life.message;
-  EXPECT_EQ(lc.life.ended_by, "failed") << what;
+  EXPECT_EQ(found.unresolved, 1) << what << ": ended by " << wear::to_string(lc.life.ended_by) << ": " << lc.life.message;
+  EXPECT_EQ(lc.life.ended_by, wear::LifeEnd::Failed) << what;
   EXPECT_GT(lc.life.N, 0) << what;
   EXPECT_LT(lc.life.N, c.wear.revolutions) << what;
 }

@@ -89,7 +89,7 @@ TEST(WearLoop, WornVolumeEqualsCoefficientTimesEnergyAtEveryStep) {
     return true;
   };
   const LifeResult life = run_life(m, c, LifeStart{}, hooks, cache);
-  EXPECT_EQ(life.ended_by, "revolutions");
+  EXPECT_EQ(life.ended_by, LifeEnd::Revolutions);
   EXPECT_GT(steps, 5);
   EXPECT_LT(worst, 1e-12) << "over " << steps << " steps";
 }
@@ -106,7 +106,7 @@ TEST(WearLoop, PureRollingWearsNothingWithoutHeathcoteSlip) {
   EXPECT_EQ(r.dstate_dN.cwiseAbs().maxCoeff(), 0.0);
   EXPECT_EQ(r.energy_per_revolution_J, 0.0);
   const LifeResult life = run_to(c, 1e9);
-  EXPECT_EQ(life.ended_by, "revolutions");
+  EXPECT_EQ(life.ended_by, LifeEnd::Revolutions);
   EXPECT_EQ(max_depth_m(m, life.state), 0.0);
 
   c.contact.profiles->heathcote_slip = true;
@@ -148,10 +148,10 @@ TEST(WearLoop, WearAfterNRevolutionsConvergesAsToleranceTightens) {
     const LifeResult r = run_to(c, N);
     const double error = (r.state.head(m.n1) - reference.state.head(m.n1)).cwiseAbs().maxCoeff() / depth_ref;
     errors.push_back(error);
-    table += fmt::format("{:.0e}, {:.0e}, {}, {}, {:.9e}, {:.2e}\n", rtol, rtol * 1e-6, r.steps, r.rhs_evals,
+    table += fmt::format("{:.0e}, {:.0e}, {}, {}, {:.9e}, {:.2e}\n", rtol, rtol * 1e-6, r.counters.steps, r.counters.rhs_evals,
                          max_depth_m(m, r.state), error);
   }
-  std::cout << table << "reference: " << reference.steps << " steps\n";
+  std::cout << table << "reference: " << reference.counters.steps << " steps\n";
   for (std::size_t k = 1; k < errors.size(); ++k) EXPECT_LT(errors[k], errors[k - 1]) << table;
   EXPECT_LT(errors.back(), 1e-5) << table;
 }
@@ -168,7 +168,7 @@ TEST(WearLoop, DepthLimitIsLocated) {
     const WearModel m = make_wear_model(c);
     WearCache cache;
     const LifeResult life = run_life(m, c, LifeStart{}, LifeHooks{}, cache);
-    EXPECT_EQ(life.ended_by, "max_depth") << method << ": " << life.message;
+    EXPECT_EQ(life.ended_by, LifeEnd::MaxDepth) << method << ": " << life.message;
     EXPECT_NEAR(max_depth_m(m, life.state) / 3e-5, 1.0, 1e-9) << method;
     EXPECT_LT(life.N, c.wear.revolutions);
   }
@@ -200,22 +200,23 @@ TEST(WearLoop, FixedSteppingRespectsItsStepAndAgreesWithAdaptive) {
   c.wear.stepping.method = "fixed-revolutions";
   c.wear.stepping.step_revolutions = N / 64;
   const LifeResult by_revolutions = run_to(c, N);
-  EXPECT_EQ(by_revolutions.steps, 64);
+  EXPECT_EQ(by_revolutions.counters.steps, 64);
   EXPECT_NEAR(max_depth_m(m, by_revolutions.state) / depth, 1.0, 0.03);
 }
 
 // Step control on the shipped case to its end (the contact reaching the roller's edge): strips enter
 // and leave the contact as it widens, and f is only piecewise smooth; the control must not chatter
 // (few rejected steps) nor stall (few steps).
+// The contact reaching the edge is the life's expected end: reported once at info level, no warning
+// (the test's log capture fails a test that warns).
 TEST(WearLoop, StepControlCopesOnTheShippedCase) {
-  const rollwear_test::ExpectWarnings warnings;  // the contact reaching the edge warns
   const WearCase c = paper_wear(80);
   const WearModel m = make_wear_model(c);
   WearCache cache;
   const LifeResult life = run_life(m, c, LifeStart{}, LifeHooks{}, cache);
-  EXPECT_TRUE(life.ended_by == "edge" || life.ended_by == "max_depth") << life.message;
-  EXPECT_LT(life.steps, 200) << life.message;
-  EXPECT_LE(life.rejected, life.steps / 10 + 1) << life.message;
+  EXPECT_EQ(life.ended_by, LifeEnd::Edge) << life.message;
+  EXPECT_LT(life.counters.steps, 200) << life.message;
+  EXPECT_LE(life.counters.rejected, life.counters.steps / 10 + 1) << life.message;
 }
 
 // Both bodies wear, each with its own coefficient: each spreads the same dissipated energy over its own
@@ -266,26 +267,42 @@ TEST(WearLoop, KthWithOneCoefficientIsArchard) {
 // A body worn deeper than it is wide (a life without a depth limit, stress finding 13) is not a profile
 // any more: normal_state throws WornThrough, which run_life takes as the end of the life at its last
 // accepted step (as for UnresolvedContact), instead of the profile check's "looks like millimetres".
+// A body worn deeper than it is wide (docs/stress-suite.md, finding 13) ends a life run without a depth
+// limit at its last accepted step, status failed (WornThrough). The roller here is concave, its deepest
+// point (z = width - 50 nm) at the centre where it wears, on a crowned path that keeps the contact there:
+// the first 50 nm of wear wear it through. Its contact is the paper case's (gap curvature 1/0.25 - 1/1).
 TEST(WearLoop, BodyWornThroughEndsTheLife) {
-  const WearModel m = make_wear_model(paper_wear(20));
-  const contact::Profile& p = m.profiles.body1;
-  const double width_m = p.y_m(p.y_m.size() - 1) - p.y_m(0);
-  Eigen::VectorXd state = initial_state(m);
-  state(m.n1 / 2) = 0.99 * width_m - p.z_m(m.n1 / 2);  // deep, but not through
+  WearCase c = paper_wear(20);
+  constexpr double kWidth_m = 0.020, kGrooveRadius_m = 1.0, kMargin_m = 5e-8;
+  contact::Profile roller;
+  roller.source = "a concave roller, 20 mm wide";
+  roller.y_m = Eigen::ArrayXd::LinSpaced(401, -kWidth_m / 2, kWidth_m / 2);
+  roller.z_m = (kWidth_m - kMargin_m) - roller.y_m.square() / (2 * kGrooveRadius_m);
+  c.contact.profiles->profiles.body1 = roller;
+  c.contact.profiles->profiles.body2 = contact::crowned_profile(0.25, 0.030);
+  c.contact.solver.normal = "semi-hertz";
+  c.wear.limits = WearLimits{0, 0, false};
+  c.wear.revolutions = 1e8;
+  c.wear.snapshots_revolutions.clear();
+  const WearModel m = make_wear_model(c);
+  double last_N = -1;
+  Eigen::VectorXd last_state;
+  LifeHooks hooks;
+  hooks.on_step = [&](const LifeStep& s) {
+    last_N = s.N;
+    last_state = *s.state;
+    return true;
+  };
   WearCache cache;
-  try {
-    normal_state(m, state, cache);
-  } catch (const WornThrough& e) {
-    ADD_FAILURE() << "0.99 of the width: " << e.what();
-  } catch (const std::exception&) {  // the contact of such a profile may fail otherwise: not this test's
-  }
-  state(m.n1 / 2) = 1.01 * width_m - p.z_m(m.n1 / 2);
-  try {
-    normal_state(m, state, cache);
-    ADD_FAILURE() << "no throw";
-  } catch (const WornThrough& e) {
-    EXPECT_NE(std::string(e.what()).find("body 1 is worn through"), std::string::npos) << e.what();
-  }
+  const rollwear_test::ExpectWarnings warnings;  // the life's failure is a warning
+  const LifeResult life = run_life(m, c, LifeStart{}, hooks, cache);
+  EXPECT_EQ(life.ended_by, LifeEnd::Failed) << life.message;
+  EXPECT_EQ(life.failure, LifeFailure::WornThrough) << life.message;
+  EXPECT_EQ(warnings.count(), 1);
+  ASSERT_GT(last_N, 0) << "no step accepted before the body wore through: " << life.message;
+  EXPECT_EQ(life.N, last_N);
+  EXPECT_TRUE(life.state == last_state) << "the state is not the last accepted step's";
+  EXPECT_LE(max_depth_m(m, life.state), kMargin_m);  // not through yet there
 }
 
 TEST(WearLoop, PressureLimitAlreadyExceededEndsTheLifeAtTheStart) {
@@ -294,16 +311,16 @@ TEST(WearLoop, PressureLimitAlreadyExceededEndsTheLifeAtTheStart) {
   const WearModel m = make_wear_model(c);
   WearCache cache;
   const LifeResult life = run_life(m, c, LifeStart{}, LifeHooks{}, cache);
-  EXPECT_EQ(life.ended_by, "max_pressure") << life.message;
+  EXPECT_EQ(life.ended_by, LifeEnd::MaxPressure) << life.message;
   EXPECT_EQ(life.N, 0);
-  EXPECT_EQ(life.steps, 0);
+  EXPECT_EQ(life.counters.steps, 0);
   // a limit below p0's fall: the worn contact's p0 falls through 1.1 GPa, never exceeding it again
   c.wear.limits.max_pressure_Pa = 1.2e9;
   c.wear.revolutions = 1e7;
   c.wear.snapshots_revolutions.clear();
   const WearModel m2 = make_wear_model(c);
   WearCache cache2;
-  EXPECT_EQ(run_life(m2, c, LifeStart{}, LifeHooks{}, cache2).ended_by, "revolutions");
+  EXPECT_EQ(run_life(m2, c, LifeStart{}, LifeHooks{}, cache2).ended_by, LifeEnd::Revolutions);
 }
 
 // The reuse of solves at an unchanged profile (WearCache) is a skip that changes nothing: the same life
@@ -318,7 +335,7 @@ TEST(WearLoop, ReusingUnchangedProfilesChangesNothing) {
   const LifeResult a = run_life(m, c, LifeStart{}, LifeHooks{}, reuse);
   const LifeResult b = run_life(m, c, LifeStart{}, LifeHooks{}, afresh);
   EXPECT_EQ(a.N, b.N);
-  EXPECT_EQ(a.steps, b.steps);
+  EXPECT_EQ(a.counters.steps, b.counters.steps);
   EXPECT_TRUE(a.state == b.state);  // bit for bit
   EXPECT_LT(reuse.counters.tangential_solves, afresh.counters.tangential_solves);
   std::cout << "tangential solves: " << reuse.counters.tangential_solves << " with reuse, "
@@ -367,7 +384,7 @@ std::map<std::string, double> wear_values(const WearModel& m, const LifeResult& 
   for (double y_mm : {-4.0, -2.0, 0.0, 2.0, 4.0})
     v[fmt::format("depth_at_{}mm_m", y_mm)] =
         contact::profile_z(p, y_mm * 1e-3) - contact::profile_z(p0, y_mm * 1e-3);
-  v["steps"] = static_cast<double>(life.steps);
+  v["steps"] = static_cast<double>(life.counters.steps);
   return v;
 }
 
@@ -381,6 +398,207 @@ TEST(WearGolden, StartStopWear) {
   const WearCase c = read_wear_case((kSource / "cases" / "start-stop-wear.yaml").string());
   const LifeResult life = run_to(c, 1e7);
   check_golden("start-stop-wear", wear_values(make_wear_model(c), life));
+}
+
+// ---- the shipped cases' lives against converged references ----
+//
+// Reference: the fixed-depth life (explicit Euler, each step wearing d at the fastest node), first
+// order in d, extrapolated (Richardson) from d and d/2: L_ref = 2 L(d/2) - L(d). Its own error is about
+// |L(d/2) - L(d)| before the extrapolation and far below that after it (paper-wear: L(4e-8), L(2e-8),
+// L(1e-8) and L(5e-9) differ by 834, 412 and 202 revolutions, first order; the extrapolations from
+// (2e-8, 1e-8) and (1e-8, 5e-9) agree within 9e-8). Every limit is located by root finding in both
+// modes, so the adaptive life converges to the same life (docs/wear-loop.md, "Convergence of the life").
+
+constexpr double kShippedLifeRtol = 3e-3;  // the shipped tolerances' life against the reference (0.3 %)
+
+// the life of the case with fixed-depth steps of d_m, ended by the edge limit
+double fixed_depth_life(WearCase c, double d_m) {
+  c.wear.stepping.method = "fixed-depth";
+  c.wear.stepping.max_depth_step_m = d_m;
+  c.wear.stepping.max_steps = 10000000;
+  const WearModel m = make_wear_model(c);
+  WearCache cache;
+  const LifeResult life = run_life(m, c, LifeStart{}, LifeHooks{}, cache);
+  EXPECT_EQ(life.ended_by, LifeEnd::Edge) << "fixed-depth " << d_m << ": " << life.message;
+  return life.N;
+}
+
+LifeResult shipped_life(const WearCase& c) {
+  const WearModel m = make_wear_model(c);
+  WearCache cache;
+  return run_life(m, c, LifeStart{}, LifeHooks{}, cache);
+}
+
+// Defect: the edge limit was 0 once reached (no sign change), so the life ended at the end of the step
+// that reached it, 1.2 % long, and did not converge as the tolerance tightened. Now the life converges,
+// as rtol and atol_m tighten together (atol_m = rtol x max_depth_m), to the fixed-depth life, and the
+// shipped tolerances' life agrees with it within 0.3 %. The README quotes that life.
+TEST(WearLife, PaperWearConvergesToTheFixedDepthLife) {
+  const WearCase c = read_wear_case((kSource / "cases" / "paper-wear.yaml").string());
+  const double coarse = fixed_depth_life(c, 4e-8), fine = fixed_depth_life(c, 2e-8);
+  const double reference = 2 * fine - coarse;
+  std::string table = fmt::format("fixed-depth 4e-8 m: {:.10g}, 2e-8 m: {:.10g}, extrapolated {:.10g} revolutions\n"
+                                  "rtol, atol_m, steps, life, |life / reference - 1|\n",
+                                  coarse, fine, reference);
+  // the extrapolation's own error: far below the first-order error of the finer run
+  EXPECT_LT(std::abs(fine - coarse) / reference, 2e-5) << table;
+
+  std::vector<double> errors;
+  for (double rtol : {1e-3, 1e-4, 1e-5, 1e-6}) {
+    WearCase k = c;
+    k.wear.stepping.rtol = rtol;
+    k.wear.stepping.atol_m = rtol * c.wear.limits.max_depth_m;
+    const LifeResult life = shipped_life(k);
+    EXPECT_EQ(life.ended_by, LifeEnd::Edge) << life.message;
+    errors.push_back(std::abs(life.N / reference - 1));
+    table += fmt::format("{:.0e}, {:.0e}, {}, {:.10g}, {:.2e}\n", rtol, k.wear.stepping.atol_m, life.counters.steps,
+                         life.N, errors.back());
+  }
+  const LifeResult shipped = shipped_life(c);
+  const double shipped_error = std::abs(shipped.N / reference - 1);
+  table += fmt::format("shipped (rtol {:.0e}, atol_m {:.0e}): {} steps, {:.10g}, {:.2e}\n", c.wear.stepping.rtol,
+                       c.wear.stepping.atol_m, shipped.counters.steps, shipped.N, shipped_error);
+  std::cout << table;
+  for (std::size_t k = 1; k < errors.size(); ++k) EXPECT_LT(errors[k], errors[k - 1]) << table;
+  EXPECT_LT(errors.back(), 1e-5) << table;  // rtol 1e-6
+  EXPECT_EQ(shipped.ended_by, LifeEnd::Edge) << shipped.message;
+  EXPECT_LT(shipped_error, kShippedLifeRtol) << table;
+
+  // the README's headline: the shipped life as the program prints it, rounded
+  std::ifstream in(kSource / "README.md");
+  const std::string readme((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const WearModel m = make_wear_model(c);
+  const std::string life_text = fmt::format("after {:.2f}e7 revolutions", shipped.N / 1e7);
+  const std::string depth_text = fmt::format("at a depth of {:.0f} µm", max_depth_m(m, shipped.state) * 1e6);
+  EXPECT_NE(readme.find(life_text), std::string::npos) << "README.md does not say '" << life_text << "'";
+  EXPECT_NE(readme.find(depth_text), std::string::npos) << "README.md does not say '" << depth_text << "'";
+}
+
+// The edge limit is a signed, continuous function of the state: negative inside, positive past the
+// edge. At the life's end it has just changed sign (located to the root finder's tolerance in N: its
+// value there is a few revolutions' change of it at most), and the last accepted step before was inside.
+TEST(WearLife, EdgeLimitIsLocatedInBothModes) {
+  for (const std::string method : {"adaptive", "fixed-depth"}) {
+    WearCase c = paper_wear(40);
+    c.wear.stepping.method = method;
+    c.wear.stepping.max_depth_step_m = 2e-6;
+    c.wear.limits.max_depth_m = 0;
+    c.wear.snapshots_revolutions.clear();
+    const WearModel m = make_wear_model(c);
+    WearCache cache;
+    double last_g = 0, last_N = 0, slope = 0;
+    LifeHooks hooks;
+    hooks.on_step = [&](const LifeStep& s) {
+      const double g = s.contact.edge_limit_m;
+      if (s.N > last_N && last_N > 0) slope = (g - last_g) / (s.N - last_N);
+      last_g = g;
+      last_N = s.N;
+      return true;
+    };
+    const LifeResult life = run_life(m, c, LifeStart{}, hooks, cache);
+    ASSERT_EQ(life.ended_by, LifeEnd::Edge) << method << ": " << life.message;
+    EXPECT_LT(last_g, 0) << method << ": the last accepted step is inside the overlap";
+    EXPECT_GT(slope, 0) << method;
+    const double g_end = life.contact.edge_limit_m;
+    EXPECT_GE(g_end, 0) << method << ": the end is on the far side of the root";
+    EXPECT_LE(g_end, 10 * slope) << method << ": more than 10 revolutions past the root (g " << g_end
+                                 << " m, dg/dN " << slope << " m)";
+    EXPECT_GT(life.N, last_N) << method;
+  }
+}
+
+// The start-stop case's life against its stored reference (tests/data/reference/start-stop-wear.txt,
+// fixed-depth 2e-8 and 1e-8 m, extrapolated: 23 s, too slow to run here; regenerate with
+//   ROLLWEAR_UPDATE_REFERENCES=1 build/release/tests/rollwear_tests --gtest_filter='WearLife.StartStop*'
+// ). The cheap check made here: a fixed-depth life with 4e-7 m steps, first order with an error below
+// 2e-3 (10 x the error of the 4e-8 m life, 5e-5), agrees with both.
+TEST(WearLife, StartStopWearAgreesWithItsConvergedReference) {
+  const WearCase c = read_wear_case((kSource / "cases" / "start-stop-wear.yaml").string());
+  const fs::path p = kSource / "tests" / "data" / "reference" / "start-stop-wear.txt";
+  if (std::getenv("ROLLWEAR_UPDATE_REFERENCES")) {
+    const double coarse = fixed_depth_life(c, 2e-8), fine = fixed_depth_life(c, 1e-8);
+    std::ofstream out(p);
+    out << "# start-stop-wear: the life (revolutions) with fixed-depth steps of 2e-8 and 1e-8 m, and their\n"
+           "# Richardson extrapolation (first order), the reference of WearLife.StartStopWear* in\n"
+           "# tests/wear_loop_test.cpp. Made by\n"
+           "#   ROLLWEAR_UPDATE_REFERENCES=1 build/release/tests/rollwear_tests "
+           "--gtest_filter='WearLife.StartStop*'\n";
+    out << fmt::format("life_fixed_depth_2e-8 {:.17g}\nlife_fixed_depth_1e-8 {:.17g}\nlife_reference {:.17g}\n", coarse,
+                       fine, 2 * fine - coarse);
+    GTEST_SKIP() << "reference written: " << p;
+  }
+  std::ifstream in(p);
+  ASSERT_TRUE(in) << p << " missing: regenerate it (see this test)";
+  std::map<std::string, double> stored;
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.empty() || line[0] == '#') continue;
+    std::istringstream words(line);
+    std::string key;
+    double v = 0;
+    if (words >> key >> v) stored[key] = v;
+  }
+  ASSERT_TRUE(stored.count("life_reference")) << p;
+  const double reference = stored.at("life_reference");
+  const LifeResult shipped = shipped_life(c);
+  ASSERT_EQ(shipped.ended_by, LifeEnd::Edge) << shipped.message;
+  const double euler = fixed_depth_life(c, 4e-7);
+  constexpr double kEulerError = 2e-3;
+  EXPECT_LT(std::abs(shipped.N / reference - 1), kShippedLifeRtol) << shipped.N << " against " << reference;
+  EXPECT_LT(std::abs(euler / reference - 1), kEulerError) << euler << " against " << reference;
+  EXPECT_LT(std::abs(shipped.N / euler - 1), kShippedLifeRtol + kEulerError) << shipped.N << " against " << euler;
+  std::cout << fmt::format("start-stop-wear: shipped {:.10g} ({:.2e}), fixed-depth 4e-7 m {:.10g} ({:.2e}), "
+                           "reference {:.10g}\n",
+                           shipped.N, shipped.N / reference - 1, euler, euler / reference - 1, reference);
+}
+
+// One struct holds the life's counters, and a resumed life starts from the checkpoint's: stopped at a
+// step and resumed (fixed stepping repeats the uninterrupted run to rounding), the life ends with the
+// same steps, rejected steps and evaluations of f as the uninterrupted one, and its solves count both
+// parts (the fresh cache of the resumed part solves its start once more: one normal and one tangential
+// solve). The report's message names the step the limit was reached in, which is `steps`.
+TEST(WearLoop, ResumedLifeCountsTheWholeLife) {
+  WearCase c = paper_wear(20);
+  c.wear.stepping.method = "fixed-depth";
+  c.wear.stepping.max_depth_step_m = 1e-6;
+  c.wear.limits.max_depth_m = 3e-5;
+  const WearModel m = make_wear_model(c);
+  WearCache whole_cache;
+  const LifeResult whole = run_life(m, c, LifeStart{}, LifeHooks{}, whole_cache);
+  ASSERT_EQ(whole.ended_by, LifeEnd::MaxDepth) << whole.message;
+  ASSERT_GT(whole.counters.steps, 10);
+  EXPECT_NE(whole.message.find(fmt::format("in step {}", whole.counters.steps)), std::string::npos)
+      << whole.message << " (steps " << whole.counters.steps << ")";
+
+  LifeHooks stop_at;
+  const long stop_step = whole.counters.steps / 2;
+  stop_at.on_step = [&](const LifeStep& s) { return s.step < stop_step; };
+  WearCache first_cache;
+  const LifeResult first = run_life(m, c, LifeStart{}, stop_at, first_cache);
+  ASSERT_EQ(first.ended_by, LifeEnd::Stopped) << first.message;
+  ASSERT_EQ(first.counters.steps, stop_step);
+  WearCache second_cache;  // a new process
+  const LifeResult resumed =
+      run_life(m, c, LifeStart{first.N, first.state, first.next_step, first.counters}, LifeHooks{}, second_cache);
+  ASSERT_EQ(resumed.ended_by, LifeEnd::MaxDepth) << resumed.message;
+  EXPECT_EQ(resumed.N, whole.N);
+  EXPECT_EQ(resumed.counters.steps, whole.counters.steps);
+  EXPECT_EQ(resumed.counters.rejected, whole.counters.rejected);
+  EXPECT_EQ(resumed.counters.rhs_evals, whole.counters.rhs_evals);
+  EXPECT_EQ(resumed.counters.normal_solves, whole.counters.normal_solves + 1);
+  EXPECT_EQ(resumed.counters.tangential_solves, whole.counters.tangential_solves + 1);
+  EXPECT_EQ(resumed.message, whole.message);
+  // the life's counters count this life's solves, not the cache's
+  EXPECT_EQ(whole.counters.normal_solves, whole_cache.counters.normal_solves);
+}
+
+// LifeEnd's words are the report's, each read back to itself; an unknown word is refused.
+TEST(WearLoop, LifeEndWordsReadBack) {
+  for (LifeEnd e : {LifeEnd::NotRun, LifeEnd::MaxDepth, LifeEnd::MaxPressure, LifeEnd::Edge, LifeEnd::Revolutions,
+                    LifeEnd::MaxSteps, LifeEnd::Stopped, LifeEnd::Failed})
+    EXPECT_EQ(parse_life_end(to_string(e)), e) << to_string(e);
+  EXPECT_EQ(to_string(LifeResult{}.ended_by), "not_run");
+  EXPECT_THROW(parse_life_end("edge reached"), std::invalid_argument);
 }
 
 }  // namespace

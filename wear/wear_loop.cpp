@@ -5,6 +5,8 @@
 #include <cmath>
 #include <exception>
 #include <limits>
+#include <optional>
+#include <utility>
 #include <stdexcept>
 #include <string>
 
@@ -210,15 +212,73 @@ NormalState normal_state(const WearModel& m, const Eigen::VectorXd& state, WearC
   return n;
 }
 
+double edge_limit_value_m(const contact::Profiles& worn, const contact::SemiHertzResult& normal) {
+  const contact::Profile &p1 = worn.body1, &p2 = worn.body2;
+  const double lo = std::max(p1.y_m(0), p2.y_m(0));
+  const double hi = std::min(p1.y_m(p1.y_m.size() - 1), p2.y_m(p2.y_m.size() - 1));
+  const auto gap = [&](double y) { return contact::profile_z(p1, y) + contact::profile_z(p2, y); };
+  // the gap is linear between the nodes of either profile: its minimum over the overlap is at one of them
+  double gap_min = std::min(gap(lo), gap(hi));
+  for (const contact::Profile* p : {&p1, &p2})
+    for (Eigen::Index i = 0; i < p->y_m.size(); ++i)
+      if (p->y_m(i) > lo && p->y_m(i) < hi) gap_min = std::min(gap_min, gap(p->y_m(i)));
+  const double bound_m = normal.epsilon * normal.approach_m;  // contact where gap - gap_min < eps delta
+  return bound_m - (std::min(gap(lo), gap(hi)) - gap_min);
+}
+
+namespace {
+
+// The normal solver warns at every solve where the contact reaches the profiles' edge, an event the
+// edge limit ends the life at (reported once, by run_life) and that root finding probes on both sides.
+// While the wear loop solves, the default logger's warnings are held back (at the info and warn levels;
+// debug and trace show everything), and the wear loop reports from the typed result instead: an
+// unconverged approach as a warning at every solve, the contact at the edge of a life without the edge
+// limit once.
+class NormalSolverWarningsHeld {
+ public:
+  NormalSolverWarningsHeld() : logger_(spdlog::default_logger_raw()), level_(logger_->level()) {
+    if (level_ == spdlog::level::info || level_ == spdlog::level::warn) logger_->set_level(spdlog::level::err);
+  }
+  ~NormalSolverWarningsHeld() { logger_->set_level(level_); }
+  NormalSolverWarningsHeld(const NormalSolverWarningsHeld&) = delete;
+  NormalSolverWarningsHeld& operator=(const NormalSolverWarningsHeld&) = delete;
+
+ private:
+  spdlog::logger* logger_;
+  spdlog::level::level_enum level_;
+};
+
+}  // namespace
+
+NormalState solved_normal_state(const WearModel& m, const Eigen::VectorXd& state, WearCache& cache) {
+  const long solves = cache.counters.normal_solves;
+  NormalState n;
+  {
+    const NormalSolverWarningsHeld held;
+    n = normal_state(m, state, cache);
+  }
+  if (cache.counters.normal_solves == solves) return n;  // from the cache: reported when it was solved
+  if (n.normal.status.residual > m.normal_options.load_rtol)
+    spdlog::warn("wear: the normal problem's approach was not found (load residual {:.1e} > tol {:.1e}): {}",
+                 n.normal.status.residual, m.normal_options.load_rtol, n.normal.status.message);
+  if (n.normal.reaches_edge && !m.limits.edge && !cache.edge_reported) {
+    cache.edge_reported = true;
+    spdlog::warn("wear: the contact reaches the end of the profiles' overlap (a body is narrower than the contact) "
+                 "and wear.limits.edge is off: the contact is cut there from now on");
+  }
+  return n;
+}
+
 WearRate wear_rate(const WearModel& m, const Eigen::VectorXd& state, WearCache& cache) {
   ++cache.counters.rate_evaluations;
-  const std::uint64_t key = contact::profile_hash(worn_profiles(m, state));
+  const contact::Profiles worn = worn_profiles(m, state);
+  const std::uint64_t key = contact::profile_hash(worn);
   if (cache.reuse)
     for (const auto& [k, rate] : cache.rates)
       if (k == key) return rate;
 
   // normal problem on the current worn geometry
-  const NormalState n = normal_state(m, state, cache);
+  const NormalState n = solved_normal_state(m, state, cache);
   const contact::ContactPatch& patch = n.normal.patch;
 
   // tangential problem over the duty cycle: dissipated energy per unit width
@@ -247,6 +307,7 @@ WearRate wear_rate(const WearModel& m, const Eigen::VectorXd& state, WearCache& 
   r.contact.Fx_N = duty.Fx_N;
   r.contact.power_W = duty.duration_s > 0 ? duty.dissipated_J / duty.duration_s : 0;
   r.contact.edge_margin_m = n.edge_margin_m;
+  r.contact.edge_limit_m = edge_limit_value_m(worn, n.normal);
   r.contact.normal_solver = n.normal.status.message.rfind("constant curvature", 0) == 0 ? "hertz" : "semi-hertz";
 
   if (cache.rates.size() >= kCachedRates) cache.rates.erase(cache.rates.begin());
@@ -276,6 +337,13 @@ double dissipated_energy_J(const WearModel& m, const Eigen::VectorXd& state) {
 namespace {
 
 enum Limit { kDepth, kPressure, kEdge, kLimits };
+constexpr LifeEnd kLimitEnds[kLimits] = {LifeEnd::MaxDepth, LifeEnd::MaxPressure, LifeEnd::Edge};
+
+constexpr std::pair<LifeEnd, const char*> kLifeEndWords[] = {
+    {LifeEnd::NotRun, "not_run"},   {LifeEnd::MaxDepth, "max_depth"}, {LifeEnd::MaxPressure, "max_pressure"},
+    {LifeEnd::Edge, "edge"},        {LifeEnd::Revolutions, "revolutions"}, {LifeEnd::MaxSteps, "max_steps"},
+    {LifeEnd::Stopped, "stopped"},  {LifeEnd::Failed, "failed"},
+};
 
 // The wear is carried by the worn bodies' profile nodes: a contact narrower than a few node spacings
 // would put a strip's wear on one node and the next solve could not see the worn shape. Throws
@@ -294,128 +362,246 @@ void check_profile_resolves_contact(const WearModel& m, const NormalState& n) {
           body, spacing, width, kMinNodesAcrossContact, width / kMinNodesAcrossContact));
   }
 }
-const char* const kLimitNames[kLimits] = {"max_depth", "max_pressure", "edge"};
 
-// whether e, or an exception nested in it (wear::integrate nests what f threw), is a LifeEndingGeometry
-bool ends_life(const std::exception& e) {
-  if (dynamic_cast<const LifeEndingGeometry*>(&e)) return true;
+// what ends the life by the worn geometry, if e (or an exception nested in it: wear::integrate nests
+// what f threw) is a LifeEndingGeometry
+LifeFailure geometry_failure(const std::exception& e) {
+  if (dynamic_cast<const UnresolvedContact*>(&e)) return LifeFailure::UnresolvedContact;
+  if (dynamic_cast<const WornThrough*>(&e)) return LifeFailure::WornThrough;
   try {
     std::rethrow_if_nested(e);
   } catch (const std::exception& inner) {
-    return ends_life(inner);
+    return geometry_failure(inner);
   } catch (...) {
   }
-  return false;
+  return LifeFailure::None;
+}
+
+// The lifetime limits as signed, continuous functions of the state, g_k(h) < 0 inside the life: a sign
+// change ends it, located by the integrator's root finding. A limit that is off is -1.
+Eigen::VectorXd limit_values(const WearModel& m, const Eigen::VectorXd& h, WearCache& cache) {
+  ++cache.counters.limit_evaluations;
+  Eigen::VectorXd g = Eigen::VectorXd::Constant(kLimits, -1.0);
+  if (m.limits.max_depth_m > 0) g(kDepth) = max_depth_m(m, h) - m.limits.max_depth_m;
+  if (m.limits.max_pressure_Pa <= 0 && !m.limits.edge) return g;
+  const NormalState n = solved_normal_state(m, h, cache);
+  if (m.limits.max_pressure_Pa > 0) g(kPressure) = n.normal.patch.p0_Pa - m.limits.max_pressure_Pa;
+  if (m.limits.edge) g(kEdge) = edge_limit_value_m(worn_profiles(m, h), n.normal);
+  return g;
+}
+
+// the revolutions each integration runs to: each snapshot revolution ahead of N, then the budget
+std::vector<double> segment_ends(const WearCase& c, double N) {
+  std::vector<double> ends;
+  for (double snapshot : c.wear.snapshots_revolutions)
+    if (snapshot > N) ends.push_back(snapshot);
+  if (ends.empty() || ends.back() < c.wear.revolutions) ends.push_back(c.wear.revolutions);
+  return ends;
+}
+
+// The counters of a life in progress: the start's, plus what this process's integrations and solves
+// added. A continuation (a later segment, or a resumed run) starts at a step end whose f the life has
+// already evaluated: the integrator's first evaluation there is not counted again.
+struct LifeTally {
+  LifeCounters start;         // the life's counters where this call of run_life began
+  LifeCounters cache_start;   // the cache's counts then
+  LifeCounters segment_start; // the life's integrator counts where the current segment began
+  long repeated_evals = 0;    // 1 when the current segment continues from a step end
+
+  // the solve counts: the start's plus what this process's cache counted since
+  void add_solves(LifeCounters& c, const WearCache& cache) const {
+    c.rate_evaluations = start.rate_evaluations + cache.counters.rate_evaluations - cache_start.rate_evaluations;
+    c.limit_evaluations = start.limit_evaluations + cache.counters.limit_evaluations - cache_start.limit_evaluations;
+    c.normal_solves = start.normal_solves + cache.counters.normal_solves - cache_start.normal_solves;
+    c.tangential_solves = start.tangential_solves + cache.counters.tangential_solves - cache_start.tangential_solves;
+  }
+  // the life's counters, the current segment's integration having counted steps, rhs_evals and rejected
+  LifeCounters at(const WearCache& cache, long steps, long rhs_evals, long rejected) const {
+    LifeCounters c;
+    c.steps = segment_start.steps + steps;
+    c.rejected = segment_start.rejected + rejected;
+    c.rhs_evals = segment_start.rhs_evals + std::max(0L, rhs_evals - repeated_evals);
+    add_solves(c, cache);
+    return c;
+  }
+  void begin_segment(const LifeCounters& life) {
+    segment_start = life;
+    repeated_evals = life.rhs_evals > 0 ? 1 : 0;
+  }
+};
+
+// what run_life works with: the model, the case, the caller's hooks, the cache and the life's counters
+struct LifeRun {
+  const WearModel& m;
+  const WearCase& c;
+  const LifeHooks& hooks;
+  WearCache& cache;
+  LifeTally tally;
+};
+
+// how the life ended, in words
+struct LifeEnding {
+  LifeEnd why = LifeEnd::NotRun;
+  std::string message;
+};
+
+// the life ends here: why, in words, and the contact at its end
+LifeResult& end_life(LifeRun& run, LifeResult& life, const LifeEnding& ending) {
+  life.ended_by = ending.why;
+  life.message = ending.message;
+  life.contact = wear_rate(run.m, life.state, run.cache).contact;
+  run.tally.add_solves(life.counters, run.cache);
+  if (ending.why == LifeEnd::Edge)
+    spdlog::info("wear: the contact has spread to the edge of the narrower body at {:.6g} revolutions (step {}); "
+                 "the life ends there (wear.limits.edge)",
+                 life.N, life.counters.steps);
+  return life;
+}
+
+// the integrator's status as the life's end (Kind::ReachedEnd: none, the life goes on)
+std::optional<LifeEnd> life_end_of(const IntegratorResult& r) {
+  switch (r.status.kind) {
+    case IntegratorStatus::Kind::ReachedEnd: return std::nullopt;
+    case IntegratorStatus::Kind::RootFound: return kLimitEnds[r.status.roots.front()];
+    case IntegratorStatus::Kind::Stopped: return LifeEnd::Stopped;
+    case IntegratorStatus::Kind::MaxSteps: return LifeEnd::MaxSteps;
+    case IntegratorStatus::Kind::Failed: return LifeEnd::Failed;
+  }
+  return LifeEnd::Failed;
+}
+
+}  // namespace
+
+std::string to_string(LifeEnd e) {
+  for (const auto& [end, word] : kLifeEndWords)
+    if (end == e) return word;
+  return "not_run";
+}
+
+LifeEnd parse_life_end(const std::string& word) {
+  std::string valid;
+  for (const auto& [end, w] : kLifeEndWords) {
+    if (word == w) return end;
+    valid += (valid.empty() ? "" : ", ") + std::string(w);
+  }
+  throw std::invalid_argument(fmt::format("'{}' is not how a life ends (one of {})", word, valid));
+}
+
+std::string to_string(LifeFailure f) {
+  switch (f) {
+    case LifeFailure::None: return "none";
+    case LifeFailure::Integrator: return "integrator";
+    case LifeFailure::UnresolvedContact: return "unresolved_contact";
+    case LifeFailure::WornThrough: return "worn_through";
+  }
+  return "none";
+}
+
+namespace {
+
+// a limit already reached where the life starts (a resumed run, or an unworn contact at the edge)
+std::optional<LifeEnding> limit_reached_at_start(LifeRun& run, const LifeResult& life) {
+  const Eigen::VectorXd g = limit_values(run.m, life.state, run.cache);
+  for (int k = 0; k < kLimits; ++k)
+    if (g(k) >= 0)
+      return LifeEnding{kLimitEnds[k], fmt::format("{} reached at the start, N {:.10g}", to_string(kLimitEnds[k]),
+                                                   life.N)};
+  return std::nullopt;
+}
+
+// The wear from life.N to N_end, step by step (each reported to the hooks with the life's counters),
+// up to N_end or the first limit, located. Returns how the life ended in it, or nothing at N_end. The
+// worn geometry ending the life (a contact the strips cannot resolve, a body worn through) ends it at
+// its last accepted step, failed.
+std::optional<LifeEnding> wear_until(LifeRun& run, double N_end, LifeResult& life) {
+  const WearModel& m = run.m;
+  WearCache& cache = run.cache;
+  IntegratorOptions options = integrator_options(run.c.wear.stepping);
+  options.initial_step = life.next_step;
+  options.max_steps = run.c.wear.stepping.max_steps - life.counters.steps;
+  if (options.max_steps <= 0)
+    return LifeEnding{LifeEnd::MaxSteps, fmt::format("max_steps {} reached", run.c.wear.stepping.max_steps)};
+  run.tally.begin_segment(life.counters);
+
+  // dh/dN = f(h), the limits g(h), and each accepted step, kept as the last accepted state
+  const Rhs f = [&](double, const Eigen::VectorXd& h, Eigen::VectorXd& dhdN) {
+    dhdN = wear_rate(m, h, cache).dstate_dN;
+  };
+  const Roots roots = [&](double, const Eigen::VectorXd& h, Eigen::VectorXd& g) { g = limit_values(m, h, cache); };
+  LifeStart last{life.N, life.state, life.next_step, life.counters};
+  const OnStep on_step = [&](const StepInfo& info, const Eigen::VectorXd& h) {
+    LifeStep s;
+    s.N = info.N;
+    s.state = &h;
+    s.contact = wear_rate(m, h, cache).contact;
+    s.counters = run.tally.at(cache, info.steps, info.rhs_evals, info.rejected);
+    s.step = s.counters.steps;
+    s.info = info;
+    s.info.steps = s.counters.steps;
+    s.info.rhs_evals = s.counters.rhs_evals;
+    s.info.rejected = s.counters.rejected;
+    last = {s.N, h, info.next_step, s.counters};
+    return run.hooks.on_step ? run.hooks.on_step(s) : true;
+  };
+
+  IntegratorResult r;
+  try {
+    r = integrate(f, roots, kLimits, life.N, life.state, N_end, options, on_step);
+  } catch (const std::exception& e) {
+    const LifeFailure failure = geometry_failure(e);
+    if (failure == LifeFailure::None) throw;
+    life.N = last.N;
+    life.state = last.state;
+    life.counters = last.counters;
+    life.failure = failure;
+    spdlog::warn("wear: {}; the life ends at N {:.10g}, its last accepted step", e.what(), life.N);
+    return LifeEnding{LifeEnd::Failed, fmt::format("ended at N {:.10g}, the last accepted step: {}", life.N, e.what())};
+  }
+  life.N = r.N;
+  life.state = r.h_m;
+  life.counters = run.tally.at(cache, r.steps, r.rhs_evals, r.rejected);
+  if (r.next_step > 0) life.next_step = r.next_step;
+
+  const std::optional<LifeEnd> end = life_end_of(r);
+  if (!end) return std::nullopt;
+  if (*end == LifeEnd::Failed) life.failure = LifeFailure::Integrator;
+  if (r.status.kind != IntegratorStatus::Kind::RootFound) return LifeEnding{*end, r.status.message};
+  return LifeEnding{*end, fmt::format("{} reached at N {:.10g}, in step {}", to_string(*end), life.N,
+                                      life.counters.steps)};
+}
+
+// the worn profiles at a snapshot revolution, for the caller to write
+void take_snapshot(const LifeRun& run, double N_end, const LifeResult& life) {
+  const std::vector<double>& snapshots = run.c.wear.snapshots_revolutions;
+  if (run.hooks.on_snapshot && std::find(snapshots.begin(), snapshots.end(), N_end) != snapshots.end())
+    run.hooks.on_snapshot(life.N, life.state);
 }
 
 }  // namespace
 
 LifeResult run_life(const WearModel& m, const WearCase& c, const LifeStart& start, const LifeHooks& hooks,
                     WearCache& cache) {
+  LifeRun run{m, c, hooks, cache, LifeTally{start.counters, cache.counters, start.counters, 0}};
+
+  // where the life starts: the unworn state, or a checkpoint's state and counters
   LifeResult life;
   life.N = start.N;
   life.state = start.state.size() ? start.state : initial_state(m);
   life.next_step = start.next_step;
-  life.steps = start.steps;
-  life.rhs_evals = start.rhs_evals;
-  life.rejected = start.rejected;
-
-  // the lifetime limits as event functions g_k(N, h): a sign change ends the life
-  const auto limit_values = [&](const Eigen::VectorXd& h, Eigen::VectorXd& g) {
-    g.resize(kLimits);
-    g(kDepth) = m.limits.max_depth_m > 0 ? max_depth_m(m, h) - m.limits.max_depth_m : -1;
-    const bool need_normal = m.limits.max_pressure_Pa > 0 || m.limits.edge;
-    const NormalState n = need_normal ? normal_state(m, h, cache) : NormalState{};
-    g(kPressure) = m.limits.max_pressure_Pa > 0 ? n.normal.patch.p0_Pa - m.limits.max_pressure_Pa : -1;
-    g(kEdge) = m.limits.edge ? -n.edge_margin_m : -1;
-  };
-  const auto end_with = [&](const char* why, const std::string& message) {
-    life.ended_by = why;
-    life.message = message;
-    life.contact = wear_rate(m, life.state, cache).contact;
-    return life;
-  };
+  life.counters = start.counters;
 
   // the worn body's profile must resolve the contact: its nodes carry the wear
-  check_profile_resolves_contact(m, normal_state(m, life.state, cache));
+  check_profile_resolves_contact(m, solved_normal_state(m, life.state, cache));
+  if (const std::optional<LifeEnding> reached = limit_reached_at_start(run, life)) return end_life(run, life, *reached);
 
-  // a limit already reached (a resumed run, or an unworn contact at the edge)
-  Eigen::VectorXd g0;
-  limit_values(life.state, g0);
-  for (int k = 0; k < kLimits; ++k)
-    if (g0(k) >= 0)
-      return end_with(kLimitNames[k], fmt::format("{} reached at the start, N {:.10g}", kLimitNames[k], life.N));
-
-  const Rhs f = [&](double, const Eigen::VectorXd& h, Eigen::VectorXd& dhdN) {
-    dhdN = wear_rate(m, h, cache).dstate_dN;
-  };
-  const Roots roots = [&](double, const Eigen::VectorXd& h, Eigen::VectorXd& g) { limit_values(h, g); };
-
-  // the segments: up to each snapshot revolution, then to the budget
-  std::vector<double> ends;
-  for (double N : c.wear.snapshots_revolutions)
-    if (N > life.N) ends.push_back(N);
-  if (ends.empty() || ends.back() < c.wear.revolutions) ends.push_back(c.wear.revolutions);
-
-  IntegratorOptions options = integrator_options(c.wear.stepping);
-  for (double N_end : ends) {
-    options.initial_step = life.next_step;
-    options.max_steps = c.wear.stepping.max_steps - life.steps;
-    if (options.max_steps <= 0) return end_with("max_steps", fmt::format("max_steps {} reached", c.wear.stepping.max_steps));
-    const long steps0 = life.steps, rhs0 = life.rhs_evals, rejected0 = life.rejected;
-    LifeStart last{life.N, life.state, 0, life.steps, life.rhs_evals, life.rejected};  // the last accepted step
-    const OnStep on_step = [&](const StepInfo& info, const Eigen::VectorXd& h) {
-      LifeStep s;
-      s.step = steps0 + info.steps;
-      s.N = info.N;
-      s.state = &h;
-      s.info = info;
-      s.info.steps = s.step;
-      s.info.rhs_evals = rhs0 + info.rhs_evals;
-      s.info.rejected = rejected0 + info.rejected;
-      s.contact = wear_rate(m, h, cache).contact;
-      last = {s.N, h, s.info.next_step, s.step, s.info.rhs_evals, s.info.rejected};
-      return hooks.on_step ? hooks.on_step(s) : true;
-    };
-    IntegratorResult r;
-    try {
-      r = integrate(f, roots, kLimits, life.N, life.state, N_end, options, on_step);
-    } catch (const std::exception& e) {
-      // a contact the strips cannot resolve, or a body worn through, ends the life at its last accepted
-      // step, status failed
-      if (!ends_life(e)) throw;
-      life.N = last.N;
-      life.state = last.state;
-      life.steps = last.steps;
-      life.rhs_evals = last.rhs_evals;
-      life.rejected = last.rejected;
-      spdlog::warn("wear: {}; the life ends at N {:.10g}, its last accepted step", e.what(), life.N);
-      return end_with("failed", fmt::format("ended at N {:.10g}, the last accepted step: {}", life.N, e.what()));
-    }
-    life.N = r.N;
-    life.state = r.h_m;
-    life.steps = steps0 + r.steps;
-    life.rhs_evals = rhs0 + r.rhs_evals;
-    life.rejected = rejected0 + r.rejected;
-    if (r.next_step > 0) life.next_step = r.next_step;
-    switch (r.status.kind) {
-      case IntegratorStatus::Kind::ReachedEnd: {
-        const auto& snaps = c.wear.snapshots_revolutions;
-        if (hooks.on_snapshot && std::find(snaps.begin(), snaps.end(), N_end) != snaps.end())
-          hooks.on_snapshot(life.N, life.state);
-        break;
-      }
-      case IntegratorStatus::Kind::RootFound:
-        return end_with(kLimitNames[r.status.roots.front()],
-                        fmt::format("{} reached at N {:.10g} ({})", kLimitNames[r.status.roots.front()], r.N,
-                                    r.status.message));
-      case IntegratorStatus::Kind::Stopped: return end_with("stopped", r.status.message);
-      case IntegratorStatus::Kind::MaxSteps: return end_with("max_steps", r.status.message);
-      case IntegratorStatus::Kind::Failed: return end_with("failed", r.status.message);
-    }
+  // wear through each snapshot revolution, then to the budget: a limit, or a failure, ends the life
+  for (const double N_end : segment_ends(c, life.N)) {
+    if (const std::optional<LifeEnding> ending = wear_until(run, N_end, life)) return end_life(run, life, *ending);
+    take_snapshot(run, N_end, life);
   }
-  return end_with("revolutions", fmt::format("the life budget wear.revolutions = {:.10g} reached with no limit",
-                                             c.wear.revolutions));
+  return end_life(run, life,
+                  {LifeEnd::Revolutions, fmt::format("the life budget wear.revolutions = {:.10g} reached with no limit",
+                                                     c.wear.revolutions)});
 }
 
 }  // namespace wear

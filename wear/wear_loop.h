@@ -83,7 +83,8 @@ struct ContactReport {
   double a_m = 0, b_m = 0, p0_Pa = 0;
   double Fx_N = 0;        // steady: the creep force; transient: at the end of the duty cycle
   double power_W = 0;     // mean dissipated power over the duty cycle
-  double edge_margin_m = 0;
+  double edge_margin_m = 0;  // lateral, 0 once the contact reaches the edge
+  double edge_limit_m = 0;   // edge_limit_value_m: < 0 inside, > 0 past the edge (the edge limit's function)
   std::string normal_solver;  // hertz (constant curvature) or semi-hertz
 };
 
@@ -96,11 +97,18 @@ struct WearRate {
   ContactReport contact;
 };
 
-// counts of the solver calls (the benchmark reports them)
-struct WearCounters {
-  long normal_solves = 0;
-  long tangential_solves = 0;   // steady solves or Satran duty cycles
-  long rate_evaluations = 0;    // evaluations of f, cached or not
+// A life's counters, in one place: what the integrator did (steps, rejected steps, evaluations of f)
+// and what the evaluations cost (solves). A resumed run starts from the checkpoint's counters, so every
+// count covers the whole life, all processes of a resumed run included (docs/wear-loop.md, "Counters").
+struct LifeCounters {
+  long steps = 0;              // accepted steps (the step a limit cut short included)
+  long rejected = 0;           // steps that failed the error test (adaptive) or were halved (fixed)
+  long rhs_evals = 0;          // evaluations of f the integrator made; a continuation's first one, at the
+                               // state the last step already evaluated, is not counted again
+  long rate_evaluations = 0;   // calls of wear_rate, cached or not (integrator, limits, report rows)
+  long limit_evaluations = 0;  // evaluations of the limit functions (root finding's probes included)
+  long normal_solves = 0;      // normal problems solved (cache misses)
+  long tangential_solves = 0;  // steady solves or Satran duty cycles (cache misses)
 };
 
 // the last results, keyed by the worn profiles' hash (an unchanged profile is not solved again)
@@ -110,7 +118,8 @@ struct WearCache {
   bool normal_valid = false;
   NormalState normal;
   std::vector<std::pair<std::uint64_t, WearRate>> rates;  // the last few
-  WearCounters counters;
+  LifeCounters counters;  // only the solve and evaluation counts are kept here
+  bool edge_reported = false;  // the contact at the edge of a life without the edge limit: warned once
 };
 
 // Thrown by normal_state where the worn geometry ends the life: run_life ends it at its last accepted
@@ -130,6 +139,18 @@ struct WornThrough : LifeEndingGeometry {
 };
 
 NormalState normal_state(const WearModel& m, const Eigen::VectorXd& state, WearCache& cache);
+// normal_state as the wear loop uses it: the normal solver's own warnings held back, and reported from
+// its typed result instead (an unconverged approach at every solve; the contact at the edge once, as a
+// warning only when wear.limits.edge is off: with it on, that is the life's end, which run_life reports)
+NormalState solved_normal_state(const WearModel& m, const Eigen::VectorXd& state, WearCache& cache);
+
+// The edge limit as a signed, continuous function of the worn state (m of gap): the interpenetration
+// eps delta that bounds the contact (docs/semi-hertz.md) minus the gap at the nearer end of the profiles'
+// lateral overlap, both measured from the gap's minimum. Negative while the contact lies inside the
+// overlap, 0 where its edge reaches an end, positive once it would extend past one (the solver then cuts
+// it at the end: SemiHertzResult::reaches_edge). Unlike the lateral margin, it keeps changing past the
+// edge, so a root finder sees a sign change and locates the limit.
+double edge_limit_value_m(const contact::Profiles& worn, const contact::SemiHertzResult& normal);
 WearRate wear_rate(const WearModel& m, const Eigen::VectorXd& state, WearCache& cache);
 
 // what the state says: the largest depth over the wearing bodies, each body's worn volume
@@ -145,14 +166,15 @@ struct LifeStart {
   double N = 0;
   Eigen::VectorXd state;
   double next_step = 0;   // adaptive: the step to try first (a checkpoint's), 0 = ARKODE's estimate
-  long steps = 0, rhs_evals = 0, rejected = 0;  // counters so far
+  LifeCounters counters;  // so far (a checkpoint's)
 };
 
 struct LifeStep {
   long step = 0;              // accepted steps so far, over the whole life
   double N = 0;
   const Eigen::VectorXd* state = nullptr;
-  StepInfo info;              // this step (counters over the whole life)
+  StepInfo info;              // this step (its counters over the whole life)
+  LifeCounters counters;      // the life's, up to this step's end (a checkpoint stores them)
   ContactReport contact;      // at the step's end
 };
 
@@ -161,15 +183,38 @@ struct LifeHooks {
   std::function<void(double N, const Eigen::VectorXd& state)> on_snapshot;  // at each snapshot revolution
 };
 
+// what ended a life; the default is the pessimistic one
+enum class LifeEnd {
+  NotRun,       // run_life did not finish (default)
+  MaxDepth,     // wear.limits.max_depth_m reached (located)
+  MaxPressure,  // wear.limits.max_pressure_Pa exceeded (located)
+  Edge,         // the contact reached the end of the profiles' overlap (located)
+  Revolutions,  // the budget wear.revolutions, with no limit reached
+  MaxSteps,     // wear.stepping.max_steps
+  Stopped,      // on_step returned false
+  Failed,       // ARKODE gave up, or LifeEndingGeometry: the state is the last accepted step's
+};
+// why a life Failed (None for every other end)
+enum class LifeFailure {
+  None,
+  Integrator,         // ARKODE gave up (repeated error test failures, too much accuracy asked)
+  UnresolvedContact,  // wear::UnresolvedContact
+  WornThrough,        // wear::WornThrough
+};
+// the report's words: max_depth, max_pressure, edge, revolutions, max_steps, stopped, failed, not_run
+std::string to_string(LifeEnd e);
+// the inverse of to_string; throws std::invalid_argument naming the word and the valid ones
+LifeEnd parse_life_end(const std::string& word);
+std::string to_string(LifeFailure f);
+
 struct LifeResult {
-  // max_depth | max_pressure | edge | revolutions | max_steps | stopped | failed (ARKODE gave up, or
-  // LifeEndingGeometry: the state is then the last accepted step's, and the message says why)
-  std::string ended_by;
+  LifeEnd ended_by = LifeEnd::NotRun;
+  LifeFailure failure = LifeFailure::None;
   std::string message;
   double N = 0;
   Eigen::VectorXd state;
   double next_step = 0;
-  long steps = 0, rhs_evals = 0, rejected = 0;
+  LifeCounters counters;  // over the whole life (a resumed run's start included)
   ContactReport contact;  // at the end
 };
 

@@ -19,7 +19,7 @@ using contact::kPi;
 
 namespace {
 
-constexpr const char* kCheckpointMagic = "rollwear-wear-checkpoint 1";
+constexpr const char* kCheckpointMagic = "rollwear-wear-checkpoint 2";  // 2: the life's counters
 
 std::string g17(double v) { return fmt::format("{:.17g}", v); }
 
@@ -88,7 +88,8 @@ std::string wear_report_text(const WearModel& m, const WearReport& r) {
   const LifeResult& l = r.life;
   std::string s;
   s += fmt::format("case: {}\n", r.case_name);
-  s += fmt::format("ended_by: {}\n", l.ended_by);
+  s += fmt::format("ended_by: {}\n", to_string(l.ended_by));
+  if (l.failure != LifeFailure::None) s += fmt::format("failure: {}\n", to_string(l.failure));
   s += fmt::format("message: {}\n", l.message);
   s += fmt::format("revolutions: {}\n", g17(l.N));
   s += fmt::format("hours: {}\n", g17(l.N * r.hours_per_revolution));
@@ -100,8 +101,10 @@ std::string wear_report_text(const WearModel& m, const WearReport& r) {
   s += fmt::format("p0_Pa: {}\n", g17(l.contact.p0_Pa));
   s += fmt::format("a_m: {}\nb_m: {}\n", g17(l.contact.a_m), g17(l.contact.b_m));
   s += fmt::format("normal_solver: {}\n", l.contact.normal_solver);
-  s += fmt::format("steps: {}\nrejected_steps: {}\nrhs_evals: {}\n", l.steps, l.rejected, l.rhs_evals);
-  s += fmt::format("normal_solves: {}\ntangential_solves: {}\n", r.counters.normal_solves, r.counters.tangential_solves);
+  const LifeCounters& n = l.counters;
+  s += fmt::format("steps: {}\nrejected_steps: {}\nrhs_evals: {}\n", n.steps, n.rejected, n.rhs_evals);
+  s += fmt::format("rate_evaluations: {}\nlimit_evaluations: {}\n", n.rate_evaluations, n.limit_evaluations);
+  s += fmt::format("normal_solves: {}\ntangential_solves: {}\n", n.normal_solves, n.tangential_solves);
   s += fmt::format("resumed: {}\n", r.resumed ? "true" : "false");
   s += fmt::format("wall_s: {:.3f}\n", r.wall_s);
   return s;
@@ -122,7 +125,10 @@ std::string checkpoint_text(const Checkpoint& c) {
   t += fmt::format("case_hash {:016x}\n", c.case_hash);
   t += fmt::format("N {:a}\n", s.N);
   t += fmt::format("next_step {:a}\n", s.next_step);
-  t += fmt::format("steps {}\nrhs_evals {}\nrejected {}\n", s.steps, s.rhs_evals, s.rejected);
+  const LifeCounters& n = s.counters;
+  t += fmt::format("steps {}\nrhs_evals {}\nrejected {}\n", n.steps, n.rhs_evals, n.rejected);
+  t += fmt::format("rate_evaluations {}\nlimit_evaluations {}\n", n.rate_evaluations, n.limit_evaluations);
+  t += fmt::format("normal_solves {}\ntangential_solves {}\n", n.normal_solves, n.tangential_solves);
   t += fmt::format("snapshots_written {}\n", c.snapshots_written);
   t += fmt::format("wall_s {:a}\n", c.wall_s);
   t += fmt::format("state {}\n", s.state.size());
@@ -163,9 +169,15 @@ Checkpoint read_checkpoint(const std::filesystem::path& path) {
   c.case_hash = std::stoull(field("case_hash"), nullptr, 16);
   c.start.N = number(field("N"));
   c.start.next_step = number(field("next_step"));
-  c.start.steps = static_cast<long>(number(field("steps")));
-  c.start.rhs_evals = static_cast<long>(number(field("rhs_evals")));
-  c.start.rejected = static_cast<long>(number(field("rejected")));
+  LifeCounters& counts = c.start.counters;
+  const auto count = [&](const char* key) { return static_cast<long>(number(field(key))); };
+  counts.steps = count("steps");
+  counts.rhs_evals = count("rhs_evals");
+  counts.rejected = count("rejected");
+  counts.rate_evaluations = count("rate_evaluations");
+  counts.limit_evaluations = count("limit_evaluations");
+  counts.normal_solves = count("normal_solves");
+  counts.tangential_solves = count("tangential_solves");
   c.snapshots_written = static_cast<int>(number(field("snapshots_written")));
   c.wall_s = number(field("wall_s"));
   const long n = static_cast<long>(number(field("state")));

@@ -37,8 +37,7 @@ std::filesystem::path wear_snapshot_path(int index, int body);
 struct WearReport {
   std::string case_name;
   LifeResult life;
-  double hours_per_revolution = 0;
-  WearCounters counters;
+  double hours_per_revolution = 0;  // the counters are the life's (LifeResult::counters)
   double wall_s = 0;
   bool resumed = false;
 };

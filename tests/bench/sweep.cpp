@@ -405,14 +405,14 @@ wear::WearCase paper_wear(int n) {
 struct WearOutcome {
   double depth_m = 0, volume_m3 = 0;
   long steps = 0;
-  std::string ended_by;
+  wear::LifeEnd ended_by = wear::LifeEnd::NotRun;
 };
 
 WearOutcome run_wear(const wear::WearCase& c) {
   const wear::WearModel m = wear::make_wear_model(c);
   wear::WearCache cache;
   const wear::LifeResult life = wear::run_life(m, c, wear::LifeStart{}, wear::LifeHooks{}, cache);
-  return {wear::max_depth_m(m, life.state), wear::worn_volume_m3(m, life.state, 1), life.steps, life.ended_by};
+  return {wear::max_depth_m(m, life.state), wear::worn_volume_m3(m, life.state, 1), life.counters.steps, life.ended_by};
 }
 
 void wear_study(const Options& o, std::vector<Row>& rows) {
@@ -646,7 +646,7 @@ void skips_study(const Options& o, std::vector<Row>& rows) {
     // one evaluation on a worn state: a cache hit against a miss
     wear::WearCache warm;
     const wear::LifeResult worn = wear::run_life(m, c, wear::LifeStart{}, wear::LifeHooks{}, warm);
-    const wear::WearCounters counters = warm.counters;
+    const wear::LifeCounters counters = warm.counters;
     wear::wear_rate(m, worn.state, warm);
     add(skip_row("paper-wear", "reuse-rate", 80, true, "one wear-rate evaluation on the worn state: cache hit"),
         [&] { return wear::wear_rate(m, worn.state, warm).energy_per_revolution_J; });
@@ -656,10 +656,10 @@ void skips_study(const Options& o, std::vector<Row>& rows) {
           return wear::wear_rate(m, worn.state, cold).energy_per_revolution_J;
         });
     std::printf("    life to %.3g revolutions: %ld steps, %ld rate evaluations, %ld tangential solves, %ld normal solves\n",
-                c.wear.revolutions, worn.steps, counters.rate_evaluations, counters.tangential_solves,
+                c.wear.revolutions, worn.counters.steps, counters.rate_evaluations, counters.tangential_solves,
                 counters.normal_solves);
     // the life with the cache emptied after every accepted step (no reuse across steps) against the normal one
-    auto life = [&](bool clear, WearOutcome& out, wear::WearCounters& used) {
+    auto life = [&](bool clear, WearOutcome& out, wear::LifeCounters& used) {
       wear::WearCache cache;
       wear::LifeHooks hooks;
       if (clear)
@@ -669,12 +669,12 @@ void skips_study(const Options& o, std::vector<Row>& rows) {
           return true;
         };
       const wear::LifeResult l = wear::run_life(m, c, wear::LifeStart{}, hooks, cache);
-      out = {wear::max_depth_m(m, l.state), wear::worn_volume_m3(m, l.state, 1), l.steps, l.ended_by};
+      out = {wear::max_depth_m(m, l.state), wear::worn_volume_m3(m, l.state, 1), l.counters.steps, l.ended_by};
       used = cache.counters;
       return out.depth_m;
     };
     WearOutcome plain, cleared;
-    wear::WearCounters plain_counters, cleared_counters;
+    wear::LifeCounters plain_counters, cleared_counters;
     life(false, plain, plain_counters);
     life(true, cleared, cleared_counters);
     Row on = skip_row("paper-wear", "reuse-life", 80, true,

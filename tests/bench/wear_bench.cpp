@@ -16,21 +16,20 @@ void BM_PaperWearToDepthLimit(benchmark::State& state) {
   const wear::WearCase c = wear::read_wear_case(std::string(ROLLWEAR_SOURCE_DIR) + "/cases/paper-wear.yaml");
   const wear::WearModel m = wear::make_wear_model(c);
   wear::LifeResult life;
-  wear::WearCounters counters;
   for (auto _ : state) {
     wear::WearCache cache;  // a fresh run each time: nothing reused across lives
     life = wear::run_life(m, c, wear::LifeStart{}, wear::LifeHooks{}, cache);
-    counters = cache.counters;
     bench::keep(life.N);
   }
-  state.counters["steps"] = static_cast<double>(life.steps);
-  state.counters["rejected"] = static_cast<double>(life.rejected);
-  state.counters["rhs_evals"] = static_cast<double>(life.rhs_evals);
+  const wear::LifeCounters& counters = life.counters;
+  state.counters["steps"] = static_cast<double>(counters.steps);
+  state.counters["rejected"] = static_cast<double>(counters.rejected);
+  state.counters["rhs_evals"] = static_cast<double>(counters.rhs_evals);
   state.counters["normal_solves"] = static_cast<double>(counters.normal_solves);
   state.counters["tangential_solves"] = static_cast<double>(counters.tangential_solves);
   state.counters["revolutions"] = life.N;
   state.counters["max_depth_um"] = wear::max_depth_m(m, life.state) * 1e6;
-  state.SetLabel("ended by " + life.ended_by);
+  state.SetLabel("ended by " + wear::to_string(life.ended_by));
 }
 BENCHMARK(BM_PaperWearToDepthLimit)->Unit(benchmark::kMillisecond)->UseRealTime();
 
