@@ -163,6 +163,25 @@ TEST(DefectTwoLives, WornRollerWhereLobesMergeConverges) {
   EXPECT_EQ(warnings.count(), 0);
 }
 
+// An unconverged normal solve is never worn with: the life ends at its last accepted step, status
+// failed, the cause named. One evaluation of F(delta) cannot find the approach of the worn crown; before
+// the fix the life went on with the unconverged solves and a warning each.
+TEST(DefectTwoLives, UnconvergedNormalSolveEndsTheLife) {
+  WearCase c = read_wear_case((std::filesystem::path(ROLLWEAR_SOURCE_DIR) / "cases" / "paper-wear.yaml").string());
+  c.contact.solver.nx = c.contact.solver.ny = 20;
+  c.wear.revolutions = 1e8;
+  c.wear.snapshots_revolutions.clear();
+  WearModel m = make_wear_model(c);
+  m.normal_options.max_iterations = 1;  // the unworn crown is Hertz's closed form; worn, it needs more
+  WearCache cache;
+  const rollwear_test::ExpectWarnings warnings;  // the solver's and the life's end
+  const LifeResult life = run_life(m, c, LifeStart{}, LifeHooks{}, cache);
+  EXPECT_EQ(life.ended_by, "failed") << life.message;
+  EXPECT_NE(life.message.find("the normal problem did not converge"), std::string::npos) << life.message;
+  EXPECT_LT(life.N, c.wear.revolutions);
+  EXPECT_EQ(warnings.count(), 2);
+}
+
 INSTANTIATE_TEST_SUITE_P(PaperWear, DefectTwoLives,
                          testing::Values(Variant{"xi0", 0.0, 0.020, 0.0, 4e8}, Variant{"Rx1mm", 1e-3, 0.001, 0.0, 1.5e7},
                                          Variant{"spin50", 1e-3, 0.020, 50.0, 4e5}),
