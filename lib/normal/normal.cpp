@@ -58,8 +58,12 @@ void solve_on_halfspace(const NormalProblem& p, const SemiHertzResult& sh, Norma
     if (n.patch.half_length_m(j) > 0 && (j == 0 || !(n.patch.half_length_m(j - 1) > 0))) ++n.patches;
   const bool cut = half_y < kBoxMargin * (sh.contact_y_max_m - sh.contact_y_min_m) / 2;
   n.reaches_edge = sh.reaches_edge || (cut && (n.patch.half_length_m(0) > 0 || n.patch.half_length_m(grid.ny - 1) > 0));
+  // Failed is for geometry that cannot carry the load (a body narrower than the contact); the
+  // half-space's own Failed (a search direction lost, a non-finite residual) is a solve that did not
+  // converge
   n.status = s.status;
-  if (n.reaches_edge && n.status.converged()) {
+  if (n.status.kind == SolveStatus::Kind::Failed) n.status.kind = SolveStatus::Kind::MaxIterations;
+  if (n.reaches_edge) {
     n.status.kind = SolveStatus::Kind::Failed;
     n.status.message = "the contact reaches a body's edge; " + n.status.message;
   }
