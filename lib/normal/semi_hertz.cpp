@@ -622,6 +622,38 @@ std::string jump_text(const ApproachSearch& s) {
   return msg;
 }
 
+// the result's diagnostics and status from the root find: Converged, MaxIterations (with a warning),
+// or Failed where the contact reaches a body's edge (with a warning)
+void describe_approach(const ApproachSearch& search, int evaluations, const std::string& remedy,
+                       const SemiHertzOptions& options, const Gap& gap, const Profiles& profiles, SemiHertzResult& res) {
+  const Evaluation& ev = search.ev;
+  res.approach_m = ev.delta;
+  res.epsilon = ev.eps;
+  res.equivalent_B_per_m = ev.B_e;
+  res.reference_y_m = ev.y0;
+  res.patches = static_cast<int>(ev.runs.size());
+  res.reaches_edge = ev.reaches_edge;
+  res.contact_y_min_m = ev.runs.front().l;
+  res.contact_y_max_m = ev.runs.back().r;
+  res.status.iterations = evaluations;
+  res.status.residual = std::abs(search.residual);
+  char msg[200];
+  std::snprintf(msg, sizeof msg, "load residual %.1e %s tol %.1e after %d evaluations", std::abs(search.residual),
+                search.converged ? "<=" : ">", options.load_rtol, evaluations);
+  res.status.message = msg + remedy;
+  if (!search.converged && search.bracketed()) res.status.message += "; " + jump_text(search);
+  res.status.kind = search.converged ? SolveStatus::Kind::Converged : SolveStatus::Kind::MaxIterations;
+  if (!search.converged) spdlog::warn("semi-Hertz: approach not found: {}", res.status.message);
+  if (ev.reaches_edge) {
+    res.status.kind = SolveStatus::Kind::Failed;
+    res.status.message = "contact [" + num(res.contact_y_min_m) + ", " + num(res.contact_y_max_m) +
+                         "] m reaches the edge of the profiles' overlap [" + num(gap.y.front()) + ", " +
+                         num(gap.y.back()) + "] m (" + profiles.body1.source + ", " + profiles.body2.source +
+                         "): a body is narrower than the contact; " + res.status.message;
+    spdlog::warn("semi-Hertz: {}", res.status.message);
+  }
+}
+
 // The strips: grid over the contact's bounding box, each row carrying its load exactly.
 // Row j carries line_load_per_g times the integral of g_+ over the row, exactly: its mean
 // gbar_j of g_+ sets the load. The strip's half length is the midpoint's, a(y_j) = sqrt(g_j/A_mod),
@@ -750,32 +782,7 @@ SemiHertzResult solve_semi_hertz(const Profiles& profiles, double Rx1_m, double 
     evaluations += search.evaluations;
   }
   const Evaluation& ev = search.ev;
-
-  res.approach_m = ev.delta;
-  res.epsilon = ev.eps;
-  res.equivalent_B_per_m = ev.B_e;
-  res.reference_y_m = ev.y0;
-  res.patches = static_cast<int>(ev.runs.size());
-  res.reaches_edge = ev.reaches_edge;
-  res.contact_y_min_m = ev.runs.front().l;
-  res.contact_y_max_m = ev.runs.back().r;
-  res.status.iterations = evaluations;
-  res.status.residual = std::abs(search.residual);
-  char msg[200];
-  std::snprintf(msg, sizeof msg, "load residual %.1e %s tol %.1e after %d evaluations", std::abs(search.residual),
-                search.converged ? "<=" : ">", options.load_rtol, evaluations);
-  res.status.message = msg + remedy;
-  if (!search.converged && search.bracketed()) res.status.message += "; " + jump_text(search);
-  res.status.kind = search.converged ? SolveStatus::Kind::Converged : SolveStatus::Kind::MaxIterations;
-  if (!search.converged) spdlog::warn("semi-Hertz: approach not found: {}", res.status.message);
-  if (ev.reaches_edge) {
-    res.status.kind = SolveStatus::Kind::Failed;
-    res.status.message = "contact [" + num(res.contact_y_min_m) + ", " + num(res.contact_y_max_m) +
-                         "] m reaches the edge of the profiles' overlap [" + num(gap.y.front()) + ", " +
-                         num(gap.y.back()) + "] m (" + profiles.body1.source + ", " + profiles.body2.source +
-                         "): a body is narrower than the contact; " + res.status.message;
-    spdlog::warn("semi-Hertz: {}", res.status.message);
-  }
+  describe_approach(search, evaluations, remedy, options, gap, profiles, res);
 
   // the strips carry their rows' loads, scaled to carry F exactly
   ContactPatch& patch = res.patch;
