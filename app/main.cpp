@@ -105,7 +105,7 @@ void print_contact_summary(const ContactCase& c, const NormalSolution& normal, c
   const ContactPatch& patch = normal.patch;
   fmt::print("case {} ({}), {} x {} grid, {} scheme\n", c.name, c.path, patch.grid.nx, patch.grid.ny,
              to_string(scheme));
-  fmt::print("  normal solver      {} ({})\n", normal.solver, normal.reason);
+  fmt::print("  normal solver      {} ({})\n", to_string(normal.solver), normal.reason);
   fmt::print("  contact patches    {}\n", normal.patches);
   if (normal.reaches_edge)
     fmt::print("  warning: the contact reaches a body's edge (the end of a profile); it is cut there\n");

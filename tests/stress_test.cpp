@@ -879,7 +879,8 @@ void semi_hertz_case(Rng& r, const std::string& tag, SemiHertzTally& t, bool str
   patches2 += s.patches > 1;
   // finding 6: the root find of F(delta) = load converges, also where the contact reaches a body's
   // edge (status Failed for the edge, and its one warning), but where F(delta) itself jumps across the
-  // load (6b, when two lobes of contact merge: counted, StressSemiHertz.DISABLED_RootFindConvergesWhereLobesMerge).
+  // load (6b, when two lobes of contact merge: fixed by the continuous rule, StressSemiHertz.RootFindConvergesWhereLobesMerge;
+  // a jump that remains is counted).
   // There the bracket has closed on the jump and the status says so, with a warning.
   const bool jump = s.status.residual > SemiHertzOptions{}.load_rtol;
   if (jump) {
@@ -960,14 +961,14 @@ TEST(StressSemiHertz, RootFindConvergesOnSmoothProfiles) {
   }
 }
 
-// Finding 6b (docs/stress-suite.md): where two lobes of contact merge through a neck, the reference
-// point (the centroid of g_+ over the patch holding the gap's minimum) jumps from one lobe's centroid
-// into the neck, where g -> 0, and F(delta) jumps across the load: no approach carries it. Case 7103
-// (crown Ry 0.222 m worn flat over +-6.3 mm, 21.6 mm wide, on a concave path R -3.48 m, Rx1 0.0583 m,
-// Rx2 0.113 m, 979 N, 14 x 43): F(delta)/F - 1 jumps from -0.17 to +0.46 at delta = 7.92 um. The root
-// find now closes its bracket on the jump and says so (status MaxIterations and a warning). Rerun with
-// ROLLWEAR_STRESS_CASE=7103 --gtest_filter='StressSemiHertz.*'. Enable when fixed.
-TEST(StressSemiHertz, DISABLED_RootFindConvergesWhereLobesMerge) {
+// Finding 6b (docs/stress-suite.md), fixed: where two lobes of contact merge through a neck, the
+// reference point (the centroid of g_+ over the patch holding the gap's minimum) jumped from one lobe's
+// centroid into the neck, where g -> 0, and F(delta) jumped across the load: no approach carried it.
+// Case 7103 (crown Ry 0.222 m worn flat over +-6.3 mm, 21.6 mm wide, on a concave path R -3.48 m, Rx1
+// 0.0583 m, Rx2 0.113 m, 979 N, 14 x 43): F(delta)/F - 1 jumped from -0.17 to +0.46 at delta = 7.92 um.
+// The root find now starts again from the bracket by the continuous rule (semi_hertz.h) and converges;
+// this test failed before. Rerun with ROLLWEAR_STRESS_CASE=7103 --gtest_filter='StressSemiHertz.*'.
+TEST(StressSemiHertz, RootFindConvergesWhereLobesMerge) {
   Rng r(4504698901862353341ull);  // the sweep's case 7103 (valid while the generator is unchanged)
   SemiHertzTally t;
   semi_hertz_case(r, "[case seed 4504698901862353341]", t, true);

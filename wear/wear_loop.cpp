@@ -170,34 +170,43 @@ NormalState normal_state(const WearModel& m, const Eigen::VectorXd& state, WearC
                                     body, depth_m, p->y_m(deepest), width_m));
   }
 
-  // normal problem on the current worn geometry: Hertz while unworn profiles have constant curvature,
-  // semi-Hertz once anything is worn (never back: the switch is a jump in f of up to 6.4e-4,
-  // docs/semi-hertz.md, which the step control would meet at every crossing)
-  const bool unworn = m.n1 + m.n2 == 0 || state.head(m.n1 + m.n2).isZero(0);
+  // normal problem on the current worn geometry (contact::solve_normal chooses: Hertz while the unworn
+  // profiles have constant curvature, semi-Hertz once anything is worn)
+  contact::NormalProblem problem;
+  problem.choice = m.semi_hertz_always ? contact::NormalChoice::SemiHertz : contact::NormalChoice::Auto;
+  problem.bodies = {{m.Rx1_m, contact::kFlat}, {m.Rx2_m, contact::kFlat}};
+  problem.profiles = &profiles;
+  problem.worn = !(m.n1 + m.n2 == 0 || state.head(m.n1 + m.n2).isZero(0));
+  problem.pair = m.materials;
+  problem.normal_load_N = m.normal_load_N;
+  problem.grid = m.grid;
+  problem.semi_hertz = m.normal_options;
   NormalState n;
-  contact::GridSpec grid = m.grid;
   for (int refinement = 0;; ++refinement) {
     try {
-      n.normal = m.semi_hertz_always || !unworn
-                     ? contact::solve_semi_hertz(profiles, m.Rx1_m, m.Rx2_m, m.materials, m.normal_load_N, grid,
-                                                 m.normal_options)
-                     : contact::solve_normal_on_profiles(profiles, m.Rx1_m, m.Rx2_m, m.materials, m.normal_load_N,
-                                                         grid, m.normal_options, contact::kCaseCurvatureRtol);
+      const contact::NormalSolution s = contact::solve_normal(problem);
+      n.normal = s.on_profiles;
+      n.solver = s.solver;
       break;
-    } catch (const std::invalid_argument& e) {
+    } catch (const contact::NoStripCentreError& e) {
       // a worn profile can split the contact into narrow patches that no strip centre of the case's grid
       // hits: twice the strips, up to 8 times (the wear maps from any strips onto the nodes)
-      if (std::string(e.what()).find("no strip centre lies in the contact") == std::string::npos) throw;
       if (refinement == 3)
         throw UnresolvedContact(fmt::format(
             "the worn contact splits into patches that no strip centre hits, even with {} strips ({}): the strips "
             "cannot carry its load (docs/stress-suite.md, finding 7); wear.smoothing_wavelength_m of about a strip's "
             "width spreads the sharp steps of the worn profile where such patches form",
-            grid.ny, e.what()));
-      grid.ny *= 2;
-      spdlog::debug("wear: {}; solving again with ny = {}", e.what(), grid.ny);
+            problem.grid.ny, e.what()));
+      problem.grid.ny *= 2;
+      spdlog::debug("wear: {}; solving again with ny = {}", e.what(), problem.grid.ny);
     }
   }
+  // no approach carries the load (the semi-Hertzian root find, remedy included, did not converge): no
+  // result to wear with; the life ends at its last accepted step (a contact cut at a body's edge is the
+  // edge limit's, below, but only once its approach carries the load)
+  if (n.normal.status.kind == contact::SolveStatus::Kind::MaxIterations ||
+      !(n.normal.status.residual <= m.normal_options.load_rtol))
+    throw NormalNotConverged(fmt::format("the normal problem did not converge: {}", n.normal.status.message));
   // the lifetime's edge limit: how far the contact is from the end of the profiles' overlap
   const double lo = std::max(profiles.body1.y_m(0), profiles.body2.y_m(0));
   const double hi = std::min(profiles.body1.y_m(profiles.body1.y_m.size() - 1),
@@ -226,41 +235,10 @@ double edge_limit_value_m(const contact::Profiles& worn, const contact::SemiHert
   return bound_m - (std::min(gap(lo), gap(hi)) - gap_min);
 }
 
-namespace {
-
-// The normal solver warns at every solve where the contact reaches the profiles' edge, an event the
-// edge limit ends the life at (reported once, by run_life) and that root finding probes on both sides.
-// While the wear loop solves, the default logger's warnings are held back (at the info and warn levels;
-// debug and trace show everything), and the wear loop reports from the typed result instead: an
-// unconverged approach as a warning at every solve, the contact at the edge of a life without the edge
-// limit once.
-class NormalSolverWarningsHeld {
- public:
-  NormalSolverWarningsHeld() : logger_(spdlog::default_logger_raw()), level_(logger_->level()) {
-    if (level_ == spdlog::level::info || level_ == spdlog::level::warn) logger_->set_level(spdlog::level::err);
-  }
-  ~NormalSolverWarningsHeld() { logger_->set_level(level_); }
-  NormalSolverWarningsHeld(const NormalSolverWarningsHeld&) = delete;
-  NormalSolverWarningsHeld& operator=(const NormalSolverWarningsHeld&) = delete;
-
- private:
-  spdlog::logger* logger_;
-  spdlog::level::level_enum level_;
-};
-
-}  // namespace
-
 NormalState solved_normal_state(const WearModel& m, const Eigen::VectorXd& state, WearCache& cache) {
   const long solves = cache.counters.normal_solves;
-  NormalState n;
-  {
-    const NormalSolverWarningsHeld held;
-    n = normal_state(m, state, cache);
-  }
+  const NormalState n = normal_state(m, state, cache);
   if (cache.counters.normal_solves == solves) return n;  // from the cache: reported when it was solved
-  if (n.normal.status.residual > m.normal_options.load_rtol)
-    spdlog::warn("wear: the normal problem's approach was not found (load residual {:.1e} > tol {:.1e}): {}",
-                 n.normal.status.residual, m.normal_options.load_rtol, n.normal.status.message);
   if (n.normal.reaches_edge && !m.limits.edge && !cache.edge_reported) {
     cache.edge_reported = true;
     spdlog::warn("wear: the contact reaches the end of the profiles' overlap (a body is narrower than the contact) "
@@ -308,7 +286,7 @@ WearRate wear_rate(const WearModel& m, const Eigen::VectorXd& state, WearCache& 
   r.contact.power_W = duty.duration_s > 0 ? duty.dissipated_J / duty.duration_s : 0;
   r.contact.edge_margin_m = n.edge_margin_m;
   r.contact.edge_limit_m = edge_limit_value_m(worn, n.normal);
-  r.contact.normal_solver = n.normal.status.message.rfind("constant curvature", 0) == 0 ? "hertz" : "semi-hertz";
+  r.contact.normal_solver = contact::to_string(n.solver);
 
   if (cache.rates.size() >= kCachedRates) cache.rates.erase(cache.rates.begin());
   cache.rates.emplace_back(key, r);

@@ -27,6 +27,7 @@
 
 #include "lib/normal/profile.h"
 #include "lib/tangential/satran.h"
+#include "lib/normal/normal.h"
 #include "lib/normal/semi_hertz.h"
 #include "lib/tangential/tangential.h"
 #include "wear/integrator.h"
@@ -75,6 +76,7 @@ contact::Profiles worn_profiles(const WearModel& m, const Eigen::VectorXd& state
 // the normal problem on worn profiles, and what the lifetime limits read from it
 struct NormalState {
   contact::SemiHertzResult normal;
+  contact::NormalSolverKind solver = contact::NormalSolverKind::SemiHertz;  // the solver that ran
   double edge_margin_m = 0;  // lateral distance from the contact to the nearest end of the profiles' overlap
 };
 
@@ -135,6 +137,11 @@ struct UnresolvedContact : LifeEndingGeometry {
   using LifeEndingGeometry::LifeEndingGeometry;
 };
 struct WornThrough : LifeEndingGeometry {
+  using LifeEndingGeometry::LifeEndingGeometry;
+};
+//   NormalNotConverged: no approach carries the load on the worn geometry (semi_hertz.h's root find,
+//     its remedy for lobes merging included, ended with status MaxIterations).
+struct NormalNotConverged : LifeEndingGeometry {
   using LifeEndingGeometry::LifeEndingGeometry;
 };
 

@@ -11,7 +11,6 @@
 
 #include <spdlog/spdlog.h>
 
-#include "lib/normal/halfspace.h"
 #include "lib/normal/semi_hertz.h"
 #include "lib/io/yaml_reader.h"
 
@@ -438,89 +437,28 @@ GridSpec grid_of(const ContactCase& c) {
 }
 
 NormalSolution solve_normal_of(const ContactCase& c) {
+  NormalProblem problem;
+  problem.choice = parse_normal_choice(c.solver.normal);  // validated when read
+  problem.bodies = {{c.bodies.body1.Rx_m, c.bodies.body1.Ry_m}, {c.bodies.body2.Rx_m, c.bodies.body2.Ry_m}};
+  if (c.profiles) {
+    problem.profiles = &c.profiles->profiles;
+    problem.semi_hertz.heathcote_slip = c.profiles->heathcote_slip;
+  }
+  problem.pair = materials_of(c);
+  problem.normal_load_N = normal_load_of(c);
+  problem.grid = grid_of(c);
+  problem.curvature_rtol = kCaseCurvatureRtol;
   NormalSolution n;
-  const ElasticPair pair = materials_of(c);
-  const double F = normal_load_of(c);
-  const GridSpec spec = grid_of(c);
-
-  // no profiles: Hertz from the four radii
-  if (!c.profiles) {
-    n.patch = solve_normal_hertz(bodies_of(c), pair, F, spec);
-    n.solver = "hertz";
-    n.reason = "solver.normal " + c.solver.normal + ", no profiles: Hertz from the radii";
-    return n;
+  try {
+    n = solve_normal(problem);
+  } catch (const NormalChoiceError& e) {
+    throw CaseError(where(c, "solver.normal") + "solver.normal, profiles: " + e.what());
   }
-
-  const Profiles& profiles = c.profiles->profiles;
-  const double Rx1 = c.bodies.body1.Rx_m, Rx2 = c.bodies.body2.Rx_m;
-  SemiHertzOptions options;
-  options.heathcote_slip = c.profiles->heathcote_slip;
-  const auto take = [&](const SemiHertzResult& r) {
-    n.patch = r.patch;
-    n.patches = r.patches;
-    n.reaches_edge = r.reaches_edge;
-    n.grid_y0_m = r.grid_y0_m;
-  };
-  const auto by_hertz = [](const SemiHertzResult& r) {
-    return r.status.message.rfind("constant curvature", 0) == 0;
-  };
-
-  if (c.solver.normal == "auto" || c.solver.normal == "hertz") {
-    // Hertz on constant curvature (it says so in the log), else the semi-Hertzian solver
-    const SemiHertzResult r = solve_normal_on_profiles(profiles, Rx1, Rx2, pair, F, spec, options, kCaseCurvatureRtol);
-    if (c.solver.normal == "hertz" && !by_hertz(r))
-      throw CaseError(where(c, "solver.normal") + "solver.normal, profiles: Hertz's ellipse does not fit inside "
-                      "the profiles' overlap; use normal: auto, semi-hertz or halfspace");
-    take(r);
-    n.solver = by_hertz(r) ? "hertz" : "semi-hertz";
-    n.reason = c.solver.normal == "hertz" ? "solver.normal hertz, profiles of constant curvature"
-               : by_hertz(r)             ? "solver.normal auto: both profiles have constant curvature"
-                                         : "solver.normal auto: the profiles are not of constant curvature";
-    return n;
-  }
-
-  // the semi-Hertzian solution: the answer, or the halfspace solver's bounding box
-  const SemiHertzResult sh = solve_semi_hertz(profiles, Rx1, Rx2, pair, F, spec, options);
-  if (c.solver.normal == "semi-hertz") {
-    take(sh);
-    n.solver = "semi-hertz";
-    n.reason = "solver.normal semi-hertz";
-    return n;
-  }
-
-  // halfspace: the semi-Hertzian contact's bounding box enlarged by 25 %, within the profiles' overlap
-  constexpr double kBoxMargin = 1.25;
-  const double lo = std::max(profiles.body1.y_m(0), profiles.body2.y_m(0));
-  const double hi = std::min(profiles.body1.y_m(profiles.body1.y_m.size() - 1),
-                             profiles.body2.y_m(profiles.body2.y_m.size() - 1));
-  const double centre = (sh.contact_y_min_m + sh.contact_y_max_m) / 2;
-  const double half_y = std::min({kBoxMargin * (sh.contact_y_max_m - sh.contact_y_min_m) / 2, centre - lo, hi - centre});
-  const Grid grid = make_grid(kBoxMargin * sh.patch.grid.half_x_m, half_y, spec);
-
-  // gap: the profiles across, A x^2 along, zero at its minimum
-  const double A = (1 / Rx1 + 1 / Rx2) / 2;
-  Eigen::ArrayXXd gap(grid.nx, grid.ny);
-  for (int j = 0; j < grid.ny; ++j) {
-    const double y = centre + grid.y_m(j);
-    const double h = profile_z(profiles.body1, y) + profile_z(profiles.body2, y);
-    for (int i = 0; i < grid.nx; ++i) gap(i, j) = h + A * grid.x_m(i) * grid.x_m(i);
-  }
-  gap -= gap.minCoeff();
-
-  const HalfspaceSolution s = solve_halfspace(grid, gap, effective_modulus_Pa(pair), F);
-  if (s.status.kind != SolveStatus::Kind::Converged) spdlog::warn("normal problem (halfspace): {}", s.status.message);
-  n.patch = halfspace_patch(s, grid, F);
-  n.grid_y0_m = centre;
-  if (options.heathcote_slip)
-    n.patch.strip_xi_offset = heathcote_xi_offset(profiles, Rx1, Rx2, centre + grid.y_m, sh.reference_y_m);
-  // patches: runs of strips in contact; the edge: the semi-Hertzian contact's, or a loaded end strip of a cut box
-  n.patches = 0;
-  for (int j = 0; j < grid.ny; ++j)
-    if (n.patch.half_length_m(j) > 0 && (j == 0 || !(n.patch.half_length_m(j - 1) > 0))) ++n.patches;
-  const bool cut = half_y < kBoxMargin * (sh.contact_y_max_m - sh.contact_y_min_m) / 2;
-  n.reaches_edge = sh.reaches_edge || (cut && (n.patch.half_length_m(0) > 0 || n.patch.half_length_m(grid.ny - 1) > 0));
-  n.solver = "halfspace";
-  n.reason = "solver.normal halfspace, on the semi-Hertzian contact's box enlarged by 25 %";
+  // a contact cut at a body's edge is reported with the patch (reaches_edge); any other unconverged
+  // solve is no result
+  if (!n.status.converged() && !n.reaches_edge)
+    throw NormalSolveError(fmt::format("the normal problem ({}) did not converge: {}", to_string(n.solver),
+                                       n.status.message));
   return n;
 }
 

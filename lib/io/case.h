@@ -26,6 +26,7 @@
 #include "lib/elastic.h"
 #include "lib/grid.h"
 #include "lib/normal/hertz.h"
+#include "lib/normal/normal.h"
 #include "lib/history.h"
 #include "lib/patch.h"
 #include "lib/normal/profile.h"
@@ -143,19 +144,18 @@ inline const std::vector<std::string>& normal_solver_names() {
   static const std::vector<std::string> kNames = {"auto", "hertz", "semi-hertz", "halfspace"};
   return kNames;
 }
-// profiles of constant curvature within this (relative) tolerance are treated by Hertz (semi_hertz.h)
-constexpr double kCaseCurvatureRtol = 1e-3;
+// profiles of constant curvature within this (relative) tolerance are treated by Hertz (lib/normal/normal.h)
+constexpr double kCaseCurvatureRtol = kConstantCurvatureRtol;
 
-// the normal problem of a case as solver.normal asks
-struct NormalSolution {
-  ContactPatch patch;
-  std::string solver;         // the solver that ran: hertz | semi-hertz | halfspace
-  std::string reason;         // why that one ("solver.normal: auto, no profiles: Hertz from the radii")
-  int patches = 1;            // separate contact patches along y
-  bool reaches_edge = false;  // the contact reaches a body's edge (the end of the profiles' overlap)
-  double grid_y0_m = 0;       // profiles' y of the grid's y = 0 (strip j at grid_y0_m + grid.y_m(j))
+// A normal solve that did not converge (status MaxIterations, or the half-space's Failed): no result;
+// the command line ends with exit 1 and this message.
+struct NormalSolveError : std::runtime_error {
+  using std::runtime_error::runtime_error;
 };
-// throws CaseError for a case the solver named cannot treat; warns (spdlog) when the contact reaches an edge
+
+// the normal problem of a case as solver.normal asks (lib/normal/normal.h chooses; this only builds the
+// problem from the case). Throws CaseError for a case the solver named cannot treat, NormalSolveError
+// for a solve that did not converge; a contact reaching a body's edge comes back with reaches_edge.
 NormalSolution solve_normal_of(const ContactCase& c);
 
 // the steady values: throw CaseError naming the key if its history is not a constant

@@ -180,6 +180,9 @@ std::string size_text(Eigen::Index rows, Eigen::Index cols) {
   return std::to_string(rows) + " x " + std::to_string(cols);
 }
 
+// the pressure carries the load to rounding over the cells (it is rescaled to F at every iteration)
+constexpr double kLoadBalanceRtol = 1e-9;
+
 // where the loaded region ends beyond the centre of its outermost loaded cell, in cell widths, from
 // the values q at that cell and at its inner neighbour: q linear in the distance to the edge,
 // clamped to [0, 1] (the edge lies before the first unloaded cell's centre)
@@ -197,8 +200,10 @@ double rectangle_influence_m_per_Pa(double x_m, double y_m, double dx_m, double 
   return G / (kPi * Estar_Pa);
 }
 
-HalfspaceSolution solve_halfspace(const Grid& grid, const Eigen::ArrayXXd& gap_m, double Estar_Pa,
-                                  double normal_load_N, const HalfspaceOptions& opt) {
+namespace {
+
+void check_halfspace_inputs(const Grid& grid, const Eigen::ArrayXXd& gap_m, double Estar_Pa, double normal_load_N,
+                            const HalfspaceOptions& opt) {
   check_grid(grid, "halfspace");
   if (gap_m.rows() != grid.nx || gap_m.cols() != grid.ny)
     throw std::invalid_argument("halfspace: gap is " + size_text(gap_m.rows(), gap_m.cols()) + ", grid is " +
@@ -213,86 +218,77 @@ HalfspaceSolution solve_halfspace(const Grid& grid, const Eigen::ArrayXXd& gap_m
   if (opt.max_iterations < 1)
     throw std::invalid_argument("halfspace: max_iterations must be at least 1, got " +
                                 std::to_string(opt.max_iterations));
+}
 
-  const int nx = grid.nx, ny = grid.ny;
-  const double cell_m2 = grid.dx_m * grid.dy_m;
-  const double F = normal_load_N;
-  const Eigen::ArrayXXd& h = gap_m;
-  const double h_min = h.minCoeff();
-  HalfspaceWorkspace K(grid, Estar_Pa);
+// Polonsky & Keer's iteration (top of file), one stage per method: the state is the pressure p, the
+// displacement u = K p, the separation g and the conjugate direction t.
+class PolonskyKeer {
+ public:
+  PolonskyKeer(const Grid& grid, const Eigen::ArrayXXd& h, double Estar_Pa, double F)
+      : K_(grid, Estar_Pa), h_(h), cell_m2_(grid.dx_m * grid.dy_m), F_(F), h_min_(h.minCoeff()),
+        // start: the load spread evenly over the grid
+        p_(Eigen::ArrayXXd::Constant(grid.nx, grid.ny, F / (grid.nx * grid.ny * cell_m2_))),
+        u_(grid.nx, grid.ny), g_(grid.nx, grid.ny), t_(Eigen::ArrayXXd::Zero(grid.nx, grid.ny)), Kt_(grid.nx, grid.ny) {
+    K_.apply(p_, u_);
+  }
 
-  // start: the load spread evenly over the grid
-  Eigen::ArrayXXd p = Eigen::ArrayXXd::Constant(nx, ny, F / (nx * ny * cell_m2));
-  Eigen::ArrayXXd u(nx, ny), g(nx, ny), t = Eigen::ArrayXXd::Zero(nx, ny), Kt(nx, ny);
-  const Eigen::Index n_cells = p.size();
-  double* const P = p.data();
-  double* const U = u.data();
-  double* const S = g.data();
-  double* const T = t.data();
-  const double* const H = h.data();
-  const double* const R = Kt.data();
-
-  K.apply(p, u);
-  bool u_by_fft = true;  // u = K p from a convolution, not updated along the step
-  double G_old = 1, delta = 0, residual = 0, n_loaded = 0;
-  bool conjugate = false;
-  // separation s = h + u - delta for the current pressure; delta = its mean over the loaded cells
-  auto measure_separation = [&] {
+  // separation s = h + u - delta for the current pressure; delta = its mean over the loaded cells;
+  // the complementarity residual (no gap under load, no overlap outside it)
+  void measure_separation() {
+    const Eigen::Index n_cells = p_.size();
+    const double* const P = p_.data();
+    const double* const U = u_.data();
+    const double* const H = h_.data();
+    double* const S = g_.data();
     double sum = 0;
-    n_loaded = 0;
+    n_loaded_ = 0;
     for (Eigen::Index i = 0; i < n_cells; ++i) {
       S[i] = H[i] + U[i];
       if (P[i] > 0) {
         sum += S[i];
-        n_loaded += 1;
+        n_loaded_ += 1;
       }
     }
-    delta = sum / n_loaded;
-    // complementarity: no gap under load, no overlap outside it
+    delta_ = sum / n_loaded_;
     double violation = 0;
     for (Eigen::Index i = 0; i < n_cells; ++i) {
-      S[i] -= delta;
+      S[i] -= delta_;
       violation = std::max(violation, P[i] > 0 ? std::abs(S[i]) : -S[i]);
     }
-    residual = violation / (delta - h_min);
-  };
+    residual_ = violation / (delta_ - h_min_);
+  }
 
-  int it = 0;
-  HalfspaceSolution s;
-  for (;; ++it) {
+  // the residual is judged on a fresh convolution, not on u updated along the step
+  void refresh_displacement() {
+    if (u_by_fft_) return;
+    K_.apply(p_, u_);
+    u_by_fft_ = true;
     measure_separation();
-    if ((residual <= opt.tol || it >= opt.max_iterations) && !u_by_fft) {
-      // judge the final pressure on a fresh convolution
-      K.apply(p, u);
-      u_by_fft = true;
-      measure_separation();
-    }
-    if (!std::isfinite(residual)) {
-      s.status.kind = SolveStatus::Kind::Failed;
-      s.status.message = fmt::format("residual is {} after {} iterations", residual, it);
-      break;
-    }
-    if (residual <= opt.tol) {
-      s.status.kind = SolveStatus::Kind::Converged;
-      s.status.message = fmt::format("residual {:.2g} <= tol {:.3g} after {} iterations", residual, opt.tol, it);
-      break;
-    }
-    if (it >= opt.max_iterations) {
-      s.status.kind = SolveStatus::Kind::MaxIterations;
-      s.status.message = fmt::format("residual {:.2g} > tol {:.3g} after {} iterations", residual, opt.tol, it);
-      break;
-    }
+  }
 
-    // conjugate direction on the loaded cells
+  // conjugate direction on the loaded cells
+  void conjugate_direction() {
+    const Eigen::Index n_cells = p_.size();
+    const double* const P = p_.data();
+    const double* const S = g_.data();
+    double* const T = t_.data();
     double G = 0;
     for (Eigen::Index i = 0; i < n_cells; ++i)
       if (P[i] > 0) G += S[i] * S[i];
-    const double beta = conjugate ? G / G_old : 0.0;
+    const double beta = conjugate_ ? G / G_old_ : 0.0;
     for (Eigen::Index i = 0; i < n_cells; ++i) T[i] = P[i] > 0 ? S[i] + beta * T[i] : 0.0;
-    G_old = G;
+    G_old_ = G;
+  }
 
-    // step length along it, for the part of K t that keeps the load (mean over the loaded cells removed)
-    K.apply(t, Kt);
+  // step length along t, for the part of K t that keeps the load (mean over the loaded cells removed);
+  // r.t <= 0 (the direction lost) returns false
+  bool step_length(double& tau, double& rt) {
+    const Eigen::Index n_cells = p_.size();
+    const double* const P = p_.data();
+    const double* const S = g_.data();
+    const double* const T = t_.data();
+    const double* const R = Kt_.data();
+    K_.apply(t_, Kt_);
     double Kt_sum = 0, Kt_t = 0, s_t = 0;
     for (Eigen::Index i = 0; i < n_cells; ++i) {
       if (!(P[i] > 0)) continue;
@@ -302,16 +298,20 @@ HalfspaceSolution solve_halfspace(const Grid& grid, const Eigen::ArrayXXd& gap_m
     }
     double t_sum = 0;
     for (Eigen::Index i = 0; i < n_cells; ++i) t_sum += T[i];
-    const double rt = Kt_t - Kt_sum / n_loaded * t_sum;
-    if (!(rt > 0)) {
-      s.status.kind = SolveStatus::Kind::Failed;
-      s.status.message = fmt::format("search direction lost (r.t = {:.3g}) with residual {:.2g} after {} iterations",
-                                     rt, residual, it);
-      break;
-    }
-    const double tau = s_t / rt;
+    rt = Kt_t - Kt_sum / n_loaded_ * t_sum;
+    if (!(rt > 0)) return false;
+    tau = s_t / rt;
+    return true;
+  }
 
-    // step, kept non-negative; overlap outside the loaded cells is loaded and restarts the direction
+  // the step, kept non-negative; overlap outside the loaded cells is loaded and restarts the direction;
+  // then the prescribed load, and the displacement: along the step when no cell was clipped or added,
+  // K p = scale (u - tau K t)
+  void step(double tau) {
+    const Eigen::Index n_cells = p_.size();
+    double* const P = p_.data();
+    const double* const S = g_.data();
+    const double* const T = t_.data();
     bool clipped = false, overlap = false;
     double sum_p = 0;
     for (Eigen::Index i = 0; i < n_cells; ++i) {
@@ -328,27 +328,84 @@ HalfspaceSolution solve_halfspace(const Grid& grid, const Eigen::ArrayXXd& gap_m
       }
       sum_p += P[i];
     }
-    conjugate = !overlap;
-
-    // prescribed load
-    const double scale = F / (sum_p * cell_m2);
-    p *= scale;
-
-    // displacement: along the step when no cell was clipped or added, K p = scale (u - tau K t)
+    conjugate_ = !overlap;
+    const double scale = F_ / (sum_p * cell_m2_);
+    p_ *= scale;
     if (clipped || overlap) {
-      K.apply(p, u);
-      u_by_fft = true;
+      K_.apply(p_, u_);
+      u_by_fft_ = true;
     } else {
-      u = scale * (u - tau * Kt);
-      u_by_fft = false;
+      u_ = scale * (u_ - tau * Kt_);
+      u_by_fft_ = false;
     }
   }
 
-  s.pressure_Pa = std::move(p);
-  s.approach_m = delta;
+  double residual() const { return residual_; }
+  double approach() const { return delta_; }
+  Eigen::ArrayXXd& pressure() { return p_; }
+
+ private:
+  HalfspaceWorkspace K_;
+  const Eigen::ArrayXXd& h_;
+  double cell_m2_, F_, h_min_;
+  Eigen::ArrayXXd p_, u_, g_, t_, Kt_;
+  bool u_by_fft_ = true;  // u = K p from a convolution, not updated along the step
+  bool conjugate_ = false;
+  double G_old_ = 1, delta_ = 0, residual_ = 0, n_loaded_ = 0;
+};
+
+}  // namespace
+
+HalfspaceSolution solve_halfspace(const Grid& grid, const Eigen::ArrayXXd& gap_m, double Estar_Pa,
+                                  double normal_load_N, const HalfspaceOptions& opt) {
+  check_halfspace_inputs(grid, gap_m, Estar_Pa, normal_load_N, opt);
+  const int nx = grid.nx, ny = grid.ny;
+  PolonskyKeer pk(grid, gap_m, Estar_Pa, normal_load_N);
+
+  int it = 0;
+  HalfspaceSolution s;
+  for (;; ++it) {
+    pk.measure_separation();
+    if (pk.residual() <= opt.tol || it >= opt.max_iterations) pk.refresh_displacement();
+    const double residual = pk.residual();
+    if (!std::isfinite(residual)) {
+      s.status.kind = SolveStatus::Kind::Failed;
+      s.status.message = fmt::format("residual is {} after {} iterations", residual, it);
+      break;
+    }
+    if (residual <= opt.tol) {
+      s.status.kind = SolveStatus::Kind::Converged;
+      s.status.message = fmt::format("residual {:.2g} <= tol {:.3g} after {} iterations", residual, opt.tol, it);
+      break;
+    }
+    if (it >= opt.max_iterations) {
+      s.status.kind = SolveStatus::Kind::MaxIterations;
+      s.status.message = fmt::format("residual {:.2g} > tol {:.3g} after {} iterations", residual, opt.tol, it);
+      break;
+    }
+    pk.conjugate_direction();
+    double tau = 0, rt = 0;
+    if (!pk.step_length(tau, rt)) {
+      s.status.kind = SolveStatus::Kind::Failed;
+      s.status.message = fmt::format("search direction lost (r.t = {:.3g}) with residual {:.2g} after {} iterations",
+                                     rt, residual, it);
+      break;
+    }
+    pk.step(tau);
+  }
+
+  s.pressure_Pa = std::move(pk.pressure());
+  s.approach_m = pk.approach();
+  const double cell_m2 = grid.dx_m * grid.dy_m;
   s.contact_area_m2 = static_cast<double>((s.pressure_Pa > 0).count()) * cell_m2;
   s.status.iterations = it;
-  s.status.residual = residual;
+  s.status.residual = pk.residual();
+  // per solve: the pressure is non-negative and carries the load (it is rescaled to F every iteration)
+  if (s.status.kind != SolveStatus::Kind::Failed) {
+    ROLLWEAR_ASSERT(s.pressure_Pa.minCoeff() >= 0, fmt::format("pressure down to {} Pa", s.pressure_Pa.minCoeff()));
+    ROLLWEAR_ASSERT(std::abs(s.pressure_Pa.sum() * cell_m2 - normal_load_N) <= kLoadBalanceRtol * normal_load_N,
+                    fmt::format("the pressure carries {} N of {} N", s.pressure_Pa.sum() * cell_m2, normal_load_N));
+  }
 
   spdlog::debug("halfspace ({} x {}): {}; approach {:.6e} m, area {:.6e} m^2, p max {:.6e} Pa", nx, ny,
                 s.status.message, s.approach_m, s.contact_area_m2, s.pressure_Pa.maxCoeff());

@@ -28,7 +28,10 @@ double curvature_per_m(double R_m, const char* name) {
   return std::isinf(R_m) ? 0.0 : 1 / R_m;
 }
 
-// k = minor/major semi-axis of the ellipse for a curvature ratio r > 1
+// k = minor/major semi-axis of the ellipse for a curvature ratio r > 1. Newton safeguarded by
+// bisection, not find_root_bracketed (lib/numeric.h): h(1) = 0 for every r (the circle, where both
+// brackets of h vanish), so [lo, 1] is no sign change, and excluding k = 1 by hand would need a bound
+// on the root that depends on r - 1 (down to 1e-12).
 double axis_ratio(double r) {
   auto h_and_slope = [r](double k, double& slope) {
     const double e = std::sqrt(1 - k * k);
@@ -94,6 +97,10 @@ HertzContact solve_hertz(const Bodies& bodies, const ElasticPair& pair, double n
   h.a_m = h.A_per_m >= h.B_per_m ? minor : major;
   h.b_m = h.A_per_m >= h.B_per_m ? major : minor;
   h.p0_Pa = 3 * F / (2 * kPi * h.a_m * h.b_m);
+  // per solve: the ellipse exists and carries F (2/3 pi a b p0 = F by construction)
+  ROLLWEAR_ASSERT(h.a_m > 0 && h.b_m > 0 && std::isfinite(h.p0_Pa) && h.approach_m > 0,
+                  "a " + std::to_string(h.a_m) + " m, b " + std::to_string(h.b_m) + " m, p0 " +
+                      std::to_string(h.p0_Pa) + " Pa, approach " + std::to_string(h.approach_m) + " m");
   return h;
 }
 
@@ -130,6 +137,10 @@ ContactPatch hertz_patch(const HertzContact& h, const Grid& grid) {
     throw std::invalid_argument("hertz: the grid's strips miss the contact ellipse (b = " + std::to_string(b) +
                                 " m, grid half-width " + std::to_string(grid.half_y_m) + " m)");
   patch.strip_peak_Pa *= h.normal_load_N / carried_N;
+  // per solve: the strips carry the load, (pi/2) p_j a_j dy summed over the rows, to rounding
+  const double strips_N = (kPi / 2 * patch.strip_peak_Pa * patch.half_length_m).sum() * grid.dy_m;
+  ROLLWEAR_ASSERT(std::abs(strips_N - h.normal_load_N) <= 1e-9 * h.normal_load_N && patch.strip_peak_Pa.minCoeff() >= 0,
+                  "the strips carry " + std::to_string(strips_N) + " N of " + std::to_string(h.normal_load_N) + " N");
   fill_strip_pressures(patch);
   return patch;
 }

@@ -20,9 +20,11 @@
 // row's load is integrated exactly; p_j = row load / ((pi/2) a_j dy), a_j = a(y_j).
 #include "lib/normal/semi_hertz.h"
 
+#include <spdlog/fmt/fmt.h>
 #include <spdlog/spdlog.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -35,6 +37,12 @@
 namespace contact {
 
 namespace {
+
+// invariants checked per solve: the strips' loads sum to F (rounding over the rows), and no strip
+// peak exceeds the field's peak p0 (finding 5; the stress sweep holds it to 1e-12)
+constexpr double kLoadBalanceRtol = 1e-9;
+constexpr double kPeakRtol = 1e-9;
+constexpr double kJumpWidth = 1e-9;  // the root find's bracket, relative: narrower is a jump of F(delta)
 
 std::string num(double v) {
   char buf[40];
@@ -301,30 +309,81 @@ class Solver {
     return B_e;
   }
 
+  // The continuous rule's eps: two passes of eps = eps_y(A, B_e(eps delta)) from eps = 1/2, no fixed
+  // point. Exact on constant curvature like the fixed point (B_e = B at any level), and a composition of
+  // functions continuous in delta. The fixed point is not: where lobes merge as the level rises, the
+  // wider contact lowers B_e, which raises eps and the level, and two fixed points coexist (the
+  // warm-started iteration then picks one by history: F(delta) jumps, docs/semi-hertz.md). Returns B_e.
+  double explicit_ellipse(double delta, double& eps) const {
+    const EllipseTable& table = ellipse_table();
+    double B_e = 0;
+    eps = 0.5;
+    for (int pass = 0; pass < 2; ++pass) {
+      const double t = eps * delta;
+      const double be = 0.75 * positive_integral(t) / t;
+      B_e = t / (be * be);
+      eps = table.eps_y(A_, B_e);
+    }
+    return B_e;
+  }
+
   // everything at approach delta; eps_start: the last evaluation's eps (fixed point warm start)
-  Evaluation evaluate(double delta, double eps_start) {
+  Evaluation evaluate(double delta, double eps_start, ApproachRule rule) {
     Evaluation ev;
     ev.delta = delta;
     double eps = eps_start;
-    ev.B_e = equivalent_ellipse(delta, eps);
+    ev.B_e = rule == ApproachRule::SelfConsistent ? equivalent_ellipse(delta, eps) : explicit_ellipse(delta, eps);
     if (kp_epsilon_ > 0) eps = kp_epsilon_;  // Kik-Piotrowski as published: a = sqrt((eps delta - h)/A)
     ev.eps = eps;
     ev.t = eps * delta;
     ev.A_mod = kp_epsilon_ > 0 ? A_ : A_ * eps / (1 - eps);
     find_runs(ev);
-    // reference point: centroid of g_+ over the patch holding the gap's minimum
+    // reference point: centroid of g_+ over the patch holding the gap's minimum, or of the basin
+    // weight m_+ (basin_centroid)
     const ContactRun* ref = &ev.runs.front();
     for (const ContactRun& run : ev.runs)
       if (run.i0 <= gap_.imin && gap_.imin <= run.i1) ref = &run;
-    ev.y0 = ref->I1 / ref->I0;
+    ev.y0 = rule == ApproachRule::SelfConsistent ? ref->I1 / ref->I0 : basin_centroid(ev.t);
     std::size_t seg = ref->i0 == 0 ? 1 : ref->i0;
     while (seg + 1 < gap_.y.size() && gap_.y[seg] < ev.y0) ++seg;
     ev.h0 = ev.t - g_on_segment(ev.t, seg, ev.y0);
-    ev.J = boussinesq_integral(ev);
+    ev.J = boussinesq_integral(ev, rule == ApproachRule::Continuous);
     ev.S = kPi / 2 * ev.G1 / std::sqrt(ev.t * ev.A_mod);
     ev.p0 = kPi * Estar_ * (ev.delta - ev.h0) / ev.J;
     ev.F = ev.p0 * ev.S;
     return ev;
+  }
+
+  // The basin rule's reference point: the centroid of m_+, m(y) = the smallest g on the way from the
+  // gap's minimum to y. Where g falls monotonically away from the minimum, m = g: the lobe centroid.
+  // Across a neck, the far side weighs at most g at the neck, which is 0 when the lobes merge, so y0
+  // moves continuously with t (docs/semi-hertz.md, "Lobes merging"). On a segment going outward from
+  // node i (m = c there, c <= g_i) to node k: m = c while g >= c, then g; c becomes min(c, g_k).
+  double basin_centroid(double t) const {
+    const std::vector<double>& y = gap_.y;
+    const std::vector<double>& h = gap_.h;
+    double I0 = 0, I1 = 0;
+    for (const int dir : {-1, +1}) {
+      double c = t - h[gap_.imin];
+      for (std::size_t i = gap_.imin; c > 0;) {
+        if ((dir < 0 && i == 0) || (dir > 0 && i + 1 == y.size())) break;
+        const std::size_t k = dir < 0 ? i - 1 : i + 1;
+        const double ya = y[i], yb = y[k], ga = t - h[i], gb = t - h[k];
+        const double yc = gb >= c ? yb : ya + (yb - ya) * (ga - c) / (ga - gb);  // where g falls to c
+        // m = c on [ya, yc]
+        const double lo = std::min(ya, yc), hi = std::max(ya, yc);
+        I0 += c * (hi - lo);
+        I1 += c * (hi - lo) * (lo + hi) / 2;
+        // m = g on [yc, yb], from c to gb
+        if (gb < c) {
+          if (dir < 0) positive_segment(yb, yc, gb, c, I0, I1);
+          else positive_segment(yc, yb, c, gb, I0, I1);
+          c = gb;
+        }
+        i = k;
+      }
+    }
+    return I1 / I0;
   }
 
   // g = t - h at y on the segment [s-1, s]
@@ -411,32 +470,46 @@ class Solver {
 
   // J = integral of sqrt(g/t) sqrt(1 - x^2/a^2) / sqrt(x^2 + (y - y0)^2) dA: on each cell the slowly
   // varying w = sqrt(g/t) and a are taken at the centre, the kernel integrated exactly (Psi)
-  double boussinesq_integral(const Evaluation& ev) const {
+  // split_at_necks (the continuous rule): each patch is also cut at the gap's interior local maxima
+  // (necks), each piece with its own cells, so that two lobes merging through a neck keep the cells
+  // they had apart; with one set of cells over the merged patch J dropped by 26 % at the merge
+  // (paper-wear.yaml with xi 0, docs/semi-hertz.md).
+  double boussinesq_integral(const Evaluation& ev, bool split_at_necks) const {
     static const KernelTable psi;
     double J = 0;
+    std::vector<double> cuts;
     for (const ContactRun& run : ev.runs) {
-      // every patch its own cells: shared out by width, a patch's count changed by rounding as the
-      // patches grew, and J (so F(delta)) jumped with it (finding 6, docs/stress-suite.md)
-      const int n = cells_;
-      const double mid = (run.l + run.r) / 2, half = (run.r - run.l) / 2;
-      // sin and cos of theta by rotation, theta from -pi/2 in steps of pi/(2n): edges and centres
-      const double c_step = std::cos(kPi / (2 * n)), s_step = std::sin(kPi / (2 * n));
-      double sn = -1, cs = 0;
-      double y_left = run.l;
+      cuts.assign(1, run.l);
+      if (split_at_necks)
+        for (std::size_t k = std::max<std::size_t>(run.i0, 1); k <= run.i1 && k + 1 < gap_.y.size(); ++k)
+          if (gap_.h[k] >= gap_.h[k - 1] && gap_.h[k] > gap_.h[k + 1] && gap_.y[k] > run.l && gap_.y[k] < run.r)
+            cuts.push_back(gap_.y[k]);
+      cuts.push_back(run.r);
       std::size_t seg = std::max<std::size_t>(run.i0, 1);  // segment [seg-1, seg] holds y_c
-      for (int c = 0; c < n; ++c) {
-        const double sn_c = sn * c_step + cs * s_step, cs_c = cs * c_step - sn * s_step;
-        sn = sn_c * c_step + cs_c * s_step;
-        cs = cs_c * c_step - sn_c * s_step;
-        const double y_c = mid + half * sn_c;
-        const double y_right = c + 1 == n ? run.r : mid + half * sn;
-        while (seg + 1 < gap_.y.size() && gap_.y[seg] < y_c) ++seg;
-        const double g = g_on_segment(ev.t, seg, y_c);
-        if (g > 0) {
-          const double w = std::sqrt(g / ev.t), a = std::sqrt(g / ev.A_mod);
-          J += w * a * (psi((y_right - ev.y0) / a) - psi((y_left - ev.y0) / a));
+      for (std::size_t piece = 0; piece + 1 < cuts.size(); ++piece) {
+        // every patch its own cells: shared out by width, a patch's count changed by rounding as the
+        // patches grew, and J (so F(delta)) jumped with it (finding 6, docs/stress-suite.md)
+        const int n = cells_;
+        const double l = cuts[piece], r = cuts[piece + 1];
+        const double mid = (l + r) / 2, half = (r - l) / 2;
+        // sin and cos of theta by rotation, theta from -pi/2 in steps of pi/(2n): edges and centres
+        const double c_step = std::cos(kPi / (2 * n)), s_step = std::sin(kPi / (2 * n));
+        double sn = -1, cs = 0;
+        double y_left = l;
+        for (int c = 0; c < n; ++c) {
+          const double sn_c = sn * c_step + cs * s_step, cs_c = cs * c_step - sn * s_step;
+          sn = sn_c * c_step + cs_c * s_step;
+          cs = cs_c * c_step - sn_c * s_step;
+          const double y_c = mid + half * sn_c;
+          const double y_right = c + 1 == n ? r : mid + half * sn;
+          while (seg + 1 < gap_.y.size() && gap_.y[seg] < y_c) ++seg;
+          const double g = g_on_segment(ev.t, seg, y_c);
+          if (g > 0) {
+            const double w = std::sqrt(g / ev.t), a = std::sqrt(g / ev.A_mod);
+            J += w * a * (psi((y_right - ev.y0) / a) - psi((y_left - ev.y0) / a));
+          }
+          y_left = y_right;
         }
-        y_left = y_right;
       }
     }
     return J;
@@ -450,6 +523,208 @@ class Solver {
   static constexpr std::size_t kBlock = 16;
   std::vector<double> block_min_;
 };
+
+
+// ---- the stages of solve_semi_hertz ----
+
+// the inputs refused before anything is solved; returns the rolling curvature A
+double checked_rolling_curvature(const Profiles& profiles, double Rx1_m, double Rx2_m, const ElasticPair& pair,
+                                 double normal_load_N, const GridSpec& spec, const SemiHertzOptions& options) {
+  check_material(pair.body1, "body1");
+  check_material(pair.body2, "body2");
+  if (!(normal_load_N > 0) || !std::isfinite(normal_load_N))
+    throw std::invalid_argument("semi-Hertz: normal load must be positive and finite, got " + num(normal_load_N) + " N");
+  if (spec.nx < 1 || spec.ny < 1)
+    throw std::invalid_argument("semi-Hertz: nx and ny must be at least 1, got " + std::to_string(spec.nx) + " x " +
+                                std::to_string(spec.ny));
+  if (!(options.kp_epsilon == 0 || (options.kp_epsilon > 0 && options.kp_epsilon < 1)))
+    throw std::invalid_argument("semi-Hertz: kp_epsilon must be 0 (equivalent-ellipse correction) or in (0, 1), got " +
+                                num(options.kp_epsilon));
+  if (options.quadrature_cells < 4)
+    throw std::invalid_argument("semi-Hertz: quadrature_cells must be at least 4, got " +
+                                std::to_string(options.quadrature_cells));
+  const double A = (curvature_per_m(Rx1_m, "Rx1") + curvature_per_m(Rx2_m, "Rx2")) / 2;
+  if (!(A > 0))
+    throw std::invalid_argument("semi-Hertz: rolling curvature A = (1/Rx1 + 1/Rx2)/2 = " + num(A) +
+                                " 1/m must be positive (Rx1 " + num(Rx1_m) + " m, Rx2 " + num(Rx2_m) + " m)");
+  validate_profile(profiles.body1);
+  validate_profile(profiles.body2);
+  return A;
+}
+
+// the first approach: Hertz's ellipse with the equivalent curvature B_e of the gap, found at the
+// approach of Hertz's circle with curvature A (exact on constant curvature, a good start otherwise)
+double first_approach(Solver& solver, double A, double F, double Estar, double& eps) {
+  const double R = 1 / (2 * A), a = std::cbrt(3 * F * R / (4 * Estar));
+  const double B_e = solver.equivalent_ellipse(a * a / R, eps);
+  return ellipse_table().approach(A, B_e, F, Estar);
+}
+
+// the root find of F(delta) = F for one reference rule
+struct ApproachSearch {
+  Evaluation ev;        // the last evaluation (the root when converged)
+  int evaluations = 0;
+  double residual = std::numeric_limits<double>::infinity();  // F(delta)/F - 1 at ev
+  bool converged = false;
+  double lo = 0, hi = std::numeric_limits<double>::infinity();  // the bracket
+  double residual_lo = 0, residual_hi = 0;
+  bool bracketed() const { return lo > 0 && std::isfinite(hi); }
+};
+
+// Secant in (log delta, log F), kept inside the bracket [lo, hi]; a secant step that did not halve
+// the residual is followed by a bisection once the root is bracketed, so the bracket shrinks at
+// least geometrically (a secant can crawl along one side of a bracket where F(delta) bends, finding
+// 6); a smooth F converges before it matters. Where F(delta) jumps across the load the bracket
+// closes on the jump (not converged, bracketed).
+ApproachSearch find_approach(Solver& solver, double F, double delta, double eps, int max_evaluations,
+                             const SemiHertzOptions& options, ApproachRule rule) {
+  ApproachSearch s;
+  double prev_ld = 0, prev_lf = 0, last_abs_residual = std::numeric_limits<double>::infinity();
+  while (s.evaluations < max_evaluations) {
+    s.ev = solver.evaluate(delta, eps, rule);
+    ++s.evaluations;
+    eps = s.ev.eps;
+    s.residual = s.ev.F / F - 1;
+    SPDLOG_TRACE("semi-Hertz: delta {:.9e} m -> F {:.9e} N (eps {:.6f})", delta, s.ev.F, s.ev.eps);
+    if (std::abs(s.residual) <= options.load_rtol) {
+      s.converged = true;
+      break;
+    }
+    if (s.ev.F < F) {
+      s.lo = delta;
+      s.residual_lo = s.residual;
+    } else {
+      s.hi = delta;
+      s.residual_hi = s.residual;
+    }
+    // a bracket narrower than 1e-9 of delta with the residual above load_rtol at both ends: F(delta)
+    // jumps across the load there (a continuous F would need d ln F / d ln delta > 1e3; Hertz's is 1.5)
+    if (s.hi / s.lo - 1 < kJumpWidth) break;
+    const double ld = std::log(delta), lf = std::log(s.ev.F);
+    double slope = 1.5;  // Hertz: F ~ delta^(3/2)
+    if (s.evaluations > 1 && ld != prev_ld) slope = std::clamp((lf - prev_lf) / (ld - prev_ld), 0.5, 4.0);
+    prev_ld = ld;
+    prev_lf = lf;
+    double next = delta * std::exp((std::log(F) - lf) / slope);
+    const bool crawling = std::abs(s.residual) > 0.5 * last_abs_residual;
+    last_abs_residual = std::abs(s.residual);
+    if (!(next > s.lo && next < s.hi) || (s.bracketed() && crawling))
+      next = std::isinf(s.hi) ? 4 * s.lo : (s.lo > 0 ? std::sqrt(s.lo * s.hi) : s.hi / 4);
+    delta = next;
+  }
+  return s;
+}
+
+std::string jump_text(const ApproachSearch& s) {
+  char msg[160];
+  std::snprintf(msg, sizeof msg, "F(delta)/F - 1 jumps from %+.2e to %+.2e within delta [%.9e, %.9e] m",
+                s.residual_lo, s.residual_hi, s.lo, s.hi);
+  return msg;
+}
+
+// the result's diagnostics and status from the root find: Converged, MaxIterations (with a warning),
+// or Failed where the contact reaches a body's edge (with a warning)
+void describe_approach(const ApproachSearch& search, int evaluations, const std::string& remedy,
+                       const SemiHertzOptions& options, const Gap& gap, const Profiles& profiles, SemiHertzResult& res) {
+  const Evaluation& ev = search.ev;
+  res.approach_m = ev.delta;
+  res.epsilon = ev.eps;
+  res.equivalent_B_per_m = ev.B_e;
+  res.reference_y_m = ev.y0;
+  res.patches = static_cast<int>(ev.runs.size());
+  res.reaches_edge = ev.reaches_edge;
+  res.contact_y_min_m = ev.runs.front().l;
+  res.contact_y_max_m = ev.runs.back().r;
+  res.status.iterations = evaluations;
+  res.status.residual = std::abs(search.residual);
+  char msg[200];
+  std::snprintf(msg, sizeof msg, "load residual %.1e %s tol %.1e after %d evaluations", std::abs(search.residual),
+                search.converged ? "<=" : ">", options.load_rtol, evaluations);
+  res.status.message = msg + remedy;
+  if (!search.converged && search.bracketed()) res.status.message += "; " + jump_text(search);
+  res.status.kind = search.converged ? SolveStatus::Kind::Converged : SolveStatus::Kind::MaxIterations;
+  // the caller decides what an unconverged or edge-reaching solve means: the status says it, no warning here
+  if (!search.converged) spdlog::debug("semi-Hertz: approach not found: {}", res.status.message);
+  if (ev.reaches_edge) {
+    res.status.kind = SolveStatus::Kind::Failed;
+    res.status.message = "contact [" + num(res.contact_y_min_m) + ", " + num(res.contact_y_max_m) +
+                         "] m reaches the edge of the profiles' overlap [" + num(gap.y.front()) + ", " +
+                         num(gap.y.back()) + "] m (" + profiles.body1.source + ", " + profiles.body2.source +
+                         "): a body is narrower than the contact; " + res.status.message;
+    spdlog::debug("semi-Hertz: {}", res.status.message);
+  }
+}
+
+// The strips: grid over the contact's bounding box, each row carrying its load exactly.
+// Row j carries line_load_per_g times the integral of g_+ over the row, exactly: its mean
+// gbar_j of g_+ sets the load. The strip's half length is the midpoint's, a(y_j) = sqrt(g_j/A_mod),
+// which gives p_j = p0 gbar_j / sqrt(t g_j). Where g_j is small against the row's g (a row cut
+// by a patch's edge, or a neck between two lobes), that p_j exceeds every pressure of the field
+// in the row: up to 7.9e13 Pa against p0 3.4e9 Pa (finding 5, docs/stress-suite.md), and the
+// tangential solvers take mu p_j as the traction bound. So the strip's peak is capped at the
+// field's largest peak over the row, p0 sqrt(gmax_j/t), and the strip lengthened to carry the
+// row's load at it:
+//   a_j = sqrt(max(g_j, gbar_j^2 / gmax_j) / A_mod),   so  p_j = min(midpoint's, p0 sqrt(gmax_j/t)).
+// On a row where g is linear or concave (every row of a convex gap: Hertz, crowns, flat bands),
+// gbar_j <= g_j <= gmax_j and the midpoint stands; it also stands on gently curved rows of a worn
+// gap. Then a_j <= the row's largest a(y), p_j <= p0, and a row whose centre misses the contact
+// keeps its own load: it no longer hands it to the nearest row in contact, which could lie in
+// another patch. Returns the rows' loads (F(delta), to rounding); throws NoStripCentreError.
+Eigen::ArrayXd fill_strips(const Gap& gap, const Evaluation& ev, const GridSpec& spec, SemiHertzResult& res) {
+  ContactPatch& patch = res.patch;
+  const double half_x = std::sqrt(ev.t / ev.A_mod);  // a at the gap's minimum, the longest strip
+  const double half_y = (res.contact_y_max_m - res.contact_y_min_m) / 2;
+  res.grid_y0_m = (res.contact_y_min_m + res.contact_y_max_m) / 2;
+  patch.grid = make_grid(half_x, half_y, spec);
+  const Grid& g = patch.grid;
+  patch.half_length_m = Eigen::ArrayXd::Zero(g.ny);
+  patch.strip_peak_Pa = Eigen::ArrayXd::Zero(g.ny);
+  Eigen::ArrayXd row_load_N = Eigen::ArrayXd::Zero(g.ny);
+  bool centre_in_contact = false;
+  const double line_load_per_g = ev.p0 * (kPi / 2) / std::sqrt(ev.t * ev.A_mod);  // (pi/2) p a = this * g
+  Solver::March rows(gap, ev.t), centres(gap, ev.t), ends(gap, ev.t);
+  double below = rows.integral_to(res.contact_y_min_m);
+  std::size_t node = 0;  // the first gap node right of the current row's left edge
+  double yl = res.contact_y_min_m;
+  for (int j = 0; j < g.ny; ++j) {
+    const double yr = j + 1 == g.ny ? res.contact_y_max_m : res.grid_y0_m + g.y_edge(j + 1);
+    const double upto = rows.integral_to(yr);
+    const double g_mean = (upto - below) / (yr - yl);
+    row_load_N(j) = line_load_per_g * (upto - below);
+    below = upto;
+    // g's largest value on [yl, yr]: at an end or at a node (g is piecewise linear)
+    double g_max = ends.g_at(yl);
+    g_max = std::max(g_max, ends.g_at(yr));
+    while (node < gap.y.size() && gap.y[node] <= yl) ++node;
+    for (; node < gap.y.size() && gap.y[node] < yr; ++node) g_max = std::max(g_max, ev.t - gap.h[node]);
+    yl = yr;
+    const double g_centre = centres.g_at(res.grid_y0_m + g.y_m(j));
+    centre_in_contact = centre_in_contact || g_centre > 0;
+    if (g_mean > 0 && g_max > 0)
+      patch.half_length_m(j) = std::sqrt(std::max(g_centre, g_mean * g_mean / g_max) / ev.A_mod);
+    else
+      row_load_N(j) = 0;  // a row between patches (its integral is rounding)
+  }
+  // a grid none of whose strip centres lies in the contact cannot resolve it (the wear loop refines)
+  if (!centre_in_contact)
+    throw NoStripCentreError("semi-Hertz: no strip centre lies in the contact: ny " + std::to_string(g.ny) +
+                             " is too small for its " + std::to_string(res.patches) + " patches");
+  return row_load_N;
+}
+
+// the equivalent ellipse for Kalker's coefficients: b half the contact's width, a = area / (pi b)
+void fill_equivalent_ellipse(const Gap& gap, const Evaluation& ev, ContactPatch& patch) {
+  double width = 0, area = 0;
+  for (const ContactRun& run : ev.runs) {
+    width += run.r - run.l;
+    const std::size_t s0 = run.i0 == 0 ? 0 : static_cast<std::size_t>(run.i0 - 1);
+    const std::size_t s1 = std::min(static_cast<std::size_t>(run.i1 + 1), gap.y.size() - 1);
+    for (std::size_t s = s0; s < s1; ++s)
+      area += 2 * sqrt_segment(gap.y[s], gap.y[s + 1], ev.t - gap.h[s], ev.t - gap.h[s + 1]) / std::sqrt(ev.A_mod);
+  }
+  patch.b_m = width / 2;
+  patch.a_m = area / (kPi * patch.b_m);
+}
 
 }  // namespace
 
@@ -485,188 +760,53 @@ Eigen::ArrayXd heathcote_xi_offset(const Profiles& profiles, double Rx1_m, doubl
 
 SemiHertzResult solve_semi_hertz(const Profiles& profiles, double Rx1_m, double Rx2_m, const ElasticPair& pair,
                                  double normal_load_N, const GridSpec& spec, const SemiHertzOptions& options) {
-  check_material(pair.body1, "body1");
-  check_material(pair.body2, "body2");
-  if (!(normal_load_N > 0) || !std::isfinite(normal_load_N))
-    throw std::invalid_argument("semi-Hertz: normal load must be positive and finite, got " + num(normal_load_N) + " N");
-  if (spec.nx < 1 || spec.ny < 1)
-    throw std::invalid_argument("semi-Hertz: nx and ny must be at least 1, got " + std::to_string(spec.nx) + " x " +
-                                std::to_string(spec.ny));
-  if (!(options.kp_epsilon == 0 || (options.kp_epsilon > 0 && options.kp_epsilon < 1)))
-    throw std::invalid_argument("semi-Hertz: kp_epsilon must be 0 (equivalent-ellipse correction) or in (0, 1), got " +
-                                num(options.kp_epsilon));
-  if (options.quadrature_cells < 4)
-    throw std::invalid_argument("semi-Hertz: quadrature_cells must be at least 4, got " +
-                                std::to_string(options.quadrature_cells));
-  const double A = (curvature_per_m(Rx1_m, "Rx1") + curvature_per_m(Rx2_m, "Rx2")) / 2;
-  if (!(A > 0))
-    throw std::invalid_argument("semi-Hertz: rolling curvature A = (1/Rx1 + 1/Rx2)/2 = " + num(A) +
-                                " 1/m must be positive (Rx1 " + num(Rx1_m) + " m, Rx2 " + num(Rx2_m) + " m)");
-  validate_profile(profiles.body1);
-  validate_profile(profiles.body2);
+  const double A = checked_rolling_curvature(profiles, Rx1_m, Rx2_m, pair, normal_load_N, spec, options);
   const double Estar = effective_modulus_Pa(pair), F = normal_load_N;
-
-  // the gap on the union of the profiles' nodes
   const Gap gap = make_gap(profiles);
   Solver solver(gap, A, Estar, options.quadrature_cells, options.kp_epsilon);
 
-  // approach from the load: secant in (log delta, log F), kept inside the bracket [lo, hi]
-  double delta = options.initial_approach_m, eps = 0.5;
-  if (!(delta > 0)) {
-    // Hertz's ellipse with the equivalent curvature B_e of the gap, found at the approach of Hertz's
-    // circle with curvature A (exact on constant curvature, a good start otherwise)
-    const double R = 1 / (2 * A), a = std::cbrt(3 * F * R / (4 * Estar));
-    const double B_e = solver.equivalent_ellipse(a * a / R, eps);
-    delta = ellipse_table().approach(A, B_e, F, Estar);
-  }
-  double lo = 0, hi = std::numeric_limits<double>::infinity();
-  double prev_ld = 0, prev_lf = 0, residual = std::numeric_limits<double>::infinity();
-  double last_abs_residual = std::numeric_limits<double>::infinity(), residual_lo = 0, residual_hi = 0;
-  Evaluation ev;
-  int it = 0;
-  bool converged = false;
-  while (it < options.max_iterations) {
-    ev = solver.evaluate(delta, eps);
-    ++it;
-    eps = ev.eps;
-    residual = ev.F / F - 1;
-    SPDLOG_TRACE("semi-Hertz: delta {:.9e} m -> F {:.9e} N (eps {:.6f})", delta, ev.F, ev.eps);
-    if (std::abs(residual) <= options.load_rtol) {
-      converged = true;
-      break;
-    }
-    if (ev.F < F) {
-      lo = delta;
-      residual_lo = residual;
-    } else {
-      hi = delta;
-      residual_hi = residual;
-    }
-    if (hi / lo - 1 < 1e-15) break;  // the bracket is a point: F(delta) jumps across the load there
-    const double ld = std::log(delta), lf = std::log(ev.F);
-    double slope = 1.5;  // Hertz: F ~ delta^(3/2)
-    if (it > 1 && ld != prev_ld) slope = std::clamp((lf - prev_lf) / (ld - prev_ld), 0.5, 4.0);
-    prev_ld = ld;
-    prev_lf = lf;
-    double next = delta * std::exp((std::log(F) - lf) / slope);
-    // safeguard: a secant step that did not halve the residual is followed by a bisection once the
-    // root is bracketed, so the bracket shrinks at least geometrically (a secant can crawl along one
-    // side of a bracket where F(delta) bends, finding 6); a smooth F converges before it matters
-    const bool bracketed = lo > 0 && std::isfinite(hi);
-    const bool crawling = std::abs(residual) > 0.5 * last_abs_residual;
-    last_abs_residual = std::abs(residual);
-    if (!(next > lo && next < hi) || (bracketed && crawling))
-      next = std::isinf(hi) ? 4 * lo : (lo > 0 ? std::sqrt(lo * hi) : hi / 4);
-    delta = next;
-  }
-
+  // the approach from the load by the self-consistent rule; where its F(delta) jumps across the load
+  // (lobes merging: finding 6b, and the fixed point of eps) no approach carries the load by it, and the
+  // continuous rule takes over from the bracket (semi_hertz.h, docs/semi-hertz.md)
+  double eps = 0.5;
+  double delta = options.initial_approach_m > 0 ? options.initial_approach_m : first_approach(solver, A, F, Estar, eps);
   SemiHertzResult res;
-  res.approach_m = ev.delta;
-  res.epsilon = ev.eps;
-  res.equivalent_B_per_m = ev.B_e;
-  res.reference_y_m = ev.y0;
-  res.patches = static_cast<int>(ev.runs.size());
-  res.reaches_edge = ev.reaches_edge;
-  res.contact_y_min_m = ev.runs.front().l;
-  res.contact_y_max_m = ev.runs.back().r;
-  res.status.iterations = it;
-  res.status.residual = std::abs(residual);
-  char msg[200];
-  std::snprintf(msg, sizeof msg, "load residual %.1e %s tol %.1e after %d evaluations", std::abs(residual),
-                converged ? "<=" : ">", options.load_rtol, it);
-  res.status.message = msg;
-  if (!converged && lo > 0 && std::isfinite(hi)) {
-    std::snprintf(msg, sizeof msg, "; F(delta)/F - 1 jumps from %+.2e to %+.2e within delta [%.9e, %.9e] m", residual_lo,
-                  residual_hi, lo, hi);
-    res.status.message += msg;
+  res.rule = ApproachRule::SelfConsistent;
+  ApproachSearch search = find_approach(solver, F, delta, eps, options.max_iterations, options, res.rule);
+  int evaluations = search.evaluations;
+  std::string remedy;
+  if (!search.converged && search.bracketed()) {
+    remedy = "; by the continuous rule: with the self-consistent one " + jump_text(search);
+    res.rule = ApproachRule::Continuous;
+    search = find_approach(solver, F, std::sqrt(search.lo * search.hi), search.ev.eps,
+                           options.max_iterations, options, res.rule);
+    evaluations += search.evaluations;
   }
-  res.status.kind = converged ? SolveStatus::Kind::Converged : SolveStatus::Kind::MaxIterations;
-  if (!converged) spdlog::warn("semi-Hertz: approach not found: {}", res.status.message);
-  if (ev.reaches_edge) {
-    res.status.kind = SolveStatus::Kind::Failed;
-    res.status.message = "contact [" + num(res.contact_y_min_m) + ", " + num(res.contact_y_max_m) +
-                         "] m reaches the edge of the profiles' overlap [" + num(gap.y.front()) + ", " +
-                         num(gap.y.back()) + "] m (" + profiles.body1.source + ", " + profiles.body2.source +
-                         "): a body is narrower than the contact; " + res.status.message;
-    spdlog::warn("semi-Hertz: {}", res.status.message);
-  }
+  const Evaluation& ev = search.ev;
+  describe_approach(search, evaluations, remedy, options, gap, profiles, res);
 
-  // the patch: grid over the contact's bounding box, strips carry their rows' loads exactly
+  // the strips carry their rows' loads, scaled to carry F exactly
   ContactPatch& patch = res.patch;
-  const double half_x = std::sqrt(ev.t / ev.A_mod);  // a at the gap's minimum, the longest strip
-  const double half_y = (res.contact_y_max_m - res.contact_y_min_m) / 2;
-  res.grid_y0_m = (res.contact_y_min_m + res.contact_y_max_m) / 2;
-  patch.grid = make_grid(half_x, half_y, spec);
+  Eigen::ArrayXd row_load_N = fill_strips(gap, ev, spec, res);
   const Grid& g = patch.grid;
-  patch.half_length_m = Eigen::ArrayXd::Zero(g.ny);
-  patch.strip_peak_Pa = Eigen::ArrayXd::Zero(g.ny);
-  Eigen::ArrayXd row_load_N = Eigen::ArrayXd::Zero(g.ny);
-  bool centre_in_contact = false;
-  {
-    // Row j carries line_load_per_g times the integral of g_+ over the row, exactly: its mean
-    // gbar_j of g_+ sets the load. The strip's half length is the midpoint's, a(y_j) = sqrt(g_j/A_mod),
-    // which gives p_j = p0 gbar_j / sqrt(t g_j). Where g_j is small against the row's g (a row cut
-    // by a patch's edge, or a neck between two lobes), that p_j exceeds every pressure of the field
-    // in the row: up to 7.9e13 Pa against p0 3.4e9 Pa (finding 5, docs/stress-suite.md), and the
-    // tangential solvers take mu p_j as the traction bound. So the strip's peak is capped at the
-    // field's largest peak over the row, p0 sqrt(gmax_j/t), and the strip lengthened to carry the
-    // row's load at it:
-    //   a_j = sqrt(max(g_j, gbar_j^2 / gmax_j) / A_mod),   so  p_j = min(midpoint's, p0 sqrt(gmax_j/t)).
-    // On a row where g is linear or concave (every row of a convex gap: Hertz, crowns, flat bands),
-    // gbar_j <= g_j <= gmax_j and the midpoint stands; it also stands on gently curved rows of a worn
-    // gap. Then a_j <= the row's largest a(y), p_j <= p0, and a row whose centre misses the contact
-    // keeps its own load: it no longer hands it to the nearest row in contact, which could lie in
-    // another patch.
-    const double line_load_per_g = ev.p0 * (kPi / 2) / std::sqrt(ev.t * ev.A_mod);  // (pi/2) p a = this * g
-    Solver::March rows(gap, ev.t), centres(gap, ev.t), ends(gap, ev.t);
-    double below = rows.integral_to(res.contact_y_min_m);
-    std::size_t node = 0;  // the first gap node right of the current row's left edge
-    double yl = res.contact_y_min_m;
-    for (int j = 0; j < g.ny; ++j) {
-      const double yr = j + 1 == g.ny ? res.contact_y_max_m : res.grid_y0_m + g.y_edge(j + 1);
-      const double upto = rows.integral_to(yr);
-      const double g_mean = (upto - below) / (yr - yl);
-      row_load_N(j) = line_load_per_g * (upto - below);
-      below = upto;
-      // g's largest value on [yl, yr]: at an end or at a node (g is piecewise linear)
-      double g_max = ends.g_at(yl);
-      g_max = std::max(g_max, ends.g_at(yr));
-      while (node < gap.y.size() && gap.y[node] <= yl) ++node;
-      for (; node < gap.y.size() && gap.y[node] < yr; ++node) g_max = std::max(g_max, ev.t - gap.h[node]);
-      yl = yr;
-      const double g_centre = centres.g_at(res.grid_y0_m + g.y_m(j));
-      centre_in_contact = centre_in_contact || g_centre > 0;
-      if (g_mean > 0 && g_max > 0)
-        patch.half_length_m(j) = std::sqrt(std::max(g_centre, g_mean * g_mean / g_max) / ev.A_mod);
-      else
-        row_load_N(j) = 0;  // a row between patches (its integral is rounding)
-    }
-  }
-  // a grid none of whose strip centres lies in the contact cannot resolve it (the wear loop refines)
-  if (!centre_in_contact)
-    throw std::invalid_argument("semi-Hertz: no strip centre lies in the contact: ny " + std::to_string(g.ny) +
-                                " is too small for its " + std::to_string(res.patches) + " patches");
   const double carried_N = row_load_N.sum();  // F(delta), to rounding
   const double scale = F / carried_N;         // exact to rounding (carried = F(delta) within load_rtol)
+  ROLLWEAR_ASSERT(ev.p0 > 0 && std::isfinite(ev.p0) && carried_N > 0 && std::isfinite(carried_N),
+                  fmt::format("p0 {} Pa, rows carry {} N at delta {} m", ev.p0, carried_N, ev.delta));
   row_load_N *= scale;
   for (int j = 0; j < g.ny; ++j)
     if (patch.half_length_m(j) > 0) patch.strip_peak_Pa(j) = row_load_N(j) / (kPi / 2 * patch.half_length_m(j) * g.dy_m);
   fill_strip_pressures(patch);
-
-  // the equivalent ellipse for Kalker's coefficients: b half the contact's width, a = area / (pi b)
-  double width = 0, area = 0;
-  for (const ContactRun& run : ev.runs) {
-    width += run.r - run.l;
-    const std::size_t s0 = run.i0 == 0 ? 0 : static_cast<std::size_t>(run.i0 - 1);
-    const std::size_t s1 = std::min(static_cast<std::size_t>(run.i1 + 1), gap.y.size() - 1);
-    for (std::size_t s = s0; s < s1; ++s)
-      area += 2 * sqrt_segment(gap.y[s], gap.y[s + 1], ev.t - gap.h[s], ev.t - gap.h[s + 1]) / std::sqrt(ev.A_mod);
-  }
-  patch.b_m = width / 2;
-  patch.a_m = area / (kPi * patch.b_m);
+  fill_equivalent_ellipse(gap, ev, patch);
   patch.p0_Pa = ev.p0 * scale;  // the peak of the field the strips carry (F, not F(delta))
   patch.normal_load_N = F;
   patch.approach_m = ev.delta;
+  // per solve: the strips carry the load, no strip's peak is negative or above the field's peak (finding 5)
+  ROLLWEAR_ASSERT(std::abs(row_load_N.sum() - F) <= kLoadBalanceRtol * F,
+                  fmt::format("the strips carry {} N of {} N", row_load_N.sum(), F));
+  ROLLWEAR_ASSERT(patch.strip_peak_Pa.minCoeff() >= 0 && patch.strip_peak_Pa.maxCoeff() <= patch.p0_Pa * (1 + kPeakRtol),
+                  fmt::format("strip peaks in [{}, {}] Pa, p0 {} Pa", patch.strip_peak_Pa.minCoeff(),
+                              patch.strip_peak_Pa.maxCoeff(), patch.p0_Pa));
 
   // Heathcote slip per strip, zero at the reference point
   if (options.heathcote_slip)
@@ -710,6 +850,7 @@ SemiHertzResult solve_normal_on_profiles(const Profiles& profiles, double Rx1_m,
         res.patches = 1;
         res.status.kind = SolveStatus::Kind::Converged;
         res.status.message = "constant curvature: Hertz's closed form";
+        res.solver = NormalSolverKind::Hertz;
         if (options.heathcote_slip)
           res.patch.strip_xi_offset = heathcote_xi_offset(profiles, Rx1_m, Rx2_m, y0 + res.patch.grid.y_m, y0);
         return res;

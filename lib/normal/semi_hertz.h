@@ -20,9 +20,15 @@
 // k^2 = a^2/(a^2 + eta^2); its log singularity at eta = 0 is integrated exactly. The load
 // F(delta) = p0 integral (pi/2) a(y) sqrt(g/(eps delta)) dy rises with delta; a bracketed secant in
 // log delta, with a bisection after any step that does not halve the residual, finds F(delta) =
-// normal load. Where two lobes of contact merge, y0 jumps into the neck and F(delta) can jump across
-// the load (docs/stress-suite.md, finding 6b): the bracket then closes on the jump, and the status
-// (MaxIterations, with a warning) gives F(delta)/F - 1 on both sides.
+// normal load. F(delta) can jump across the load: where two lobes of contact merge, y0 jumps into the
+// neck (docs/stress-suite.md, finding 6b), and where merging lobes widen the contact, eps = eps_y(A,
+// B_e(eps delta)) has two fixed points and the warm-started iteration picks one by history. The bracket
+// then closes on the jump, and the root find starts again from that bracket by the continuous rule:
+//   eps from two passes eps <- eps_y(A, B_e(eps delta)) from eps = 1/2 (exact on constant curvature),
+//   y0 the centroid of m_+, m(y) the smallest g on the way from the gap's minimum to y (the lobe
+//   centroid where g falls monotonically away from the minimum; across a neck the far side weighs at
+//   most g at the neck, nothing when the lobes merge),
+// both continuous in delta. The result says which rule ran (SemiHertzResult::rule).
 #pragma once
 
 #include <Eigen/Core>
@@ -32,8 +38,25 @@
 #include "lib/patch.h"
 #include "lib/normal/profile.h"
 #include "lib/solve_status.h"
+#include "lib/normal/solver_kind.h"
+
+#include <stdexcept>
 
 namespace contact {
+
+// How eps and the reference point y0 were found (see the top of this file).
+enum class ApproachRule {
+  SelfConsistent,  // eps the fixed point eps = eps_y(A, B_e(eps delta)); y0 the centroid of g_+ over the
+                   // patch holding the gap's minimum
+  Continuous,      // the remedy where the first one's F(delta) jumps across the load: eps from two passes
+                   // from 1/2; y0 the centroid of m_+ (the basin rule)
+};
+
+// A grid none of whose strip centres lies in the contact (a contact split into patches narrower than a
+// strip): the caller may solve again with more strips (the wear loop does).
+struct NoStripCentreError : std::invalid_argument {
+  using std::invalid_argument::invalid_argument;
+};
 
 struct SemiHertzOptions {
   bool heathcote_slip = true;     // fill patch.strip_xi_offset; false leaves it empty (no offset)
@@ -69,7 +92,12 @@ struct SemiHertzResult {
   double equivalent_B_per_m = 0;  // B_e, lateral curvature of the equivalent ellipse
   bool reaches_edge = false;  // the contact reaches an end of the profiles' overlap (a body's edge)
   int patches = 0;            // separate contact patches along y (disconnected contact)
-  SolveStatus status;         // Failed when reaches_edge (the patch then holds the contact cut at the edge)
+  ApproachRule rule = ApproachRule::SelfConsistent;
+  NormalSolverKind solver = NormalSolverKind::SemiHertz;  // Hertz when solve_normal_on_profiles took the closed form
+  // Converged: the load is carried within load_rtol. MaxIterations: no approach found (a warning; the
+  // result must not be used). Failed when reaches_edge: a body is narrower than the contact, the
+  // patch then holds the contact cut at the edge.
+  SolveStatus status;
 };
 
 // Hertz's ellipse with relative curvatures A (along x) and B (along y): eps_y = B b^2 / delta
@@ -85,7 +113,7 @@ Eigen::ArrayXd heathcote_xi_offset(const Profiles& profiles, double Rx1_m, doubl
 
 // The normal problem for normal_load_N on the profiles, the grid over the contact's bounding box.
 // Throws std::invalid_argument for A <= 0, a zero radius, bad materials, a non-positive load, invalid
-// or non-overlapping profiles, bad options, or a grid with no strip centre in the contact. A contact reaching the profiles' edge, or a root find that does not
+// or non-overlapping profiles, bad options; NoStripCentreError for a grid with no strip centre in the contact. A contact reaching the profiles' edge, or a root find that does not
 // converge, is a status plus a spdlog::warn.
 SemiHertzResult solve_semi_hertz(const Profiles& profiles, double Rx1_m, double Rx2_m, const ElasticPair& pair,
                                  double normal_load_N, const GridSpec& spec, const SemiHertzOptions& options = {});
@@ -93,7 +121,7 @@ SemiHertzResult solve_semi_hertz(const Profiles& profiles, double Rx1_m, double 
 // The normal problem on profiles, skipping what the case does not need: when both profiles have
 // constant curvature (has_constant_curvature with curvature_rtol) and the Hertz ellipse fits inside
 // the overlap of their extents, Hertz's solution with the fitted radii, centred on the gap's vertex
-// (a spdlog::info says so; the result's diagnostics filled alike, status "constant curvature");
+// (a spdlog::debug says so; the result's diagnostics filled alike, solver NormalSolverKind::Hertz);
 // otherwise solve_semi_hertz. Both agree within 2e-3 on constant curvature (docs/semi-hertz.md).
 SemiHertzResult solve_normal_on_profiles(const Profiles& profiles, double Rx1_m, double Rx2_m, const ElasticPair& pair,
                                          double normal_load_N, const GridSpec& spec,

@@ -102,7 +102,7 @@ void BM_NormalOnProfilesAuto(benchmark::State& state) {
     keep(r.patch.pressure_Pa.data());
   }
   state.counters["delta_um"] = r.approach_m * 1e6;
-  if (r.status.message.rfind("constant curvature", 0) != 0) state.SkipWithError(("no Hertz skip: " + r.status.message).c_str());
+  if (r.solver != NormalSolverKind::Hertz) state.SkipWithError(("no Hertz skip: " + r.status.message).c_str());
 }
 BENCHMARK(BM_NormalOnProfilesAuto)->ArgNames({"nx", "ny"})->Args({1, 80})->Args({80, 80});
 
