@@ -397,8 +397,7 @@ TEST(SemiHertz, ContactReachingABodysEdgeIsReported) {
   EXPECT_EQ(r.status.kind, SolveStatus::Kind::Failed);
   EXPECT_NE(r.status.message.find("reaches the edge"), std::string::npos) << r.status.message;
   EXPECT_NE(r.status.message.find("crowned_profile(Ry 0.5 m, width 0.004 m)"), std::string::npos);
-  ASSERT_EQ(warnings.count(), 1);
-  EXPECT_NE(warnings.messages()[0].find("reaches the edge"), std::string::npos);
+  EXPECT_EQ(warnings.count(), 0);  // a status for the caller to act on, not a warning
   EXPECT_NEAR(r.contact_y_max_m, 0.002, 1e-15);
   EXPECT_NEAR(field_load_N(r.patch) / 1500, 1, kLoadTol);
 }

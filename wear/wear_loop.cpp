@@ -346,6 +346,7 @@ void check_profile_resolves_contact(const WearModel& m, const NormalState& n) {
 LifeFailure geometry_failure(const std::exception& e) {
   if (dynamic_cast<const UnresolvedContact*>(&e)) return LifeFailure::UnresolvedContact;
   if (dynamic_cast<const WornThrough*>(&e)) return LifeFailure::WornThrough;
+  if (dynamic_cast<const NormalNotConverged*>(&e)) return LifeFailure::NormalNotConverged;
   try {
     std::rethrow_if_nested(e);
   } catch (const std::exception& inner) {
@@ -471,6 +472,7 @@ std::string to_string(LifeFailure f) {
     case LifeFailure::Integrator: return "integrator";
     case LifeFailure::UnresolvedContact: return "unresolved_contact";
     case LifeFailure::WornThrough: return "worn_through";
+    case LifeFailure::NormalNotConverged: return "normal_not_converged";
   }
   return "none";
 }

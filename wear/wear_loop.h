@@ -207,6 +207,7 @@ enum class LifeFailure {
   Integrator,         // ARKODE gave up (repeated error test failures, too much accuracy asked)
   UnresolvedContact,  // wear::UnresolvedContact
   WornThrough,        // wear::WornThrough
+  NormalNotConverged, // wear::NormalNotConverged
 };
 // the report's words: max_depth, max_pressure, edge, revolutions, max_steps, stopped, failed, not_run
 std::string to_string(LifeEnd e);
