@@ -23,7 +23,7 @@ namespace {
 
 constexpr double kRx1 = 0.020, kRx2 = 0.025;  // the paper's rolling radii
 // Semi-Hertz against Hertz on constant curvature: 64 quadrature cells give <= 7e-4 on a, b, p0 and
-// delta (docs/semi-hertz.md); the issue asks for 1e-2. The load is exact to rounding.
+// delta (docs/semi-hertz.md); the requirement is 1e-2. The load is exact to rounding.
 constexpr double kHertzTol = 2e-3;
 constexpr double kLoadTol = 1e-12;
 
@@ -155,7 +155,7 @@ TEST(SemiHertz, KikPiotrowskiAsPublishedUsesOneEpsilonForBothAxes) {
 
 // The tangential solver takes the semi-Hertzian patch as it takes Hertz's.
 TEST(SemiHertz, SteadyCreepForcesMatchHertzPatch) {
-  constexpr double kForceTol = 1e-2;  // the issue's requirement
+  constexpr double kForceTol = 1e-2;  // the required accuracy of the force
   const ContactPatch semi = solve_semi_hertz(crowned_on_flat(0.5), kRx1, kRx2, steel(), 1500, {60, 60},
                                              no_heathcote()).patch;
   const ContactPatch hertz = solve_normal_hertz({{kRx1, 0.5}, {kRx2, kFlat}}, steel(), 1500, {60, 60});
