@@ -1,0 +1,599 @@
+// Kalker's exact theory, steady rolling (exact.h; the derivation is in docs/exact-theory.md).
+//
+// Influence coefficients. Cerruti's surface displacement of one half-space under a tangential
+// point force Q_x at the origin is u_x = Q_x/(2 pi G1) [(1-nu)/r + nu X^2/r^3], u_y = Q_x nu X Y /
+// (2 pi G1 r^3). Both quasi-identical bodies together (1/G = (1/G1 + 1/G2)/2) give twice that with
+// the combined G. Over a rectangle [-c, c] x [-d, d] each term is a mixed second difference of an
+// antiderivative F with d2F/dXdY = the kernel:
+//   1/r:       X asinh(Y/|X|) + Y asinh(X/|Y|)     (Love's, as for the pressure)
+//   X^2/r^3:   Y asinh(X/|Y|)                       (d/dX of it is Y/r, d/dY (Y/r) = X^2/r^3)
+//   Y^2/r^3:   X asinh(Y/|X|)
+//   X Y/r^3:   -r
+// so that with R[F] = F(x+c, y+d) - F(x+c, y-d) - F(x-c, y+d) + F(x-c, y-d), Fa = Y asinh(X/|Y|),
+// Fb = X asinh(Y/|X|):
+//   A_xx = (R[Fa] + (1-nu) R[Fb]) / (pi G),  A_yy = ((1-nu) R[Fa] + R[Fb]) / (pi G),
+//   A_xy = -nu R[r] / (pi G).
+//
+// Convolution. A depends on the offset of the cells only: u = A tau is a zero-padded cyclic
+// convolution on a (2 nxe x 2 ny) grid, nxe = nx + 1 (the grid plus one row ahead of the leading
+// edge). A_xx and A_yy are even in both offsets, A_xy odd in both, so all three spectra are real;
+// one product is two forward and two backward real 2-D transforms (FFTW, planned once per solve).
+//
+// The all-stick start. Without the friction bound the steady problem is linear, D A tau = -w on the
+// contact cells (D the upstream difference above). D A is of order zero (a derivative of a
+// potential of order -1), so restarted GMRES with FFT products and a diagonal right preconditioner
+// (the cell's own coefficient b, below) converges in a number of iterations almost independent of
+// the grid. When the result satisfies |tau| <= mu p everywhere it is the solution (full stick).
+//
+// The friction problem: nonlinear Gauss-Seidel sweeps with an FFT refresh. A sweep visits the
+// strips in turn and each strip from its leading to its trailing cell, the direction of transport,
+// so that in the rolling direction it propagates as a march does. The cell's own coefficient in its
+// slip is diagonal,
+//   s_i/V = r_i + B tau_i,  B = diag(bx, by),  bx = (A_xx(0,0) - A_xx(dx,0))/dx,  by likewise,
+// (A_xy vanishes at offsets along x), and the cell's problem, all else frozen, has a closed form
+// up to one scalar root: stick if |B^-1 r| <= g = mu p (tau = -B^-1 r), else slip with
+//   s_k = r_k sigma/(sigma + g b_k),  tau_k = -g r_k/(sigma + g b_k),  sum_k (r_k/(sigma + g b_k))^2 = 1,
+// whose left side is convex and decreasing in sigma: Newton from sigma = 0 rises monotonically to the
+// root. After each cell the displacements of the cells still to be visited in this sweep are updated
+// directly within the near field (its own strip downstream and the next kNearStrips strips, whole);
+// the far field waits for the refresh by convolution at the end of the sweep. At a fixed point u is
+// exactly A tau and every cell satisfies its Coulomb conditions, which is the discrete problem.
+// Kalker's own solvers in CONTACT (ConvexGS, SteadyGS) are Gauss-Seidel methods of this family.
+#include "lib/tangential/exact.h"
+#include "lib/numeric.h"
+
+#include <fftw3.h>
+#include <spdlog/fmt/fmt.h>
+#include <spdlog/spdlog.h>
+
+#include <algorithm>
+#include <cmath>
+#include <complex>
+#include <memory>
+#include <mutex>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace contact {
+
+namespace {
+
+// strips beyond a cell's own whose displacement a sweep updates directly (the rest by the refresh)
+constexpr int kNearStrips = 2;
+// restart length of GMRES
+constexpr int kGmresRestart = 60;
+// the all-stick start is first solved to this relative residual; when its tractions then exceed the
+// bound by more than kLooseStickMargin somewhere, friction decides and the Newton iteration starts
+// from it (the tractions' error is of the order of the residual times the condition of D A; 1e-3
+// against a margin of 5 % leaves room for a condition up to 50)
+constexpr double kLooseStickTol = 1e-3;
+constexpr double kLooseStickMargin = 0.05;
+
+double F_a(double X, double Y) { return Y != 0 ? Y * std::asinh(X / std::abs(Y)) : 0.0; }
+double F_b(double X, double Y) { return X != 0 ? X * std::asinh(Y / std::abs(X)) : 0.0; }
+double F_r(double X, double Y) { return std::hypot(X, Y); }
+
+template <class F>
+double rectangle_difference(F f, double x, double y, double c, double d) {
+  return f(x + c, y + d) - f(x + c, y - d) - f(x - c, y + d) + f(x - c, y - d);
+}
+
+std::mutex& fftw_planner_mutex() {
+  static std::mutex m;
+  return m;
+}
+
+struct FftwFree {
+  void operator()(void* p) const { fftw_free(p); }
+};
+
+template <class T>
+std::unique_ptr<T, FftwFree> fftw_alloc(std::size_t n) {
+  std::unique_ptr<T, FftwFree> p(static_cast<T*>(fftw_malloc(sizeof(T) * n)));
+  if (!p) throw std::bad_alloc();
+  return p;
+}
+
+// u = A tau on the extended grid (nxe x ny), by zero-padded convolution; the near-field kernel too
+struct TangentialOperator {
+  int nxe, ny, mx, my, nk;
+  std::unique_ptr<double, FftwFree> buf_x, buf_y;               // (my x mx) row-major: m + mx n
+  std::unique_ptr<fftw_complex, FftwFree> spec_x, spec_y;       // (my x nk)
+  std::vector<double> kxx, kxy, kyy;                            // real spectra / (mx my)
+  fftw_plan fx = nullptr, fy = nullptr, bx = nullptr, by = nullptr;
+  // near field: offsets dk in [-(nxe-1), nxe-1], dl in [-kNearStrips, kNearStrips]
+  int near_l;
+  std::vector<double> nxx, nxy, nyy;  // index (dk + nxe - 1) + (2 nxe - 1)(dl + near_l)
+
+  TangentialOperator(int nx_ext, int ny_, double dx, double dy, double G, double nu)
+      : nxe(nx_ext), ny(ny_), mx(2 * nx_ext), my(2 * ny_), nk(nx_ext + 1),
+        buf_x(fftw_alloc<double>(static_cast<std::size_t>(mx) * my)),
+        buf_y(fftw_alloc<double>(static_cast<std::size_t>(mx) * my)),
+        spec_x(fftw_alloc<fftw_complex>(static_cast<std::size_t>(my) * nk)),
+        spec_y(fftw_alloc<fftw_complex>(static_cast<std::size_t>(my) * nk)),
+        near_l(std::min(kNearStrips, ny_ - 1)) {
+    {
+      const std::lock_guard<std::mutex> lock(fftw_planner_mutex());
+      fx = fftw_plan_dft_r2c_2d(my, mx, buf_x.get(), spec_x.get(), FFTW_ESTIMATE);
+      fy = fftw_plan_dft_r2c_2d(my, mx, buf_y.get(), spec_y.get(), FFTW_ESTIMATE);
+      bx = fftw_plan_dft_c2r_2d(my, mx, spec_x.get(), buf_x.get(), FFTW_ESTIMATE);
+      by = fftw_plan_dft_c2r_2d(my, mx, spec_y.get(), buf_y.get(), FFTW_ESTIMATE);
+    }
+    if (!fx || !fy || !bx || !by) {
+      destroy_plans();
+      throw std::runtime_error(fmt::format("exact: fftw_plan_dft_r2c_2d failed for {} x {}", mx, my));
+    }
+    // the three kernels at signed offsets, wrapped onto the padded grid (offset nxe, ny unused)
+    const std::size_t n_pad = static_cast<std::size_t>(mx) * my;
+    std::vector<double> Kxx(n_pad), Kxy(n_pad), Kyy(n_pad);
+    const int wk = 2 * nxe - 1;
+    nxx.assign(static_cast<std::size_t>(wk) * (2 * near_l + 1), 0.0);
+    nxy = nxx;
+    nyy = nxx;
+    for (int n = 0; n < my; ++n) {
+      if (n == ny) continue;
+      const int l = n < ny ? n : n - my;
+      for (int m = 0; m < mx; ++m) {
+        if (m == nxe) continue;
+        const int k = m < nxe ? m : m - mx;
+        const TangentialInfluence a = cerruti_rectangle_influence(k * dx, l * dy, dx, dy, G, nu);
+        const std::size_t q = static_cast<std::size_t>(m) + static_cast<std::size_t>(mx) * n;
+        Kxx[q] = a.xx;
+        Kxy[q] = a.xy;
+        Kyy[q] = a.yy;
+        if (std::abs(l) <= near_l) {
+          const std::size_t w = static_cast<std::size_t>(k + nxe - 1) + static_cast<std::size_t>(wk) * (l + near_l);
+          nxx[w] = a.xx;
+          nxy[w] = a.xy;
+          nyy[w] = a.yy;
+        }
+      }
+    }
+    const double scale = 1.0 / static_cast<double>(n_pad);
+    auto spectrum_of = [&](const std::vector<double>& K, std::vector<double>& out) {
+      std::copy(K.begin(), K.end(), buf_x.get());
+      fftw_execute(fx);
+      out.resize(static_cast<std::size_t>(my) * nk);
+      for (std::size_t q = 0; q < out.size(); ++q) out[q] = spec_x.get()[q][0] * scale;
+    };
+    spectrum_of(Kxx, kxx);
+    spectrum_of(Kxy, kxy);
+    spectrum_of(Kyy, kyy);
+  }
+  ~TangentialOperator() { destroy_plans(); }
+  TangentialOperator(const TangentialOperator&) = delete;
+  TangentialOperator& operator=(const TangentialOperator&) = delete;
+
+  void destroy_plans() {
+    const std::lock_guard<std::mutex> lock(fftw_planner_mutex());
+    for (fftw_plan* p : {&fx, &fy, &bx, &by}) {
+      if (*p) fftw_destroy_plan(*p);
+      *p = nullptr;
+    }
+  }
+
+  // (ux, uy) = A (tx, ty); all (nxe x ny)
+  void apply(const Eigen::ArrayXXd& tx, const Eigen::ArrayXXd& ty, Eigen::ArrayXXd& ux, Eigen::ArrayXXd& uy) {
+    Eigen::Map<Eigen::ArrayXXd> px(buf_x.get(), mx, my), py(buf_y.get(), mx, my);
+    px.setZero();
+    py.setZero();
+    px.topLeftCorner(nxe, ny) = tx;
+    py.topLeftCorner(nxe, ny) = ty;
+    fftw_execute(fx);
+    fftw_execute(fy);
+    fftw_complex* X = spec_x.get();
+    fftw_complex* Y = spec_y.get();
+    const std::size_t n = kxx.size();
+    for (std::size_t q = 0; q < n; ++q) {
+      const double xr = X[q][0], xi = X[q][1], yr = Y[q][0], yi = Y[q][1];
+      X[q][0] = kxx[q] * xr + kxy[q] * yr;
+      X[q][1] = kxx[q] * xi + kxy[q] * yi;
+      Y[q][0] = kxy[q] * xr + kyy[q] * yr;
+      Y[q][1] = kxy[q] * xi + kyy[q] * yi;
+    }
+    fftw_execute(bx);
+    fftw_execute(by);
+    ux = px.topLeftCorner(nxe, ny);
+    uy = py.topLeftCorner(nxe, ny);
+  }
+
+  double near(const std::vector<double>& t, int dk, int dl) const {
+    return t[static_cast<std::size_t>(dk + nxe - 1) + static_cast<std::size_t>(2 * nxe - 1) * (dl + near_l)];
+  }
+};
+
+// a contact cell's Coulomb problem with everything else frozen: slip s = r + B tau (per unit V),
+// |tau| <= g. Returns true for stick.
+bool element_solve(double rx, double ry, double bx, double by, double g, double& tx, double& ty) {
+  const double sx = -rx / bx, sy = -ry / by;  // the stick traction
+  if (sx * sx + sy * sy <= g * g) {
+    tx = sx;
+    ty = sy;
+    return true;
+  }
+  // slip: sum_k (r_k / (sigma + g b_k))^2 = 1, Newton from sigma = 0 (convex, decreasing)
+  double sigma = 0;
+  for (int it = 0; it < 100; ++it) {
+    const double qx = 1 / (sigma + g * bx), qy = 1 / (sigma + g * by);
+    const double h = rx * rx * qx * qx + ry * ry * qy * qy - 1;
+    const double dh = -2 * (rx * rx * qx * qx * qx + ry * ry * qy * qy * qy);
+    const double step = -h / dh;
+    sigma += step;
+    if (!(step > 1e-15 * sigma)) break;
+  }
+  tx = -g * rx / (sigma + g * bx);
+  ty = -g * ry / (sigma + g * by);
+  return false;
+}
+
+}  // namespace
+
+TangentialInfluence cerruti_rectangle_influence(double x_m, double y_m, double dx_m, double dy_m, double G_Pa,
+                                                double nu) {
+  const double c = dx_m / 2, d = dy_m / 2;
+  const double Ra = rectangle_difference(F_a, x_m, y_m, c, d);
+  const double Rb = rectangle_difference(F_b, x_m, y_m, c, d);
+  const double Rr = rectangle_difference(F_r, x_m, y_m, c, d);
+  const double k = 1 / (kPi * G_Pa);
+  TangentialInfluence a;
+  a.xx = k * (Ra + (1 - nu) * Rb);
+  a.yy = k * ((1 - nu) * Ra + Rb);
+  a.xy = -k * nu * Rr;
+  return a;
+}
+
+ExactSolution solve_exact_steady(const ContactPatch& patch, double G_Pa, double nu, const Creepages& creepages,
+                                 double mu, double speed_m_per_s, const ExactOptions& opt) {
+  const Grid& grid = patch.grid;
+  const int nx = grid.nx, ny = grid.ny;
+  if (nx < 1 || ny < 1 || !(grid.dx_m > 0) || !(grid.dy_m > 0) || grid.x_m.size() != nx || grid.y_m.size() != ny)
+    throw std::invalid_argument(fmt::format("exact: the patch's grid is empty or inconsistent ({} x {})", nx, ny));
+  if (patch.pressure_Pa.rows() != nx || patch.pressure_Pa.cols() != ny)
+    throw std::invalid_argument(fmt::format("exact: the patch's pressure is {} x {}, its grid {} x {}",
+                                            patch.pressure_Pa.rows(), patch.pressure_Pa.cols(), nx, ny));
+  if (!patch.pressure_Pa.allFinite() || (patch.pressure_Pa < 0).any())
+    throw std::invalid_argument("exact: the patch's pressure has a negative or non-finite value");
+  if (!(G_Pa > 0) || !std::isfinite(G_Pa))
+    throw std::invalid_argument(fmt::format("exact: G must be positive and finite, got {} Pa", G_Pa));
+  if (!(nu >= 0 && nu < 0.5)) throw std::invalid_argument(fmt::format("exact: nu must be in [0, 0.5), got {}", nu));
+  if (!(mu > 0) || !std::isfinite(mu))
+    throw std::invalid_argument(fmt::format("exact: mu must be positive and finite, got {}", mu));
+  if (!(speed_m_per_s >= 0) || !std::isfinite(speed_m_per_s))
+    throw std::invalid_argument(fmt::format("exact: speed must be >= 0 and finite, got {} m/s", speed_m_per_s));
+  if (!std::isfinite(creepages.xi) || !std::isfinite(creepages.eta) || !std::isfinite(creepages.phi_per_m))
+    throw std::invalid_argument("exact: a creepage is not finite");
+  if (!(opt.tol > 0) || opt.max_iterations < 1 || !(opt.stick_tol > 0) || opt.max_stick_iterations < 1)
+    throw std::invalid_argument("exact: tol, stick_tol must be positive, max_iterations, max_stick_iterations >= 1");
+
+  const int nxe = nx + 1;  // one row ahead of the leading edge
+  const double dx = grid.dx_m, dy = grid.dy_m;
+  TangentialOperator A(nxe, ny, dx, dy, G_Pa, nu);
+  const double bx = (A.near(A.nxx, 0, 0) - A.near(A.nxx, 1, 0)) / dx;
+  const double by = (A.near(A.nyy, 0, 0) - A.near(A.nyy, 1, 0)) / dx;
+  ROLLWEAR_ASSERT(bx > 0 && by > 0, fmt::format("own coefficients bx {} by {}", bx, by));
+
+  // contact cells (column-major index i + nxe j on the extended grid), bound, rigid creepage
+  std::vector<int> cells;
+  Eigen::ArrayXXd g = Eigen::ArrayXXd::Zero(nxe, ny), wx = g, wy = g;
+  for (int j = 0; j < ny; ++j) {
+    const double xi_j = creepages.xi + (patch.strip_xi_offset.size() == ny ? patch.strip_xi_offset(j) : 0.0);
+    for (int i = 0; i < nx; ++i) {
+      if (!(patch.pressure_Pa(i, j) > 0)) continue;
+      cells.push_back(i + nxe * j);
+      g(i, j) = mu * patch.pressure_Pa(i, j);
+      wx(i, j) = xi_j - creepages.phi_per_m * grid.y_m(j);
+      wy(i, j) = creepages.eta + creepages.phi_per_m * grid.x_m(i);
+    }
+  }
+  const int nc = static_cast<int>(cells.size());
+  if (nc == 0) throw std::invalid_argument("exact: the patch has no loaded cell");
+
+  Eigen::ArrayXXd tx = Eigen::ArrayXXd::Zero(nxe, ny), ty = tx, ux = tx, uy = tx;
+  double* const TX = tx.data();
+  double* const TY = ty.data();
+  const double* const UX = ux.data();
+  const double* const UY = uy.data();
+  const double* const WX = wx.data();
+  const double* const WY = wy.data();
+  const double* const Gb = g.data();
+
+  ExactSolution out;
+  SolveStatus& status = out.status;
+  bool stick_converged = false;
+
+  // The linear problem of one Newton step. Per contact cell c (order of `cells`): stick (two
+  // unknowns, the traction) or slip (one unknown, the traction's component tau_t along t = e^perp,
+  // with tau = -g e + tau_t t, e the unit slip direction, |s| the slip of the current iterate):
+  //   stick: (D A tau)_i + w_i = 0
+  //   slip:  (|s_i|/g_i) tau_t + t.((D A tau)_i + w_i) = 0
+  // (the Newton linearisation of tau = -g s/|s|; it stays regular as |s| -> 0, where it asks for
+  // no slip across e).
+  std::vector<char> slip(static_cast<std::size_t>(nc), 0);
+  std::vector<double> ex(static_cast<std::size_t>(nc), 1.0), ey(static_cast<std::size_t>(nc), 0.0),
+      sabs(static_cast<std::size_t>(nc), 0.0);
+  std::vector<int> offset(static_cast<std::size_t>(nc) + 1, 0);
+  auto index_unknowns = [&] {
+    for (int c = 0; c < nc; ++c) offset[c + 1] = offset[c] + (slip[c] ? 1 : 2);
+  };
+  Eigen::ArrayXXd px = tx, py = ty;
+  // x -> traction increments (px, py) on the contact cells
+  auto to_traction = [&](const Eigen::VectorXd& x) {
+    px.setZero();
+    py.setZero();
+    for (int c = 0; c < nc; ++c) {
+      const int q = cells[c], o = offset[c];
+      if (slip[c]) {
+        px.data()[q] = -ey[c] * x(o);
+        py.data()[q] = ex[c] * x(o);
+      } else {
+        px.data()[q] = x(o);
+        py.data()[q] = x(o + 1);
+      }
+    }
+  };
+  // right preconditioner x = M z: z as a traction field, marched from the leading edge along each
+  // run of contact cells and divided by the own coefficient (the inverse of the local part of D A,
+  // b (I - S)), then taken along t on the slip cells
+  auto precondition = [&](const Eigen::VectorXd& z, Eigen::VectorXd& x) {
+    double ax = 0, ay = 0;
+    for (int c = nc - 1; c >= 0; --c) {
+      const int q = cells[c], o = offset[c];
+      const bool upstream_in = c + 1 < nc && cells[c + 1] == q + 1;
+      if (!upstream_in) ax = ay = 0;
+      if (slip[c]) {
+        ax += -ey[c] * z(o) / bx;
+        ay += ex[c] * z(o) / by;
+        x(o) = -ey[c] * ax + ex[c] * ay;
+      } else {
+        ax += z(o) / bx;
+        ay += z(o + 1) / by;
+        x(o) = ax;
+        x(o + 1) = ay;
+      }
+    }
+  };
+  // rows of the linear operator for traction increments (px, py) and unknowns x; with_w adds w
+  auto rows = [&](const Eigen::ArrayXXd& fx_, const Eigen::ArrayXXd& fy_, const Eigen::VectorXd* x, bool with_w,
+                  Eigen::VectorXd& y) {
+    A.apply(fx_, fy_, ux, uy);
+    for (int c = 0; c < nc; ++c) {
+      const int q = cells[c], o = offset[c];
+      double rx = (UX[q] - UX[q + 1]) / dx, ry = (UY[q] - UY[q + 1]) / dx;
+      if (with_w) {
+        rx += WX[q];
+        ry += WY[q];
+      }
+      if (slip[c]) {
+        y(o) = -ey[c] * rx + ex[c] * ry + (x ? sabs[c] / Gb[q] * (*x)(o) : 0.0);
+      } else {
+        y(o) = rx;
+        y(o + 1) = ry;
+      }
+    }
+  };
+  int gmres_total = 0;
+  Eigen::VectorXd xm, zv, mz;
+  // one Newton step from (tx, ty): solves for the increment to rel_tol; returns the relative residual
+  auto newton_step = [&](double rel_tol) {
+    index_unknowns();
+    const int n = offset[nc];
+    // the current tractions in these unknowns: the fixed part -g e on slip cells
+    Eigen::ArrayXXd fx0 = Eigen::ArrayXXd::Zero(nxe, ny), fy0 = fx0;
+    Eigen::VectorXd x0(n);
+    for (int c = 0; c < nc; ++c) {
+      const int q = cells[c], o = offset[c];
+      if (slip[c]) {
+        fx0.data()[q] = -Gb[q] * ex[c];
+        fy0.data()[q] = -Gb[q] * ey[c];
+        x0(o) = -ey[c] * TX[q] + ex[c] * TY[q];
+      } else {
+        x0(o) = TX[q];
+        x0(o + 1) = TY[q];
+      }
+    }
+    to_traction(x0);
+    fx0 += px;
+    fy0 += py;
+    Eigen::VectorXd b(n), w(n), r(n), v(n), xi(n);
+    rows(fx0, fy0, nullptr, true, b);  // F(x0) without the |s|/g term of the slip rows
+    for (int c = 0; c < nc; ++c)
+      if (slip[c]) b(offset[c]) += sabs[c] / Gb[cells[c]] * x0(offset[c]);
+    b = -b;
+    const double b_norm = b.norm();
+    Eigen::VectorXd z = Eigen::VectorXd::Zero(n);
+    auto matvec = [&](const Eigen::VectorXd& zz, Eigen::VectorXd& y) {
+      precondition(zz, xi);
+      to_traction(xi);
+      rows(px, py, &xi, false, y);
+    };
+    double rel = 0;
+    if (n > 0 && b_norm > 0) {
+      const int m = kGmresRestart;
+      Eigen::MatrixXd Vk(n, m + 1), Hm = Eigen::MatrixXd::Zero(m + 1, m);
+      Eigen::VectorXd cs(m), sn(m), e(m + 1);
+      for (;;) {
+        matvec(z, w);
+        r = b - w;
+        const double beta = r.norm();
+        rel = beta / std::max(b_norm, 1e-300);
+        if (rel <= rel_tol || gmres_total >= opt.max_stick_iterations) break;
+        Vk.col(0) = r / beta;
+        e.setZero();
+        e(0) = beta;
+        Hm.setZero();
+        int k = 0;
+        while (k < m && gmres_total < opt.max_stick_iterations) {
+          v = Vk.col(k);
+          matvec(v, w);
+          ++gmres_total;
+          for (int i = 0; i <= k; ++i) {  // modified Gram-Schmidt
+            Hm(i, k) = Vk.col(i).dot(w);
+            w -= Hm(i, k) * Vk.col(i);
+          }
+          Hm(k + 1, k) = w.norm();
+          if (Hm(k + 1, k) > 0) Vk.col(k + 1) = w / Hm(k + 1, k);
+          for (int i = 0; i < k; ++i) {  // Givens rotations
+            const double t = cs(i) * Hm(i, k) + sn(i) * Hm(i + 1, k);
+            Hm(i + 1, k) = -sn(i) * Hm(i, k) + cs(i) * Hm(i + 1, k);
+            Hm(i, k) = t;
+          }
+          const double den = std::hypot(Hm(k, k), Hm(k + 1, k));
+          cs(k) = Hm(k, k) / den;
+          sn(k) = Hm(k + 1, k) / den;
+          Hm(k, k) = den;
+          Hm(k + 1, k) = 0;
+          e(k + 1) = -sn(k) * e(k);
+          e(k) = cs(k) * e(k);
+          ++k;
+          if (std::abs(e(k)) <= 0.5 * rel_tol * b_norm || !(den > 0)) break;
+        }
+        const Eigen::VectorXd yk = Hm.topLeftCorner(k, k).triangularView<Eigen::Upper>().solve(e.head(k));
+        z += Vk.leftCols(k) * yk;
+      }
+    }
+    precondition(z, xi);
+    xi += x0;
+    to_traction(xi);
+    for (int c = 0; c < nc; ++c) {
+      const int q = cells[c];
+      TX[q] = px.data()[q] + (slip[c] ? -Gb[q] * ex[c] : 0.0);
+      TY[q] = py.data()[q] + (slip[c] ? -Gb[q] * ey[c] : 0.0);
+    }
+    return rel;
+  };
+
+  // ---- all stick first (the linear theory when mu is large): to kLooseStickTol, and on to
+  // stick_tol unless the tractions already exceed the bound by more than that solve's error
+  auto exceeds_bound = [&](double margin) {
+    for (const int q : cells)
+      if (std::hypot(TX[q], TY[q]) > Gb[q] * (1 + margin)) return true;
+    return false;
+  };
+  double rel = newton_step(kLooseStickTol);
+  if (rel <= kLooseStickTol && !exceeds_bound(kLooseStickMargin)) rel = newton_step(opt.stick_tol);
+  out.stick_iterations = gmres_total;
+  const bool admissible = !exceeds_bound(0);
+  Eigen::ArrayXXi state = Eigen::ArrayXXi::Zero(nxe, ny);
+  double residual = 0;
+  int outer = 0;
+  if (!(rel <= (admissible ? opt.stick_tol : kLooseStickTol))) {
+    status.kind = std::isfinite(rel) ? SolveStatus::Kind::MaxIterations : SolveStatus::Kind::Failed;
+    status.message = fmt::format("all-stick GMRES: relative residual {:.2g} > tol {:.3g} after {} iterations", rel,
+                                 opt.stick_tol, gmres_total);
+    residual = rel;
+  } else if (admissible) {
+    A.apply(tx, ty, ux, uy);
+    for (const int q : cells) state.data()[q] = 1;
+    status.kind = SolveStatus::Kind::Converged;
+    status.message = fmt::format("full stick: GMRES relative residual {:.2g} <= {:.3g} after {} iterations", rel,
+                                 opt.stick_tol, gmres_total);
+    residual = rel;
+  } else {
+    // ---- friction: semi-smooth Newton on the active sets. Each iteration: every cell's own
+    // Coulomb problem with u = A tau fresh gives the residual, the stick and slip sets, the slip
+    // tractions and directions; then one Newton step.
+    for (const int q : cells) {  // the stick tractions clipped to the bound start it
+      const double t = std::hypot(TX[q], TY[q]);
+      if (t > Gb[q]) {
+        TX[q] *= Gb[q] / t;
+        TY[q] *= Gb[q] / t;
+      }
+    }
+    for (;; ++outer) {
+      A.apply(tx, ty, ux, uy);
+      double change = 0, scale = 0;
+      for (int c = 0; c < nc; ++c) {
+        const int q = cells[c];
+        const double rx = WX[q] + (UX[q] - UX[q + 1]) / dx - bx * TX[q];
+        const double ry = WY[q] + (UY[q] - UY[q + 1]) / dx - by * TY[q];
+        double sx, sy;
+        const bool stick = element_solve(rx, ry, bx, by, Gb[q], sx, sy);
+        state.data()[q] = stick ? 1 : 2;
+        change = std::max(change, std::hypot(sx - TX[q], sy - TY[q]));
+        scale = std::max(scale, std::hypot(TX[q], TY[q]));
+        slip[c] = !stick;
+        if (!stick) {  // the slip of the element solution: s = r + B tau, along -tau
+          const double vx = rx + bx * sx, vy = ry + by * sy;
+          sabs[c] = std::hypot(vx, vy);
+          ex[c] = -sx / Gb[q];
+          ey[c] = -sy / Gb[q];
+          const double en = std::hypot(ex[c], ey[c]);
+          ex[c] /= en;
+          ey[c] /= en;
+          TX[q] = sx;
+          TY[q] = sy;
+        }
+      }
+      residual = scale > 0 ? change / scale : change;
+      if (!std::isfinite(residual)) {
+        status.kind = SolveStatus::Kind::Failed;
+        status.message = fmt::format("residual is {} after {} Newton iterations", residual, outer);
+        break;
+      }
+      if (residual <= opt.tol) {
+        status.kind = SolveStatus::Kind::Converged;
+        status.message = fmt::format("residual {:.2g} <= tol {:.3g} after {} Newton iterations ({} GMRES)",
+                                     residual, opt.tol, outer, gmres_total);
+        break;
+      }
+      if (outer >= opt.max_iterations || gmres_total >= opt.max_stick_iterations) {
+        status.kind = SolveStatus::Kind::MaxIterations;
+        status.message = fmt::format("residual {:.2g} > tol {:.3g} after {} Newton iterations ({} GMRES)",
+                                     residual, opt.tol, outer, gmres_total);
+        break;
+      }
+      newton_step(std::max(opt.stick_tol, 1e-2 * residual));
+    }
+    A.apply(tx, ty, ux, uy);
+  }
+  out.active_set_iterations = outer;
+  status.iterations = gmres_total;
+  status.residual = residual;
+
+  // ---- the solution as the fast solvers report it
+  TangentialSolution& s = out.fields;
+  const double V = speed_m_per_s;
+  s.tau_x_Pa = tx.topRows(nx);
+  s.tau_y_Pa = ty.topRows(nx);
+  s.slip_x_m_per_s = Eigen::ArrayXXd::Zero(nx, ny);
+  s.slip_y_m_per_s = Eigen::ArrayXXd::Zero(nx, ny);
+  s.power_W_per_m2 = Eigen::ArrayXXd::Zero(nx, ny);
+  s.state = state.topRows(nx);
+  s.strip_power_W_per_m = Eigen::ArrayXd::Zero(ny);
+  s.strip_creep_power_W_per_m = Eigen::ArrayXd::Zero(ny);
+  s.strip_trailing_W_per_m = Eigen::ArrayXd::Zero(ny);
+  s.strip_force_x_N_per_m = Eigen::ArrayXd::Zero(ny);
+  s.strip_force_y_N_per_m = Eigen::ArrayXd::Zero(ny);
+  double stick = 0;
+  for (const int q : cells) {
+    const int i = q % nxe, j = q / nxe;
+    const double sx = V * (WX[q] + (UX[q] - UX[q + 1]) / dx);
+    const double sy = V * (WY[q] + (UY[q] - UY[q + 1]) / dx);
+    s.slip_x_m_per_s(i, j) = sx;
+    s.slip_y_m_per_s(i, j) = sy;
+    s.power_W_per_m2(i, j) = -(TX[q] * sx + TY[q] * sy);
+    s.strip_power_W_per_m(j) += s.power_W_per_m2(i, j) * dx;
+    s.strip_creep_power_W_per_m(j) += -V * (TX[q] * WX[q] + TY[q] * WY[q]) * dx;
+    s.strip_force_x_N_per_m(j) += TX[q] * dx;
+    s.strip_force_y_N_per_m(j) += TY[q] * dx;
+    s.Mz_N_m += (grid.x_m(i) * TY[q] - grid.y_m(j) * TX[q]) * dx * dy;
+    if (state.data()[q] == 1) stick += 1;
+  }
+  s.Fx_N = s.strip_force_x_N_per_m.sum() * dy;
+  s.Fy_N = s.strip_force_y_N_per_m.sum() * dy;
+  s.power_W = s.strip_power_W_per_m.sum() * dy;
+  s.stick_fraction = stick / nc;
+  double xi_Fx = creepages.xi * s.Fx_N;
+  if (patch.strip_xi_offset.size() == ny) xi_Fx += (patch.strip_xi_offset * s.strip_force_x_N_per_m).sum() * dy;
+  s.creep_work_W = V * (xi_Fx + creepages.eta * s.Fy_N + creepages.phi_per_m * s.Mz_N_m);
+  out.u_x_m = ux.topRows(nx);
+  out.u_y_m = uy.topRows(nx);
+
+  spdlog::debug("exact steady ({} x {}): {}; Fx {:.6e} N, Fy {:.6e} N, Mz {:.6e} N m, P {:.6e} W, stick {:.3f}", nx,
+                ny, status.message, s.Fx_N, s.Fy_N, s.Mz_N_m, s.power_W, s.stick_fraction);
+  if (!status.converged()) spdlog::warn("exact steady ({} x {}): not converged: {}", nx, ny, status.message);
+  return out;
+}
+
+}  // namespace contact
