@@ -14,10 +14,14 @@
 // not: the grid is extended internally by one row of cells ahead of the leading edge so that the
 // upstream displacement of the first contact cell is A tau too.
 //
+// Method (exact.cpp): the all-stick (linear) problem by GMRES with FFT products and a march as
+// preconditioner; when its tractions exceed mu p somewhere, a semi-smooth Newton iteration on the
+// stick and slip sets, each step one preconditioned GMRES solve.
 // Convergence is judged on the fixed-point residual: with u = A tau fresh from a convolution, each
 // contact cell's own Coulomb problem (all other tractions frozen) is solved, and
-//   residual = max_i |tau_i(element solve) - tau_i| / max(max_i |tau_i|, mu p_max * 1e-300),
-// converged when residual <= tol. The status carries the number and the iterations.
+//   residual = max_i |tau_i(cell's own solve) - tau_i| / max_i |tau_i|,
+// converged when residual <= tol; at full stick, on GMRES's relative residual <= stick_tol. The
+// status carries the number and the GMRES iterations (one FFT product each).
 #pragma once
 
 #include <Eigen/Core>
