@@ -122,7 +122,7 @@ constexpr double kCoefficientTol = 0.01;
 
 // ---- influence coefficients
 
-// Reference: Cerruti's point force (Johnson 1985, §3.5 with z = 0), both bodies:
+// Reference: Cerruti's point force (Johnson 1985, ch. 3, at the surface z = 0), both bodies:
 // u_x = Q/(pi G) [(1-nu)/r + nu x^2/r^3], u_y = Q nu x y/(pi G r^3). Far from the rectangle its
 // traction acts as a point force Q = tau dx dy; the relative error falls as (size/r)^2.
 TEST(ExactInfluence, FarFieldIsCerrutiPointForce) {
