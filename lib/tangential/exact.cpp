@@ -17,7 +17,8 @@
 // Convolution. A depends on the offset of the cells only: u = A tau is a zero-padded cyclic
 // convolution on a (2 nxe x 2 ny) grid, nxe = nx + 1 (the grid plus one row ahead of the leading
 // edge). A_xx and A_yy are even in both offsets, A_xy odd in both, so all three spectra are real;
-// one product is two forward and two backward real 2-D transforms (FFTW, planned once per solve).
+// one product is two forward and two backward real 2-D transforms (FFTW, planned once per solve),
+// each done as in the normal solver: along x on the ny rows that can be nonzero, along y on all.
 //
 // The cell's own coefficient. In the slip of cell i, its own traction enters through u_i and
 // u_(i+1) only, and diagonally (A_xy vanishes at offsets along x):
@@ -112,30 +113,44 @@ std::unique_ptr<T, FftwFree> fftw_alloc(std::size_t n) {
 // u = A tau on the extended grid (nxe x ny), by zero-padded convolution
 struct TangentialOperator {
   int nxe, ny, mx, my, nk;
-  std::unique_ptr<double, FftwFree> buf_x, buf_y;               // (my x mx) row-major: m + mx n
-  std::unique_ptr<fftw_complex, FftwFree> spec_x, spec_y;       // (my x nk)
-  std::vector<double> kxx, kxy, kyy;                            // real spectra / (mx my)
-  fftw_plan fx = nullptr, fy = nullptr, bx = nullptr, by = nullptr;
+  // the rows that can be nonzero (ny x mx, row-major: m + mx n) and the spectra (my x nk)
+  std::unique_ptr<double, FftwFree> rows_x, rows_y;
+  std::unique_ptr<fftw_complex, FftwFree> spec_x, spec_y;
+  std::vector<double> kxx, kxy, kyy;  // real spectra / (mx my)
+  // per component: r2c along x on the first ny rows, c2c along y on every column, and back
+  fftw_plan rf[2] = {nullptr, nullptr}, cf[2] = {nullptr, nullptr};
+  fftw_plan cb[2] = {nullptr, nullptr}, rb[2] = {nullptr, nullptr};
 
   TangentialOperator(int nx_ext, int ny_, double dx, double dy, double G, double nu)
       : nxe(nx_ext), ny(ny_), mx(2 * nx_ext), my(2 * ny_), nk(nx_ext + 1),
-        buf_x(fftw_alloc<double>(static_cast<std::size_t>(mx) * my)),
-        buf_y(fftw_alloc<double>(static_cast<std::size_t>(mx) * my)),
+        rows_x(fftw_alloc<double>(static_cast<std::size_t>(mx) * ny_)),
+        rows_y(fftw_alloc<double>(static_cast<std::size_t>(mx) * ny_)),
         spec_x(fftw_alloc<fftw_complex>(static_cast<std::size_t>(my) * nk)),
         spec_y(fftw_alloc<fftw_complex>(static_cast<std::size_t>(my) * nk)) {
+    const std::size_t n_pad = static_cast<std::size_t>(mx) * my;
+    std::unique_ptr<double, FftwFree> kernel = fftw_alloc<double>(n_pad);
+    fftw_plan kernel_forward = nullptr;
     {
       const std::lock_guard<std::mutex> lock(fftw_planner_mutex());
-      fx = fftw_plan_dft_r2c_2d(my, mx, buf_x.get(), spec_x.get(), FFTW_ESTIMATE);
-      fy = fftw_plan_dft_r2c_2d(my, mx, buf_y.get(), spec_y.get(), FFTW_ESTIMATE);
-      bx = fftw_plan_dft_c2r_2d(my, mx, spec_x.get(), buf_x.get(), FFTW_ESTIMATE);
-      by = fftw_plan_dft_c2r_2d(my, mx, spec_y.get(), buf_y.get(), FFTW_ESTIMATE);
+      double* rows[2] = {rows_x.get(), rows_y.get()};
+      fftw_complex* spec[2] = {spec_x.get(), spec_y.get()};
+      for (int c = 0; c < 2; ++c) {
+        rf[c] = fftw_plan_many_dft_r2c(1, &mx, ny, rows[c], nullptr, 1, mx, spec[c], nullptr, 1, nk, FFTW_ESTIMATE);
+        cf[c] = fftw_plan_many_dft(1, &my, nk, spec[c], nullptr, nk, 1, spec[c], nullptr, nk, 1, FFTW_FORWARD,
+                                   FFTW_ESTIMATE);
+        cb[c] = fftw_plan_many_dft(1, &my, nk, spec[c], nullptr, nk, 1, spec[c], nullptr, nk, 1, FFTW_BACKWARD,
+                                   FFTW_ESTIMATE);
+        rb[c] = fftw_plan_many_dft_c2r(1, &mx, ny, spec[c], nullptr, 1, nk, rows[c], nullptr, 1, mx, FFTW_ESTIMATE);
+      }
+      kernel_forward = fftw_plan_dft_r2c_2d(my, mx, kernel.get(), spec_x.get(), FFTW_ESTIMATE);
     }
-    if (!fx || !fy || !bx || !by) {
-      destroy_plans();
-      throw std::runtime_error(fmt::format("exact: fftw_plan_dft_r2c_2d failed for {} x {}", mx, my));
+    bool planned = kernel_forward != nullptr;
+    for (int c = 0; c < 2; ++c) planned = planned && rf[c] && cf[c] && cb[c] && rb[c];
+    if (!planned) {
+      destroy_plans(&kernel_forward);
+      throw std::runtime_error(fmt::format("exact: fftw_plan_many_dft failed for {} x {}", mx, my));
     }
     // the three kernels at signed offsets, wrapped onto the padded grid (offset nxe, ny unused)
-    const std::size_t n_pad = static_cast<std::size_t>(mx) * my;
     std::vector<double> Kxx(n_pad), Kxy(n_pad), Kyy(n_pad);
     // the first quadrant, then by parity: xx, yy even in both offsets, xy odd in both
     for (int l = 0; l < ny; ++l) {
@@ -156,38 +171,47 @@ struct TangentialOperator {
     }
     const double scale = 1.0 / static_cast<double>(n_pad);
     auto spectrum_of = [&](const std::vector<double>& K, std::vector<double>& out) {
-      std::copy(K.begin(), K.end(), buf_x.get());
-      fftw_execute(fx);
+      std::copy(K.begin(), K.end(), kernel.get());
+      fftw_execute(kernel_forward);
       out.resize(static_cast<std::size_t>(my) * nk);
       for (std::size_t q = 0; q < out.size(); ++q) out[q] = spec_x.get()[q][0] * scale;
     };
     spectrum_of(Kxx, kxx);
     spectrum_of(Kxy, kxy);
     spectrum_of(Kyy, kyy);
+    destroy_plans(&kernel_forward, false);
   }
   ~TangentialOperator() { destroy_plans(); }
   TangentialOperator(const TangentialOperator&) = delete;
   TangentialOperator& operator=(const TangentialOperator&) = delete;
 
-  void destroy_plans() {
+  // the apply plans (all = true) and extra, one at a time under the planner's lock
+  void destroy_plans(fftw_plan* extra = nullptr, bool all = true) {
     const std::lock_guard<std::mutex> lock(fftw_planner_mutex());
-    for (fftw_plan* p : {&fx, &fy, &bx, &by}) {
-      if (*p) fftw_destroy_plan(*p);
-      *p = nullptr;
-    }
+    if (extra && *extra) fftw_destroy_plan(*extra);
+    if (!all) return;
+    for (int c = 0; c < 2; ++c)
+      for (fftw_plan* p : {&rf[c], &cf[c], &cb[c], &rb[c]}) {
+        if (*p) fftw_destroy_plan(*p);
+        *p = nullptr;
+      }
   }
 
   // (ux, uy) = A (tx, ty); all (nxe x ny)
   void apply(const Eigen::ArrayXXd& tx, const Eigen::ArrayXXd& ty, Eigen::ArrayXXd& ux, Eigen::ArrayXXd& uy) {
-    Eigen::Map<Eigen::ArrayXXd> px(buf_x.get(), mx, my), py(buf_y.get(), mx, my);
-    px.setZero();
-    py.setZero();
-    px.topLeftCorner(nxe, ny) = tx;
-    py.topLeftCorner(nxe, ny) = ty;
-    fftw_execute(fx);
-    fftw_execute(fy);
+    Eigen::Map<Eigen::ArrayXXd> px(rows_x.get(), mx, ny), py(rows_y.get(), mx, ny);
+    px.topRows(nxe) = tx;
+    px.bottomRows(mx - nxe).setZero();
+    py.topRows(nxe) = ty;
+    py.bottomRows(mx - nxe).setZero();
     fftw_complex* X = spec_x.get();
     fftw_complex* Y = spec_y.get();
+    for (int c = 0; c < 2; ++c) {
+      fftw_execute(rf[c]);
+      double* S = reinterpret_cast<double*>(c == 0 ? X : Y);  // the padded rows' spectrum is zero
+      std::fill(S + 2 * static_cast<std::size_t>(ny) * nk, S + 2 * static_cast<std::size_t>(my) * nk, 0.0);
+      fftw_execute(cf[c]);
+    }
     const std::size_t n = kxx.size();
     for (std::size_t q = 0; q < n; ++q) {
       const double xr = X[q][0], xi = X[q][1], yr = Y[q][0], yi = Y[q][1];
@@ -196,10 +220,12 @@ struct TangentialOperator {
       Y[q][0] = kxy[q] * xr + kyy[q] * yr;
       Y[q][1] = kxy[q] * xi + kyy[q] * yi;
     }
-    fftw_execute(bx);
-    fftw_execute(by);
-    ux = px.topLeftCorner(nxe, ny);
-    uy = py.topLeftCorner(nxe, ny);
+    for (int c = 0; c < 2; ++c) {
+      fftw_execute(cb[c]);
+      fftw_execute(rb[c]);
+    }
+    ux = px.topRows(nxe);
+    uy = py.topRows(nxe);
   }
 };
 
