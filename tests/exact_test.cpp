@@ -287,6 +287,52 @@ TEST(ExactSteady, UnconvergedSolveIsAStatus) {
   EXPECT_EQ(warnings.count(), 1);
 }
 
+// ---- transient rolling
+
+// Reference: steady rolling is the fixed point of the rolling step by one cell (Kalker's steady
+// discretisation is the transient one with the previous field equal to the current one): one step
+// from the steady displacement reproduces the steady tractions.
+TEST(ExactRolling, SteadyStateIsTheFixedPointOfTheStep) {
+  const ElasticPair pair = paper_steel();
+  const double G = combined_shear_modulus_Pa(pair), nu = combined_poisson(pair), mu = 0.3;
+  const ContactPatch p = paper_patch(24);
+  ExactOptions tight;
+  tight.tol = 1e-12;
+  tight.stick_tol = 1e-12;
+  const Creepages c{1e-3, 5e-4, 2.0};
+  const ExactSolution steady = solve_exact_steady(p, G, nu, c, mu, 1.0, tight);
+  ASSERT_TRUE(steady.status.converged()) << steady.status.message;
+  const ExactSolution step = solve_exact_rolling_step(p, G, nu, c, mu, 1.0, steady.u_x_m, steady.u_y_m, tight);
+  ASSERT_TRUE(step.status.converged()) << step.status.message;
+  const double scale = mu * p.p0_Pa;
+  EXPECT_LT((step.fields.tau_x_Pa - steady.fields.tau_x_Pa).abs().maxCoeff(), 1e-8 * scale);
+  EXPECT_LT((step.fields.tau_y_Pa - steady.fields.tau_y_Pa).abs().maxCoeff(), 1e-8 * scale);
+  EXPECT_NEAR(step.fields.Fx_N, steady.fields.Fx_N, 1e-8 * std::abs(steady.fields.Fx_N));
+}
+
+// Reference: the start from rest builds the force up monotonically towards the steady one
+// (Kalker's transient theory; the traction bound never binds the first cell, which has rolled one
+// dx). Checked on 20 x 20 over 8 a.
+TEST(ExactRolling, StartFromRestBuildsUpToSteady) {
+  const ElasticPair pair = paper_steel();
+  const double G = combined_shear_modulus_Pa(pair), nu = combined_poisson(pair), mu = 0.3;
+  const int n = 20;
+  const ContactPatch p = paper_patch(n);
+  const ExactSolution steady = solve_exact_steady(p, G, nu, {1e-3, 0, 0}, mu, 1.0);
+  Eigen::ArrayXXd ux = Eigen::ArrayXXd::Zero(n + 1, n), uy = ux;
+  double last = 0;
+  for (int k = 1; k <= 4 * n; ++k) {  // q = 8 a in steps dx = 2a/n
+    const ExactSolution s = solve_exact_rolling_step(p, G, nu, {1e-3, 0, 0}, mu, 1.0, ux, uy);
+    ASSERT_TRUE(s.status.converged()) << s.status.message;
+    EXPECT_LT(s.fields.Fx_N, last + 1e-9 * std::abs(steady.fields.Fx_N)) << "step " << k;
+    last = s.fields.Fx_N;
+    ux = s.u_x_m;
+    uy = s.u_y_m;
+  }
+  EXPECT_GT(last / steady.fields.Fx_N, 0.85);
+  EXPECT_LT(last / steady.fields.Fx_N, 1.0);
+}
+
 TEST(ExactSteady, RejectsBadInput) {
   const ContactPatch p = ellipse_patch(1, 8);
   EXPECT_THROW(solve_exact_steady(p, 0, 0.3, {1e-3, 0, 0}, 0.3, 1), std::invalid_argument);

@@ -65,6 +65,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <complex>
 #include <memory>
 #include <mutex>
@@ -84,6 +85,8 @@ constexpr int kGmresRestart = 60;
 // against a margin of 5 % leaves room for a condition up to 50)
 constexpr double kLooseStickTol = 1e-3;
 constexpr double kLooseStickMargin = 0.05;
+// backtracking steps of the Newton iteration before a step that raised the residual is accepted
+constexpr int kMaxHalvings = 4;
 
 double F_a(double X, double Y) { return Y != 0 ? Y * std::asinh(X / std::abs(Y)) : 0.0; }
 double F_b(double X, double Y) { return X != 0 ? X * std::asinh(Y / std::abs(X)) : 0.0; }
@@ -269,40 +272,51 @@ TangentialInfluence cerruti_rectangle_influence(double x_m, double y_m, double d
   return a;
 }
 
-ExactSolution solve_exact_steady(const ContactPatch& patch, double G_Pa, double nu, const Creepages& creepages,
-                                 double mu, double speed_m_per_s, const ExactOptions& opt) {
+namespace {
+
+// steady (prev_ux == nullptr) or one rolling step by dq = dx from the previous displacement
+ExactSolution solve_exact(const ContactPatch& patch, double G_Pa, double nu, const Creepages& creepages, double mu,
+                          double speed_m_per_s, const ExactOptions& opt, const Eigen::ArrayXXd* prev_ux,
+                          const Eigen::ArrayXXd* prev_uy) {
+  const bool transient = prev_ux != nullptr;
+  const char* const mode = transient ? "exact rolling step" : "exact steady";
   const Grid& grid = patch.grid;
   const int nx = grid.nx, ny = grid.ny;
   if (nx < 1 || ny < 1 || !(grid.dx_m > 0) || !(grid.dy_m > 0) || grid.x_m.size() != nx || grid.y_m.size() != ny)
-    throw std::invalid_argument(fmt::format("exact: the patch's grid is empty or inconsistent ({} x {})", nx, ny));
+    throw std::invalid_argument(fmt::format("{}: the patch's grid is empty or inconsistent ({} x {})", mode, nx, ny));
   if (patch.pressure_Pa.rows() != nx || patch.pressure_Pa.cols() != ny)
-    throw std::invalid_argument(fmt::format("exact: the patch's pressure is {} x {}, its grid {} x {}",
+    throw std::invalid_argument(fmt::format("{}: the patch's pressure is {} x {}, its grid {} x {}", mode,
                                             patch.pressure_Pa.rows(), patch.pressure_Pa.cols(), nx, ny));
   if (!patch.pressure_Pa.allFinite() || (patch.pressure_Pa < 0).any())
-    throw std::invalid_argument("exact: the patch's pressure has a negative or non-finite value");
+    throw std::invalid_argument(std::string(mode) + ": the patch's pressure has a negative or non-finite value");
   if (!(G_Pa > 0) || !std::isfinite(G_Pa))
-    throw std::invalid_argument(fmt::format("exact: G must be positive and finite, got {} Pa", G_Pa));
-  if (!(nu >= 0 && nu < 0.5)) throw std::invalid_argument(fmt::format("exact: nu must be in [0, 0.5), got {}", nu));
+    throw std::invalid_argument(fmt::format("{}: G must be positive and finite, got {} Pa", mode, G_Pa));
+  if (!(nu >= 0 && nu < 0.5)) throw std::invalid_argument(fmt::format("{}: nu must be in [0, 0.5), got {}", mode, nu));
   if (!(mu > 0) || !std::isfinite(mu))
-    throw std::invalid_argument(fmt::format("exact: mu must be positive and finite, got {}", mu));
+    throw std::invalid_argument(fmt::format("{}: mu must be positive and finite, got {}", mode, mu));
   if (!(speed_m_per_s >= 0) || !std::isfinite(speed_m_per_s))
-    throw std::invalid_argument(fmt::format("exact: speed must be >= 0 and finite, got {} m/s", speed_m_per_s));
+    throw std::invalid_argument(fmt::format("{}: speed must be >= 0 and finite, got {} m/s", mode, speed_m_per_s));
   if (!std::isfinite(creepages.xi) || !std::isfinite(creepages.eta) || !std::isfinite(creepages.phi_per_m))
-    throw std::invalid_argument("exact: a creepage is not finite");
+    throw std::invalid_argument(std::string(mode) + ": a creepage is not finite");
   if (!(opt.tol > 0) || opt.max_iterations < 1 || !(opt.stick_tol > 0) || opt.max_stick_iterations < 1)
-    throw std::invalid_argument("exact: tol, stick_tol must be positive, max_iterations, max_stick_iterations >= 1");
+    throw std::invalid_argument(std::string(mode) + ": tol, stick_tol must be positive, max_iterations, max_stick_iterations >= 1");
 
   const int nxe = nx + 1;  // one row ahead of the leading edge
   const double dx = grid.dx_m, dy = grid.dy_m;
   TangentialOperator A(nxe, ny, dx, dy, G_Pa, nu);
   const TangentialInfluence A0 = cerruti_rectangle_influence(0, 0, dx, dy, G_Pa, nu);
   const TangentialInfluence A1 = cerruti_rectangle_influence(dx, 0, dx, dy, G_Pa, nu);
-  const double bx = (A0.xx - A1.xx) / dx, by = (A0.yy - A1.yy) / dx;
+  // steady: u_(i+1) is A tau too; a rolling step: it is the previous step's, known
+  const double upstream = transient ? 0.0 : 1.0;
+  const double bx = (A0.xx - upstream * A1.xx) / dx, by = (A0.yy - upstream * A1.yy) / dx;
+  if (transient && (prev_ux->rows() != nx + 1 || prev_ux->cols() != ny || prev_uy->rows() != nx + 1 ||
+                    prev_uy->cols() != ny || !prev_ux->allFinite() || !prev_uy->allFinite()))
+    throw std::invalid_argument(fmt::format("{}: the previous displacement must be finite, {} x {}", mode, nx + 1, ny));
   ROLLWEAR_ASSERT(bx > 0 && by > 0, fmt::format("own coefficients bx {} by {}", bx, by));
 
   // contact cells (column-major index i + nxe j on the extended grid), bound, rigid creepage
   std::vector<int> cells;
-  Eigen::ArrayXXd g = Eigen::ArrayXXd::Zero(nxe, ny), wx = g, wy = g;
+  Eigen::ArrayXXd g = Eigen::ArrayXXd::Zero(nxe, ny), wx = g, wy = g, wex = g, wey = g;
   for (int j = 0; j < ny; ++j) {
     const double xi_j = creepages.xi + (patch.strip_xi_offset.size() == ny ? patch.strip_xi_offset(j) : 0.0);
     for (int i = 0; i < nx; ++i) {
@@ -311,18 +325,27 @@ ExactSolution solve_exact_steady(const ContactPatch& patch, double G_Pa, double 
       g(i, j) = mu * patch.pressure_Pa(i, j);
       wx(i, j) = xi_j - creepages.phi_per_m * grid.y_m(j);
       wy(i, j) = creepages.eta + creepages.phi_per_m * grid.x_m(i);
+      if (transient) {  // the previous step's displacement one cell upstream, known
+        wex(i, j) = wx(i, j) - (*prev_ux)(i + 1, j) / dx;
+        wey(i, j) = wy(i, j) - (*prev_uy)(i + 1, j) / dx;
+      } else {
+        wex(i, j) = wx(i, j);
+        wey(i, j) = wy(i, j);
+      }
     }
   }
   const int nc = static_cast<int>(cells.size());
-  if (nc == 0) throw std::invalid_argument("exact: the patch has no loaded cell");
+  if (nc == 0) throw std::invalid_argument(std::string(mode) + ": the patch has no loaded cell");
 
   Eigen::ArrayXXd tx = Eigen::ArrayXXd::Zero(nxe, ny), ty = tx, ux = tx, uy = tx;
   double* const TX = tx.data();
   double* const TY = ty.data();
   const double* const UX = ux.data();
   const double* const UY = uy.data();
-  const double* const WX = wx.data();
-  const double* const WY = wy.data();
+  const double* const WX = wex.data();  // in the equations: with the previous step's part
+  const double* const WY = wey.data();
+  const double* const RX = wx.data();  // the rigid slip alone (creep power)
+  const double* const RY = wy.data();
   const double* const Gb = g.data();
 
   ExactSolution out;
@@ -365,7 +388,7 @@ ExactSolution solve_exact_steady(const ContactPatch& patch, double G_Pa, double 
     double ax = 0, ay = 0;
     for (int c = nc - 1; c >= 0; --c) {
       const int q = cells[c], o = offset[c];
-      const bool upstream_in = c + 1 < nc && cells[c + 1] == q + 1;
+      const bool upstream_in = !transient && c + 1 < nc && cells[c + 1] == q + 1;
       if (!upstream_in) ax = ay = 0;
       if (slip[c]) {
         ax += -ey[c] * z(o) / bx;
@@ -385,7 +408,7 @@ ExactSolution solve_exact_steady(const ContactPatch& patch, double G_Pa, double 
     A.apply(fx_, fy_, ux, uy);
     for (int c = 0; c < nc; ++c) {
       const int q = cells[c], o = offset[c];
-      double rx = (UX[q] - UX[q + 1]) / dx, ry = (UY[q] - UY[q + 1]) / dx;
+      double rx = (UX[q] - upstream * UX[q + 1]) / dx, ry = (UY[q] - upstream * UY[q + 1]) / dx;
       if (with_w) {
         rx += WX[q];
         ry += WY[q];
@@ -526,29 +549,32 @@ ExactSolution solve_exact_steady(const ContactPatch& patch, double G_Pa, double 
         TY[q] *= Gb[q] / t;
       }
     }
+    // backtracking: a Newton step that raised the residual is halved towards the last accepted
+    // tractions, up to kMaxHalvings times (semi-smooth Newton can cycle between active sets)
+    Eigen::ArrayXXd acc_x = tx, acc_y = ty, sol_x = tx, sol_y = ty;
+    double accepted_residual = std::numeric_limits<double>::infinity();
+    int halvings = 0;
     for (;; ++outer) {
       A.apply(tx, ty, ux, uy);
       double change = 0, scale = 0;
       for (int c = 0; c < nc; ++c) {
         const int q = cells[c];
-        const double rx = WX[q] + (UX[q] - UX[q + 1]) / dx - bx * TX[q];
-        const double ry = WY[q] + (UY[q] - UY[q + 1]) / dx - by * TY[q];
+        const double rx = WX[q] + (UX[q] - upstream * UX[q + 1]) / dx - bx * TX[q];
+        const double ry = WY[q] + (UY[q] - upstream * UY[q + 1]) / dx - by * TY[q];
         double sx, sy;
         const bool stick = element_solve(rx, ry, bx, by, Gb[q], sx, sy);
         state.data()[q] = stick ? 1 : 2;
         change = std::max(change, std::hypot(sx - TX[q], sy - TY[q]));
         scale = std::max(scale, std::hypot(TX[q], TY[q]));
         slip[c] = !stick;
+        sol_x.data()[q] = sx;
+        sol_y.data()[q] = sy;
         if (!stick) {  // the slip of the element solution: s = r + B tau, along -tau
           const double vx = rx + bx * sx, vy = ry + by * sy;
           sabs[c] = std::hypot(vx, vy);
-          ex[c] = -sx / Gb[q];
-          ey[c] = -sy / Gb[q];
-          const double en = std::hypot(ex[c], ey[c]);
-          ex[c] /= en;
-          ey[c] /= en;
-          TX[q] = sx;
-          TY[q] = sy;
+          const double en = std::hypot(sx, sy);
+          ex[c] = -sx / en;
+          ey[c] = -sy / en;
         }
       }
       residual = scale > 0 ? change / scale : change;
@@ -569,6 +595,21 @@ ExactSolution solve_exact_steady(const ContactPatch& patch, double G_Pa, double 
                                      residual, opt.tol, outer, gmres_total);
         break;
       }
+      if (residual > accepted_residual && halvings < kMaxHalvings) {
+        ++halvings;
+        tx = 0.5 * (tx + acc_x);
+        ty = 0.5 * (ty + acc_y);
+        continue;
+      }
+      halvings = 0;
+      accepted_residual = residual;
+      acc_x = tx;
+      acc_y = ty;
+      for (int c = 0; c < nc; ++c)
+        if (slip[c]) {
+          TX[cells[c]] = sol_x.data()[cells[c]];
+          TY[cells[c]] = sol_y.data()[cells[c]];
+        }
       newton_step(std::max(opt.stick_tol, 1e-2 * residual));
     }
     A.apply(tx, ty, ux, uy);
@@ -594,13 +635,13 @@ ExactSolution solve_exact_steady(const ContactPatch& patch, double G_Pa, double 
   double stick = 0;
   for (const int q : cells) {
     const int i = q % nxe, j = q / nxe;
-    const double sx = V * (WX[q] + (UX[q] - UX[q + 1]) / dx);
-    const double sy = V * (WY[q] + (UY[q] - UY[q + 1]) / dx);
+    const double sx = V * (WX[q] + (UX[q] - upstream * UX[q + 1]) / dx);
+    const double sy = V * (WY[q] + (UY[q] - upstream * UY[q + 1]) / dx);
     s.slip_x_m_per_s(i, j) = sx;
     s.slip_y_m_per_s(i, j) = sy;
     s.power_W_per_m2(i, j) = -(TX[q] * sx + TY[q] * sy);
     s.strip_power_W_per_m(j) += s.power_W_per_m2(i, j) * dx;
-    s.strip_creep_power_W_per_m(j) += -V * (TX[q] * WX[q] + TY[q] * WY[q]) * dx;
+    s.strip_creep_power_W_per_m(j) += -V * (TX[q] * RX[q] + TY[q] * RY[q]) * dx;
     s.strip_force_x_N_per_m(j) += TX[q] * dx;
     s.strip_force_y_N_per_m(j) += TY[q] * dx;
     s.Mz_N_m += (grid.x_m(i) * TY[q] - grid.y_m(j) * TX[q]) * dx * dy;
@@ -613,13 +654,26 @@ ExactSolution solve_exact_steady(const ContactPatch& patch, double G_Pa, double 
   double xi_Fx = creepages.xi * s.Fx_N;
   if (patch.strip_xi_offset.size() == ny) xi_Fx += (patch.strip_xi_offset * s.strip_force_x_N_per_m).sum() * dy;
   s.creep_work_W = V * (xi_Fx + creepages.eta * s.Fy_N + creepages.phi_per_m * s.Mz_N_m);
-  out.u_x_m = ux.topRows(nx);
-  out.u_y_m = uy.topRows(nx);
+  out.u_x_m = ux;
+  out.u_y_m = uy;
 
-  spdlog::debug("exact steady ({} x {}): {}; Fx {:.6e} N, Fy {:.6e} N, Mz {:.6e} N m, P {:.6e} W, stick {:.3f}", nx,
-                ny, status.message, s.Fx_N, s.Fy_N, s.Mz_N_m, s.power_W, s.stick_fraction);
-  if (!status.converged()) spdlog::warn("exact steady ({} x {}): not converged: {}", nx, ny, status.message);
+  spdlog::debug("{} ({} x {}): {}; Fx {:.6e} N, Fy {:.6e} N, Mz {:.6e} N m, P {:.6e} W, stick {:.3f}", mode, nx, ny,
+                status.message, s.Fx_N, s.Fy_N, s.Mz_N_m, s.power_W, s.stick_fraction);
+  if (!status.converged()) spdlog::warn("{} ({} x {}): not converged: {}", mode, nx, ny, status.message);
   return out;
+}
+
+}  // namespace
+
+ExactSolution solve_exact_steady(const ContactPatch& patch, double G_Pa, double nu, const Creepages& creepages,
+                                 double mu, double speed_m_per_s, const ExactOptions& opt) {
+  return solve_exact(patch, G_Pa, nu, creepages, mu, speed_m_per_s, opt, nullptr, nullptr);
+}
+
+ExactSolution solve_exact_rolling_step(const ContactPatch& patch, double G_Pa, double nu, const Creepages& creepages,
+                                       double mu, double speed_m_per_s, const Eigen::ArrayXXd& prev_u_x_m,
+                                       const Eigen::ArrayXXd& prev_u_y_m, const ExactOptions& opt) {
+  return solve_exact(patch, G_Pa, nu, creepages, mu, speed_m_per_s, opt, &prev_u_x_m, &prev_u_y_m);
 }
 
 }  // namespace contact

@@ -54,7 +54,8 @@ struct ExactOptions {
 struct ExactSolution {
   TangentialSolution fields;  // tractions, slip, power, forces, as the fast solvers report them
                               // (strip_trailing_W_per_m is zero: no energy leaves with the material)
-  Eigen::ArrayXXd u_x_m, u_y_m;  // (nx x ny) displacement difference A tau at the cell centres
+  Eigen::ArrayXXd u_x_m, u_y_m;  // ((nx + 1) x ny) displacement difference A tau at the cell centres,
+                                 // the last row one cell ahead of the grid's leading edge
   SolveStatus status;
   int stick_iterations = 0;       // GMRES iterations of the all-stick start
   int active_set_iterations = 0;  // after it (0: the all-stick solution was admissible)
@@ -68,5 +69,16 @@ struct ExactSolution {
 // the caller decides.
 ExactSolution solve_exact_steady(const ContactPatch& patch, double G_Pa, double nu, const Creepages& creepages,
                                  double mu, double speed_m_per_s, const ExactOptions& opt = {});
+
+// One step of transient rolling by one cell, dq = dx (Kalker's transient discretisation): the
+// previous step's displacement difference (ExactSolution::u_x_m, u_y_m of the previous step, or zero
+// for a start from rest) has moved one cell downstream, so cell i sees the previous u of cell i + 1:
+//   s_i / V = w_i + (u_i - u_prev,(i+1)) / dx,   u = A tau.
+// Each step is a problem with the symmetric positive definite A (no transport inside the step);
+// the same method solves it with a diagonal preconditioner. Steady rolling is its fixed point.
+// Not yet: dq other than dx (interpolation), V = 0, warm starts from the previous step.
+ExactSolution solve_exact_rolling_step(const ContactPatch& patch, double G_Pa, double nu, const Creepages& creepages,
+                                       double mu, double speed_m_per_s, const Eigen::ArrayXXd& prev_u_x_m,
+                                       const Eigen::ArrayXXd& prev_u_y_m, const ExactOptions& opt = {});
 
 }  // namespace contact
