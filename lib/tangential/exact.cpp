@@ -277,7 +277,8 @@ namespace {
 // steady (prev_ux == nullptr) or one rolling step by dq = dx from the previous displacement
 ExactSolution solve_exact(const ContactPatch& patch, double G_Pa, double nu, const Creepages& creepages, double mu,
                           double speed_m_per_s, const ExactOptions& opt, const Eigen::ArrayXXd* prev_ux,
-                          const Eigen::ArrayXXd* prev_uy) {
+                          const Eigen::ArrayXXd* prev_uy, const Eigen::ArrayXXd* start_tx,
+                          const Eigen::ArrayXXd* start_ty) {
   const bool transient = prev_ux != nullptr;
   const char* const mode = transient ? "exact rolling step" : "exact steady";
   const Grid& grid = patch.grid;
@@ -312,6 +313,9 @@ ExactSolution solve_exact(const ContactPatch& patch, double G_Pa, double nu, con
   if (transient && (prev_ux->rows() != nx + 1 || prev_ux->cols() != ny || prev_uy->rows() != nx + 1 ||
                     prev_uy->cols() != ny || !prev_ux->allFinite() || !prev_uy->allFinite()))
     throw std::invalid_argument(fmt::format("{}: the previous displacement must be finite, {} x {}", mode, nx + 1, ny));
+  if (start_tx && (start_tx->rows() != nx || start_tx->cols() != ny || start_ty->rows() != nx ||
+                   start_ty->cols() != ny || !start_tx->allFinite() || !start_ty->allFinite()))
+    throw std::invalid_argument(fmt::format("{}: the previous tractions must be finite, {} x {}", mode, nx, ny));
   ROLLWEAR_ASSERT(bx > 0 && by > 0, fmt::format("own coefficients bx {} by {}", bx, by));
 
   // contact cells (column-major index i + nxe j on the extended grid), bound, rigid creepage
@@ -519,14 +523,23 @@ ExactSolution solve_exact(const ContactPatch& patch, double G_Pa, double nu, con
       if (std::hypot(TX[q], TY[q]) > Gb[q] * (1 + margin)) return true;
     return false;
   };
-  double rel = newton_step(kLooseStickTol);
-  if (rel <= kLooseStickTol && !exceeds_bound(kLooseStickMargin)) rel = newton_step(opt.stick_tol);
+  double rel = 0;
+  bool admissible = false;
+  if (start_tx) {  // a warm start: the given tractions (clipped below), straight to Newton
+    for (const int q : cells) {
+      TX[q] = (*start_tx)(q % nxe, q / nxe);
+      TY[q] = (*start_ty)(q % nxe, q / nxe);
+    }
+  } else {
+    rel = newton_step(kLooseStickTol);
+    if (rel <= kLooseStickTol && !exceeds_bound(kLooseStickMargin)) rel = newton_step(opt.stick_tol);
+    admissible = !exceeds_bound(0);
+  }
   out.stick_iterations = gmres_total;
-  const bool admissible = !exceeds_bound(0);
   Eigen::ArrayXXi state = Eigen::ArrayXXi::Zero(nxe, ny);
   double residual = 0;
   int outer = 0;
-  if (!(rel <= (admissible ? opt.stick_tol : kLooseStickTol))) {
+  if (!start_tx && !(rel <= (admissible ? opt.stick_tol : kLooseStickTol))) {
     status.kind = std::isfinite(rel) ? SolveStatus::Kind::MaxIterations : SolveStatus::Kind::Failed;
     status.message = fmt::format("all-stick GMRES: relative residual {:.2g} > tol {:.3g} after {} iterations", rel,
                                  opt.stick_tol, gmres_total);
@@ -667,13 +680,18 @@ ExactSolution solve_exact(const ContactPatch& patch, double G_Pa, double nu, con
 
 ExactSolution solve_exact_steady(const ContactPatch& patch, double G_Pa, double nu, const Creepages& creepages,
                                  double mu, double speed_m_per_s, const ExactOptions& opt) {
-  return solve_exact(patch, G_Pa, nu, creepages, mu, speed_m_per_s, opt, nullptr, nullptr);
+  return solve_exact(patch, G_Pa, nu, creepages, mu, speed_m_per_s, opt, nullptr, nullptr, nullptr, nullptr);
 }
 
 ExactSolution solve_exact_rolling_step(const ContactPatch& patch, double G_Pa, double nu, const Creepages& creepages,
-                                       double mu, double speed_m_per_s, const Eigen::ArrayXXd& prev_u_x_m,
-                                       const Eigen::ArrayXXd& prev_u_y_m, const ExactOptions& opt) {
-  return solve_exact(patch, G_Pa, nu, creepages, mu, speed_m_per_s, opt, &prev_u_x_m, &prev_u_y_m);
+                                       double mu, double speed_m_per_s, const ExactSolution* previous,
+                                       const ExactOptions& opt) {
+  if (!previous) {
+    const Eigen::ArrayXXd rest = Eigen::ArrayXXd::Zero(patch.grid.nx + 1, patch.grid.ny);
+    return solve_exact(patch, G_Pa, nu, creepages, mu, speed_m_per_s, opt, &rest, &rest, nullptr, nullptr);
+  }
+  return solve_exact(patch, G_Pa, nu, creepages, mu, speed_m_per_s, opt, &previous->u_x_m, &previous->u_y_m,
+                     &previous->fields.tau_x_Pa, &previous->fields.tau_y_Pa);
 }
 
 }  // namespace contact

@@ -71,14 +71,15 @@ ExactSolution solve_exact_steady(const ContactPatch& patch, double G_Pa, double 
                                  double mu, double speed_m_per_s, const ExactOptions& opt = {});
 
 // One step of transient rolling by one cell, dq = dx (Kalker's transient discretisation): the
-// previous step's displacement difference (ExactSolution::u_x_m, u_y_m of the previous step, or zero
-// for a start from rest) has moved one cell downstream, so cell i sees the previous u of cell i + 1:
+// previous step's displacement difference (previous->u_x_m, u_y_m; previous == nullptr: a start
+// from rest, u = 0) has moved one cell downstream, so cell i sees the previous u of cell i + 1:
 //   s_i / V = w_i + (u_i - u_prev,(i+1)) / dx,   u = A tau.
 // Each step is a problem with the symmetric positive definite A (no transport inside the step);
-// the same method solves it with a diagonal preconditioner. Steady rolling is its fixed point.
-// Not yet: dq other than dx (interpolation), V = 0, warm starts from the previous step.
+// the same method solves it with a diagonal preconditioner, the Newton iteration starting from the
+// previous step's tractions (a warm start; the patch and grid must be the previous step's).
+// Steady rolling is its fixed point. Not yet: dq other than dx (interpolation), V = 0.
 ExactSolution solve_exact_rolling_step(const ContactPatch& patch, double G_Pa, double nu, const Creepages& creepages,
-                                       double mu, double speed_m_per_s, const Eigen::ArrayXXd& prev_u_x_m,
-                                       const Eigen::ArrayXXd& prev_u_y_m, const ExactOptions& opt = {});
+                                       double mu, double speed_m_per_s, const ExactSolution* previous,
+                                       const ExactOptions& opt = {});
 
 }  // namespace contact
