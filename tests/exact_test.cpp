@@ -311,14 +311,18 @@ TEST(ExactRolling, SteadyStateIsTheFixedPointOfTheStep) {
 }
 
 // Reference: the start from rest builds the force up monotonically towards the steady one
-// (Kalker's transient theory; the traction bound never binds the first cell, which has rolled one
-// dx). Checked on 20 x 20 over 8 a.
-TEST(ExactRolling, StartFromRestBuildsUpToSteady) {
+// (Kalker's transient theory), and at q/a = 0.5, 2, 4, 8 as CONTACT's 80 x 80 run does
+// (tests/data/exact/contact_reference.csv). Checked on 20 x 20 over 8 a: measured 0.1554, 0.5127,
+// 0.7659, 0.9460 here against 0.1574, 0.5170, 0.7702, 0.9480 on 40 x 40 and 0.1582, 0.5192, 0.7722,
+// 0.9488 on 80 x 80 (docs/exact-theory.md), so the coarse grid's own error is up to 2 %.
+TEST(ExactRolling, StartFromRestBuildsUpAsContactDoes) {
+  const auto ref = contact_reference();
   const ElasticPair pair = paper_steel();
   const double G = combined_shear_modulus_Pa(pair), nu = combined_poisson(pair), mu = 0.3;
   const int n = 20;
   const ContactPatch p = paper_patch(n);
   const ExactSolution steady = solve_exact_steady(p, G, nu, {1e-3, 0, 0}, mu, 1.0);
+  constexpr double kCoarseGridTol = 0.025;  // the 20 x 20 grid's error on Fx/Fx_ss, measured above
   double last = 0;
   ExactSolution s;
   for (int k = 1; k <= 4 * n; ++k) {  // q = 8 a in steps dx = 2a/n
@@ -326,8 +330,13 @@ TEST(ExactRolling, StartFromRestBuildsUpToSteady) {
     ASSERT_TRUE(s.status.converged()) << s.status.message;
     EXPECT_LT(s.fields.Fx_N, last + 1e-9 * std::abs(steady.fields.Fx_N)) << "step " << k;
     last = s.fields.Fx_N;
+    const double q_over_a = 2.0 * k / n;
+    for (const char* q : {"0.5", "2", "4", "8"})
+      if (std::abs(q_over_a - std::stod(q)) < 1e-9) {
+        const double expected = ref.at(std::string("Fx_over_Fx_ss_at_q_over_a_") + q + ",80x80");
+        EXPECT_NEAR(s.fields.Fx_N / steady.fields.Fx_N, expected, kCoarseGridTol * expected) << "q/a " << q;
+      }
   }
-  EXPECT_GT(last / steady.fields.Fx_N, 0.85);
   EXPECT_LT(last / steady.fields.Fx_N, 1.0);
 }
 
