@@ -278,9 +278,9 @@ namespace {
 ExactSolution solve_exact(const ContactPatch& patch, double G_Pa, double nu, const Creepages& creepages, double mu,
                           double speed_m_per_s, const ExactOptions& opt, const Eigen::ArrayXXd* prev_ux,
                           const Eigen::ArrayXXd* prev_uy, const Eigen::ArrayXXd* start_tx,
-                          const Eigen::ArrayXXd* start_ty) {
+                          const Eigen::ArrayXXd* start_ty, int prev_offset = 1) {
   const bool transient = prev_ux != nullptr;
-  const char* const mode = transient ? "exact rolling step" : "exact steady";
+  const char* const mode = !transient ? "exact steady" : prev_offset == 1 ? "exact rolling step" : "exact shift";
   const Grid& grid = patch.grid;
   const int nx = grid.nx, ny = grid.ny;
   if (nx < 1 || ny < 1 || !(grid.dx_m > 0) || !(grid.dy_m > 0) || grid.x_m.size() != nx || grid.y_m.size() != ny)
@@ -330,8 +330,8 @@ ExactSolution solve_exact(const ContactPatch& patch, double G_Pa, double nu, con
       wx(i, j) = xi_j - creepages.phi_per_m * grid.y_m(j);
       wy(i, j) = creepages.eta + creepages.phi_per_m * grid.x_m(i);
       if (transient) {  // the previous step's displacement one cell upstream, known
-        wex(i, j) = wx(i, j) - (*prev_ux)(i + 1, j) / dx;
-        wey(i, j) = wy(i, j) - (*prev_uy)(i + 1, j) / dx;
+        wex(i, j) = wx(i, j) - (*prev_ux)(i + prev_offset, j) / dx;
+        wey(i, j) = wy(i, j) - (*prev_uy)(i + prev_offset, j) / dx;
       } else {
         wex(i, j) = wx(i, j);
         wey(i, j) = wy(i, j);
@@ -692,6 +692,22 @@ ExactSolution solve_exact_rolling_step(const ContactPatch& patch, double G_Pa, d
   }
   return solve_exact(patch, G_Pa, nu, creepages, mu, speed_m_per_s, opt, &previous->u_x_m, &previous->u_y_m,
                      &previous->fields.tau_x_Pa, &previous->fields.tau_y_Pa);
+}
+
+ExactSolution solve_exact_shift(const ContactPatch& patch, double G_Pa, double nu, double shift_x_m, double shift_y_m,
+                                double mu, double dt_s, const ExactSolution* previous, const ExactOptions& opt) {
+  if (!(dt_s > 0) || !std::isfinite(dt_s))
+    throw std::invalid_argument(fmt::format("exact shift: dt must be positive and finite, got {} s", dt_s));
+  // the rolling step's equations with no transport: w dx = the rigid shift, V = dx/dt
+  const double dx = patch.grid.dx_m;
+  const Creepages c{shift_x_m / dx, shift_y_m / dx, 0};
+  const double V = dx / dt_s;
+  if (!previous) {
+    const Eigen::ArrayXXd rest = Eigen::ArrayXXd::Zero(patch.grid.nx + 1, patch.grid.ny);
+    return solve_exact(patch, G_Pa, nu, c, mu, V, opt, &rest, &rest, nullptr, nullptr, 0);
+  }
+  return solve_exact(patch, G_Pa, nu, c, mu, V, opt, &previous->u_x_m, &previous->u_y_m, &previous->fields.tau_x_Pa,
+                     &previous->fields.tau_y_Pa, 0);
 }
 
 }  // namespace contact

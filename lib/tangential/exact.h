@@ -82,4 +82,12 @@ ExactSolution solve_exact_rolling_step(const ContactPatch& patch, double G_Pa, d
                                        double mu, double speed_m_per_s, const ExactSolution* previous,
                                        const ExactOptions& opt = {});
 
+// Shift (no rolling): the bodies' rigid shift (shift_x_m, shift_y_m) of body 1 over body 2 during
+// a time step dt_s, from the previous state (previous == nullptr: from rest). Per cell the slip
+// over the step is S_i = shift + u_i - u_prev,i (no transport), with Coulomb's law on S; the slip
+// velocities reported are S/dt, the creep work V (xi Fx + eta Fy) is (shift . F)/dt.
+// Loaded monotonically from rest this is the Cattaneo-Mindlin problem.
+ExactSolution solve_exact_shift(const ContactPatch& patch, double G_Pa, double nu, double shift_x_m, double shift_y_m,
+                                double mu, double dt_s, const ExactSolution* previous, const ExactOptions& opt = {});
+
 }  // namespace contact
