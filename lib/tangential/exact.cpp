@@ -32,10 +32,10 @@
 // The all-stick start. Without the friction bound the problem is linear, D A tau = -w on the contact
 // cells. D A has the symbol of d/dx times that of 1/r, i kx/|k|: it is small for tractions that vary
 // slowly along x, and GMRES with a diagonal preconditioner needs iterations in proportion to the
-// grid (measured: 47, 64, 95 at 10, 20, 40 cells a side, a/b = 0.2). The right preconditioner M used
+// grid (measured: 51, 112, 278 at 10, 20, 40 cells a side, a/b = 1). The right preconditioner M used
 // here inverts the local part of D A, b (I - S), S the shift by one cell upstream: a march from
 // the leading edge of each run of contact cells, tau_i = z_i/b + tau_(i+1). With it the iterations
-// grow like the square root of the grid (26, 36, 48, 96, 136 at 10 ... 160 cells, a/b = 1).
+// grow like the square root of the grid (26, 36, 48 on the same grids).
 // When the result satisfies |tau| <= mu p everywhere it is the solution (full stick).
 //
 // The friction problem: semi-smooth Newton on the active sets. An iteration classifies every cell by
