@@ -1,0 +1,713 @@
+// Kalker's exact theory, steady rolling (exact.h; the derivation is in docs/exact-theory.md).
+//
+// Influence coefficients. Cerruti's surface displacement of one half-space under a tangential
+// point force Q_x at the origin is u_x = Q_x/(2 pi G1) [(1-nu)/r + nu X^2/r^3], u_y = Q_x nu X Y /
+// (2 pi G1 r^3). Both quasi-identical bodies together (1/G = (1/G1 + 1/G2)/2) give twice that with
+// the combined G. Over a rectangle [-c, c] x [-d, d] each term is a mixed second difference of an
+// antiderivative F with d2F/dXdY = the kernel:
+//   1/r:       X asinh(Y/|X|) + Y asinh(X/|Y|)     (Love's, as for the pressure)
+//   X^2/r^3:   Y asinh(X/|Y|)                       (d/dX of it is Y/r, d/dY (Y/r) = X^2/r^3)
+//   Y^2/r^3:   X asinh(Y/|X|)
+//   X Y/r^3:   -r
+// so that with R[F] = F(x+c, y+d) - F(x+c, y-d) - F(x-c, y+d) + F(x-c, y-d), Fa = Y asinh(X/|Y|),
+// Fb = X asinh(Y/|X|):
+//   A_xx = (R[Fa] + (1-nu) R[Fb]) / (pi G),  A_yy = ((1-nu) R[Fa] + R[Fb]) / (pi G),
+//   A_xy = -nu R[r] / (pi G).
+//
+// Convolution. A depends on the offset of the cells only: u = A tau is a zero-padded cyclic
+// convolution on a (2 nxe x 2 ny) grid, nxe = nx + 1 (the grid plus one row ahead of the leading
+// edge). A_xx and A_yy are even in both offsets, A_xy odd in both, so all three spectra are real;
+// one product is two forward and two backward real 2-D transforms (FFTW, planned once per solve),
+// each done as in the normal solver: along x on the ny rows that can be nonzero, along y on all.
+//
+// The cell's own coefficient. In the slip of cell i, its own traction enters through u_i and
+// u_(i+1) only, and diagonally (A_xy vanishes at offsets along x):
+//   s_i/V = r_i + B tau_i,  B = diag(bx, by),  bx = (A_xx(0,0) - A_xx(dx,0))/dx,  by likewise.
+// The cell's Coulomb problem with everything else frozen (r_i fixed) has a closed form up to one
+// scalar root: stick if |B^-1 r| <= g = mu p (tau = -B^-1 r), else slip with
+//   s_k = r_k sigma/(sigma + g b_k),  tau_k = -g r_k/(sigma + g b_k),  sum_k (r_k/(sigma + g b_k))^2 = 1,
+// whose left side is convex and decreasing in sigma: Newton from sigma = 0 rises monotonically to the
+// root. It classifies the cells, gives the slip tractions and measures the residual (exact.h).
+//
+// The all-stick start. Without the friction bound the problem is linear, D A tau = -w on the contact
+// cells. D A has the symbol of d/dx times that of 1/r, i kx/|k|: it is small for tractions that vary
+// slowly along x, and GMRES with a diagonal preconditioner needs iterations in proportion to the
+// grid (measured: 51, 112, 278 at 10, 20, 40 cells a side, a/b = 1). The right preconditioner M used
+// here inverts the local part of D A, b (I - S), S the shift by one cell upstream: a march from
+// the leading edge of each run of contact cells, tau_i = z_i/b + tau_(i+1). With it the iterations
+// grow like the square root of the grid (26, 36, 48 on the same grids).
+// When the result satisfies |tau| <= mu p everywhere it is the solution (full stick).
+//
+// The friction problem: semi-smooth Newton on the active sets. An iteration classifies every cell by
+// its own Coulomb problem with u = A tau fresh (stick, or slip with direction e = s/|s|), then solves
+// the linearised problem for all cells at once with the same preconditioned GMRES: stick cells keep
+// D A tau = -w; a slip cell's traction is -g e + tau_t t (t the normal to e) and its equation is the
+// linearisation of tau = -g s/|s|,
+//   (|s|/g) tau_t + t.(w + D A tau) = 0,
+// which stays regular as |s| -> 0, where it asks for no slip across e. Newton converges in 3 to 5
+// iterations on the paper's contact from 20 to 160 cells a side (residual 0.5, 0.3, 0.1, 2e-5, 1e-11
+// at 80 x 80). Each linear solve goes to max(stick_tol, residual / 100): inexact Newton.
+//
+// Why not Gauss-Seidel. Kalker's own solvers in CONTACT (ConvexGS, SteadyGS) are Gauss-Seidel
+// methods. A pointwise Gauss-Seidel on D A, visiting each strip from leading to trailing edge with
+// the strip's displacement kept current and the others refreshed by convolution, diverged here even
+// at full stick on 10 x 10 (|Fx| grew by 1e5 in 10 sweeps): the lagged downstream coefficients
+// (A(m dx) - A((m+1) dx))/dx add up to A(dx)/dx, and the upstream march through b (I - S)
+// accumulates their error along the strip. With the slip tractions updated pointwise (Jacobi) and
+// the stick ones by GMRES, the sets settle in a few iterations but the slip directions then
+// converge at 0.985 per iteration (residual 2e-3 after 200 at 80 x 80): hence Newton.
+#include "lib/tangential/exact.h"
+#include "lib/numeric.h"
+
+#include <fftw3.h>
+#include <spdlog/fmt/fmt.h>
+#include <spdlog/spdlog.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <complex>
+#include <memory>
+#include <mutex>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace contact {
+
+namespace {
+
+// restart length of GMRES
+constexpr int kGmresRestart = 60;
+// the all-stick start is first solved to this relative residual; when its tractions then exceed the
+// bound by more than kLooseStickMargin somewhere, friction decides and the Newton iteration starts
+// from it (the tractions' error is of the order of the residual times the condition of D A; 1e-3
+// against a margin of 5 % leaves room for a condition up to 50)
+constexpr double kLooseStickTol = 1e-3;
+constexpr double kLooseStickMargin = 0.05;
+// backtracking steps of the Newton iteration before a step that raised the residual is accepted
+constexpr int kMaxHalvings = 4;
+
+double F_a(double X, double Y) { return Y != 0 ? Y * std::asinh(X / std::abs(Y)) : 0.0; }
+double F_b(double X, double Y) { return X != 0 ? X * std::asinh(Y / std::abs(X)) : 0.0; }
+double F_r(double X, double Y) { return std::hypot(X, Y); }
+
+template <class F>
+double rectangle_difference(F f, double x, double y, double c, double d) {
+  return f(x + c, y + d) - f(x + c, y - d) - f(x - c, y + d) + f(x - c, y - d);
+}
+
+std::mutex& fftw_planner_mutex() {
+  static std::mutex m;
+  return m;
+}
+
+struct FftwFree {
+  void operator()(void* p) const { fftw_free(p); }
+};
+
+template <class T>
+std::unique_ptr<T, FftwFree> fftw_alloc(std::size_t n) {
+  std::unique_ptr<T, FftwFree> p(static_cast<T*>(fftw_malloc(sizeof(T) * n)));
+  if (!p) throw std::bad_alloc();
+  return p;
+}
+
+// u = A tau on the extended grid (nxe x ny), by zero-padded convolution
+struct TangentialOperator {
+  int nxe, ny, mx, my, nk;
+  // the rows that can be nonzero (ny x mx, row-major: m + mx n) and the spectra (my x nk)
+  std::unique_ptr<double, FftwFree> rows_x, rows_y;
+  std::unique_ptr<fftw_complex, FftwFree> spec_x, spec_y;
+  std::vector<double> kxx, kxy, kyy;  // real spectra / (mx my)
+  // per component: r2c along x on the first ny rows, c2c along y on every column, and back
+  fftw_plan rf[2] = {nullptr, nullptr}, cf[2] = {nullptr, nullptr};
+  fftw_plan cb[2] = {nullptr, nullptr}, rb[2] = {nullptr, nullptr};
+
+  TangentialOperator(int nx_ext, int ny_, double dx, double dy, double G, double nu)
+      : nxe(nx_ext), ny(ny_), mx(2 * nx_ext), my(2 * ny_), nk(nx_ext + 1),
+        rows_x(fftw_alloc<double>(static_cast<std::size_t>(mx) * ny_)),
+        rows_y(fftw_alloc<double>(static_cast<std::size_t>(mx) * ny_)),
+        spec_x(fftw_alloc<fftw_complex>(static_cast<std::size_t>(my) * nk)),
+        spec_y(fftw_alloc<fftw_complex>(static_cast<std::size_t>(my) * nk)) {
+    const std::size_t n_pad = static_cast<std::size_t>(mx) * my;
+    std::unique_ptr<double, FftwFree> kernel = fftw_alloc<double>(n_pad);
+    fftw_plan kernel_forward = nullptr;
+    {
+      const std::lock_guard<std::mutex> lock(fftw_planner_mutex());
+      double* rows[2] = {rows_x.get(), rows_y.get()};
+      fftw_complex* spec[2] = {spec_x.get(), spec_y.get()};
+      for (int c = 0; c < 2; ++c) {
+        rf[c] = fftw_plan_many_dft_r2c(1, &mx, ny, rows[c], nullptr, 1, mx, spec[c], nullptr, 1, nk, FFTW_ESTIMATE);
+        cf[c] = fftw_plan_many_dft(1, &my, nk, spec[c], nullptr, nk, 1, spec[c], nullptr, nk, 1, FFTW_FORWARD,
+                                   FFTW_ESTIMATE);
+        cb[c] = fftw_plan_many_dft(1, &my, nk, spec[c], nullptr, nk, 1, spec[c], nullptr, nk, 1, FFTW_BACKWARD,
+                                   FFTW_ESTIMATE);
+        rb[c] = fftw_plan_many_dft_c2r(1, &mx, ny, spec[c], nullptr, 1, nk, rows[c], nullptr, 1, mx, FFTW_ESTIMATE);
+      }
+      kernel_forward = fftw_plan_dft_r2c_2d(my, mx, kernel.get(), spec_x.get(), FFTW_ESTIMATE);
+    }
+    bool planned = kernel_forward != nullptr;
+    for (int c = 0; c < 2; ++c) planned = planned && rf[c] && cf[c] && cb[c] && rb[c];
+    if (!planned) {
+      destroy_plans(&kernel_forward);
+      throw std::runtime_error(fmt::format("exact: fftw_plan_many_dft failed for {} x {}", mx, my));
+    }
+    // the three kernels at signed offsets, wrapped onto the padded grid (offset nxe, ny unused)
+    std::vector<double> Kxx(n_pad), Kxy(n_pad), Kyy(n_pad);
+    // the first quadrant, then by parity: xx, yy even in both offsets, xy odd in both
+    for (int l = 0; l < ny; ++l) {
+      for (int k = 0; k < nxe; ++k) {
+        const TangentialInfluence a = cerruti_rectangle_influence(k * dx, l * dy, dx, dy, G, nu);
+        for (const int sl : {1, -1}) {
+          if (sl < 0 && l == 0) continue;
+          const std::size_t n = static_cast<std::size_t>(sl > 0 ? l : my - l);
+          for (const int sk : {1, -1}) {
+            if (sk < 0 && k == 0) continue;
+            const std::size_t q = static_cast<std::size_t>(sk > 0 ? k : mx - k) + static_cast<std::size_t>(mx) * n;
+            Kxx[q] = a.xx;
+            Kxy[q] = sk * sl * a.xy;
+            Kyy[q] = a.yy;
+          }
+        }
+      }
+    }
+    const double scale = 1.0 / static_cast<double>(n_pad);
+    auto spectrum_of = [&](const std::vector<double>& K, std::vector<double>& out) {
+      std::copy(K.begin(), K.end(), kernel.get());
+      fftw_execute(kernel_forward);
+      out.resize(static_cast<std::size_t>(my) * nk);
+      for (std::size_t q = 0; q < out.size(); ++q) out[q] = spec_x.get()[q][0] * scale;
+    };
+    spectrum_of(Kxx, kxx);
+    spectrum_of(Kxy, kxy);
+    spectrum_of(Kyy, kyy);
+    destroy_plans(&kernel_forward, false);
+  }
+  ~TangentialOperator() { destroy_plans(); }
+  TangentialOperator(const TangentialOperator&) = delete;
+  TangentialOperator& operator=(const TangentialOperator&) = delete;
+
+  // the apply plans (all = true) and extra, one at a time under the planner's lock
+  void destroy_plans(fftw_plan* extra = nullptr, bool all = true) {
+    const std::lock_guard<std::mutex> lock(fftw_planner_mutex());
+    if (extra && *extra) fftw_destroy_plan(*extra);
+    if (!all) return;
+    for (int c = 0; c < 2; ++c)
+      for (fftw_plan* p : {&rf[c], &cf[c], &cb[c], &rb[c]}) {
+        if (*p) fftw_destroy_plan(*p);
+        *p = nullptr;
+      }
+  }
+
+  // (ux, uy) = A (tx, ty); all (nxe x ny)
+  void apply(const Eigen::ArrayXXd& tx, const Eigen::ArrayXXd& ty, Eigen::ArrayXXd& ux, Eigen::ArrayXXd& uy) {
+    Eigen::Map<Eigen::ArrayXXd> px(rows_x.get(), mx, ny), py(rows_y.get(), mx, ny);
+    px.topRows(nxe) = tx;
+    px.bottomRows(mx - nxe).setZero();
+    py.topRows(nxe) = ty;
+    py.bottomRows(mx - nxe).setZero();
+    fftw_complex* X = spec_x.get();
+    fftw_complex* Y = spec_y.get();
+    for (int c = 0; c < 2; ++c) {
+      fftw_execute(rf[c]);
+      double* S = reinterpret_cast<double*>(c == 0 ? X : Y);  // the padded rows' spectrum is zero
+      std::fill(S + 2 * static_cast<std::size_t>(ny) * nk, S + 2 * static_cast<std::size_t>(my) * nk, 0.0);
+      fftw_execute(cf[c]);
+    }
+    const std::size_t n = kxx.size();
+    for (std::size_t q = 0; q < n; ++q) {
+      const double xr = X[q][0], xi = X[q][1], yr = Y[q][0], yi = Y[q][1];
+      X[q][0] = kxx[q] * xr + kxy[q] * yr;
+      X[q][1] = kxx[q] * xi + kxy[q] * yi;
+      Y[q][0] = kxy[q] * xr + kyy[q] * yr;
+      Y[q][1] = kxy[q] * xi + kyy[q] * yi;
+    }
+    for (int c = 0; c < 2; ++c) {
+      fftw_execute(cb[c]);
+      fftw_execute(rb[c]);
+    }
+    ux = px.topRows(nxe);
+    uy = py.topRows(nxe);
+  }
+};
+
+// a contact cell's Coulomb problem with everything else frozen: slip s = r + B tau (per unit V),
+// |tau| <= g. Returns true for stick.
+bool element_solve(double rx, double ry, double bx, double by, double g, double& tx, double& ty) {
+  const double sx = -rx / bx, sy = -ry / by;  // the stick traction
+  if (sx * sx + sy * sy <= g * g) {
+    tx = sx;
+    ty = sy;
+    return true;
+  }
+  // slip: sum_k (r_k / (sigma + g b_k))^2 = 1, Newton from sigma = 0 (convex, decreasing)
+  double sigma = 0;
+  for (int it = 0; it < 100; ++it) {
+    const double qx = 1 / (sigma + g * bx), qy = 1 / (sigma + g * by);
+    const double h = rx * rx * qx * qx + ry * ry * qy * qy - 1;
+    const double dh = -2 * (rx * rx * qx * qx * qx + ry * ry * qy * qy * qy);
+    const double step = -h / dh;
+    sigma += step;
+    if (!(step > 1e-15 * sigma)) break;
+  }
+  tx = -g * rx / (sigma + g * bx);
+  ty = -g * ry / (sigma + g * by);
+  return false;
+}
+
+}  // namespace
+
+TangentialInfluence cerruti_rectangle_influence(double x_m, double y_m, double dx_m, double dy_m, double G_Pa,
+                                                double nu) {
+  const double c = dx_m / 2, d = dy_m / 2;
+  const double Ra = rectangle_difference(F_a, x_m, y_m, c, d);
+  const double Rb = rectangle_difference(F_b, x_m, y_m, c, d);
+  const double Rr = rectangle_difference(F_r, x_m, y_m, c, d);
+  const double k = 1 / (kPi * G_Pa);
+  TangentialInfluence a;
+  a.xx = k * (Ra + (1 - nu) * Rb);
+  a.yy = k * ((1 - nu) * Ra + Rb);
+  a.xy = -k * nu * Rr;
+  return a;
+}
+
+namespace {
+
+// steady (prev_ux == nullptr) or one rolling step by dq = dx from the previous displacement
+ExactSolution solve_exact(const ContactPatch& patch, double G_Pa, double nu, const Creepages& creepages, double mu,
+                          double speed_m_per_s, const ExactOptions& opt, const Eigen::ArrayXXd* prev_ux,
+                          const Eigen::ArrayXXd* prev_uy, const Eigen::ArrayXXd* start_tx,
+                          const Eigen::ArrayXXd* start_ty, int prev_offset = 1) {
+  const bool transient = prev_ux != nullptr;
+  const char* const mode = !transient ? "exact steady" : prev_offset == 1 ? "exact rolling step" : "exact shift";
+  const Grid& grid = patch.grid;
+  const int nx = grid.nx, ny = grid.ny;
+  if (nx < 1 || ny < 1 || !(grid.dx_m > 0) || !(grid.dy_m > 0) || grid.x_m.size() != nx || grid.y_m.size() != ny)
+    throw std::invalid_argument(fmt::format("{}: the patch's grid is empty or inconsistent ({} x {})", mode, nx, ny));
+  if (patch.pressure_Pa.rows() != nx || patch.pressure_Pa.cols() != ny)
+    throw std::invalid_argument(fmt::format("{}: the patch's pressure is {} x {}, its grid {} x {}", mode,
+                                            patch.pressure_Pa.rows(), patch.pressure_Pa.cols(), nx, ny));
+  if (!patch.pressure_Pa.allFinite() || (patch.pressure_Pa < 0).any())
+    throw std::invalid_argument(std::string(mode) + ": the patch's pressure has a negative or non-finite value");
+  if (!(G_Pa > 0) || !std::isfinite(G_Pa))
+    throw std::invalid_argument(fmt::format("{}: G must be positive and finite, got {} Pa", mode, G_Pa));
+  if (!(nu >= 0 && nu < 0.5)) throw std::invalid_argument(fmt::format("{}: nu must be in [0, 0.5), got {}", mode, nu));
+  if (!(mu > 0) || !std::isfinite(mu))
+    throw std::invalid_argument(fmt::format("{}: mu must be positive and finite, got {}", mode, mu));
+  if (!(speed_m_per_s >= 0) || !std::isfinite(speed_m_per_s))
+    throw std::invalid_argument(fmt::format("{}: speed must be >= 0 and finite, got {} m/s", mode, speed_m_per_s));
+  if (!std::isfinite(creepages.xi) || !std::isfinite(creepages.eta) || !std::isfinite(creepages.phi_per_m))
+    throw std::invalid_argument(std::string(mode) + ": a creepage is not finite");
+  if (!(opt.tol > 0) || opt.max_iterations < 1 || !(opt.stick_tol > 0) || opt.max_stick_iterations < 1)
+    throw std::invalid_argument(std::string(mode) + ": tol, stick_tol must be positive, max_iterations, max_stick_iterations >= 1");
+
+  const int nxe = nx + 1;  // one row ahead of the leading edge
+  const double dx = grid.dx_m, dy = grid.dy_m;
+  TangentialOperator A(nxe, ny, dx, dy, G_Pa, nu);
+  const TangentialInfluence A0 = cerruti_rectangle_influence(0, 0, dx, dy, G_Pa, nu);
+  const TangentialInfluence A1 = cerruti_rectangle_influence(dx, 0, dx, dy, G_Pa, nu);
+  // steady: u_(i+1) is A tau too; a rolling step: it is the previous step's, known
+  const double upstream = transient ? 0.0 : 1.0;
+  const double bx = (A0.xx - upstream * A1.xx) / dx, by = (A0.yy - upstream * A1.yy) / dx;
+  if (transient && (prev_ux->rows() != nx + 1 || prev_ux->cols() != ny || prev_uy->rows() != nx + 1 ||
+                    prev_uy->cols() != ny || !prev_ux->allFinite() || !prev_uy->allFinite()))
+    throw std::invalid_argument(fmt::format("{}: the previous displacement must be finite, {} x {}", mode, nx + 1, ny));
+  if (start_tx && (start_tx->rows() != nx || start_tx->cols() != ny || start_ty->rows() != nx ||
+                   start_ty->cols() != ny || !start_tx->allFinite() || !start_ty->allFinite()))
+    throw std::invalid_argument(fmt::format("{}: the previous tractions must be finite, {} x {}", mode, nx, ny));
+  ROLLWEAR_ASSERT(bx > 0 && by > 0, fmt::format("own coefficients bx {} by {}", bx, by));
+
+  // contact cells (column-major index i + nxe j on the extended grid), bound, rigid creepage
+  std::vector<int> cells;
+  Eigen::ArrayXXd g = Eigen::ArrayXXd::Zero(nxe, ny), wx = g, wy = g, wex = g, wey = g;
+  for (int j = 0; j < ny; ++j) {
+    const double xi_j = creepages.xi + (patch.strip_xi_offset.size() == ny ? patch.strip_xi_offset(j) : 0.0);
+    for (int i = 0; i < nx; ++i) {
+      if (!(patch.pressure_Pa(i, j) > 0)) continue;
+      cells.push_back(i + nxe * j);
+      g(i, j) = mu * patch.pressure_Pa(i, j);
+      wx(i, j) = xi_j - creepages.phi_per_m * grid.y_m(j);
+      wy(i, j) = creepages.eta + creepages.phi_per_m * grid.x_m(i);
+      if (transient) {  // the previous step's displacement one cell upstream, known
+        wex(i, j) = wx(i, j) - (*prev_ux)(i + prev_offset, j) / dx;
+        wey(i, j) = wy(i, j) - (*prev_uy)(i + prev_offset, j) / dx;
+      } else {
+        wex(i, j) = wx(i, j);
+        wey(i, j) = wy(i, j);
+      }
+    }
+  }
+  const int nc = static_cast<int>(cells.size());
+  if (nc == 0) throw std::invalid_argument(std::string(mode) + ": the patch has no loaded cell");
+
+  Eigen::ArrayXXd tx = Eigen::ArrayXXd::Zero(nxe, ny), ty = tx, ux = tx, uy = tx;
+  double* const TX = tx.data();
+  double* const TY = ty.data();
+  const double* const UX = ux.data();
+  const double* const UY = uy.data();
+  const double* const WX = wex.data();  // in the equations: with the previous step's part
+  const double* const WY = wey.data();
+  const double* const RX = wx.data();  // the rigid slip alone (creep power)
+  const double* const RY = wy.data();
+  const double* const Gb = g.data();
+
+  ExactSolution out;
+  SolveStatus& status = out.status;
+
+  // The linear problem of one Newton step. Per contact cell c (order of `cells`): stick (two
+  // unknowns, the traction) or slip (one unknown, the traction's component tau_t along t = e^perp,
+  // with tau = -g e + tau_t t, e the unit slip direction, |s| the slip of the current iterate):
+  //   stick: (D A tau)_i + w_i = 0
+  //   slip:  (|s_i|/g_i) tau_t + t.((D A tau)_i + w_i) = 0
+  // (the Newton linearisation of tau = -g s/|s|; it stays regular as |s| -> 0, where it asks for
+  // no slip across e).
+  std::vector<char> slip(static_cast<std::size_t>(nc), 0);
+  std::vector<double> ex(static_cast<std::size_t>(nc), 1.0), ey(static_cast<std::size_t>(nc), 0.0),
+      sabs(static_cast<std::size_t>(nc), 0.0);
+  std::vector<int> offset(static_cast<std::size_t>(nc) + 1, 0);
+  auto index_unknowns = [&] {
+    for (int c = 0; c < nc; ++c) offset[c + 1] = offset[c] + (slip[c] ? 1 : 2);
+  };
+  Eigen::ArrayXXd px = tx, py = ty;
+  // x -> traction increments (px, py) on the contact cells
+  auto to_traction = [&](const Eigen::VectorXd& x) {
+    px.setZero();
+    py.setZero();
+    for (int c = 0; c < nc; ++c) {
+      const int q = cells[c], o = offset[c];
+      if (slip[c]) {
+        px.data()[q] = -ey[c] * x(o);
+        py.data()[q] = ex[c] * x(o);
+      } else {
+        px.data()[q] = x(o);
+        py.data()[q] = x(o + 1);
+      }
+    }
+  };
+  // right preconditioner x = M z: z as a traction field, marched from the leading edge along each
+  // run of contact cells and divided by the own coefficient (the inverse of the local part of D A,
+  // b (I - S)), then taken along t on the slip cells
+  auto precondition = [&](const Eigen::VectorXd& z, Eigen::VectorXd& x) {
+    double ax = 0, ay = 0;
+    for (int c = nc - 1; c >= 0; --c) {
+      const int q = cells[c], o = offset[c];
+      const bool upstream_in = !transient && c + 1 < nc && cells[c + 1] == q + 1;
+      if (!upstream_in) ax = ay = 0;
+      if (slip[c]) {
+        ax += -ey[c] * z(o) / bx;
+        ay += ex[c] * z(o) / by;
+        x(o) = -ey[c] * ax + ex[c] * ay;
+      } else {
+        ax += z(o) / bx;
+        ay += z(o + 1) / by;
+        x(o) = ax;
+        x(o + 1) = ay;
+      }
+    }
+  };
+  // rows of the linear operator for traction increments (px, py) and unknowns x; with_w adds w
+  auto rows = [&](const Eigen::ArrayXXd& fx_, const Eigen::ArrayXXd& fy_, const Eigen::VectorXd* x, bool with_w,
+                  Eigen::VectorXd& y) {
+    A.apply(fx_, fy_, ux, uy);
+    for (int c = 0; c < nc; ++c) {
+      const int q = cells[c], o = offset[c];
+      double rx = (UX[q] - upstream * UX[q + 1]) / dx, ry = (UY[q] - upstream * UY[q + 1]) / dx;
+      if (with_w) {
+        rx += WX[q];
+        ry += WY[q];
+      }
+      if (slip[c]) {
+        y(o) = -ey[c] * rx + ex[c] * ry + (x ? sabs[c] / Gb[q] * (*x)(o) : 0.0);
+      } else {
+        y(o) = rx;
+        y(o + 1) = ry;
+      }
+    }
+  };
+  int gmres_total = 0;
+  Eigen::VectorXd xm, zv, mz;
+  // one Newton step from (tx, ty): solves for the increment to rel_tol; returns the relative residual
+  auto newton_step = [&](double rel_tol) {
+    index_unknowns();
+    const int n = offset[nc];
+    // the current tractions in these unknowns: the fixed part -g e on slip cells
+    Eigen::ArrayXXd fx0 = Eigen::ArrayXXd::Zero(nxe, ny), fy0 = fx0;
+    Eigen::VectorXd x0(n);
+    for (int c = 0; c < nc; ++c) {
+      const int q = cells[c], o = offset[c];
+      if (slip[c]) {
+        fx0.data()[q] = -Gb[q] * ex[c];
+        fy0.data()[q] = -Gb[q] * ey[c];
+        x0(o) = -ey[c] * TX[q] + ex[c] * TY[q];
+      } else {
+        x0(o) = TX[q];
+        x0(o + 1) = TY[q];
+      }
+    }
+    to_traction(x0);
+    fx0 += px;
+    fy0 += py;
+    Eigen::VectorXd b(n), w(n), r(n), v(n), xi(n);
+    rows(fx0, fy0, nullptr, true, b);  // F(x0) without the |s|/g term of the slip rows
+    for (int c = 0; c < nc; ++c)
+      if (slip[c]) b(offset[c]) += sabs[c] / Gb[cells[c]] * x0(offset[c]);
+    b = -b;
+    const double b_norm = b.norm();
+    Eigen::VectorXd z = Eigen::VectorXd::Zero(n);
+    auto matvec = [&](const Eigen::VectorXd& zz, Eigen::VectorXd& y) {
+      precondition(zz, xi);
+      to_traction(xi);
+      rows(px, py, &xi, false, y);
+    };
+    double rel = 0;
+    if (n > 0 && b_norm > 0) {
+      const int m = kGmresRestart;
+      Eigen::MatrixXd Vk(n, m + 1), Hm = Eigen::MatrixXd::Zero(m + 1, m);
+      Eigen::VectorXd cs(m), sn(m), e(m + 1);
+      for (;;) {
+        matvec(z, w);
+        r = b - w;
+        const double beta = r.norm();
+        rel = beta / std::max(b_norm, 1e-300);
+        if (rel <= rel_tol || gmres_total >= opt.max_stick_iterations) break;
+        Vk.col(0) = r / beta;
+        e.setZero();
+        e(0) = beta;
+        Hm.setZero();
+        int k = 0;
+        while (k < m && gmres_total < opt.max_stick_iterations) {
+          v = Vk.col(k);
+          matvec(v, w);
+          ++gmres_total;
+          for (int i = 0; i <= k; ++i) {  // modified Gram-Schmidt
+            Hm(i, k) = Vk.col(i).dot(w);
+            w -= Hm(i, k) * Vk.col(i);
+          }
+          Hm(k + 1, k) = w.norm();
+          if (Hm(k + 1, k) > 0) Vk.col(k + 1) = w / Hm(k + 1, k);
+          for (int i = 0; i < k; ++i) {  // Givens rotations
+            const double t = cs(i) * Hm(i, k) + sn(i) * Hm(i + 1, k);
+            Hm(i + 1, k) = -sn(i) * Hm(i, k) + cs(i) * Hm(i + 1, k);
+            Hm(i, k) = t;
+          }
+          const double den = std::hypot(Hm(k, k), Hm(k + 1, k));
+          cs(k) = Hm(k, k) / den;
+          sn(k) = Hm(k + 1, k) / den;
+          Hm(k, k) = den;
+          Hm(k + 1, k) = 0;
+          e(k + 1) = -sn(k) * e(k);
+          e(k) = cs(k) * e(k);
+          ++k;
+          if (std::abs(e(k)) <= 0.5 * rel_tol * b_norm || !(den > 0)) break;
+        }
+        const Eigen::VectorXd yk = Hm.topLeftCorner(k, k).triangularView<Eigen::Upper>().solve(e.head(k));
+        z += Vk.leftCols(k) * yk;
+      }
+    }
+    precondition(z, xi);
+    xi += x0;
+    to_traction(xi);
+    for (int c = 0; c < nc; ++c) {
+      const int q = cells[c];
+      TX[q] = px.data()[q] + (slip[c] ? -Gb[q] * ex[c] : 0.0);
+      TY[q] = py.data()[q] + (slip[c] ? -Gb[q] * ey[c] : 0.0);
+    }
+    return rel;
+  };
+
+  // ---- all stick first (the linear theory when mu is large): to kLooseStickTol, and on to
+  // stick_tol unless the tractions already exceed the bound by more than that solve's error
+  auto exceeds_bound = [&](double margin) {
+    for (const int q : cells)
+      if (std::hypot(TX[q], TY[q]) > Gb[q] * (1 + margin)) return true;
+    return false;
+  };
+  double rel = 0;
+  bool admissible = false;
+  if (start_tx) {  // a warm start: the given tractions (clipped below), straight to Newton
+    for (const int q : cells) {
+      TX[q] = (*start_tx)(q % nxe, q / nxe);
+      TY[q] = (*start_ty)(q % nxe, q / nxe);
+    }
+  } else {
+    rel = newton_step(kLooseStickTol);
+    if (rel <= kLooseStickTol && !exceeds_bound(kLooseStickMargin)) rel = newton_step(opt.stick_tol);
+    admissible = !exceeds_bound(0);
+  }
+  out.stick_iterations = gmres_total;
+  Eigen::ArrayXXi state = Eigen::ArrayXXi::Zero(nxe, ny);
+  double residual = 0;
+  int outer = 0;
+  if (!start_tx && !(rel <= (admissible ? opt.stick_tol : kLooseStickTol))) {
+    status.kind = std::isfinite(rel) ? SolveStatus::Kind::MaxIterations : SolveStatus::Kind::Failed;
+    status.message = fmt::format("all-stick GMRES: relative residual {:.2g} > tol {:.3g} after {} iterations", rel,
+                                 opt.stick_tol, gmres_total);
+    residual = rel;
+  } else if (admissible) {
+    A.apply(tx, ty, ux, uy);
+    for (const int q : cells) state.data()[q] = 1;
+    status.kind = SolveStatus::Kind::Converged;
+    status.message = fmt::format("full stick: GMRES relative residual {:.2g} <= {:.3g} after {} iterations", rel,
+                                 opt.stick_tol, gmres_total);
+    residual = rel;
+  } else {
+    // ---- friction: semi-smooth Newton on the active sets. Each iteration: every cell's own
+    // Coulomb problem with u = A tau fresh gives the residual, the stick and slip sets, the slip
+    // tractions and directions; then one Newton step.
+    for (const int q : cells) {  // the stick tractions clipped to the bound start it
+      const double t = std::hypot(TX[q], TY[q]);
+      if (t > Gb[q]) {
+        TX[q] *= Gb[q] / t;
+        TY[q] *= Gb[q] / t;
+      }
+    }
+    // backtracking: a Newton step that raised the residual is halved towards the last accepted
+    // tractions, up to kMaxHalvings times (semi-smooth Newton can cycle between active sets)
+    Eigen::ArrayXXd acc_x = tx, acc_y = ty, sol_x = tx, sol_y = ty;
+    double accepted_residual = std::numeric_limits<double>::infinity();
+    int halvings = 0;
+    for (;; ++outer) {
+      A.apply(tx, ty, ux, uy);
+      double change = 0, scale = 0;
+      for (int c = 0; c < nc; ++c) {
+        const int q = cells[c];
+        const double rx = WX[q] + (UX[q] - upstream * UX[q + 1]) / dx - bx * TX[q];
+        const double ry = WY[q] + (UY[q] - upstream * UY[q + 1]) / dx - by * TY[q];
+        double sx, sy;
+        const bool stick = element_solve(rx, ry, bx, by, Gb[q], sx, sy);
+        state.data()[q] = stick ? 1 : 2;
+        change = std::max(change, std::hypot(sx - TX[q], sy - TY[q]));
+        scale = std::max(scale, std::hypot(TX[q], TY[q]));
+        slip[c] = !stick;
+        sol_x.data()[q] = sx;
+        sol_y.data()[q] = sy;
+        if (!stick) {  // the slip of the element solution: s = r + B tau, along -tau
+          const double vx = rx + bx * sx, vy = ry + by * sy;
+          sabs[c] = std::hypot(vx, vy);
+          const double en = std::hypot(sx, sy);
+          ex[c] = -sx / en;
+          ey[c] = -sy / en;
+        }
+      }
+      residual = scale > 0 ? change / scale : change;
+      if (!std::isfinite(residual)) {
+        status.kind = SolveStatus::Kind::Failed;
+        status.message = fmt::format("residual is {} after {} Newton iterations", residual, outer);
+        break;
+      }
+      if (residual <= opt.tol) {
+        status.kind = SolveStatus::Kind::Converged;
+        status.message = fmt::format("residual {:.2g} <= tol {:.3g} after {} Newton iterations ({} GMRES)",
+                                     residual, opt.tol, outer, gmres_total);
+        break;
+      }
+      if (outer >= opt.max_iterations || gmres_total >= opt.max_stick_iterations) {
+        status.kind = SolveStatus::Kind::MaxIterations;
+        status.message = fmt::format("residual {:.2g} > tol {:.3g} after {} Newton iterations ({} GMRES)",
+                                     residual, opt.tol, outer, gmres_total);
+        break;
+      }
+      if (residual > accepted_residual && halvings < kMaxHalvings) {
+        ++halvings;
+        tx = 0.5 * (tx + acc_x);
+        ty = 0.5 * (ty + acc_y);
+        continue;
+      }
+      halvings = 0;
+      accepted_residual = residual;
+      acc_x = tx;
+      acc_y = ty;
+      for (int c = 0; c < nc; ++c)
+        if (slip[c]) {
+          TX[cells[c]] = sol_x.data()[cells[c]];
+          TY[cells[c]] = sol_y.data()[cells[c]];
+        }
+      newton_step(std::max(opt.stick_tol, 1e-2 * residual));
+    }
+    A.apply(tx, ty, ux, uy);
+  }
+  out.active_set_iterations = outer;
+  status.iterations = gmres_total;
+  status.residual = residual;
+
+  // ---- the solution as the fast solvers report it
+  TangentialSolution& s = out.fields;
+  const double V = speed_m_per_s;
+  s.tau_x_Pa = tx.topRows(nx);
+  s.tau_y_Pa = ty.topRows(nx);
+  s.slip_x_m_per_s = Eigen::ArrayXXd::Zero(nx, ny);
+  s.slip_y_m_per_s = Eigen::ArrayXXd::Zero(nx, ny);
+  s.power_W_per_m2 = Eigen::ArrayXXd::Zero(nx, ny);
+  s.state = state.topRows(nx);
+  s.strip_power_W_per_m = Eigen::ArrayXd::Zero(ny);
+  s.strip_creep_power_W_per_m = Eigen::ArrayXd::Zero(ny);
+  s.strip_trailing_W_per_m = Eigen::ArrayXd::Zero(ny);
+  s.strip_force_x_N_per_m = Eigen::ArrayXd::Zero(ny);
+  s.strip_force_y_N_per_m = Eigen::ArrayXd::Zero(ny);
+  double stick = 0;
+  for (const int q : cells) {
+    const int i = q % nxe, j = q / nxe;
+    const double sx = V * (WX[q] + (UX[q] - upstream * UX[q + 1]) / dx);
+    const double sy = V * (WY[q] + (UY[q] - upstream * UY[q + 1]) / dx);
+    s.slip_x_m_per_s(i, j) = sx;
+    s.slip_y_m_per_s(i, j) = sy;
+    s.power_W_per_m2(i, j) = -(TX[q] * sx + TY[q] * sy);
+    s.strip_power_W_per_m(j) += s.power_W_per_m2(i, j) * dx;
+    s.strip_creep_power_W_per_m(j) += -V * (TX[q] * RX[q] + TY[q] * RY[q]) * dx;
+    s.strip_force_x_N_per_m(j) += TX[q] * dx;
+    s.strip_force_y_N_per_m(j) += TY[q] * dx;
+    s.Mz_N_m += (grid.x_m(i) * TY[q] - grid.y_m(j) * TX[q]) * dx * dy;
+    if (state.data()[q] == 1) stick += 1;
+  }
+  s.Fx_N = s.strip_force_x_N_per_m.sum() * dy;
+  s.Fy_N = s.strip_force_y_N_per_m.sum() * dy;
+  s.power_W = s.strip_power_W_per_m.sum() * dy;
+  s.stick_fraction = stick / nc;
+  double xi_Fx = creepages.xi * s.Fx_N;
+  if (patch.strip_xi_offset.size() == ny) xi_Fx += (patch.strip_xi_offset * s.strip_force_x_N_per_m).sum() * dy;
+  s.creep_work_W = V * (xi_Fx + creepages.eta * s.Fy_N + creepages.phi_per_m * s.Mz_N_m);
+  out.u_x_m = ux;
+  out.u_y_m = uy;
+
+  spdlog::debug("{} ({} x {}): {}; Fx {:.6e} N, Fy {:.6e} N, Mz {:.6e} N m, P {:.6e} W, stick {:.3f}", mode, nx, ny,
+                status.message, s.Fx_N, s.Fy_N, s.Mz_N_m, s.power_W, s.stick_fraction);
+  if (!status.converged()) spdlog::warn("{} ({} x {}): not converged: {}", mode, nx, ny, status.message);
+  return out;
+}
+
+}  // namespace
+
+ExactSolution solve_exact_steady(const ContactPatch& patch, double G_Pa, double nu, const Creepages& creepages,
+                                 double mu, double speed_m_per_s, const ExactOptions& opt) {
+  return solve_exact(patch, G_Pa, nu, creepages, mu, speed_m_per_s, opt, nullptr, nullptr, nullptr, nullptr);
+}
+
+ExactSolution solve_exact_rolling_step(const ContactPatch& patch, double G_Pa, double nu, const Creepages& creepages,
+                                       double mu, double speed_m_per_s, const ExactSolution* previous,
+                                       const ExactOptions& opt) {
+  if (!previous) {
+    const Eigen::ArrayXXd rest = Eigen::ArrayXXd::Zero(patch.grid.nx + 1, patch.grid.ny);
+    return solve_exact(patch, G_Pa, nu, creepages, mu, speed_m_per_s, opt, &rest, &rest, nullptr, nullptr);
+  }
+  return solve_exact(patch, G_Pa, nu, creepages, mu, speed_m_per_s, opt, &previous->u_x_m, &previous->u_y_m,
+                     &previous->fields.tau_x_Pa, &previous->fields.tau_y_Pa);
+}
+
+ExactSolution solve_exact_shift(const ContactPatch& patch, double G_Pa, double nu, double shift_x_m, double shift_y_m,
+                                double mu, double dt_s, const ExactSolution* previous, const ExactOptions& opt) {
+  if (!(dt_s > 0) || !std::isfinite(dt_s))
+    throw std::invalid_argument(fmt::format("exact shift: dt must be positive and finite, got {} s", dt_s));
+  // the rolling step's equations with no transport: w dx = the rigid shift, V = dx/dt
+  const double dx = patch.grid.dx_m;
+  const Creepages c{shift_x_m / dx, shift_y_m / dx, 0};
+  const double V = dx / dt_s;
+  if (!previous) {
+    const Eigen::ArrayXXd rest = Eigen::ArrayXXd::Zero(patch.grid.nx + 1, patch.grid.ny);
+    return solve_exact(patch, G_Pa, nu, c, mu, V, opt, &rest, &rest, nullptr, nullptr, 0);
+  }
+  return solve_exact(patch, G_Pa, nu, c, mu, V, opt, &previous->u_x_m, &previous->u_y_m, &previous->fields.tau_x_Pa,
+                     &previous->fields.tau_y_Pa, 0);
+}
+
+}  // namespace contact

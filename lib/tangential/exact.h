@@ -1,0 +1,93 @@
+// Kalker's exact theory of the tangential problem for quasi-identical bodies on the elastic
+// half-space (docs/exact-theory.md): piecewise-constant tractions on the cells of a ContactPatch's
+// grid, Cerruti's influence coefficients integrated over each rectangle in closed form, steady
+// rolling with Coulomb friction and an unknown slip direction.
+//
+// Discrete steady problem (rolling speed V, material flowing from the leading edge x = +a to the
+// trailing edge x = -a, docs/physics.md §1). On each cell i of the contact (normal pressure p > 0),
+//   u = A tau                                   (displacement difference, every cell of the grid)
+//   s_i / V = w_i + (u_i - u_(i+1)) / dx       (u_(i+1): the cell one dx upstream, towards x = +a)
+//   w_i = ( xi_j - phi y_j ,  eta + phi x_i )   (rigid creepage; xi_j = xi + the strip's Heathcote offset)
+//   |tau_i| <= mu p_i;  s_i = 0 (stick) or tau_i = -mu p_i s_i / |s_i| (slip).
+// This is Kalker's steady discretisation: the rolled distance per "time step" is dx, so the previous
+// displacement field is the current one shifted by one cell. Outside the contact tau = 0, but u is
+// not: the grid is extended internally by one row of cells ahead of the leading edge so that the
+// upstream displacement of the first contact cell is A tau too.
+//
+// Method (exact.cpp): the all-stick (linear) problem by GMRES with FFT products and a march as
+// preconditioner; when its tractions exceed mu p somewhere, a semi-smooth Newton iteration on the
+// stick and slip sets, each step one preconditioned GMRES solve.
+// Convergence is judged on the fixed-point residual: with u = A tau fresh from a convolution, each
+// contact cell's own Coulomb problem (all other tractions frozen) is solved, and
+//   residual = max_i |tau_i(cell's own solve) - tau_i| / max_i |tau_i|,
+// converged when residual <= tol; at full stick, on GMRES's relative residual <= stick_tol. The
+// status carries the number and the GMRES iterations (one FFT product each).
+#pragma once
+
+#include <Eigen/Core>
+
+#include "lib/patch.h"
+#include "lib/solve_status.h"
+#include "lib/tangential/tangential.h"
+
+namespace contact {
+
+// Surface displacement difference (both bodies, quasi-identical: shear modulus G and Poisson's
+// ratio nu of docs/physics.md §1) at the offset (x, y) from the centre of a dx x dy rectangle that
+// carries a unit uniform tangential traction, in m/Pa:
+//   xx: u_x from tau_x,  yy: u_y from tau_y,  xy: u_x from tau_y = u_y from tau_x.
+// Cerruti's point-force solution integrated in closed form (docs/exact-theory.md).
+struct TangentialInfluence {
+  double xx = 0, xy = 0, yy = 0;
+};
+TangentialInfluence cerruti_rectangle_influence(double x_m, double y_m, double dx_m, double dy_m, double G_Pa,
+                                                double nu);
+
+struct ExactOptions {
+  double tol = 1e-9;              // on the fixed-point residual above
+  int max_iterations = 200;       // active-set iterations (each one GMRES solve on the stick cells)
+  int max_stick_iterations = 20000;  // GMRES iterations (FFT products) over the whole solve
+  double stick_tol = 1e-11;       // GMRES: relative residual of the all-stick solve (the linear theory);
+                                  // later solves go to max(stick_tol, residual / 100)
+};
+
+struct ExactSolution {
+  TangentialSolution fields;  // tractions, slip, power, forces, as the fast solvers report them
+                              // (strip_trailing_W_per_m is zero: no energy leaves with the material)
+  Eigen::ArrayXXd u_x_m, u_y_m;  // ((nx + 1) x ny) displacement difference A tau at the cell centres,
+                                 // the last row one cell ahead of the grid's leading edge
+  SolveStatus status;
+  int stick_iterations = 0;       // GMRES iterations of the all-stick start
+  int active_set_iterations = 0;  // after it (0: the all-stick solution was admissible)
+};
+
+// Steady rolling on the patch's grid. G_Pa, nu: combined constants (combined_shear_modulus_Pa,
+// combined_poisson). mu > 0; speed_m_per_s >= 0 scales only the slip velocities and the power.
+// A patch with a cell of non-finite or negative pressure, G <= 0, nu outside [0, 0.5), mu <= 0,
+// non-finite creepages or options out of range: std::invalid_argument.
+// An unconverged solve is returned with its status (MaxIterations or Failed) and a spdlog::warn;
+// the caller decides.
+ExactSolution solve_exact_steady(const ContactPatch& patch, double G_Pa, double nu, const Creepages& creepages,
+                                 double mu, double speed_m_per_s, const ExactOptions& opt = {});
+
+// One step of transient rolling by one cell, dq = dx (Kalker's transient discretisation): the
+// previous step's displacement difference (previous->u_x_m, u_y_m; previous == nullptr: a start
+// from rest, u = 0) has moved one cell downstream, so cell i sees the previous u of cell i + 1:
+//   s_i / V = w_i + (u_i - u_prev,(i+1)) / dx,   u = A tau.
+// Each step is a problem with the symmetric positive definite A (no transport inside the step);
+// the same method solves it with a diagonal preconditioner, the Newton iteration starting from the
+// previous step's tractions (a warm start; the patch and grid must be the previous step's).
+// Steady rolling is its fixed point. Not yet: dq other than dx (interpolation), V = 0.
+ExactSolution solve_exact_rolling_step(const ContactPatch& patch, double G_Pa, double nu, const Creepages& creepages,
+                                       double mu, double speed_m_per_s, const ExactSolution* previous,
+                                       const ExactOptions& opt = {});
+
+// Shift (no rolling): the bodies' rigid shift (shift_x_m, shift_y_m) of body 1 over body 2 during
+// a time step dt_s, from the previous state (previous == nullptr: from rest). Per cell the slip
+// over the step is S_i = shift + u_i - u_prev,i (no transport), with Coulomb's law on S; the slip
+// velocities reported are S/dt, the creep work V (xi Fx + eta Fy) is (shift . F)/dt.
+// Loaded monotonically from rest this is the Cattaneo-Mindlin problem.
+ExactSolution solve_exact_shift(const ContactPatch& patch, double G_Pa, double nu, double shift_x_m, double shift_y_m,
+                                double mu, double dt_s, const ExactSolution* previous, const ExactOptions& opt = {});
+
+}  // namespace contact
