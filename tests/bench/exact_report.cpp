@@ -1,0 +1,141 @@
+// The tables of docs/exact-theory.md §4, printed by Kalker's exact theory in-house
+// (lib/tangential/exact.h): built with the bench preset (cmake --preset bench), not part of ctest.
+//   exact_report coef        C11 C22 C23 at full stick on 20..160 cells, Richardson-extrapolated
+//   exact_report c33         C33 (reported, not judged: it converges slowly)
+//   exact_report mindlin     Cattaneo-Mindlin's stick radius in the shift mode, nu = 0 and 0.28
+//   exact_report sweep       steady forces, power and creep work over creepages (paper's contact, sphere)
+//   exact_report transient N the start from rest at dq = dx on N x N: Fx/Fx_ss at q/a = 0.5, 2, 4, 8
+//   exact_report paper [320] the paper's contact, xi = 1e-3: Fx, power and creep work on 20..160 (320)
+#include "lib/tangential/exact.h"
+#include "lib/elastic.h"
+#include "lib/grid.h"
+#include "lib/normal/hertz.h"
+#include "lib/numeric.h"
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+using namespace contact;
+ContactPatch ellipse_patch(double ab, int n) {
+  HertzContact h; h.b_m = 1e-3; h.a_m = ab * h.b_m; h.p0_Pa = 1e9;
+  h.normal_load_N = 2 * kPi * h.a_m * h.b_m * h.p0_Pa / 3;
+  return hertz_patch(h, make_grid(h.a_m, h.b_m, {n, n}));
+}
+ContactPatch paper_patch(int n) {
+  const Bodies bodies{{20e-3, 500e-3}, {25e-3, kFlat}};
+  return solve_normal_hertz(bodies, {{210e9, 0.28}, {210e9, 0.28}}, 1500, {n, n});
+}
+int main(int argc, char** argv) {
+  if (argc < 2) {
+    std::fprintf(stderr, "usage: exact_report coef|c33|mindlin|sweep|transient N|paper [320]\n");
+    return 2;
+  }
+  const std::string what = argv[1];
+  if (what == "transient" && argc < 3) {
+    std::fprintf(stderr, "usage: exact_report transient N\n");
+    return 2;
+  }
+  if (what == "coef") {
+    for (double ab : {0.2, 0.5, 1.0, 2.0, 5.0, -1.0}) {
+      double C[3][6];
+      int k = 0;
+      for (int n : {20, 40, 80, 160}) {
+        ContactPatch p = ab > 0 ? ellipse_patch(ab, n) : paper_patch(n);
+        const double nu = ab > 0 ? 0.25 : 0.28, G = 80e9, a = p.a_m, b = p.b_m, c = 1e-6;
+        ExactOptions o; o.stick_tol = 1e-9;
+        C[0][k] = -solve_exact_steady(p, G, nu, {c, 0, 0}, 1e4, 1, o).fields.Fx_N / (G * a * b * c);
+        C[1][k] = -solve_exact_steady(p, G, nu, {0, c, 0}, 1e4, 1, o).fields.Fy_N / (G * a * b * c);
+        C[2][k] = -solve_exact_steady(p, G, nu, {0, 0, c / std::sqrt(a * b)}, 1e4, 1, o).fields.Fy_N / (G * a * b * c);
+        ++k;
+      }
+      for (int i = 0; i < 3; ++i) {
+        auto R = [&](int j) { return (8 * C[i][j + 2] - 6 * C[i][j + 1] + C[i][j]) / 3; };
+        std::printf("a/b %s C%s: 20 %.4f 40 %.4f 80 %.4f 160 %.4f | R(20,40,80) %.4f R(40,80,160) %.4f\n",
+                    ab > 0 ? std::to_string(ab).substr(0, 4).c_str() : "0.0882(paper,nu0.28)",
+                    i == 0 ? "11" : i == 1 ? "22" : "23", C[i][0], C[i][1], C[i][2], C[i][3], R(0), R(1));
+      }
+    }
+  } else if (what == "c33") {
+    for (double ab : {1.0, -1.0}) {
+      double C[4]; int k = 0;
+      for (int n : {20, 40, 80, 160}) {
+        ContactPatch p = ab > 0 ? ellipse_patch(ab, n) : paper_patch(n);
+        const double nu = ab > 0 ? 0.25 : 0.28, G = 80e9, a = p.a_m, b = p.b_m, c = 1e-6;
+        ExactOptions o; o.stick_tol = 1e-9;
+        const double phi = c / std::sqrt(a * b);
+        C[k++] = -solve_exact_steady(p, G, nu, {0, 0, phi}, 1e4, 1, o).fields.Mz_N_m / (G * a * b * a * b * phi);
+      }
+      std::printf("C33 %s: 20 %.4f 40 %.4f 80 %.4f 160 %.4f R(40,80,160) %.4f\n", ab > 0 ? "a/b 1 nu 0.25" : "paper", C[0], C[1], C[2], C[3], (8 * C[3] - 6 * C[2] + C[1]) / 3);
+    }
+  } else if (what == "mindlin") {
+    for (double nu : {0.0, 0.28}) {
+      const ElasticPair pair{{210e9, nu}, {210e9, nu}};
+      const Bodies bodies{{10e-3, 10e-3}, {kFlat, kFlat}};
+      for (int n : {40, 80, 160}) {
+        const ContactPatch p = solve_normal_hertz(bodies, pair, 1000, {n, n});
+        const double G = combined_shear_modulus_Pa(pair), a = p.a_m, mu = 0.3;
+        // Mindlin's shift for |Fx| = mu Fn / 2, both bodies: 3 mu F (2 - nu) / (8 G a) [1 - (1/2)^(2/3)]
+        const double shift = 3 * mu * 1000 * (2 - nu) / (8 * G * a) * (1 - std::pow(0.5, 2.0 / 3.0));
+        const ExactSolution s = solve_exact_shift(p, G, combined_poisson(pair), shift, 0, mu, 1.0, nullptr);
+        const double lr = -s.fields.Fx_N / (mu * 1000);
+        const double c = a * std::cbrt(1 - lr);
+        const double cg = std::sqrt((s.fields.state == 1).count() * p.grid.dx_m * p.grid.dy_m / kPi);
+        std::printf("mindlin nu %.2f n %d: Fx/(mu Fn) %.5f, c_grid/a %.5f, (1-Fx/muFn)^(1/3) %.5f, dev %+.2f %%, %s\n", nu, n, lr, cg / a, c / a, 100 * (cg / c - 1), s.status.message.c_str());
+      }
+    }
+  } else if (what == "sweep") {
+    const ElasticPair pair{{210e9, 0.28}, {210e9, 0.28}};
+    const double G = combined_shear_modulus_Pa(pair), nu = combined_poisson(pair);
+    const Bodies sphere{{10e-3, 10e-3}, {kFlat, kFlat}};
+    for (int n : {40, 80}) {
+      const ContactPatch pp = paper_patch(n);
+      const ContactPatch ps = solve_normal_hertz(sphere, pair, 1000, {n, n});
+      for (const ContactPatch* p : {&pp, &ps})
+        for (Creepages c : {Creepages{1e-4, 0, 0}, Creepages{2e-3, 0, 0}, Creepages{5e-3, 0, 0}, Creepages{0, 1e-3, 0},
+                            Creepages{0, 0, 1.0}, Creepages{1e-3, 1e-3, 0.5}, Creepages{-1e-3, 2e-3, -2.0}}) {
+          auto t0 = std::chrono::steady_clock::now();
+          ExactSolution s = solve_exact_steady(*p, G, nu, c, 0.3, 1.0);
+          double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+          std::printf("%s %d xi %g eta %g phi %g: Fx %.3f Fy %.3f Mz %.5f P %.5f -W %.5f stick %.3f | %s | %.0f ms\n",
+                      p == &pp ? "paper" : "sphere", n, c.xi, c.eta, c.phi_per_m, s.fields.Fx_N, s.fields.Fy_N,
+                      s.fields.Mz_N_m, s.fields.power_W, -s.fields.creep_work_W, s.fields.stick_fraction,
+                      s.status.message.c_str(), ms);
+        }
+    }
+  } else if (what == "transient") {
+    const ElasticPair pair{{210e9, 0.28}, {210e9, 0.28}};
+    const double G = combined_shear_modulus_Pa(pair), nu = combined_poisson(pair);
+    for (int n : {std::atoi(argv[2])}) {
+      ContactPatch p = paper_patch(n);
+      ExactSolution ss = solve_exact_steady(p, G, nu, {1e-3, 0, 0}, 0.3, 1.0);
+      ExactSolution prev;
+      ExactOptions o; o.tol = 1e-6; o.stick_tol = 1e-6;
+      double total_ms = 0; int steps = 0;
+      std::printf("transient %dx%d (Fx_ss %.3f):", n, n, ss.fields.Fx_N);
+      for (int k = 1; k <= 4 * n; ++k) {
+        auto t0 = std::chrono::steady_clock::now();
+        ExactSolution s = solve_exact_rolling_step(p, G, nu, {1e-3, 0, 0}, 0.3, 1.0, k == 1 ? nullptr : &prev, o);
+        total_ms += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+        ++steps;
+        if (!s.status.converged()) std::printf(" [step %d not converged]", k);
+        prev = s;
+        const double q_over_a = 2.0 * k / n;
+        if (k == n / 4 || k == n || k == 2 * n || k == 4 * n) std::printf(" q/a %.1f: %.4f", q_over_a, s.fields.Fx_N / ss.fields.Fx_N);
+      }
+      std::printf("  (%.2f ms per step wall, tol 1e-6)\n", total_ms / steps);
+    }
+  } else if (what == "paper") {
+    const ElasticPair pair{{210e9, 0.28}, {210e9, 0.28}};
+    for (int n : {20, 40, 80, 160, 320}) {
+      if (n == 320 && argc < 3) continue;
+      ContactPatch p = paper_patch(n);
+      auto t0 = std::chrono::steady_clock::now();
+      ExactSolution s = solve_exact_steady(p, combined_shear_modulus_Pa(pair), combined_poisson(pair), {1e-3, 0, 0}, 0.3, 1.0);
+      double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+      std::printf("paper %dx%d: Fx %.3f N, P %.5f W, -creep work %.5f W, P/work-1 %+.4f, stick %.3f, Newton %d, GMRES %d, %s, %.0f ms wall\n",
+                  n, n, s.fields.Fx_N, s.fields.power_W, -s.fields.creep_work_W,
+                  s.fields.power_W / -s.fields.creep_work_W - 1, s.fields.stick_fraction, s.active_set_iterations,
+                  s.status.iterations, s.status.message.c_str(), ms);
+    }
+  }
+}
