@@ -28,6 +28,7 @@
 #include <spdlog/fmt/fmt.h>
 
 #include "lib/io/csv.h"
+#include "lib/io/errors.h"
 
 extern char** environ;
 
@@ -35,17 +36,13 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr int kExitFailure = 1;
-constexpr int kExitBadInput = 2;
+using contact::kExitBadInput;  // the exit statuses: lib/io/errors.h
+using contact::kExitFailure;
 constexpr const char* kGnuplotPackage = "gnuplot-nox";
 
-// a failure the command reports as one line, with the exit status it ends with
-struct PlotError : std::runtime_error {
-  PlotError(int status, const std::string& message) : std::runtime_error(message), exit_status(status) {}
-  int exit_status;
-};
-
-PlotError bad_input(const std::string& message) { return PlotError(kExitBadInput, message); }
+// a failure the command reports as one line: bad input is a contact::CaseError (exit 2), any other
+// failure a std::runtime_error (exit 1); lib/io/errors.h maps them
+contact::CaseError bad_input(const std::string& message) { return contact::CaseError(message); }
 
 // ---- reading the run's tables ------------------------------------------------------------------------
 
@@ -490,11 +487,11 @@ std::string one_line(const std::string& text) {
 }
 
 // runs "gnuplot SCRIPT" (found on PATH), stdin from /dev/null; returns its stdout and stderr
-// together. Throws PlotError when gnuplot is not installed, cannot start or fails.
+// together. Throws std::runtime_error when gnuplot is not installed, cannot start or fails.
 std::string run_gnuplot(const fs::path& script) {
   int fd[2];
   if (::pipe2(fd, O_CLOEXEC) != 0)
-    throw PlotError(kExitFailure, fmt::format("cannot run gnuplot: pipe: {}", std::strerror(errno)));
+    throw std::runtime_error(fmt::format("cannot run gnuplot: pipe: {}", std::strerror(errno)));
   posix_spawn_file_actions_t actions;
   posix_spawn_file_actions_init(&actions);
   posix_spawn_file_actions_addopen(&actions, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
@@ -509,11 +506,10 @@ std::string run_gnuplot(const fs::path& script) {
   if (spawned != 0) {
     ::close(fd[0]);
     if (spawned == ENOENT)
-      throw PlotError(kExitFailure,
-                      fmt::format("gnuplot is not installed (not found on PATH); it is Debian's package {}: "
+      throw std::runtime_error(fmt::format("gnuplot is not installed (not found on PATH); it is Debian's package {}: "
                                   "sudo apt-get install -y {}",
                                   kGnuplotPackage, kGnuplotPackage));
-    throw PlotError(kExitFailure, fmt::format("cannot run gnuplot: {}", std::strerror(spawned)));
+    throw std::runtime_error(fmt::format("cannot run gnuplot: {}", std::strerror(spawned)));
   }
 
   std::string messages;
@@ -534,7 +530,7 @@ std::string run_gnuplot(const fs::path& script) {
                           : WIFSIGNALED(status) ? fmt::format("signal {}", WTERMSIG(status))
                                                 : std::string("unknown status");
   const std::string said = one_line(messages);
-  throw PlotError(kExitFailure, fmt::format("gnuplot failed ({}): {}", how, said.empty() ? "no message" : said));
+  throw std::runtime_error(fmt::format("gnuplot failed ({}): {}", how, said.empty() ? "no message" : said));
 }
 
 // the pictures: the script, gnuplot, then every PNG into place; returns the PNGs written
@@ -575,20 +571,20 @@ std::vector<fs::path> draw(const RunOutput& run, const fs::path& plots, std::ost
   try {
     contact::write_file_atomic(script_path, script);
   } catch (const std::exception& e) {
-    throw PlotError(kExitFailure, e.what());
+    throw std::runtime_error(e.what());
   }
   const std::string messages = one_line(run_gnuplot(script_path));
   if (!messages.empty()) err << "rollwear plot: gnuplot said: " << messages << '\n';
   for (const Picture& p : pictures)
     if (!has_png_signature(p.temporary))
-      throw PlotError(kExitFailure, fmt::format("gnuplot did not draw {}", p.path.string()));
+      throw std::runtime_error(fmt::format("gnuplot did not draw {}", p.path.string()));
 
   // then each into place
   std::vector<fs::path> written;
   for (const Picture& p : pictures) {
     std::error_code ec;
     fs::rename(p.temporary, p.path, ec);
-    if (ec) throw PlotError(kExitFailure, fmt::format("cannot write {}: {}", p.path.string(), ec.message()));
+    if (ec) throw std::runtime_error(fmt::format("cannot write {}: {}", p.path.string(), ec.message()));
     written.push_back(p.path);
   }
   return written;
@@ -615,12 +611,9 @@ int plot_command(const std::string& output_dir, std::ostream& out, std::ostream&
       return kExitBadInput;
     }
     return 0;
-  } catch (const PlotError& e) {
-    fail(e.what());
-    return e.exit_status;
   } catch (const std::exception& e) {
     fail(e.what());
-    return kExitFailure;
+    return contact::exit_status_of(e);
   } catch (...) {
     fail("unknown failure");
     return kExitFailure;

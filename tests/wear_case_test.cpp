@@ -146,5 +146,19 @@ TEST_F(WearCaseReader, CrossKeyErrors) {
             std::string::npos);
 }
 
+// Archard's law is the energy law with k_E = K/(H mu): without friction it has no meaning. A cross-key
+// error of the reader, at friction.mu's line, naming both keys (not an std::invalid_argument from the
+// wear model at run time, which had no file, line or key).
+TEST_F(WearCaseReader, ArchardWithoutFrictionNamesFrictionMuAndTheLaw) {
+  std::string text = kContact + "wear:\n  body1: { law: archard, archard_k: 1.0e-4, hardness_Pa: 6.0e9 }\n  revolutions: 1.0e9\n";
+  text.replace(text.find("mu: 0.3"), 7, "mu: 0");
+  EXPECT_EQ(error_of(text).rfind(path() + ":9:17: friction.mu, wear.body1.law: the archard law needs friction", 0), 0u)
+      << error_of(text);
+  // the energy law wears without friction
+  std::string energy = kContact + "wear:\n  body1: { law: energy, k_E_m3_per_J: 1.0e-13 }\n  revolutions: 1.0e9\n";
+  energy.replace(energy.find("mu: 0.3"), 7, "mu: 0");
+  EXPECT_EQ(error_of(energy), "");
+}
+
 }  // namespace
 }  // namespace wear

@@ -7,6 +7,7 @@
 //   z = R - sign(R) sqrt(R^2 - y^2) = y^2 / (R + sign(R) sqrt(R^2 - y^2)),
 // the second form free of cancellation near the crown.
 #include "lib/normal/profile.h"
+#include "lib/io/errors.h"
 
 #include <cstring>
 
@@ -155,22 +156,22 @@ Profile read_profile_csv(const std::string& path) {
     if (!header) {
       if (fields.size() != 2 || fields[0] != "y_m" || fields[1] != "z_m")
         throw std::invalid_argument(where(line) + ": expected the header 'y_m,z_m' (SI units, metres), got '" +
-                                    text + "'");
+                                    clipped(text) + "'");
       header = true;
       continue;
     }
     if (fields.size() != 2)
       throw std::invalid_argument(where(line) + ": expected 2 columns y_m,z_m, got " + std::to_string(fields.size()) +
-                                  ": '" + text + "'");
+                                  ": '" + clipped(text) + "'");
     double v[2];
     for (int k = 0; k < 2; ++k) {
       const char* name = k == 0 ? "y_m" : "z_m";
       char* end = nullptr;
       v[k] = std::strtod(fields[k].c_str(), &end);
       if (fields[k].empty() || end != fields[k].c_str() + fields[k].size())
-        throw std::invalid_argument(where(line) + ": " + name + " is not a number, got '" + fields[k] + "'");
+        throw std::invalid_argument(where(line) + ": " + name + " is not a number, got '" + clipped(fields[k]) + "'");
       if (!std::isfinite(v[k]))
-        throw std::invalid_argument(where(line) + ": " + name + " must be finite, got " + fields[k]);
+        throw std::invalid_argument(where(line) + ": " + name + " must be finite, got " + clipped(fields[k]));
     }
     if (!ys.empty() && !(v[0] > ys.back()))
       throw std::invalid_argument(where(line) + ": y_m must increase, got " + num(v[0]) + " after " + num(ys.back()));
