@@ -1,5 +1,5 @@
 // The case reader: every error names the file, the line and column, and the key path
-// (docs/conventions.md, "Cases"). The YAML texts below number their lines in the comments on the right.
+// (README.md, "The case file"). The YAML texts below number their lines in the comments on the right.
 #include "lib/io/case.h"
 
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// Reading a case file's mappings (docs/conventions.md, "Cases"). Every key a reader asks for is marked; a key
+// Reading a case file's mappings (README.md, "The case file"). Every key a reader asks for is marked; a key
 // left over at any level is an error, so a typo never becomes a silent default. Every error throws
 // CaseError with the file, the line and column (1-based) and the key path:
 //   cases/paper.yaml:12:5: friction.mu: must be in [0, 10], got -1
