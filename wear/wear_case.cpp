@@ -7,6 +7,7 @@
 
 #include <spdlog/fmt/fmt.h>
 
+#include "lib/io/number.h"
 #include "lib/io/yaml_reader.h"
 #include "lib/normal/profile.h"
 
@@ -18,7 +19,8 @@ using contact::YamlValue;
 
 namespace {
 
-std::string number(double v) { return fmt::format("{}", v); }
+using contact::round_trip;
+const auto number = [](double v) { return round_trip(v); };
 
 void read_kth(YamlMap& m, KthWearMap& k) {
   m.optional("pressure_ratio", k.pressure_ratio);

@@ -13,6 +13,7 @@
 
 #include "lib/normal/halfspace.h"
 #include "lib/normal/semi_hertz.h"
+#include "lib/io/number.h"
 #include "lib/io/yaml_reader.h"
 
 namespace contact {
@@ -117,7 +118,7 @@ void read_profiles(YamlMap& m, ProfilesSection& s, const std::filesystem::path& 
 constexpr const char* kHistoryForms = "a number, { ramp: [t0_s, v0, t1_s, v1] } or { table: [[t_s, value], ...] }";
 
 // the shortest spelling that reads back the same double, for messages
-std::string number(double v) { return fmt::format("{}", v); }
+std::string number(double v) { return round_trip(v); }
 
 // "1 element", "3 elements"
 std::string count_of_elements(std::size_t n) { return std::to_string(n) + (n == 1 ? " element" : " elements"); }
