@@ -28,6 +28,7 @@
 #include <spdlog/fmt/fmt.h>
 
 #include "lib/io/csv.h"
+#include "lib/io/csv_reader.h"
 #include "lib/io/errors.h"
 
 extern char** environ;
@@ -46,82 +47,25 @@ contact::CaseError bad_input(const std::string& message) { return contact::CaseE
 
 // ---- reading the run's tables ------------------------------------------------------------------------
 
-std::string trim(const std::string& s) {
-  const std::size_t first = s.find_first_not_of(" \t\r");
-  if (first == std::string::npos) return "";
-  return s.substr(first, s.find_last_not_of(" \t\r") + 1 - first);
-}
+using contact::csv_trim;
+using Table = contact::CsvTable;  // the one CSV reader, lib/io/csv_reader.h
 
-// one CSV line's cells, with RFC 4180 quoting (lib/io/csv.h csv_text) undone
-std::vector<std::string> split_csv(const std::string& line) {
-  std::vector<std::string> cells(1);
-  bool quoted = false;
-  for (std::size_t k = 0; k < line.size(); ++k) {
-    const char ch = line[k];
-    if (quoted) {
-      if (ch == '"' && k + 1 < line.size() && line[k + 1] == '"') {
-        cells.back() += '"';
-        ++k;
-      } else if (ch == '"') {
-        quoted = false;
-      } else {
-        cells.back() += ch;
-      }
-    } else if (ch == '"') {
-      quoted = true;
-    } else if (ch == ',') {
-      cells.emplace_back();
-    } else {
-      cells.back() += ch;
-    }
-  }
-  for (std::string& c : cells) c = trim(c);
-  return cells;
-}
-
-// "# key: value" comment lines, the header and the data rows of a CSV file; line numbers from 1
-struct Table {
-  fs::path path;
-  std::map<std::string, std::pair<std::string, int>> comments;  // key -> (value, line)
-  std::vector<std::string> header;
-  int header_line = 0;
-  std::vector<std::vector<std::string>> rows;
-  std::vector<int> row_lines;
-};
+std::string trim(const std::string& s) { return csv_trim(s); }
 
 std::string where(const fs::path& path, int line) { return fmt::format("{} line {}", path.string(), line); }
 
 // reads path; a missing file, a row not as wide as the header or a table without rows is bad input
 Table read_table(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw bad_input(fmt::format("cannot read {}: {}", path.string(), std::strerror(errno)));
   Table t;
-  t.path = path;
-  std::string line;
-  for (int number = 1; std::getline(in, line); ++number) {
-    if (number == 1 && line.rfind("\xEF\xBB\xBF", 0) == 0) line.erase(0, 3);  // a UTF-8 byte order mark
-    const std::string text = trim(line);
-    if (text.empty()) continue;
-    if (text[0] == '#') {
-      const std::string comment = trim(text.substr(1));
-      const std::size_t colon = comment.find(':');
-      if (colon != std::string::npos)
-        t.comments.emplace(trim(comment.substr(0, colon)), std::make_pair(trim(comment.substr(colon + 1)), number));
-      continue;
-    }
-    std::vector<std::string> cells = split_csv(text);
-    if (t.header.empty()) {
-      t.header = std::move(cells);
-      t.header_line = number;
-      continue;
-    }
-    if (cells.size() != t.header.size())
-      throw bad_input(fmt::format("{}: malformed row: {} cells, the header (line {}) has {}", where(path, number),
-                                  cells.size(), t.header_line, t.header.size()));
-    t.rows.push_back(std::move(cells));
-    t.row_lines.push_back(number);
+  try {
+    t = contact::read_csv_table(path.string());
+  } catch (const std::runtime_error& e) {
+    throw bad_input(e.what());
   }
-  if (in.bad()) throw bad_input(fmt::format("cannot read {}: {}", path.string(), std::strerror(errno)));
+  for (std::size_t r = 0; r < t.rows.size(); ++r)
+    if (t.rows[r].size() != t.header.size())
+      throw bad_input(fmt::format("{}: malformed row: {} cells, the header (line {}) has {}", where(path, t.row_lines[r]),
+                                  t.rows[r].size(), t.header_line, t.header.size()));
   if (t.header.empty()) throw bad_input(fmt::format("{}: no header row (only comments or nothing)", path.string()));
   if (t.rows.empty()) throw bad_input(fmt::format("{}: no data row after the header", where(path, t.header_line)));
   return t;
@@ -146,7 +90,7 @@ std::vector<double> column(const Table& t, const std::string& name) {
   for (std::size_t r = 0; r < t.rows.size(); ++r)
     if (!parse_number(t.rows[r][k], values[r]))
       throw bad_input(fmt::format("{}: malformed row: column {} is '{}', not a finite number",
-                                  where(t.path, t.row_lines[r]), name, t.rows[r][k]));
+                                  where(t.path, t.row_lines[r]), name, contact::clipped(t.rows[r][k])));
   return values;
 }
 
