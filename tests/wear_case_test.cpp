@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <utility>
 
 #include "tests/temp_dir.h"
 
@@ -158,6 +159,20 @@ TEST_F(WearCaseReader, ArchardWithoutFrictionNamesFrictionMuAndTheLaw) {
   std::string energy = kContact + "wear:\n  body1: { law: energy, k_E_m3_per_J: 1.0e-13 }\n  revolutions: 1.0e9\n";
   energy.replace(energy.find("mu: 0.3"), 7, "mu: 0");
   EXPECT_EQ(error_of(energy), "");
+}
+
+// wear.stepping.method's names come from one table (lib/io/enum_names.h): the reader's message lists them,
+// and integrator_options refuses a name outside it instead of taking it for fixed-revolutions.
+TEST_F(WearCaseReader, SteppingMethodNamesComeFromOneTable) {
+  WearStepping s;
+  for (const auto& [name, method] : {std::pair<const char*, IntegratorOptions::Method>{"adaptive", IntegratorOptions::Method::Adaptive},
+                                     {"fixed-depth", IntegratorOptions::Method::FixedDepth},
+                                     {"fixed-revolutions", IntegratorOptions::Method::FixedStep}}) {
+    s.method = name;
+    EXPECT_EQ(integrator_options(s).method, method) << name;
+  }
+  s.method = "rk4";
+  EXPECT_THROW(integrator_options(s), contact::SettingError);
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 
 #include <spdlog/fmt/fmt.h>
 
+#include "lib/io/enum_names.h"
 #include "lib/io/number.h"
 #include "lib/io/yaml_reader.h"
 #include "lib/normal/profile.h"
@@ -62,11 +63,14 @@ void read_law(YamlMap& m, WearLaw& law) {
   }
 }
 
+// wear.stepping.method's names (lib/io/enum_names.h)
+using Method = IntegratorOptions::Method;
+constexpr contact::EnumTable<Method, 3> kSteppingMethods = {
+    {{Method::Adaptive, "adaptive"}, {Method::FixedDepth, "fixed-depth"}, {Method::FixedStep, "fixed-revolutions"}}};
+
 void read_stepping(YamlMap& m, WearStepping& s) {
   m.optional("method", s.method, [](const std::string& v) -> std::string {
-    return v == "adaptive" || v == "fixed-depth" || v == "fixed-revolutions"
-               ? ""
-               : "must be adaptive, fixed-depth or fixed-revolutions";
+    return contact::enum_from_name(kSteppingMethods, v) ? "" : "must be " + contact::enum_names_list(kSteppingMethods);
   });
   m.optional("rtol", s.rtol, [](double v) -> std::string {
     return v >= 1e-10 && v <= 0.1 ? "" : "must be in [1e-10, 0.1]";
@@ -170,7 +174,8 @@ void validate(const WearCase& c) {
     throw CaseError(where(k, "wear.snapshots_revolutions") + "wear.snapshots_revolutions, wear.revolutions: snapshot at " +
                     number(w.snapshots_revolutions.back()) + " is after the end of the life budget, " +
                     number(w.revolutions));
-  if (w.stepping.method == "fixed-revolutions" && !(w.stepping.step_revolutions > 0))
+  if (contact::enum_from_name(kSteppingMethods, w.stepping.method) == Method::FixedStep &&
+      !(w.stepping.step_revolutions > 0))
     throw CaseError(where(k, "wear.stepping") + "wear.stepping.step_revolutions: fixed-revolutions needs a step > 0");
 }
 
@@ -192,9 +197,12 @@ void check_profile_resolves_contact(const WearCase& c, int body, double node_spa
 
 IntegratorOptions integrator_options(const WearStepping& s) {
   IntegratorOptions o;
-  o.method = s.method == "adaptive"      ? IntegratorOptions::Method::Adaptive
-             : s.method == "fixed-depth" ? IntegratorOptions::Method::FixedDepth
-                                         : IntegratorOptions::Method::FixedStep;
+  // read_stepping took only the table's names; anything else is a case built in code, refused here
+  const std::optional<Method> method = contact::enum_from_name(kSteppingMethods, s.method);
+  if (!method)
+    throw contact::SettingError("wear.stepping", "method", "must be " + contact::enum_names_list(kSteppingMethods) +
+                                                                ", got '" + contact::clipped(s.method) + "'");
+  o.method = *method;
   o.rtol = s.rtol;
   o.atol = s.atol_m;
   o.max_depth_step = s.max_depth_step_m;
