@@ -102,6 +102,63 @@ std::filesystem::path output_directory(const std::string& option, const ContactC
   return std::filesystem::path("out") / c.name;
 }
 
+// Temporary files of the streamed output, removed if the run is interrupted (SIGINT, SIGTERM,
+// SIGHUP); the handler only unlinks (async-signal-safe) and re-raises the signal.
+// A message may go with them (the wear run's "continue with --resume"); the handler writes it with
+// write(2), also async-signal-safe.
+namespace interrupted {
+constexpr int kMaxFiles = 4;
+char g_paths[kMaxFiles][4096];
+volatile std::sig_atomic_t g_count = 0;
+char g_lock[4096];  // the output folder's lock file (OutputLock), "" when none
+char g_message[8192];
+volatile std::sig_atomic_t g_message_size = 0;
+
+void on_signal(int sig) {
+  for (int k = 0; k < g_count; ++k) ::unlink(g_paths[k]);
+  if (g_lock[0] != '\0') ::unlink(g_lock);
+  if (g_message_size > 0 && ::write(STDERR_FILENO, g_message, static_cast<std::size_t>(g_message_size)) < 0) {
+  }
+  std::signal(sig, SIG_DFL);
+  std::raise(sig);
+}
+
+void install() {
+  static bool installed = false;
+  if (installed) return;
+  for (const int sig : {SIGINT, SIGTERM, SIGHUP}) std::signal(sig, on_signal);
+  installed = true;
+}
+
+void remove_on_signal(const std::filesystem::path& tmp) {
+  const std::string p = tmp.string();
+  if (g_count >= kMaxFiles || p.size() >= sizeof g_paths[0]) return;
+  std::memcpy(g_paths[g_count], p.c_str(), p.size() + 1);
+  install();
+  g_count = g_count + 1;
+}
+
+// the line printed on stderr when a signal ends the process (cut to the buffer)
+void say_on_signal(const std::string& line) {
+  const std::size_t n = std::min(line.size(), sizeof g_message);
+  g_message_size = 0;
+  std::memcpy(g_message, line.data(), n);
+  g_message_size = static_cast<std::sig_atomic_t>(n);
+  install();
+}
+
+// the lock file, removed on a signal too (the lock itself goes with the process)
+void remove_lock_on_signal(const std::filesystem::path& lock) {
+  const std::string p = lock.string();
+  if (p.size() >= sizeof g_lock) return;
+  std::memcpy(g_lock, p.c_str(), p.size() + 1);
+  install();
+}
+void forget_lock() { g_lock[0] = '\0'; }
+
+void forget() { g_count = 0; }  // the files were renamed into place
+}  // namespace interrupted
+
 // ---- the output folder: one run at a time, and only the program's own files removed -------------------
 
 // The folder locked while a command writes into it: flock on DIR/.rollwear.lock, which holds the owner's
@@ -136,6 +193,7 @@ class OutputLock {
         const std::string pid = std::to_string(::getpid()) + "\n";
         if (::ftruncate(fd_, 0) != 0 || ::pwrite(fd_, pid.data(), pid.size(), 0) != static_cast<ssize_t>(pid.size()))
           spdlog::debug("{}: cannot write the PID", path_.string());
+        interrupted::remove_lock_on_signal(path_);
         return;
       }
       ::close(fd_);
@@ -148,6 +206,7 @@ class OutputLock {
   ~OutputLock() {
     if (fd_ < 0) return;
     std::error_code ec;
+    interrupted::forget_lock();
     std::filesystem::remove(path_, ec);  // while still locked: a waiting run then retries on a new file
     ::close(fd_);
     if (created_ && std::filesystem::is_empty(dir_, ec)) std::filesystem::remove(dir_, ec);  // refused before writing
@@ -302,51 +361,6 @@ CLI::App* add_transient_command(CLI::App& app, TransientOptions& opt, CommonOpti
   return sub;
 }
 
-// Temporary files of the streamed output, removed if the run is interrupted (SIGINT, SIGTERM,
-// SIGHUP); the handler only unlinks (async-signal-safe) and re-raises the signal.
-// A message may go with them (the wear run's "continue with --resume"); the handler writes it with
-// write(2), also async-signal-safe.
-namespace interrupted {
-constexpr int kMaxFiles = 4;
-char g_paths[kMaxFiles][4096];
-volatile std::sig_atomic_t g_count = 0;
-char g_message[8192];
-volatile std::sig_atomic_t g_message_size = 0;
-
-void on_signal(int sig) {
-  for (int k = 0; k < g_count; ++k) ::unlink(g_paths[k]);
-  if (g_message_size > 0 && ::write(STDERR_FILENO, g_message, static_cast<std::size_t>(g_message_size)) < 0) {
-  }
-  std::signal(sig, SIG_DFL);
-  std::raise(sig);
-}
-
-void install() {
-  static bool installed = false;
-  if (installed) return;
-  for (const int sig : {SIGINT, SIGTERM, SIGHUP}) std::signal(sig, on_signal);
-  installed = true;
-}
-
-void remove_on_signal(const std::filesystem::path& tmp) {
-  const std::string p = tmp.string();
-  if (g_count >= kMaxFiles || p.size() >= sizeof g_paths[0]) return;
-  std::memcpy(g_paths[g_count], p.c_str(), p.size() + 1);
-  install();
-  g_count = g_count + 1;
-}
-
-// the line printed on stderr when a signal ends the process (cut to the buffer)
-void say_on_signal(const std::string& line) {
-  const std::size_t n = std::min(line.size(), sizeof g_message);
-  g_message_size = 0;
-  std::memcpy(g_message, line.data(), n);
-  g_message_size = static_cast<std::sig_atomic_t>(n);
-  install();
-}
-
-void forget() { g_count = 0; }  // the files were renamed into place
-}  // namespace interrupted
 
 // The progress of a long run on stderr. On a terminal: one line redrawn in place with '\r', from
 // 1 s into the run, at most 5 times a second. Otherwise: a plain info line at most every 5 s.
@@ -475,6 +489,8 @@ int run_transient_command(const TransientOptions& opt) {
 
   const OutputLock lock(dir);
   remove_stale_temporaries(dir);
+  interrupted::say_on_signal(fmt::format(
+      "\nrollwear: interrupted; the run's temporary files were removed and nothing was written to {}\n", dir.string()));
 
   // every step streams to the temporary files; the files open with the first step, so a run refused
   // before it starts writes nothing

@@ -909,6 +909,7 @@ TEST_F(CommandLine, RunInterruptedSaysResumeContinuesIt) {
   const std::string said = read_text(dir_ / "int.log");
   EXPECT_NE(said.find("interrupted; the run continues from its last checkpoint"), std::string::npos) << said;
   EXPECT_NE(said.find("rollwear run " + c.string() + " -o " + out.string() + " --resume"), std::string::npos) << said;
+  EXPECT_FALSE(fs::exists(out / ".rollwear.lock"));  // the handler removes the lock file too
   const ProcessResult r = rollwear("run " + quoted(c) + " -o " + quoted(out) + " --resume --log-level error", dir_);
   EXPECT_EQ(r.exit_code, 0) << r.err;
 }
