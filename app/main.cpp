@@ -346,7 +346,8 @@ CLI::App* add_transient_command(CLI::App& app, TransientOptions& opt, CommonOpti
       "Before it runs, the output is estimated (one step per dx rolled and per dt_s); a run estimated above\n"
       "output.max_bytes (default 1 GiB) or half the free disk is refused (exit 2) unless --force.\n"
       "Progress: on a terminal one line redrawn in place; otherwise an info line every 5 s.\n"
-      "Exit status: 0 success, 2 bad input (case file, options, a step that breaks CFL), 1 any other failure.");
+      "Exit status: 0 success, 2 bad input (case file, options, a step that breaks CFL, an output estimated\n"
+      "too large), 1 any other failure (a solver's, or the folder held by another run).");
   sub->add_option("case", opt.case_path, "Case file (YAML) with a transient: section, e.g. cases/paper-startup.yaml")
       ->required();
   sub->add_option("-o,--output", opt.output_directory,
@@ -756,7 +757,8 @@ int main(int argc, char** argv) {
   CLI::App app{"rollwear: wear of bodies in rolling contact (Hertz normal problem, Kalker's simplified "
                "theory for the tangential one, steady or transient).",
                "rollwear"};
-  app.footer("Exit status: 0 success, 2 bad input (case file, options), 1 any other failure.\n"
+  app.footer("Exit status: 0 success, 2 bad input (case file, options), 1 any other failure (a solver's with\n"
+             "its cause, or an output folder another run holds).\n"
              "Run 'rollwear SUBCOMMAND --help' for a subcommand's options.");
   app.set_version_flag("--version", std::string("rollwear ") + ROLLWEAR_VERSION);
   app.require_subcommand(1);
