@@ -1,6 +1,9 @@
 // rollwear: the command line. Parse, load the case, run, write the results; nothing else.
 // One function per subcommand: add_<name>_command declares its options, run_<name> does the work.
-// Exit codes: 0 success, 2 bad input (case file, option, invalid argument), 1 any other failure.
+// Exit codes (lib/io/errors.h): 0 success, 2 bad input (case file, option: CaseError), 1 any other failure.
+#include <fcntl.h>
+#include <sys/file.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -16,6 +19,7 @@
 #include <limits>
 #include <memory>
 #include <optional>
+#include <regex>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -26,6 +30,7 @@
 
 #include "lib/io/case.h"
 #include "lib/io/csv.h"
+#include "lib/io/errors.h"
 #include "lib/normal/hertz.h"
 #include "lib/tangential/satran.h"
 #include "lib/tangential/steady.h"
@@ -42,9 +47,6 @@
 namespace {
 
 using namespace contact;
-
-constexpr int kExitFailure = 1;
-constexpr int kExitBadInput = 2;
 
 // options every subcommand takes
 struct CommonOptions {
@@ -100,6 +102,156 @@ std::filesystem::path output_directory(const std::string& option, const ContactC
   return std::filesystem::path("out") / c.name;
 }
 
+// Temporary files of the streamed output, removed if the run is interrupted (SIGINT, SIGTERM,
+// SIGHUP); the handler only unlinks (async-signal-safe) and re-raises the signal.
+// A message may go with them (the wear run's "continue with --resume"); the handler writes it with
+// write(2), also async-signal-safe.
+namespace interrupted {
+constexpr int kMaxFiles = 4;
+char g_paths[kMaxFiles][4096];
+volatile std::sig_atomic_t g_count = 0;
+char g_lock[4096];  // the output folder's lock file (OutputLock), "" when none
+char g_message[8192];
+volatile std::sig_atomic_t g_message_size = 0;
+
+void on_signal(int sig) {
+  for (int k = 0; k < g_count; ++k) ::unlink(g_paths[k]);
+  if (g_lock[0] != '\0') ::unlink(g_lock);
+  if (g_message_size > 0 && ::write(STDERR_FILENO, g_message, static_cast<std::size_t>(g_message_size)) < 0) {
+  }
+  std::signal(sig, SIG_DFL);
+  std::raise(sig);
+}
+
+void install() {
+  static bool installed = false;
+  if (installed) return;
+  for (const int sig : {SIGINT, SIGTERM, SIGHUP}) std::signal(sig, on_signal);
+  installed = true;
+}
+
+void remove_on_signal(const std::filesystem::path& tmp) {
+  const std::string p = tmp.string();
+  if (g_count >= kMaxFiles || p.size() >= sizeof g_paths[0]) return;
+  std::memcpy(g_paths[g_count], p.c_str(), p.size() + 1);
+  install();
+  g_count = g_count + 1;
+}
+
+// the line printed on stderr when a signal ends the process (cut to the buffer)
+void say_on_signal(const std::string& line) {
+  const std::size_t n = std::min(line.size(), sizeof g_message);
+  g_message_size = 0;
+  std::memcpy(g_message, line.data(), n);
+  g_message_size = static_cast<std::sig_atomic_t>(n);
+  install();
+}
+
+// the lock file, removed on a signal too (the lock itself goes with the process)
+void remove_lock_on_signal(const std::filesystem::path& lock) {
+  const std::string p = lock.string();
+  if (p.size() >= sizeof g_lock) return;
+  std::memcpy(g_lock, p.c_str(), p.size() + 1);
+  install();
+}
+void forget_lock() { g_lock[0] = '\0'; }
+
+void forget() { g_count = 0; }  // the files were renamed into place
+}  // namespace interrupted
+
+// ---- the output folder: one run at a time, and only the program's own files removed -------------------
+
+// The folder locked while a command writes into it: flock on DIR/.rollwear.lock, which holds the owner's
+// PID. A second command on the same folder fails (exit 1) naming the folder and that PID. The lock goes
+// with the process however it ends; the file is removed when the command ends normally or by an error.
+class OutputLock {
+ public:
+  explicit OutputLock(const std::filesystem::path& dir) : path_(dir / ".rollwear.lock") {
+    std::error_code ec;
+    created_ = !std::filesystem::exists(dir, ec);
+    std::filesystem::create_directories(dir, ec);
+    if (ec) throw std::runtime_error(fmt::format("cannot create the output folder {}: {}", dir.string(), ec.message()));
+    dir_ = dir;
+    for (int attempt = 0; attempt < 100; ++attempt) {
+      fd_ = ::open(path_.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+      if (fd_ < 0) throw std::runtime_error(fmt::format("{}: cannot create the lock file: {}", path_.string(), std::strerror(errno)));
+      if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
+        const int err = errno;
+        const std::string holder = holder_pid();
+        ::close(fd_);
+        fd_ = -1;
+        if (err == EWOULDBLOCK)
+          throw std::runtime_error(fmt::format(
+              "{} is in use by another rollwear run (PID {}, lock file {}); wait for it to end, or give another "
+              "output folder with -o", dir.string(), holder.empty() ? "unknown" : holder, path_.string()));
+        throw std::runtime_error(fmt::format("{}: cannot lock: {}", path_.string(), std::strerror(err)));
+      }
+      // the file locked must still be the one at the path (a finishing run removes it after unlocking)
+      struct stat held {}, named {};
+      if (::fstat(fd_, &held) == 0 && ::stat(path_.c_str(), &named) == 0 && held.st_ino == named.st_ino &&
+          held.st_dev == named.st_dev) {
+        const std::string pid = std::to_string(::getpid()) + "\n";
+        if (::ftruncate(fd_, 0) != 0 || ::pwrite(fd_, pid.data(), pid.size(), 0) != static_cast<ssize_t>(pid.size()))
+          spdlog::debug("{}: cannot write the PID", path_.string());
+        interrupted::remove_lock_on_signal(path_);
+        return;
+      }
+      ::close(fd_);
+      fd_ = -1;
+    }
+    throw std::runtime_error(fmt::format("{}: cannot lock (the lock file keeps being replaced)", path_.string()));
+  }
+  OutputLock(const OutputLock&) = delete;
+  OutputLock& operator=(const OutputLock&) = delete;
+  ~OutputLock() {
+    if (fd_ < 0) return;
+    std::error_code ec;
+    interrupted::forget_lock();
+    std::filesystem::remove(path_, ec);  // while still locked: a waiting run then retries on a new file
+    ::close(fd_);
+    if (created_ && std::filesystem::is_empty(dir_, ec)) std::filesystem::remove(dir_, ec);  // refused before writing
+  }
+
+ private:
+  std::string holder_pid() const {
+    std::ifstream in(path_);
+    std::string pid;
+    in >> pid;
+    return pid.size() <= 20 && pid.find_first_not_of("0123456789") == std::string::npos ? pid : std::string();
+  }
+
+  std::filesystem::path path_, dir_;
+  int fd_ = -1;
+  bool created_ = false;
+};
+
+// The program's own file names in an output folder: what it may delete there, and nothing else.
+const std::regex& own_output_name() {
+  static const std::regex kNames(
+      "(summary\\.csv|strips\\.csv|fields\\.csv|timeseries\\.csv|strip_power\\.csv|strip_energy\\.csv|"
+      "snapshot_[0-9]+\\.csv|snapshot_[0-9]{4}_body[12]\\.csv|checkpoint\\.txt|report\\.txt)");
+  return kNames;
+}
+
+// Temporary files a killed command left in dir and dir/snapshots: OWN_NAME.tmp.<pid> (lib/io/csv.h) of a
+// process that no longer runs, removed. Files of any other name are left alone.
+void remove_stale_temporaries(const std::filesystem::path& dir) {
+  static const std::regex kTemporary("(.+)\\.tmp\\.([0-9]{1,10})");
+  for (const std::filesystem::path& d : {dir, dir / "snapshots"}) {
+    std::error_code ec;
+    for (const auto& entry : std::filesystem::directory_iterator(d, ec)) {
+      const std::string name = entry.path().filename().string();
+      std::smatch m;
+      if (!std::regex_match(name, m, kTemporary) || !std::regex_match(m[1].str(), own_output_name())) continue;
+      const long pid = std::strtol(m[2].str().c_str(), nullptr, 10);
+      if (pid > 0 && pid != ::getpid() && ::kill(static_cast<pid_t>(pid), 0) != 0 && errno == ESRCH) {
+        std::filesystem::remove(entry.path(), ec);
+        spdlog::info("removed {}, the temporary file of a killed run (PID {})", entry.path().string(), pid);
+      }
+    }
+  }
+}
+
 void print_contact_summary(const ContactCase& c, const NormalSolution& normal, const TangentialProblem& problem,
                            const TangentialSolution& s, TangentialScheme scheme) {
   const ContactPatch& patch = normal.patch;
@@ -152,6 +304,7 @@ int run_contact(const ContactOptions& opt) {
   if (fields) files.push_back({dir / "fields.csv", fields_csv(patch, solution)});
 
   print_contact_summary(c, normal, problem, solution, scheme);
+  const OutputLock lock(dir);
   write_files_atomic(files);
   if (!fields) std::filesystem::remove(dir / "fields.csv");  // an earlier run's: not this run's fields
   spdlog::info("wrote {} files to {}", files.size(), dir.string());
@@ -165,6 +318,7 @@ struct TransientOptions {
   std::string output_directory;  // overrides output.directory
   bool no_fields = false;
   bool quiet = false;
+  bool force = false;  // run even when the output is estimated above output.max_bytes or half the free disk
 };
 
 CLI::App* add_transient_command(CLI::App& app, TransientOptions& opt, CommonOptions& common) {
@@ -187,9 +341,13 @@ CLI::App* add_transient_command(CLI::App& app, TransientOptions& opt, CommonOpti
       "                    Fx_N,Fy_N,Mz_N_m,power_W,stick_fraction,omega1_rad_per_s, and sliding_end_s (t_s of\n"
       "                    the first step with stick; nan if none)\n"
       "The time series stream to temporary files during the run; every file is renamed into place at the\n"
-      "end, so a failed or interrupted run leaves no partial file.\n"
+      "end, so a failed or interrupted run leaves no partial file (SIGINT, SIGTERM, SIGHUP remove the\n"
+      "temporaries at once; those of a killed run are removed by the next command on the folder).\n"
+      "Before it runs, the output is estimated (one step per dx rolled and per dt_s); a run estimated above\n"
+      "output.max_bytes (default 1 GiB) or half the free disk is refused (exit 2) unless --force.\n"
       "Progress: on a terminal one line redrawn in place; otherwise an info line every 5 s.\n"
-      "Exit status: 0 success, 2 bad input (case file, options, a step that breaks CFL), 1 any other failure.");
+      "Exit status: 0 success, 2 bad input (case file, options, a step that breaks CFL, an output estimated\n"
+      "too large), 1 any other failure (a solver's, or the folder held by another run).");
   sub->add_option("case", opt.case_path, "Case file (YAML) with a transient: section, e.g. cases/paper-startup.yaml")
       ->required();
   sub->add_option("-o,--output", opt.output_directory,
@@ -198,34 +356,12 @@ CLI::App* add_transient_command(CLI::App& app, TransientOptions& opt, CommonOpti
                 "Do not write the snapshot_<k>.csv fields (and do not compute them)");
   sub->add_flag("-q,--quiet", opt.quiet,
                 "No progress line on stderr (the summary still goes to stdout, log messages by --log-level)");
+  sub->add_flag("--force", opt.force,
+                "Run even if the output is estimated above output.max_bytes or half the free disk");
   add_log_level_option(*sub, common);
   return sub;
 }
 
-// Temporary files of the streamed output, removed if the run is interrupted (SIGINT, SIGTERM,
-// SIGHUP); the handler only unlinks (async-signal-safe) and re-raises the signal.
-namespace interrupted {
-constexpr int kMaxFiles = 4;
-char g_paths[kMaxFiles][4096];
-volatile std::sig_atomic_t g_count = 0;
-
-void on_signal(int sig) {
-  for (int k = 0; k < g_count; ++k) ::unlink(g_paths[k]);
-  std::signal(sig, SIG_DFL);
-  std::raise(sig);
-}
-
-void remove_on_signal(const std::filesystem::path& tmp) {
-  const std::string p = tmp.string();
-  if (g_count >= kMaxFiles || p.size() >= sizeof g_paths[0]) return;
-  std::memcpy(g_paths[g_count], p.c_str(), p.size() + 1);
-  if (g_count == 0)
-    for (const int sig : {SIGINT, SIGTERM, SIGHUP}) std::signal(sig, on_signal);
-  g_count = g_count + 1;
-}
-
-void forget() { g_count = 0; }  // the files were renamed into place
-}  // namespace interrupted
 
 // The progress of a long run on stderr. On a terminal: one line redrawn in place with '\r', from
 // 1 s into the run, at most 5 times a second. Otherwise: a plain info line at most every 5 s.
@@ -333,6 +469,30 @@ int run_transient_command(const TransientOptions& opt) {
   // the strips the run puts the contact on, to label the streamed strip powers (checked at the end)
   const Eigen::ArrayXd y_m = transient_grid(t).y_m;
 
+  // the output's size before the run: refused above output.max_bytes or half the free disk, unless --force
+  const TransientOutputEstimate estimate = estimate_transient_output(t, fields);
+  std::filesystem::path existing = std::filesystem::absolute(dir);
+  while (!std::filesystem::exists(existing) && existing.has_parent_path() && existing != existing.parent_path())
+    existing = existing.parent_path();
+  std::error_code space_ec;
+  const double free_bytes = static_cast<double>(std::filesystem::space(existing, space_ec).available);
+  const bool over_max = estimate.bytes > c.output.max_bytes;
+  const bool over_disk = !space_ec && estimate.bytes > free_bytes / 2;
+  spdlog::debug("transient: about {:.3g} steps, {:.3g} MB of output estimated", estimate.steps, estimate.bytes / 1e6);
+  if ((over_max || over_disk) && !opt.force)
+    throw CaseError(fmt::format(
+        "{}transient.t_end_s, transient.dt_s, solver.nx, solver.ny, output.max_bytes: the run would write about {:.3g} "
+        "bytes ({:.3g} GB: about {:.3g} steps of {} strips), more than {}; shorten t_end_s, coarsen the grid, "
+        "raise output.max_bytes, or run with --force",
+        where(c, "transient.t_end_s"), estimate.bytes, estimate.bytes / 1e9, estimate.steps, y_m.size(),
+        over_max ? fmt::format("output.max_bytes = {:.0f}", c.output.max_bytes)
+                 : fmt::format("half the free disk ({:.3g} bytes free in {})", free_bytes, existing.string())));
+
+  const OutputLock lock(dir);
+  remove_stale_temporaries(dir);
+  interrupted::say_on_signal(fmt::format(
+      "\nrollwear: interrupted; the run's temporary files were removed and nothing was written to {}\n", dir.string()));
+
   // every step streams to the temporary files; the files open with the first step, so a run refused
   // before it starts writes nothing
   std::optional<StreamedFile> timeseries, strip_power;
@@ -363,8 +523,10 @@ int run_transient_command(const TransientOptions& opt) {
   TransientResult res;
   try {
     res = run_transient(t, observe);
-  } catch (const std::invalid_argument& e) {  // the settings refused: the key and its line
+  } catch (const SettingError& e) {  // the settings refused: the key (data) and its line
     throw transient_error(c, e);
+  } catch (const std::invalid_argument& e) {  // inside the solver, on settings that passed: its failure
+    throw SolverError(std::string("transient: ") + e.what());
   }
   progress.clear();
   if (!timeseries) throw std::logic_error("transient: the run took no step");
@@ -416,7 +578,9 @@ CLI::App* add_run_command(CLI::App& app, RunOptions& opt, CommonOptions& common)
   sub->footer(
       "A run killed at any moment continues from its last checkpoint with --resume and ends with the same\n"
       "result (bit-identical with fixed stepping, within the tolerance with adaptive stepping). A folder\n"
-      "holding an unfinished run is not overwritten unless --restart is given.\n"
+      "holding an unfinished run is not overwritten unless --restart is given. Ctrl-C prints the --resume\n"
+      "command. The folder is locked while the run owns it (.rollwear.lock): a second run there exits 1,\n"
+      "naming the PID that holds it. A new run removes the previous run's snapshots and report, nothing else.\n"
       "Exit status: 0 success (whatever limit ended the life), 2 bad input, 1 any other failure.");
   sub->add_option("case", opt.case_path, "Case file (YAML) with a wear: section, e.g. cases/paper-wear.yaml")
       ->required();
@@ -437,20 +601,15 @@ std::string read_text(const std::filesystem::path& path) {
   return text.str();
 }
 
-// Temporary files a killed run left in dir and dir/snapshots (NAME.tmp.<pid> of a process that no
-// longer runs): removed, so a resumed run ends with a clean folder.
-void remove_stale_temporaries(const std::filesystem::path& dir) {
-  for (const std::filesystem::path& d : {dir, dir / "snapshots"}) {
-    std::error_code ec;
-    for (const auto& entry : std::filesystem::directory_iterator(d, ec)) {
-      const std::string name = entry.path().filename().string();
-      const std::size_t at = name.rfind(".tmp.");
-      if (at == std::string::npos) continue;
-      const long pid = std::strtol(name.c_str() + at + 5, nullptr, 10);
-      if (pid > 0 && pid != ::getpid() && ::kill(static_cast<pid_t>(pid), 0) != 0 && errno == ESRCH)
-        std::filesystem::remove(entry.path(), ec);
-    }
-  }
+// A previous run's worn profiles: the files of the program's own naming in dir/snapshots
+// (snapshot_KKKK_bodyN.csv), and the folder if that leaves it empty; any other file stays.
+void remove_previous_snapshots(const std::filesystem::path& dir) {
+  static const std::regex kSnapshot("snapshot_[0-9]{4}_body[12]\\.csv");
+  std::error_code ec;
+  for (const auto& entry : std::filesystem::directory_iterator(dir / "snapshots", ec))
+    if (entry.is_regular_file() && std::regex_match(entry.path().filename().string(), kSnapshot))
+      std::filesystem::remove(entry.path(), ec);
+  if (std::filesystem::is_empty(dir / "snapshots", ec)) std::filesystem::remove(dir / "snapshots", ec);
 }
 
 int run_run_command(const RunOptions& opt) {
@@ -463,8 +622,9 @@ int run_run_command(const RunOptions& opt) {
   const std::filesystem::path checkpoint_path = dir / "checkpoint.txt", summary_path = dir / "summary.csv";
   const double hours_per_rev = hours_per_revolution(m);
   const std::uint64_t fingerprint = case_fingerprint(read_text(opt.case_path), m);
-  if (opt.resume && opt.restart) throw std::invalid_argument("--resume and --restart exclude each other");
+  if (opt.resume && opt.restart) throw CaseError("--resume and --restart exclude each other");
 
+  const OutputLock lock(dir);  // one run in the folder at a time
   remove_stale_temporaries(dir);
 
   // where the life starts: a checkpoint, or the unworn state
@@ -473,20 +633,20 @@ int run_run_command(const RunOptions& opt) {
   WearCache cache;
   if (opt.resume) {
     if (!std::filesystem::exists(checkpoint_path))
-      throw std::invalid_argument(checkpoint_path.string() + ": no checkpoint to resume from (the run finished, "
+      throw CaseError(checkpoint_path.string() + ": no checkpoint to resume from (the run finished, "
                                   "or never started: run without --resume)");
     cp = read_checkpoint(checkpoint_path);
     if (cp.case_hash != fingerprint)
-      throw std::invalid_argument(checkpoint_path.string() + ": the checkpoint belongs to another case, or " +
+      throw CaseError(checkpoint_path.string() + ": the checkpoint belongs to another case, or " +
                                   opt.case_path + " (or a profile) changed since; run with --restart to start afresh");
     summary = summary_up_to(summary_path, cp.start.counters.steps);
     spdlog::info("run: resuming at revolution {:.6g} (step {}) from {}", cp.start.N, cp.start.counters.steps,
                  checkpoint_path.string());
   } else {
     if (std::filesystem::exists(checkpoint_path) && !opt.restart)
-      throw std::invalid_argument(dir.string() + " holds an unfinished run (checkpoint.txt): continue it with --resume, "
+      throw CaseError(dir.string() + " holds an unfinished run (checkpoint.txt): continue it with --resume, "
                                   "or start afresh with --restart");
-    std::filesystem::remove_all(dir / "snapshots");  // a previous run's snapshots are not this run's
+    remove_previous_snapshots(dir);  // a previous run's snapshots are not this run's
     std::filesystem::remove(dir / "report.txt");
     cp.case_hash = fingerprint;
     cp.start.state = initial_state(m);
@@ -517,6 +677,10 @@ int run_run_command(const RunOptions& opt) {
     write_files_atomic(files);
   };
   if (!opt.resume) save(snapshot_files(0, cp.start.state));
+  // an interrupt (Ctrl-C) ends the process at once: the last checkpoint is where --resume continues
+  interrupted::say_on_signal(fmt::format(
+      "\nrollwear: interrupted; the run continues from its last checkpoint ({}) with: rollwear run {} -o {} --resume\n",
+      checkpoint_path.string(), opt.case_path, dir.string()));
 
   // the life, step by step: a summary row each, a checkpoint every checkpoint_interval_s
   Progress progress("run", opt.quiet);
@@ -545,6 +709,12 @@ int run_run_command(const RunOptions& opt) {
     life = run_life(m, c, cp.start, hooks, cache);
   } catch (...) {
     progress.clear();
+    if (!opt.resume && cp.start.counters.steps == 0) {
+      // nothing accepted yet (e.g. bad input found at step 0): nothing to resume, and a checkpoint would
+      // block the corrected rerun
+      std::filesystem::remove(checkpoint_path);
+      throw;
+    }
     save({});  // the last accepted step: --resume continues from there (e.g. with other settings)
     spdlog::error("run: stopped at revolution {:.6g} (step {}); its state is saved in {}", cp.start.N, cp.start.counters.steps,
                   checkpoint_path.string());
@@ -588,7 +758,8 @@ int main(int argc, char** argv) {
   CLI::App app{"rollwear: wear of bodies in rolling contact (Hertz normal problem, Kalker's simplified "
                "theory for the tangential one, steady or transient).",
                "rollwear"};
-  app.footer("Exit status: 0 success, 2 bad input (case file, options), 1 any other failure.\n"
+  app.footer("Exit status: 0 success, 2 bad input (case file, options), 1 any other failure (a solver's with\n"
+             "its cause, or an output folder another run holds).\n"
              "Run 'rollwear SUBCOMMAND --help' for a subcommand's options.");
   app.set_version_flag("--version", std::string("rollwear ") + ROLLWEAR_VERSION);
   app.require_subcommand(1);
@@ -624,15 +795,9 @@ int main(int argc, char** argv) {
     if (plot_cmd->parsed()) return plot_command(plot_dir);
     print_error("no subcommand ran");
     return kExitBadInput;
-  } catch (const CaseError& e) {
+  } catch (const std::exception& e) {  // CaseError: bad input, 2; anything else 1 (lib/io/errors.h)
     print_error(e.what());
-    return kExitBadInput;
-  } catch (const std::invalid_argument& e) {
-    print_error(e.what());
-    return kExitBadInput;
-  } catch (const std::exception& e) {
-    print_error(e.what());
-    return kExitFailure;
+    return exit_status_of(e);
   } catch (...) {
     print_error("unknown failure");
     return kExitFailure;

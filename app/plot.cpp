@@ -28,6 +28,8 @@
 #include <spdlog/fmt/fmt.h>
 
 #include "lib/io/csv.h"
+#include "lib/io/csv_reader.h"
+#include "lib/io/errors.h"
 
 extern char** environ;
 
@@ -35,96 +37,35 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr int kExitFailure = 1;
-constexpr int kExitBadInput = 2;
+using contact::kExitBadInput;  // the exit statuses: lib/io/errors.h
+using contact::kExitFailure;
 constexpr const char* kGnuplotPackage = "gnuplot-nox";
 
-// a failure the command reports as one line, with the exit status it ends with
-struct PlotError : std::runtime_error {
-  PlotError(int status, const std::string& message) : std::runtime_error(message), exit_status(status) {}
-  int exit_status;
-};
-
-PlotError bad_input(const std::string& message) { return PlotError(kExitBadInput, message); }
+// a failure the command reports as one line: bad input is a contact::CaseError (exit 2), any other
+// failure a std::runtime_error (exit 1); lib/io/errors.h maps them
+contact::CaseError bad_input(const std::string& message) { return contact::CaseError(message); }
 
 // ---- reading the run's tables ------------------------------------------------------------------------
 
-std::string trim(const std::string& s) {
-  const std::size_t first = s.find_first_not_of(" \t\r");
-  if (first == std::string::npos) return "";
-  return s.substr(first, s.find_last_not_of(" \t\r") + 1 - first);
-}
+using contact::csv_trim;
+using Table = contact::CsvTable;  // the one CSV reader, lib/io/csv_reader.h
 
-// one CSV line's cells, with RFC 4180 quoting (lib/io/csv.h csv_text) undone
-std::vector<std::string> split_csv(const std::string& line) {
-  std::vector<std::string> cells(1);
-  bool quoted = false;
-  for (std::size_t k = 0; k < line.size(); ++k) {
-    const char ch = line[k];
-    if (quoted) {
-      if (ch == '"' && k + 1 < line.size() && line[k + 1] == '"') {
-        cells.back() += '"';
-        ++k;
-      } else if (ch == '"') {
-        quoted = false;
-      } else {
-        cells.back() += ch;
-      }
-    } else if (ch == '"') {
-      quoted = true;
-    } else if (ch == ',') {
-      cells.emplace_back();
-    } else {
-      cells.back() += ch;
-    }
-  }
-  for (std::string& c : cells) c = trim(c);
-  return cells;
-}
-
-// "# key: value" comment lines, the header and the data rows of a CSV file; line numbers from 1
-struct Table {
-  fs::path path;
-  std::map<std::string, std::pair<std::string, int>> comments;  // key -> (value, line)
-  std::vector<std::string> header;
-  int header_line = 0;
-  std::vector<std::vector<std::string>> rows;
-  std::vector<int> row_lines;
-};
+std::string trim(const std::string& s) { return csv_trim(s); }
 
 std::string where(const fs::path& path, int line) { return fmt::format("{} line {}", path.string(), line); }
 
 // reads path; a missing file, a row not as wide as the header or a table without rows is bad input
 Table read_table(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw bad_input(fmt::format("cannot read {}: {}", path.string(), std::strerror(errno)));
   Table t;
-  t.path = path;
-  std::string line;
-  for (int number = 1; std::getline(in, line); ++number) {
-    if (number == 1 && line.rfind("\xEF\xBB\xBF", 0) == 0) line.erase(0, 3);  // a UTF-8 byte order mark
-    const std::string text = trim(line);
-    if (text.empty()) continue;
-    if (text[0] == '#') {
-      const std::string comment = trim(text.substr(1));
-      const std::size_t colon = comment.find(':');
-      if (colon != std::string::npos)
-        t.comments.emplace(trim(comment.substr(0, colon)), std::make_pair(trim(comment.substr(colon + 1)), number));
-      continue;
-    }
-    std::vector<std::string> cells = split_csv(text);
-    if (t.header.empty()) {
-      t.header = std::move(cells);
-      t.header_line = number;
-      continue;
-    }
-    if (cells.size() != t.header.size())
-      throw bad_input(fmt::format("{}: malformed row: {} cells, the header (line {}) has {}", where(path, number),
-                                  cells.size(), t.header_line, t.header.size()));
-    t.rows.push_back(std::move(cells));
-    t.row_lines.push_back(number);
+  try {
+    t = contact::read_csv_table(path.string());
+  } catch (const std::runtime_error& e) {
+    throw bad_input(e.what());
   }
-  if (in.bad()) throw bad_input(fmt::format("cannot read {}: {}", path.string(), std::strerror(errno)));
+  for (std::size_t r = 0; r < t.rows.size(); ++r)
+    if (t.rows[r].size() != t.header.size())
+      throw bad_input(fmt::format("{}: malformed row: {} cells, the header (line {}) has {}", where(path, t.row_lines[r]),
+                                  t.rows[r].size(), t.header_line, t.header.size()));
   if (t.header.empty()) throw bad_input(fmt::format("{}: no header row (only comments or nothing)", path.string()));
   if (t.rows.empty()) throw bad_input(fmt::format("{}: no data row after the header", where(path, t.header_line)));
   return t;
@@ -149,7 +90,7 @@ std::vector<double> column(const Table& t, const std::string& name) {
   for (std::size_t r = 0; r < t.rows.size(); ++r)
     if (!parse_number(t.rows[r][k], values[r]))
       throw bad_input(fmt::format("{}: malformed row: column {} is '{}', not a finite number",
-                                  where(t.path, t.row_lines[r]), name, t.rows[r][k]));
+                                  where(t.path, t.row_lines[r]), name, contact::clipped(t.rows[r][k])));
   return values;
 }
 
@@ -490,11 +431,11 @@ std::string one_line(const std::string& text) {
 }
 
 // runs "gnuplot SCRIPT" (found on PATH), stdin from /dev/null; returns its stdout and stderr
-// together. Throws PlotError when gnuplot is not installed, cannot start or fails.
+// together. Throws std::runtime_error when gnuplot is not installed, cannot start or fails.
 std::string run_gnuplot(const fs::path& script) {
   int fd[2];
   if (::pipe2(fd, O_CLOEXEC) != 0)
-    throw PlotError(kExitFailure, fmt::format("cannot run gnuplot: pipe: {}", std::strerror(errno)));
+    throw std::runtime_error(fmt::format("cannot run gnuplot: pipe: {}", std::strerror(errno)));
   posix_spawn_file_actions_t actions;
   posix_spawn_file_actions_init(&actions);
   posix_spawn_file_actions_addopen(&actions, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
@@ -509,11 +450,10 @@ std::string run_gnuplot(const fs::path& script) {
   if (spawned != 0) {
     ::close(fd[0]);
     if (spawned == ENOENT)
-      throw PlotError(kExitFailure,
-                      fmt::format("gnuplot is not installed (not found on PATH); it is Debian's package {}: "
+      throw std::runtime_error(fmt::format("gnuplot is not installed (not found on PATH); it is Debian's package {}: "
                                   "sudo apt-get install -y {}",
                                   kGnuplotPackage, kGnuplotPackage));
-    throw PlotError(kExitFailure, fmt::format("cannot run gnuplot: {}", std::strerror(spawned)));
+    throw std::runtime_error(fmt::format("cannot run gnuplot: {}", std::strerror(spawned)));
   }
 
   std::string messages;
@@ -534,7 +474,7 @@ std::string run_gnuplot(const fs::path& script) {
                           : WIFSIGNALED(status) ? fmt::format("signal {}", WTERMSIG(status))
                                                 : std::string("unknown status");
   const std::string said = one_line(messages);
-  throw PlotError(kExitFailure, fmt::format("gnuplot failed ({}): {}", how, said.empty() ? "no message" : said));
+  throw std::runtime_error(fmt::format("gnuplot failed ({}): {}", how, said.empty() ? "no message" : said));
 }
 
 // the pictures: the script, gnuplot, then every PNG into place; returns the PNGs written
@@ -575,20 +515,20 @@ std::vector<fs::path> draw(const RunOutput& run, const fs::path& plots, std::ost
   try {
     contact::write_file_atomic(script_path, script);
   } catch (const std::exception& e) {
-    throw PlotError(kExitFailure, e.what());
+    throw std::runtime_error(e.what());
   }
   const std::string messages = one_line(run_gnuplot(script_path));
   if (!messages.empty()) err << "rollwear plot: gnuplot said: " << messages << '\n';
   for (const Picture& p : pictures)
     if (!has_png_signature(p.temporary))
-      throw PlotError(kExitFailure, fmt::format("gnuplot did not draw {}", p.path.string()));
+      throw std::runtime_error(fmt::format("gnuplot did not draw {}", p.path.string()));
 
   // then each into place
   std::vector<fs::path> written;
   for (const Picture& p : pictures) {
     std::error_code ec;
     fs::rename(p.temporary, p.path, ec);
-    if (ec) throw PlotError(kExitFailure, fmt::format("cannot write {}: {}", p.path.string(), ec.message()));
+    if (ec) throw std::runtime_error(fmt::format("cannot write {}: {}", p.path.string(), ec.message()));
     written.push_back(p.path);
   }
   return written;
@@ -615,12 +555,9 @@ int plot_command(const std::string& output_dir, std::ostream& out, std::ostream&
       return kExitBadInput;
     }
     return 0;
-  } catch (const PlotError& e) {
-    fail(e.what());
-    return e.exit_status;
   } catch (const std::exception& e) {
     fail(e.what());
-    return kExitFailure;
+    return contact::exit_status_of(e);
   } catch (...) {
     fail("unknown failure");
     return kExitFailure;

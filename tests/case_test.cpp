@@ -1,5 +1,5 @@
 // The case reader: every error names the file, the line and column, and the key path
-// (docs/conventions.md, "Cases"). The YAML texts below number their lines in the comments on the right.
+// (README.md, "The case file"). The YAML texts below number their lines in the comments on the right.
 #include "lib/io/case.h"
 
 #include <gtest/gtest.h>
@@ -131,7 +131,7 @@ TEST_F(CaseReader, UnknownKeyReportsKeyAndLine) {
                      "  body2: { Rx_m: 0.025, Ry_m: .inf, E_Pa: 210.0e9, nu: 0.28 }\n"   // 3
                      "load: { normal_load_N: 1500 }\n"                                  // 4
                      "friction: { mu: 0.3, muu: 0.4 }\n"),                              // 5
-            path() + ":5:22: friction.muu: unknown key (valid: mu)");
+            path() + ":5:22: friction.muu: unknown key, did you mean 'mu'? (valid: mu)");
   // one level deeper, in a block mapping
   EXPECT_EQ(error_of("bodies:\n"                                                        // 1
                      "  body1: { Rx_m: 0.020, Ry_m: 0.500, E_Pa: 210.0e9, nu: 0.28 }\n"  // 2
@@ -143,7 +143,7 @@ TEST_F(CaseReader, UnknownKeyReportsKeyAndLine) {
                      "    nu: 0.28\n"                                                   // 8
                      "load: { normal_load_N: 1500 }\n"                                  // 9
                      "friction: { mu: 0.3 }\n"),                                        // 10
-            path() + ":6:5: bodies.body2.Rz_m: unknown key (valid: E_Pa, Rx_m, Ry_m, nu)");
+            path() + ":6:5: bodies.body2.Rz_m: unknown key, did you mean 'Rx_m'? (valid: E_Pa, Rx_m, Ry_m, nu)");
   // a section that does not exist (yet)
   EXPECT_EQ(error_of(kMinimalCase + "wear: { law: archard }\n"),  // 6
             path() + ":6:1: wear: unknown key (valid: bodies, friction, inertia, kinematics, load, name, output, "
@@ -358,7 +358,7 @@ TEST_F(CaseReader, HistoryErrorsReportFileLineAndKey) {
             path() + ":6:33: kinematics.xi.table: row 1: value must be finite, got .nan");
   // the forms themselves
   EXPECT_EQ(error_of(kMinimalCase + "kinematics: { xi: { tabel: [[0, 1]] } }\n"),  // 6
-            path() + ":6:21: kinematics.xi.tabel: unknown key (valid: ramp, table)");
+            path() + ":6:21: kinematics.xi.tabel: unknown key, did you mean 'table'? (valid: ramp, table)");
   EXPECT_EQ(error_of(kMinimalCase + "kinematics: { xi: { ramp: [0, 0, 1, 1], table: [[0, 1]] } }\n"),  // 6
             path() + ":6:19: kinematics.xi: give one of 'ramp' and 'table', not both");
   EXPECT_EQ(error_of(kMinimalCase + "kinematics: { xi: [0, 0.001] }\n"),  // 6
@@ -530,7 +530,7 @@ TEST_F(CaseReader, CflBreachNamesDtAndLargestAllowedStep) {
   try {
     run_transient(t);
     FAIL() << "ran at a CFL number above 1";
-  } catch (const std::invalid_argument& e) {
+  } catch (const SettingError& e) {  // the setting's key as data
     const std::string message = transient_error(c, e).what();
     EXPECT_EQ(message.rfind(path() + ":8:53: transient.dt_s: 5e-05 s breaks the CFL condition of the upwind "
                                      "scheme",
@@ -669,6 +669,45 @@ TEST_F(CaseReader, ShippedWornCrownCaseReads) {
   EXPECT_EQ(creepages_of(c).xi, 1e-3);
   EXPECT_EQ(c.solver.nx, 80);
   EXPECT_EQ(c.solver.ny, 80);
+}
+
+// A typo in a required section's key is the typo's error, at its line, with the closest valid key; not
+// "friction: required section is missing".
+TEST_F(CaseReader, TypoInARequiredKeyNamesItAndTheClosestKey) {
+  const std::string typo = "bodies:\n"                                                        // 1
+                           "  body1: { Rx_m: 0.020, Ry_m: 0.500, E_Pa: 210.0e9, nu: 0.28 }\n"  // 2
+                           "  body2: { Rx_m: 0.025, Ry_m: .inf, E_Pa: 210.0e9, nu: 0.28 }\n"   // 3
+                           "load: { normal_load_N: 1500 }\n"                                  // 4
+                           "frction: { mu: 0.3 }\n";                                          // 5
+  EXPECT_EQ(error_of(typo), path() + ":5:1: frction: unknown key, did you mean 'friction'? (friction: required "
+                                     "section is missing)");
+  // inside a section: an optional key misspelt is named with the closest one
+  EXPECT_EQ(error_of(kMinimalCase + "solver: { nx: 20, nyy: 20 }\n"),
+            path() + ":6:19: solver.nyy: unknown key, did you mean 'ny'? (valid: normal, nx, ny, tangential)");
+  // a key like none: no suggestion
+  EXPECT_EQ(error_of(kMinimalCase + "solver: { grid_size: 20 }\n"),
+            path() + ":6:11: solver.grid_size: unknown key (valid: normal, nx, ny, tangential)");
+}
+
+// A message never echoes a huge value whole: its first 80 characters and its size.
+TEST_F(CaseReader, HugeValuesAreCutInMessages) {
+  constexpr std::size_t kHuge = 20'000'000;  // a 20 MB line, as pasted by mistake
+  constexpr std::size_t kMessageMax = 400;    // the message's own words, the file path and the 80 characters
+  const std::string mu = "friction: { mu: " + std::string(kHuge, '7') + "x }\n";
+  const std::string m = error_of(kMinimalCase.substr(0, kMinimalCase.find("friction")) + mu);
+  EXPECT_LT(m.size(), kMessageMax) << m.substr(0, 1000);
+  EXPECT_NE(m.find("… (20000001 bytes)"), std::string::npos) << m.substr(0, 1000);
+  // a profile file with a 20 MB line
+  std::ofstream(dir_ / "big.csv") << "y_m,z_m\n" << std::string(kHuge, '1') << ",0,0\n";
+  const std::string p = error_of(std::string("profiles:\n  body1: { file: big.csv }\n  body2: { flat: { width_m: 0.03 } }\n") +
+                                 "bodies:\n  body1: { Rx_m: 0.020, E_Pa: 210.0e9, nu: 0.28 }\n"
+                                 "  body2: { Rx_m: 0.025, E_Pa: 210.0e9, nu: 0.28 }\n"
+                                 "load: { normal_load_N: 1500 }\nfriction: { mu: 0.3 }\n");
+  EXPECT_LT(p.size(), kMessageMax) << p.substr(0, 1000);
+  EXPECT_NE(p.find("big.csv:2: expected 2 columns y_m,z_m, got 3"), std::string::npos) << p.substr(0, 1000);
+  // a cut never splits a UTF-8 character
+  EXPECT_EQ(clipped(std::string(79, 'a') + "é" + std::string(100, 'b')), std::string(79, 'a') + "… (181 bytes)");
+  EXPECT_EQ(clipped("short"), "short");
 }
 
 }  // namespace

@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 
 #include "tests/temp_dir.h"
+#include <fcntl.h>
+#include <sys/file.h>
 #include <sys/wait.h>
 #include <csignal>
 #include <cstdio>
@@ -19,6 +21,8 @@
 #include <vector>
 
 #include "lib/grid.h"
+#include "lib/io/case.h"
+#include "lib/io/errors.h"
 #include "lib/normal/hertz.h"
 #include "lib/tangential/satran.h"
 #include "tests/test_text.h"
@@ -186,7 +190,7 @@ TEST(CsvOutput, FieldsHaveOneRowPerCellStripByStripAtFullPrecision) {
   EXPECT_EQ(std::strtod(last[0].c_str(), nullptr), r.patch.grid.x_m(2));
   EXPECT_EQ(std::strtod(last[1].c_str(), nullptr), r.patch.grid.y_m(1));
   EXPECT_EQ(std::strtod(last[2].c_str(), nullptr), 1.0 / 3.0);  // reads back exactly
-  EXPECT_EQ(last[3], "-125000000");
+  EXPECT_EQ(last[3], "-1.25e+08");  // the fewest digits that read back exactly
   EXPECT_EQ(last[8], "2");
 }
 
@@ -203,8 +207,8 @@ TEST(CsvOutput, StripsAndSummaryHaveTheirColumns) {
   EXPECT_EQ(summary[0],
             "name,a_m,b_m,p0_Pa,approach_m,C11,C22,C23,C33,L_m_per_Pa,Fx_N,Fy_N,Mz_N_m,power_W,creep_work_W,"
             "stick_fraction,scheme,nx,ny");
-  EXPECT_EQ(summary[1].rfind("\"small, odd\",0.00033333333333333332,0.002,", 0), 0u) << summary[1];
-  EXPECT_NE(summary[1].find(",-0.10000000000000001,"), std::string::npos) << summary[1];
+  EXPECT_EQ(summary[1].rfind("\"small, odd\",0.0003333333333333333,0.002,", 0), 0u) << summary[1];
+  EXPECT_NE(summary[1].find(",-0.1,"), std::string::npos) << summary[1];
   EXPECT_EQ(summary[1].substr(summary[1].size() - 12), ",classic,3,2");
 }
 
@@ -230,7 +234,7 @@ TEST(CsvOutput, TransientTablesHaveTheirColumnsAtFullPrecision) {
   const std::vector<std::string> cells = split(rows[1]);
   EXPECT_EQ(cells[0], "7");
   EXPECT_EQ(std::strtod(cells[1].c_str(), nullptr), r.t_s);  // reads back exactly
-  EXPECT_EQ(cells[10], "-449.77999999999997");
+  EXPECT_EQ(cells[10], "-449.78");
 
   const Eigen::ArrayXd y = (Eigen::ArrayXd(2) << -1e-3, 1e-3).finished();
   const Eigen::ArrayXd power = (Eigen::ArrayXd(2) << 0.25, 0.5).finished();
@@ -251,7 +255,7 @@ TEST(CsvOutput, TransientTablesHaveTheirColumnsAtFullPrecision) {
   ASSERT_EQ(cells_csv.size(), 3u * 2u + 1u);
   EXPECT_TRUE(is_numeric_table(cells_csv,
                                "x_m,y_m,pressure_Pa,tau_x_Pa,tau_y_Pa,slip_x_m_per_s,slip_y_m_per_s,t_s"));
-  EXPECT_EQ(split(cells_csv.back()).back(), "0.00020000000000000001");
+  EXPECT_EQ(split(cells_csv.back()).back(), "0.0002");
   snap.tau_y_Pa = Eigen::ArrayXXd::Zero(2, 3);
   EXPECT_THROW(snapshot_csv(g, snap), std::invalid_argument);
 }
@@ -347,7 +351,7 @@ TEST_F(CommandLine, BadCaseExitsTwoWithFileLineAndKey) {
   const ProcessResult t = rollwear("contact " + quoted(typo) + " -o " + quoted(out), dir_);
   EXPECT_EQ(t.exit_code, 2);
   EXPECT_EQ(t.err, "rollwear: error: " + typo.string() +
-                       ":7:3: load.normal_laod_N: unknown key (valid: normal_load_N)\n");
+                       ":7:3: load.normal_laod_N: unknown key, did you mean 'normal_load_N'? (valid: normal_load_N)\n");
   EXPECT_FALSE(fs::exists(out));
 }
 
@@ -720,7 +724,8 @@ TEST_F(CommandLine, RunWithBadWearSectionExitsTwoNamingFileLineAndKey) {
 
 // Starts "rollwear ARGS" in the background, waits until its checkpoint has passed `steps` steps, and
 // kills it (SIGKILL: no chance to tidy up). Fails if the run ended before it could be killed.
-void run_and_kill(const std::vector<std::string>& args, const fs::path& checkpoint, long steps, const fs::path& log) {
+void run_and_kill(const std::vector<std::string>& args, const fs::path& checkpoint, long steps, const fs::path& log,
+                  int signal = SIGKILL) {
   const pid_t pid = ::fork();
   ASSERT_GE(pid, 0);
   if (pid == 0) {
@@ -745,7 +750,7 @@ void run_and_kill(const std::vector<std::string>& args, const fs::path& checkpoi
     while (std::getline(in, line))
       if (line.rfind("steps ", 0) == 0) at = std::stol(line.substr(6));
     if (at >= steps) {
-      ::kill(pid, SIGKILL);
+      ::kill(pid, signal);
       killed = true;
     } else {
       ::usleep(1000);
@@ -754,7 +759,7 @@ void run_and_kill(const std::vector<std::string>& args, const fs::path& checkpoi
   int status = 0;
   ::waitpid(pid, &status, 0);
   ASSERT_TRUE(killed) << "no checkpoint past step " << steps << " within 60 s";
-  EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGKILL);
+  EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == signal);
 }
 
 // the value of 'key: value' in a report
@@ -822,6 +827,192 @@ TEST_F(CommandLine, RunKilledAndResumedEndsWithinToleranceWithAdaptiveStepping) 
   EXPECT_NEAR(std::stod(report_value(b, "revolutions")) / std::stod(report_value(a, "revolutions")), 1.0, 1e-5);
   EXPECT_NEAR(std::stod(report_value(b, "worn_volume_body1_m3")) / std::stod(report_value(a, "worn_volume_body1_m3")),
               1.0, 1e-5);
+}
+
+// ---- the output folder, interrupts and the exit-2 contract -------------------------------------------
+
+// a small fixed-depth wear run of the shipped case (20 x 20, a few steps)
+fs::path small_wear_case(const fs::path& dir, const std::string& name) {
+  return wear_case(dir, name, "nx: 20, ny: 20", "stepping: { method: fixed-depth, max_depth_step_m: 1.0e-6 }",
+                   "limits: { max_depth_m: 3.0e-6, edge: true }");
+}
+
+// the case file's text with one edit
+void edit_file(const fs::path& p, const std::string& from, const std::string& to) {
+  std::string text = read_text(p);
+  const std::size_t at = text.find(from);
+  ASSERT_NE(at, std::string::npos) << from;
+  text.replace(at, from.size(), to);
+  std::ofstream(p) << text;
+}
+
+// the PID of a process that has ended (a child that exits at once, reaped)
+pid_t dead_pid() {
+  const pid_t pid = ::fork();
+  if (pid == 0) ::_exit(0);
+  int status = 0;
+  ::waitpid(pid, &status, 0);
+  return pid;
+}
+
+// A new run in a folder removes the previous run's snapshots (its own naming), never a file the user put
+// there; it leaves no lock file behind.
+TEST_F(CommandLine, RunRemovesOnlyItsOwnSnapshotFiles) {
+  const fs::path c = small_wear_case(dir_, "small.yaml");
+  const fs::path out = dir_ / "w";
+  fs::create_directories(out / "snapshots");
+  std::ofstream(out / "snapshots" / "my_notes.txt") << "the user's\n";
+  std::ofstream(out / "snapshots" / "snapshot_0042_body1.csv") << "a previous run's\n";
+  const ProcessResult r = rollwear("run " + quoted(c) + " -o " + quoted(out) + " --log-level error", dir_);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(read_text(out / "snapshots" / "my_notes.txt"), "the user's\n");
+  EXPECT_FALSE(fs::exists(out / "snapshots" / "snapshot_0042_body1.csv"));
+  EXPECT_TRUE(fs::exists(out / "snapshots" / "snapshot_0000_body1.csv"));
+  EXPECT_FALSE(fs::exists(out / ".rollwear.lock"));
+}
+
+// Two runs in one folder: the second one exits non-zero, naming the folder and the PID holding it, and
+// writes nothing there.
+TEST_F(CommandLine, RunRefusesAFolderAnotherRunHolds) {
+  const fs::path c = small_wear_case(dir_, "small.yaml");
+  const fs::path out = dir_ / "w";
+  fs::create_directories(out);
+  // this test process plays the other run: it holds the lock with its PID in the file
+  const int fd = ::open((out / ".rollwear.lock").c_str(), O_RDWR | O_CREAT, 0644);
+  ASSERT_GE(fd, 0);
+  ASSERT_EQ(::flock(fd, LOCK_EX | LOCK_NB), 0);
+  const std::string pid = std::to_string(::getpid());
+  ASSERT_EQ(::write(fd, pid.data(), pid.size()), static_cast<ssize_t>(pid.size()));
+  for (const std::string& command : {std::string("run"), std::string("run --restart")}) {
+    const ProcessResult r = rollwear(command + " " + quoted(c) + " -o " + quoted(out), dir_);
+    EXPECT_NE(r.exit_code, 0) << command;
+    EXPECT_NE(r.err.find(out.string() + " is in use by another rollwear run (PID " + pid + ","), std::string::npos)
+        << r.err;
+    EXPECT_FALSE(fs::exists(out / "summary.csv"));
+    EXPECT_FALSE(fs::exists(out / "checkpoint.txt"));
+  }
+  const fs::path startup = dir_ / "startup.yaml";
+  std::ofstream(startup) << small_startup_case();
+  const ProcessResult t = rollwear("transient " + quoted(startup) + " -o " + quoted(out), dir_);
+  EXPECT_NE(t.exit_code, 0);
+  EXPECT_NE(t.err.find("(PID " + pid + ","), std::string::npos) << t.err;
+  ::close(fd);
+  // released: the folder is free again
+  EXPECT_EQ(rollwear("run " + quoted(c) + " -o " + quoted(out) + " --log-level error", dir_).exit_code, 0);
+}
+
+// Ctrl-C (SIGINT) on a run says how to continue it, and --resume then does.
+TEST_F(CommandLine, RunInterruptedSaysResumeContinuesIt) {
+  const fs::path c = wear_case(dir_, "fixed.yaml", "nx: 20, ny: 20",
+                               "stepping: { method: fixed-depth, max_depth_step_m: 1.0e-8 }",
+                               "limits: { max_depth_m: 2.0e-5, edge: true }");
+  const fs::path out = dir_ / "w";
+  run_and_kill({"run", c.string(), "-o", out.string(), "--quiet"}, out / "checkpoint.txt", 20, dir_ / "int.log",
+               SIGINT);
+  const std::string said = read_text(dir_ / "int.log");
+  EXPECT_NE(said.find("interrupted; the run continues from its last checkpoint"), std::string::npos) << said;
+  EXPECT_NE(said.find("rollwear run " + c.string() + " -o " + out.string() + " --resume"), std::string::npos) << said;
+  EXPECT_FALSE(fs::exists(out / ".rollwear.lock"));  // the handler removes the lock file too
+  const ProcessResult r = rollwear("run " + quoted(c) + " -o " + quoted(out) + " --resume --log-level error", dir_);
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+}
+
+// Bad input found at step 0 (a profile too coarse for the contact) exits 2 at the profile's key with
+// advice the user can follow, and leaves no checkpoint: the corrected case then runs without --restart.
+TEST_F(CommandLine, RunBadInputAtStepZeroLeavesNoCheckpoint) {
+  const fs::path c = small_wear_case(dir_, "light.yaml");
+  edit_file(c, "normal_load_N: 1500", "normal_load_N: 0.05");  // a contact about 0.1 mm wide
+  const fs::path out = dir_ / "w";
+  ProcessResult r = rollwear("run " + quoted(c) + " -o " + quoted(out), dir_);
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find(c.string() + ":13:10: "), std::string::npos) << r.err;  // the profiles.body1 value
+  EXPECT_NE(r.err.find("profiles.body1: its nodes"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("give profiles.body1 as { file: PATH }"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(out / "checkpoint.txt"));
+  edit_file(c, "normal_load_N: 0.05", "normal_load_N: 1500");
+  r = rollwear("run " + quoted(c) + " -o " + quoted(out) + " --log-level error", dir_);
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+}
+
+// A cross-key error (Archard's law without friction) exits 2 naming the file, line and keys.
+TEST_F(CommandLine, RunArchardWithoutFrictionExitsTwoAtFrictionMu) {
+  const fs::path c = small_wear_case(dir_, "mu0.yaml");
+  edit_file(c, "friction:   { mu: 0.3 }", "friction:   { mu: 0 }");
+  const ProcessResult r = rollwear("run " + quoted(c) + " -o " + quoted(dir_ / "w"), dir_);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find(c.string() + ":21:19: friction.mu, wear.body1.law: "), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(dir_ / "w"));
+}
+
+// The exit status follows the error's type (lib/io/errors.h): bad input 2; a solver's refusal of what it
+// was given, std::invalid_argument included, 1.
+TEST(ExitStatus, FollowsTheErrorsTypeNotItsText) {
+  EXPECT_EQ(exit_status_of(CaseError("case.yaml:3:5: friction.mu: must be in [0, 10]")), kExitBadInput);
+  EXPECT_EQ(exit_status_of(std::invalid_argument("halfspace: E* must be positive")), kExitFailure);
+  EXPECT_EQ(exit_status_of(SettingError("", "dt_s", "must be >= 0")), kExitFailure);
+  EXPECT_EQ(exit_status_of(SolverError("bad input: the approach was not found")), kExitFailure);
+  EXPECT_EQ(exit_status_of(std::runtime_error("no space left")), kExitFailure);
+}
+
+// transient refuses a run whose output is estimated above output.max_bytes (default 1 GiB), naming the
+// estimate and the keys, and writes nothing; --force runs it.
+TEST_F(CommandLine, TransientRefusesAnAbsurdRunUnlessForced) {
+  const fs::path c = dir_ / "huge.yaml";
+  std::ofstream(c) << small_startup_case();
+  edit_file(c, "t_end_s: 2.0e-4", "t_end_s: 1.0e9");
+  const fs::path out = dir_ / "t";
+  ProcessResult r = rollwear("transient " + quoted(c) + " -o " + quoted(out), dir_);
+  EXPECT_EQ(r.exit_code, 2);
+  for (const std::string& word : {c.string() + ":", std::string("transient.t_end_s"), std::string("output.max_bytes = 1073741824"),
+                                  std::string("the run would write about "), std::string("--force")})
+    EXPECT_NE(r.err.find(word), std::string::npos) << word << " in " << r.err;
+  EXPECT_FALSE(fs::exists(out));
+  // a small run above a small max_bytes: refused, then run with --force
+  const fs::path small = dir_ / "small.yaml";
+  std::ofstream(small) << small_startup_case() << "\n";
+  edit_file(small, "output:     { directory: out/paper-startup, fields: true }",
+            "output:     { directory: out/paper-startup, fields: true, max_bytes: 1000 }");
+  r = rollwear("transient " + quoted(small) + " -o " + quoted(out), dir_);
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("output.max_bytes = 1000;"), std::string::npos) << r.err;
+  r = rollwear("transient " + quoted(small) + " -o " + quoted(out) + " --force --log-level warn", dir_);
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(fs::exists(out / "timeseries.csv"));
+}
+
+// the output of a run is at most its estimate (an upper bound: every number at full precision)
+TEST_F(CommandLine, TransientOutputIsWithinItsEstimate) {
+  const fs::path c = dir_ / "startup.yaml";
+  std::ofstream(c) << small_startup_case();
+  const ContactCase cc = read_contact_case(c.string());
+  const TransientOutputEstimate e = estimate_transient_output(transient_case_of(cc), true);
+  const fs::path out = dir_ / "t";
+  ASSERT_EQ(rollwear("transient " + quoted(c) + " -o " + quoted(out) + " --log-level warn", dir_).exit_code, 0);
+  double bytes = 0;
+  for (const auto& f : fs::directory_iterator(out)) bytes += static_cast<double>(fs::file_size(f.path()));
+  const double steps = static_cast<double>(lines_of(read_text(out / "timeseries.csv")).size() - 1);
+  EXPECT_LE(bytes, e.bytes);
+  EXPECT_GT(bytes, e.bytes / 4) << "the estimate is meant to be of the right size, not only an upper bound";
+  EXPECT_LE(steps, e.steps);
+  EXPECT_GE(steps, e.steps - 2);  // shift: one step per dx rolled, +1 for the last partial step
+}
+
+// A killed transient's temporaries (OWN_NAME.tmp.<dead pid>) are removed by the next command on the folder;
+// files of other names, and those of a live process, stay.
+TEST_F(CommandLine, TransientRemovesStaleTemporariesOfItsOwnNaming) {
+  const fs::path c = dir_ / "startup.yaml";
+  std::ofstream(c) << small_startup_case();
+  const fs::path out = dir_ / "t";
+  fs::create_directories(out);
+  const std::string dead = std::to_string(dead_pid()), live = std::to_string(::getpid());
+  for (const std::string& name : {"timeseries.csv.tmp." + dead, "strip_power.csv.tmp." + dead,
+                                  "my_data.tmp." + dead, "strip_power.csv.tmp." + live})
+    std::ofstream(out / name) << "x\n";
+  ASSERT_EQ(rollwear("transient " + quoted(c) + " -o " + quoted(out) + " --log-level warn", dir_).exit_code, 0);
+  EXPECT_FALSE(fs::exists(out / ("timeseries.csv.tmp." + dead)));
+  EXPECT_FALSE(fs::exists(out / ("strip_power.csv.tmp." + dead)));
+  EXPECT_TRUE(fs::exists(out / ("my_data.tmp." + dead)));
+  EXPECT_TRUE(fs::exists(out / ("strip_power.csv.tmp." + live)));
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <utility>
 
 #include "tests/temp_dir.h"
 
@@ -144,6 +145,34 @@ TEST_F(WearCaseReader, CrossKeyErrors) {
   EXPECT_NE(error_of(hertz + "wear:\n  body1: { k_E_m3_per_J: 1.0e-13 }\n  revolutions: 10\n")
                 .find(file + ":10:19: solver.normal: a wear run solves the worn profiles with auto"),
             std::string::npos);
+}
+
+// Archard's law is the energy law with k_E = K/(H mu): without friction it has no meaning. A cross-key
+// error of the reader, at friction.mu's line, naming both keys (not an std::invalid_argument from the
+// wear model at run time, which had no file, line or key).
+TEST_F(WearCaseReader, ArchardWithoutFrictionNamesFrictionMuAndTheLaw) {
+  std::string text = kContact + "wear:\n  body1: { law: archard, archard_k: 1.0e-4, hardness_Pa: 6.0e9 }\n  revolutions: 1.0e9\n";
+  text.replace(text.find("mu: 0.3"), 7, "mu: 0");
+  EXPECT_EQ(error_of(text).rfind(path() + ":9:17: friction.mu, wear.body1.law: the archard law needs friction", 0), 0u)
+      << error_of(text);
+  // the energy law wears without friction
+  std::string energy = kContact + "wear:\n  body1: { law: energy, k_E_m3_per_J: 1.0e-13 }\n  revolutions: 1.0e9\n";
+  energy.replace(energy.find("mu: 0.3"), 7, "mu: 0");
+  EXPECT_EQ(error_of(energy), "");
+}
+
+// wear.stepping.method's names come from one table (lib/io/enum_names.h): the reader's message lists them,
+// and integrator_options refuses a name outside it instead of taking it for fixed-revolutions.
+TEST_F(WearCaseReader, SteppingMethodNamesComeFromOneTable) {
+  WearStepping s;
+  for (const auto& [name, method] : {std::pair<const char*, IntegratorOptions::Method>{"adaptive", IntegratorOptions::Method::Adaptive},
+                                     {"fixed-depth", IntegratorOptions::Method::FixedDepth},
+                                     {"fixed-revolutions", IntegratorOptions::Method::FixedStep}}) {
+    s.method = name;
+    EXPECT_EQ(integrator_options(s).method, method) << name;
+  }
+  s.method = "rk4";
+  EXPECT_THROW(integrator_options(s), contact::SettingError);
 }
 
 }  // namespace

@@ -7,7 +7,10 @@
 
 #include <spdlog/fmt/fmt.h>
 
+#include "lib/io/enum_names.h"
+#include "lib/io/number.h"
 #include "lib/io/yaml_reader.h"
+#include "lib/normal/profile.h"
 
 namespace wear {
 
@@ -17,7 +20,8 @@ using contact::YamlValue;
 
 namespace {
 
-std::string number(double v) { return fmt::format("{}", v); }
+using contact::round_trip;
+const auto number = [](double v) { return round_trip(v); };
 
 void read_kth(YamlMap& m, KthWearMap& k) {
   m.optional("pressure_ratio", k.pressure_ratio);
@@ -41,8 +45,8 @@ void read_law(YamlMap& m, WearLaw& law) {
   m.optional("law", law.law);
   try {
     parse_wear_law(law.law);
-  } catch (const std::invalid_argument& e) {
-    m.fail("law", std::string(e.what()).substr(std::string("wear.law: ").size()));
+  } catch (const contact::SettingError& e) {
+    m.fail("law", e.problem);
   }
   m.optional("k_E_m3_per_J", law.k_E_m3_per_J);
   m.optional("archard_k", law.archard_k);
@@ -52,25 +56,21 @@ void read_law(YamlMap& m, WearLaw& law) {
   m.optional_section("usfd", [&](YamlMap& s) { read_usfd(s, law.usfd); });
   try {
     validate(law);
-  } catch (const std::invalid_argument& e) {
-    const std::string what = e.what();
-    const std::string prefix = "wear.";
-    const std::size_t colon = what.find(": ");
-    if (what.compare(0, prefix.size(), prefix) == 0 && colon != std::string::npos) {
-      const std::string key = what.substr(prefix.size(), colon - prefix.size());
-      const std::size_t dot = key.find('.');
-      if (dot == std::string::npos) m.fail(key, what.substr(colon + 2));
-      m.fail(key.substr(0, dot), key.substr(dot + 1) + ": " + what.substr(colon + 2));
-    }
-    m.fail_here(what);
+  } catch (const contact::SettingError& e) {  // the key within the law ("kth.pressure_ratio") as data
+    const std::size_t dot = e.key.find('.');
+    if (dot == std::string::npos) m.fail(e.key, e.problem);
+    m.fail(e.key.substr(0, dot), e.key.substr(dot + 1) + ": " + e.problem);
   }
 }
 
+// wear.stepping.method's names (lib/io/enum_names.h)
+using Method = IntegratorOptions::Method;
+constexpr contact::EnumTable<Method, 3> kSteppingMethods = {
+    {{Method::Adaptive, "adaptive"}, {Method::FixedDepth, "fixed-depth"}, {Method::FixedStep, "fixed-revolutions"}}};
+
 void read_stepping(YamlMap& m, WearStepping& s) {
   m.optional("method", s.method, [](const std::string& v) -> std::string {
-    return v == "adaptive" || v == "fixed-depth" || v == "fixed-revolutions"
-               ? ""
-               : "must be adaptive, fixed-depth or fixed-revolutions";
+    return contact::enum_from_name(kSteppingMethods, v) ? "" : "must be " + contact::enum_names_list(kSteppingMethods);
   });
   m.optional("rtol", s.rtol, [](double v) -> std::string {
     return v >= 1e-10 && v <= 0.1 ? "" : "must be in [1e-10, 0.1]";
@@ -106,7 +106,7 @@ void read_wear(YamlMap& m, WearSection& w) {
       if (k > 0 && !(N > w.snapshots_revolutions.back()))
         e[k].fail(element + " must be after element " + std::to_string(k) + "'s " +
                   number(w.snapshots_revolutions.back()) + " (revolutions strictly increasing), got " +
-                  e[k].node().Scalar());
+                  contact::clipped(e[k].node().Scalar()));
       w.snapshots_revolutions.push_back(N);
     }
   });
@@ -150,6 +150,10 @@ void validate(const WearCase& c) {
       throw CaseError(where(k, key) + key + ": the body wears but its rolling radius Rx_m = " + number(R) +
                       " gives no revolutions (a flat or concave body cannot be the worn body)");
     const std::string name = (*law)->law;
+    // Archard's law is the energy law with k_E = K/(H mu) (wear_law.h): mu = 0 has no energy equivalent
+    if (name == "archard" && !(k.friction.mu > 0))
+      throw CaseError(where(k, "friction.mu") + "friction.mu, " + key + ".law: the archard law needs friction (it is "
+                      "the energy law with k_E = K/(H mu)), got mu = " + number(k.friction.mu) + "; give mu > 0");
     if (k.transient && name != "energy" && name != "archard")
       throw CaseError(where(k, std::string(key) + ".law") + key + ".law, transient: the " + name +
                       " law reads steady per-cell fields; a transient duty cycle takes energy or archard");
@@ -170,15 +174,35 @@ void validate(const WearCase& c) {
     throw CaseError(where(k, "wear.snapshots_revolutions") + "wear.snapshots_revolutions, wear.revolutions: snapshot at " +
                     number(w.snapshots_revolutions.back()) + " is after the end of the life budget, " +
                     number(w.revolutions));
-  if (w.stepping.method == "fixed-revolutions" && !(w.stepping.step_revolutions > 0))
+  if (contact::enum_from_name(kSteppingMethods, w.stepping.method) == Method::FixedStep &&
+      !(w.stepping.step_revolutions > 0))
     throw CaseError(where(k, "wear.stepping") + "wear.stepping.step_revolutions: fixed-revolutions needs a step > 0");
+}
+
+void check_profile_resolves_contact(const WearCase& c, int body, double node_spacing_m, double contact_width_m,
+                                    int min_nodes) {
+  if (!(contact_width_m < min_nodes * node_spacing_m)) return;
+  const std::string key = "profiles.body" + std::to_string(body);
+  const double needed_m = contact_width_m / min_nodes;
+  const std::string what = fmt::format(
+      "{}: its nodes ({:.3g} m apart at most) are too coarse for the contact, {:.3g} m wide: the wear needs at least "
+      "{} nodes across it, {:.3g} m apart or closer; ",
+      key, node_spacing_m, contact_width_m, min_nodes, needed_m);
+  if (contact::given(c.contact, key + ".file"))
+    throw CaseError(contact::where(c.contact, key + ".file") + what + "give a profile file with nodes that close");
+  throw CaseError(contact::where(c.contact, key) + what + "a generated profile spaces its nodes by its width_m (at "
+                  "most width_m/" + number(1 / contact::kProfileMaxSpacingFraction) + "), so give " + key +
+                  " as { file: PATH } (y_m,z_m) with nodes that close");
 }
 
 IntegratorOptions integrator_options(const WearStepping& s) {
   IntegratorOptions o;
-  o.method = s.method == "adaptive"      ? IntegratorOptions::Method::Adaptive
-             : s.method == "fixed-depth" ? IntegratorOptions::Method::FixedDepth
-                                         : IntegratorOptions::Method::FixedStep;
+  // read_stepping took only the table's names; anything else is a case built in code, refused here
+  const std::optional<Method> method = contact::enum_from_name(kSteppingMethods, s.method);
+  if (!method)
+    throw contact::SettingError("wear.stepping", "method", "must be " + contact::enum_names_list(kSteppingMethods) +
+                                                                ", got '" + contact::clipped(s.method) + "'");
+  o.method = *method;
   o.rtol = s.rtol;
   o.atol = s.atol_m;
   o.max_depth_step = s.max_depth_step_m;

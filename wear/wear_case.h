@@ -70,6 +70,13 @@ WearCase read_wear_case(const std::string& path);
 // cross-key checks (read_wear_case runs them)
 void validate(const WearCase& c);
 
+// The worn body's profile must resolve the contact, its nodes carrying the wear: at least min_nodes
+// across the contact's width. Throws contact::CaseError at profiles.body<N> (file, line) with what the
+// user can set: a generated profile's nodes are width_m * kProfileMaxSpacingFraction apart, so the
+// advice is a { file: PATH } profile with nodes close enough.
+void check_profile_resolves_contact(const WearCase& c, int body, double node_spacing_m, double contact_width_m,
+                                    int min_nodes);
+
 // the integrator's settings of the case
 IntegratorOptions integrator_options(const WearStepping& s);
 

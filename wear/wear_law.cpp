@@ -8,6 +8,7 @@
 // T at speed V counts V T / (2 pi R_w) passages.
 #include "wear/wear_law.h"
 #include "lib/numeric.h"
+#include "lib/io/errors.h"
 
 #include <spdlog/fmt/fmt.h>
 #include <spdlog/spdlog.h>
@@ -30,7 +31,7 @@ constexpr double kN_per_mm2_per_Pa = 1e-6;
 std::string number(double v) { return fmt::format("{:.6g}", v); }
 
 [[noreturn]] void fail(const std::string& key, const std::string& range, double got) {
-  throw std::invalid_argument("wear." + key + ": must be " + range + ", got " + number(got));
+  throw contact::SettingError("wear", key, "must be " + range + ", got " + number(got));
 }
 
 // lo < v <= hi (lo_open) or lo <= v <= hi
@@ -253,7 +254,8 @@ std::string to_string(WearLawKind kind) {
 WearLawKind parse_wear_law(const std::string& name) {
   for (WearLawKind k : {WearLawKind::Energy, WearLawKind::Archard, WearLawKind::Kth, WearLawKind::Usfd})
     if (name == to_string(k)) return k;
-  throw std::invalid_argument("wear.law: unknown wear law '" + name + "' (valid: energy, archard, kth, usfd)");
+  throw contact::SettingError("wear", "law", "unknown wear law '" + contact::clipped(name) +
+                                                "' (valid: energy, archard, kth, usfd)");
 }
 
 void validate(const WearLaw& law) {

@@ -325,19 +325,15 @@ constexpr std::pair<LifeEnd, const char*> kLifeEndWords[] = {
 
 // The wear is carried by the worn bodies' profile nodes: a contact narrower than a few node spacings
 // would put a strip's wear on one node and the next solve could not see the worn shape. Throws
-// std::invalid_argument naming both sizes.
+// contact::CaseError at the profile's key, naming what the user can set (wear_case.h).
 constexpr int kMinNodesAcrossContact = 4;
-void check_profile_resolves_contact(const WearModel& m, const NormalState& n) {
+void check_profile_resolves_contact(const WearCase& c, const WearModel& m, const NormalState& n) {
   const double width = n.normal.contact_y_max_m - n.normal.contact_y_min_m;
   for (int body : {1, 2}) {
     if ((body == 1 ? m.n1 : m.n2) == 0) continue;
     const Eigen::ArrayXd& y = body == 1 ? m.profiles.body1.y_m : m.profiles.body2.y_m;
     const double spacing = (y.tail(y.size() - 1) - y.head(y.size() - 1)).maxCoeff();
-    if (width < kMinNodesAcrossContact * spacing)
-      throw std::invalid_argument(fmt::format(
-          "profiles.body{}: its nodes ({:.3g} m apart at most) are too coarse for the contact, {:.3g} m wide: "
-          "the wear needs at least {} nodes across it; give a profile with nodes {:.3g} m apart or closer",
-          body, spacing, width, kMinNodesAcrossContact, width / kMinNodesAcrossContact));
+    wear::check_profile_resolves_contact(c, body, spacing, width, kMinNodesAcrossContact);
   }
 }
 
@@ -571,7 +567,7 @@ LifeResult run_life(const WearModel& m, const WearCase& c, const LifeStart& star
   life.counters = start.counters;
 
   // the worn body's profile must resolve the contact: its nodes carry the wear
-  check_profile_resolves_contact(m, solved_normal_state(m, life.state, cache));
+  check_profile_resolves_contact(c, m, solved_normal_state(m, life.state, cache));
   if (const std::optional<LifeEnding> reached = limit_reached_at_start(run, life)) return end_life(run, life, *reached);
 
   // wear through each snapshot revolution, then to the budget: a limit, or a failure, ends the life

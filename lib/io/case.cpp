@@ -12,6 +12,7 @@
 #include <spdlog/spdlog.h>
 
 #include "lib/normal/semi_hertz.h"
+#include "lib/io/number.h"
 #include "lib/io/yaml_reader.h"
 
 namespace contact {
@@ -116,7 +117,7 @@ void read_profiles(YamlMap& m, ProfilesSection& s, const std::filesystem::path& 
 constexpr const char* kHistoryForms = "a number, { ramp: [t0_s, v0, t1_s, v1] } or { table: [[t_s, value], ...] }";
 
 // the shortest spelling that reads back the same double, for messages
-std::string number(double v) { return fmt::format("{}", v); }
+std::string number(double v) { return round_trip(v); }
 
 // "1 element", "3 elements"
 std::string count_of_elements(std::size_t n) { return std::to_string(n) + (n == 1 ? " element" : " elements"); }
@@ -130,7 +131,7 @@ History read_ramp(const YamlValue& r, const Check& check_value) {
   const double v0 = e[1].as<double>(check_value, "v0");
   const double t1 = e[2].as<double>(finite, "t1_s");
   const double v1 = e[3].as<double>(check_value, "v1");
-  if (!(t1 > t0)) e[2].fail("t1_s must be after t0_s = " + number(t0) + ", got " + e[2].node().Scalar());
+  if (!(t1 > t0)) e[2].fail("t1_s must be after t0_s = " + number(t0) + ", got " + clipped(e[2].node().Scalar()));
   return ramp_history(t0, v0, t1, v1);
 }
 
@@ -151,7 +152,7 @@ History read_table(const YamlValue& tv, const Check& check_value) {
     const double v = cells[1].as<double>(check_value, row + ": value");
     if (k > 0 && !(t > h.t_s.back()))
       cells[0].fail(row + ": t_s must be after row " + std::to_string(k) + "'s " + number(h.t_s.back()) +
-                    " (times strictly increasing), got " + cells[0].node().Scalar());
+                    " (times strictly increasing), got " + clipped(cells[0].node().Scalar()));
     h.t_s.push_back(t);
     h.value.push_back(v);
   }
@@ -199,7 +200,7 @@ void read_transient(YamlMap& m, TransientSection& t) {
   try {
     parse_transient_scheme(t.scheme);
   } catch (const std::invalid_argument& e) {
-    m.fail("scheme", e.what());
+    m.fail("scheme", clipped(e.what(), 200));
   }
   m.required("t_end_s", t.t_end_s, positive_finite);
   m.optional("dt_s", t.dt_s, nonnegative_finite);
@@ -211,7 +212,7 @@ void read_transient(YamlMap& m, TransientSection& t) {
       const double t_s = e[k].as<double>(nonnegative_finite, element);
       if (k > 0 && !(t_s > t.snapshots_s.back()))
         e[k].fail(element + " must be after element " + std::to_string(k) + "'s " + number(t.snapshots_s.back()) +
-                  " (times strictly increasing), got " + e[k].node().Scalar());
+                  " (times strictly increasing), got " + clipped(e[k].node().Scalar()));
       t.snapshots_s.push_back(t_s);
     }
   });
@@ -232,13 +233,13 @@ void read_solver(YamlMap& m, SolverSection& s) {
   if (std::find(names.begin(), names.end(), s.normal) == names.end()) {
     std::string valid;
     for (const std::string& n : names) valid += (valid.empty() ? "" : ", ") + n;
-    m.fail("normal", "unknown normal solver '" + s.normal + "' (valid: " + valid + ")");
+    m.fail("normal", "unknown normal solver '" + clipped(s.normal) + "' (valid: " + valid + ")");
   }
   m.optional("tangential", s.tangential);
   try {
     parse_tangential_scheme(s.tangential);
   } catch (const std::invalid_argument& e) {
-    m.fail("tangential", e.what());
+    m.fail("tangential", clipped(e.what(), 200));
   }
   m.optional("nx", s.nx, in_closed(1, 4096));
   m.optional("ny", s.ny, in_closed(1, 4096));
@@ -330,6 +331,7 @@ ContactCase read_contact_case(const std::string& path, const ExtraSections& extr
     m.optional_section("output", [&](YamlMap& s) {
       s.optional("directory", c.output.directory);
       s.optional("fields", c.output.fields);
+      s.optional("max_bytes", c.output.max_bytes, positive_finite);
     });
     if (extra) extra(m);
   });
@@ -512,9 +514,27 @@ Grid transient_grid(const TransientCase& t) {
   return make_grid(largest.a_m, largest.b_m, t.settings.grid);
 }
 
-CaseError transient_error(const ContactCase& c, const std::invalid_argument& e) {
-  const std::string message = e.what();
-  // run_transient names its setting first ("dt_s: ..."): the key it was read from
+TransientOutputEstimate estimate_transient_output(const TransientCase& t, bool fields) {
+  const Grid grid = transient_grid(t);
+  const TransientSettings& s = t.settings;
+  // the rolled distance: the path's speed bounds the rolling speed of an inertia run from above
+  const History& speed = t.inertia ? t.inertia->path_speed_m_per_s : t.inputs.speed_m_per_s;
+  const double rolled_m = integral(speed, 0, s.t_end_s);
+  const double per_dt = s.dt_s > 0 ? s.t_end_s / s.dt_s : 0;
+  TransientOutputEstimate e;
+  // shift: a step per dx rolled, shortened to dt_s; the fixed-step schemes: a step per dt_s, split by substep
+  e.steps = 1 + per_dt + (s.scheme == TransientScheme::Shift || t.inertia || s.substep ? rolled_m / grid.dx_m : 0);
+  constexpr double kTimeseriesColumns = 17, kStripPowerColumns = 4, kSnapshotColumns = 8, kStripEnergyColumns = 2;
+  const double cells = static_cast<double>(grid.nx) * grid.ny;
+  const double numbers = e.steps * (kTimeseriesColumns + kStripPowerColumns * grid.ny) +
+                         kStripEnergyColumns * grid.ny +
+                         (fields ? static_cast<double>(s.snapshot_times_s.size()) * kSnapshotColumns * cells : 0);
+  e.bytes = numbers * kCsvBytesPerNumber;
+  return e;
+}
+
+CaseError transient_error(const ContactCase& c, const SettingError& e) {
+  // run_transient's setting (the key, as data) -> the case file's key it was read from
   static const std::pair<const char*, const char*> kKeys[] = {
       {"dt_s", "transient.dt_s"},
       {"t_end_s", "transient.t_end_s"},
@@ -527,27 +547,23 @@ CaseError transient_error(const ContactCase& c, const std::invalid_argument& e) 
       {"path_speed_m_per_s", "inertia.path_speed_m_per_s"},
       {"inertia", "inertia"},
   };
-  const std::size_t colon = message.find(": ");
-  const std::string head = colon == std::string::npos ? std::string() : message.substr(0, colon);
   for (const auto& [name, key] : kKeys) {
-    if (head != name) continue;
-    std::string what = message.substr(colon + 2);
+    if (e.key != name) continue;
+    std::string what = e.problem;
     // a CFL breach of a fixed-step scheme: the numbers at full precision, the largest allowed step
-    if (head == "dt_s" && what.find("CFL") != std::string::npos && c.transient) {
-      const TransientCase t = transient_case_of(c);
-      const double dx = transient_grid(t).dx_m, vmax = max_value(t.inputs.speed_m_per_s);
+    if (const auto* cfl = dynamic_cast<const CflBreach*>(&e); cfl && c.transient) {
+      const double dx = cfl->dx_m, vmax = cfl->v_max_m_per_s;
       // dx / V rounded down to the six digits shown, so that the step named runs
       const double scale = std::pow(10.0, std::floor(std::log10(dx / vmax)) - 5);
       const double dt_max = std::floor(dx / vmax / scale) * scale;
       what = fmt::format("{} s breaks the CFL condition of the {} scheme (V dt/dx = {:.9g} > 1 at the largest "
                          "speed V = {} m/s, dx = {:.6g} m); the largest allowed dt_s is {:.6g} s (or set "
                          "substep: true)",
-                         number(t.settings.dt_s), to_string(t.settings.scheme), vmax * t.settings.dt_s / dx,
-                         number(vmax), dx, dt_max);
+                         number(cfl->dt_s), c.transient->scheme, vmax * cfl->dt_s / dx, number(vmax), dx, dt_max);
     }
     return CaseError(where(c, key) + key + ": " + what);
   }
-  return CaseError((c.path.empty() ? std::string() : c.path + ": ") + "transient: " + message);
+  return CaseError((c.path.empty() ? std::string() : c.path + ": ") + "transient: " + e.what());
 }
 
 }  // namespace contact

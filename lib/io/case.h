@@ -28,16 +28,14 @@
 #include "lib/normal/hertz.h"
 #include "lib/normal/normal.h"
 #include "lib/history.h"
+#include "lib/io/errors.h"
+#include "lib/io/key_locations.h"
 #include "lib/patch.h"
 #include "lib/normal/profile.h"
 #include "lib/tangential/satran.h"
 #include "lib/tangential/tangential.h"
 
 namespace contact {
-
-struct CaseError : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
 
 struct BodySection {                  // bodies.body1 / bodies.body2
   double Rx_m = kFlat, Ry_m = kFlat;  // required (Ry_m: only without profiles:); .inf for flat, negative for concave
@@ -93,11 +91,8 @@ struct InertiaSection {  // the roller spins up under the creep force (lib/tange
 struct OutputSection {
   std::string directory;  // default: out/<case name>, relative to the working directory
   bool fields = true;     // write the fields on the grid (fields.csv)
+  double max_bytes = 1024.0 * 1024 * 1024;  // 'transient' refuses a run estimated to write more (1 GiB)
 };
-
-// key path -> "FILE:LINE:COL" of each value read from the file ("bodies.body1.Rx_m" ->
-// "cases/paper.yaml:6:17"), so that cross-key messages point at the file too
-using KeyLocations = std::map<std::string, std::string>;
 
 struct ContactCase {
   std::string path;  // the file it was read from
@@ -171,8 +166,18 @@ TransientCase transient_case_of(const ContactCase& c);
 // (lib/tangential/satran.cpp); callers use it to label per-strip output while the run streams
 Grid transient_grid(const TransientCase& t);
 
-// run_transient's refusal of the settings (std::invalid_argument "dt_s: ...") as a CaseError at the
-// key and line it names: "FILE:LINE:COL: transient.dt_s: ... the largest allowed dt_s is ... s"
-CaseError transient_error(const ContactCase& c, const std::invalid_argument& e);
+// What a transient run will write, estimated before it runs (an upper bound on the steps: one per dx
+// rolled and one per dt_s, skips of steady stretches not counted; every number at full precision).
+struct TransientOutputEstimate {
+  double steps = 0;  // steps the run takes at most
+  double bytes = 0;  // timeseries.csv, strip_power.csv, strip_energy.csv and the snapshots together
+};
+// bytes of one number at full precision with its separator: "-1.2345678901234567e-05," (lib/io/csv.h)
+constexpr double kCsvBytesPerNumber = 24;
+TransientOutputEstimate estimate_transient_output(const TransientCase& t, bool fields);
+
+// run_transient's refusal of the settings (a SettingError: the setting's key as data) as a CaseError at
+// the case's key and line: "FILE:LINE:COL: transient.dt_s: ... the largest allowed dt_s is ... s"
+CaseError transient_error(const ContactCase& c, const SettingError& e);
 
 }  // namespace contact

@@ -1,4 +1,5 @@
 #include "lib/io/csv.h"
+#include "lib/io/number.h"
 
 #include <unistd.h>
 
@@ -16,8 +17,8 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// one number, exact on reading back
-void put(std::string& out, double v) { fmt::format_to(std::back_inserter(out), "{:.17g}", v); }
+// one number, exact on reading back, in the fewest characters (lib/io/number.h)
+void put(std::string& out, double v) { append_round_trip(out, v); }
 
 void check_shape(const char* what, Eigen::Index rows, Eigen::Index cols, Eigen::Index nx, Eigen::Index ny) {
   if (rows != nx || cols != ny)

@@ -1,4 +1,4 @@
-// Reading a case file's mappings (docs/conventions.md, "Cases"). Every key a reader asks for is marked; a key
+// Reading a case file's mappings (README.md, "The case file"). Every key a reader asks for is marked; a key
 // left over at any level is an error, so a typo never becomes a silent default. Every error throws
 // CaseError with the file, the line and column (1-based) and the key path:
 //   cases/paper.yaml:12:5: friction.mu: must be in [0, 10], got -1
@@ -16,6 +16,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <algorithm>
 #include <map>
 #include <memory>
 #include <set>
@@ -27,7 +28,8 @@
 #include <spdlog/fmt/fmt.h>
 #include <yaml-cpp/yaml.h>
 
-#include "lib/io/case.h"
+#include "lib/io/errors.h"
+#include "lib/io/key_locations.h"
 
 namespace contact {
 
@@ -53,11 +55,12 @@ inline YAML::Node load_yaml_file(const std::string& file) {
   }
 }
 
-// how a node reads in a message: 'text' for a scalar, else its kind
+// how a node reads in a message: 'text' for a scalar (cut, errors.h clipped), else its kind
 inline std::string yaml_describe(const YAML::Node& node) {
   switch (node.Type()) {
     case YAML::NodeType::Scalar:  // a quoted scalar is a string, never a number or a bool
-      return node.Tag() == "!" ? "the quoted string '" + node.Scalar() + "'" : "'" + node.Scalar() + "'";
+      return node.Tag() == "!" ? "the quoted string '" + clipped(node.Scalar()) + "'"
+                               : "'" + clipped(node.Scalar()) + "'";
     case YAML::NodeType::Sequence: return "a sequence";
     case YAML::NodeType::Map: return "a mapping";
     case YAML::NodeType::Null: return "nothing (null)";
@@ -97,11 +100,11 @@ inline bool parse(const YAML::Node& n, std::string& v) {
   return true;
 }
 
-// the value as written, quoted for strings
+// the value as written (cut, errors.h clipped), quoted for strings
 template <class T>
 std::string shown(const YAML::Node& n) {
-  if constexpr (std::is_same_v<T, std::string>) return "'" + n.Scalar() + "'";
-  else return n.Scalar();
+  if constexpr (std::is_same_v<T, std::string>) return "'" + clipped(n.Scalar()) + "'";
+  else return clipped(n.Scalar());
 }
 
 struct NoCheck {
@@ -110,6 +113,26 @@ struct NoCheck {
 };
 
 }  // namespace yaml_detail
+
+// the edit distance of two keys (insertions, deletions, substitutions and swaps of neighbours each 1),
+// for the "did you mean" of an unknown key
+inline std::size_t key_distance(const std::string& a, const std::string& b) {
+  std::vector<std::vector<std::size_t>> d(a.size() + 1, std::vector<std::size_t>(b.size() + 1));
+  for (std::size_t i = 0; i <= a.size(); ++i) d[i][0] = i;
+  for (std::size_t j = 0; j <= b.size(); ++j) d[0][j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i)
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      d[i][j] = std::min({d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1]) d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
+    }
+  return d[a.size()][b.size()];
+}
+// close enough to be a typo of the other: at most a third of the longer key's letters wrong, at least 1
+inline bool is_typo_of(const std::string& typed, const std::string& meant) {
+  if (typed.size() > 200 || meant.size() > 200) return false;  // no quadratic work on a pasted value
+  const std::size_t d = key_distance(typed, meant);
+  return d > 0 && d <= std::max<std::size_t>(1, std::max(typed.size(), meant.size()) / 3);
+}
 
 // checks shared by the sections
 inline std::string positive_finite(double v) { return v > 0 && std::isfinite(v) ? "" : "must be > 0 and finite"; }
@@ -232,15 +255,20 @@ class YamlMap {
     throw CaseError(location() + ": " + (path_.empty() ? "" : path_ + ": ") + what);
   }
 
-  // every key present must have been asked for
+  // every key present must have been asked for; an unknown key is named with the closest valid one
   void check_all_read() const {
     for (const Entry& e : entries_) {
       if (asked_.count(e.key)) continue;
-      std::string valid;
-      for (const std::string& k : asked_) valid += (valid.empty() ? "" : ", ") + k;
-      throw CaseError(yaml_location(file_, e.key_node.Mark()) + ": " + key_path(e.key) + ": unknown key" +
-                      (valid.empty() ? std::string(" (this mapping takes no keys)")
-                                     : " (valid: " + valid + ")"));
+      std::string valid, closest;
+      std::size_t closest_distance = 0;
+      for (const std::string& k : asked_) {
+        valid += (valid.empty() ? "" : ", ") + k;
+        if (!is_typo_of(e.key, k)) continue;
+        const std::size_t d = key_distance(e.key, k);
+        if (closest.empty() || d < closest_distance) closest = k, closest_distance = d;
+      }
+      unknown_key(e, closest.empty() ? std::string() : "did you mean '" + closest + "'?",
+                  valid.empty() ? std::string("this mapping takes no keys") : "valid: " + valid);
     }
   }
 
@@ -298,8 +326,17 @@ class YamlMap {
     sub.check_all_read();
   }
 
+  // a required key that is absent: if a key not (yet) asked for is a typo of it, the error is that key's,
+  // at its line ("frction: unknown key, did you mean 'friction'?"), else at this mapping
   [[noreturn]] void fail_here_missing(const std::string& key, const std::string& what) const {
+    for (const Entry& e : entries_)
+      if (!asked_.count(e.key) && is_typo_of(e.key, key))
+        unknown_key(e, "did you mean '" + key + "'?", key_path(key) + ": " + what);
     throw CaseError(location() + ": " + key_path(key) + ": " + what);
+  }
+  [[noreturn]] void unknown_key(const Entry& e, const std::string& suggestion, const std::string& note) const {
+    throw CaseError(yaml_location(file_, e.key_node.Mark()) + ": " + key_path(clipped(e.key)) + ": unknown key" +
+                    (suggestion.empty() ? "" : ", " + suggestion) + " (" + note + ")");
   }
 
   YAML::Node node_;

@@ -7,6 +7,8 @@
 //   z = R - sign(R) sqrt(R^2 - y^2) = y^2 / (R + sign(R) sqrt(R^2 - y^2)),
 // the second form free of cancellation near the crown.
 #include "lib/normal/profile.h"
+#include "lib/io/csv_reader.h"
+#include "lib/io/errors.h"
 
 #include <cstring>
 
@@ -39,12 +41,6 @@ std::string full(double v) {
   return buf;
 }
 
-std::string trim(const std::string& s) {
-  const auto first = s.find_first_not_of(" \t\r\n");
-  if (first == std::string::npos) return "";
-  const auto last = s.find_last_not_of(" \t\r\n");
-  return s.substr(first, last - first + 1);
-}
 
 // the checks shared by validate_profile and the CSV reader; where(i) names point i
 void check_points(const Profile& p, const std::function<std::string(int)>& where, const std::string& whole) {
@@ -132,45 +128,36 @@ void validate_profile(const Profile& profile) {
 }
 
 Profile read_profile_csv(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw std::invalid_argument(path + ": cannot open the profile file");
+  CsvTable t;
+  try {
+    t = read_csv_table(path);  // lib/io/csv_reader.h
+  } catch (const std::runtime_error&) {
+    throw std::invalid_argument(path + ": cannot open the profile file");
+  }
   Profile p;
   p.source = path;
   std::vector<double> ys, zs;
   std::vector<int> lines;  // file line of each point
-  bool header = false;
-  std::string raw;
-  int line = 0;
   auto where = [&path](int l) { return path + ":" + std::to_string(l); };
-  while (std::getline(in, raw)) {
-    ++line;
-    const std::string text = trim(raw);
-    if (text.empty() || text[0] == '#') continue;
-    // split at commas
-    std::vector<std::string> fields;
-    std::stringstream ss(text);
-    std::string field;
-    while (std::getline(ss, field, ',')) fields.push_back(trim(field));
-    if (text.back() == ',') fields.emplace_back();
-    if (!header) {
-      if (fields.size() != 2 || fields[0] != "y_m" || fields[1] != "z_m")
-        throw std::invalid_argument(where(line) + ": expected the header 'y_m,z_m' (SI units, metres), got '" +
-                                    text + "'");
-      header = true;
-      continue;
-    }
+  const bool header = !t.header.empty();
+  if (header && (t.header.size() != 2 || t.header[0] != "y_m" || t.header[1] != "z_m"))
+    throw std::invalid_argument(where(t.header_line) + ": expected the header 'y_m,z_m' (SI units, metres), got '" +
+                                clipped(t.header_text) + "'");
+  for (std::size_t r = 0; r < t.rows.size(); ++r) {
+    const std::vector<std::string>& fields = t.rows[r];
+    const int line = t.row_lines[r];
     if (fields.size() != 2)
       throw std::invalid_argument(where(line) + ": expected 2 columns y_m,z_m, got " + std::to_string(fields.size()) +
-                                  ": '" + text + "'");
+                                  ": '" + clipped(t.row_texts[r]) + "'");
     double v[2];
     for (int k = 0; k < 2; ++k) {
       const char* name = k == 0 ? "y_m" : "z_m";
       char* end = nullptr;
       v[k] = std::strtod(fields[k].c_str(), &end);
       if (fields[k].empty() || end != fields[k].c_str() + fields[k].size())
-        throw std::invalid_argument(where(line) + ": " + name + " is not a number, got '" + fields[k] + "'");
+        throw std::invalid_argument(where(line) + ": " + name + " is not a number, got '" + clipped(fields[k]) + "'");
       if (!std::isfinite(v[k]))
-        throw std::invalid_argument(where(line) + ": " + name + " must be finite, got " + fields[k]);
+        throw std::invalid_argument(where(line) + ": " + name + " must be finite, got " + clipped(fields[k]));
     }
     if (!ys.empty() && !(v[0] > ys.back()))
       throw std::invalid_argument(where(line) + ": y_m must increase, got " + num(v[0]) + " after " + num(ys.back()));

@@ -15,6 +15,7 @@
 // Upwind and Lax-Friedrichs steps update the interior nodes from the old values of their neighbours
 // (0 outside the contact) and clip to mu p at the node; see explicit_strip for their energy.
 #include "lib/tangential/satran.h"
+#include "lib/io/errors.h"
 
 #include <spdlog/spdlog.h>
 
@@ -592,25 +593,25 @@ void check_run(const TransientCase& c) {
   check_history(c.inputs.eta, "eta");
   check_history(c.inputs.phi_per_m, "phi_per_m");
   check_history(c.inputs.normal_load_N, "normal_load_N");
-  if (min_value(c.inputs.speed_m_per_s) < 0) throw std::invalid_argument("speed_m_per_s: must be >= 0");
-  if (min_value(c.inputs.normal_load_N) < 0) throw std::invalid_argument("normal_load_N: must be >= 0");
-  if (!(max_value(c.inputs.normal_load_N) > 0)) throw std::invalid_argument("normal_load_N: never positive");
-  if (!(s.t_end_s > 0) || !std::isfinite(s.t_end_s)) throw std::invalid_argument("t_end_s: must be positive");
-  if (!(s.dt_s >= 0) || !std::isfinite(s.dt_s)) throw std::invalid_argument("dt_s: must be >= 0");
+  if (min_value(c.inputs.speed_m_per_s) < 0) throw SettingError("", "speed_m_per_s", "must be >= 0");
+  if (min_value(c.inputs.normal_load_N) < 0) throw SettingError("", "normal_load_N", "must be >= 0");
+  if (!(max_value(c.inputs.normal_load_N) > 0)) throw SettingError("", "normal_load_N", "never positive");
+  if (!(s.t_end_s > 0) || !std::isfinite(s.t_end_s)) throw SettingError("", "t_end_s", "must be positive");
+  if (!(s.dt_s >= 0) || !std::isfinite(s.dt_s)) throw SettingError("", "dt_s", "must be >= 0");
   if (s.scheme != TransientScheme::Shift && !(s.dt_s > 0))
-    throw std::invalid_argument("dt_s: the " + to_string(s.scheme) + " scheme needs a time step");
+    throw SettingError("", "dt_s", "the " + to_string(s.scheme) + " scheme needs a time step");
   if (c.patch && !(is_constant(c.inputs.normal_load_N) && c.inputs.normal_load_N.value[0] == c.patch->normal_load_N))
-    throw std::invalid_argument("normal_load_N: a run on a given contact patch needs the constant load of the patch, " +
+    throw SettingError("", "normal_load_N", "a run on a given contact patch needs the constant load of the patch, " +
                                 std::to_string(c.patch->normal_load_N) + " N");
   if (c.inertia) {
     const RollerInertia& in = *c.inertia;
     check_history(in.path_speed_m_per_s, "path_speed_m_per_s");
     if (!(in.R1_m > 0) || !(in.J1_kg_m2 > 0))
-      throw std::invalid_argument("inertia: R1_m and J1_kg_m2 must be positive");
+      throw SettingError("", "inertia", "R1_m and J1_kg_m2 must be positive");
     if (min_value(in.path_speed_m_per_s) < 0 || in.omega1_0_rad_per_s < 0)
-      throw std::invalid_argument("inertia: the path speed and the initial spin must be >= 0");
-    if (!(s.dt_s > 0)) throw std::invalid_argument("dt_s: an inertia run needs the longest step dt_s > 0");
-    if (s.scheme != TransientScheme::Shift) throw std::invalid_argument("scheme: an inertia run uses shift");
+      throw SettingError("", "inertia", "the path speed and the initial spin must be >= 0");
+    if (!(s.dt_s > 0)) throw SettingError("", "dt_s", "an inertia run needs the longest step dt_s > 0");
+    if (s.scheme != TransientScheme::Shift) throw SettingError("", "scheme", "an inertia run uses shift");
   }
 }
 
@@ -691,10 +692,11 @@ TransientResult run_transient(const TransientCase& c, const StepObserver& observ
     const double cfl = vmax * set.dt_s / dx;
     if (cfl > 1 + 1e-12) {
       if (!set.substep)
-        throw std::invalid_argument("dt_s: " + std::to_string(set.dt_s) + " s breaks the CFL condition (V dt/dx = " +
+        throw CflBreach("dt_s", std::to_string(set.dt_s) + " s breaks the CFL condition (V dt/dx = " +
                                     std::to_string(cfl) + " > 1 at V = " + std::to_string(vmax) +
                                     " m/s, dx = " + std::to_string(dx) + " m); the largest allowed dt is " +
-                                    std::to_string(dx / vmax) + " s (or set substep: true)");
+                                    std::to_string(dx / vmax) + " s (or set substep: true)",
+                        set.dt_s, vmax, dx);
       substeps = static_cast<int>(std::ceil(cfl - 1e-12));
     }
   }
