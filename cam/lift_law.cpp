@@ -130,7 +130,10 @@ LiftLaw make_dwell_rise_dwell_return(const DwellRiseDwellReturn& d) {
     const double a_left = segment_at(left, left.start_rad + left.duration_rad).d2s_m_per_rad2;
     const double a_right = segment_at(right, right.start_rad).d2s_m_per_rad2;
     if (std::abs(a_left - a_right) > kAccelerationJumpRtol * law.max_abs_d2s_m_per_rad2)
-      throw CamError(CamErrorKind::AccelerationJump, at, i == 0 || i + 1 == n ? "lift.rise_law" : "lift.return_law",
+      // the key of the moving segment whose end acceleration does not vanish
+      throw CamError(CamErrorKind::AccelerationJump, at,
+                     (std::abs(a_left) >= std::abs(a_right) ? left : right).rise_m > 0 ? "lift.rise_law"
+                                                                                       : "lift.return_law",
                      fmt::format("the acceleration jumps at cam angle {:.6g} deg from {:.6g} to {:.6g} m/rad^2 "
                                  "({} meets {}): use a law whose acceleration vanishes at its ends "
                                  "(cycloidal, polynomial-345), or harmonic rise and return of equal length "

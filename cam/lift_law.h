@@ -71,9 +71,10 @@ struct LiftLaw {
 // relative size of an acceleration jump that refuses a law: the ends of cycloidal and 3-4-5 segments
 // vanish to rounding (sin 2 pi ~ 2.4e-16); a harmonic next to a dwell jumps by its full peak
 constexpr double kAccelerationJumpRtol = 1e-9;
-// Jacobi iterations of the spline system stop below this change relative to max |c| (the contraction
-// factor is 54/66 per sweep, so ~190 sweeps)
-constexpr double kSplineSolveRtol = 1e-15;
+// Jacobi sweeps of the spline system stop when a sweep changes no coefficient by more than this times
+// max |s|: the contraction factor is 54/66 per sweep, so the error left is below 4.5 times that change
+// (~150 sweeps; 1e-15 would stall on the rounding of 120 s/66)
+constexpr double kSplineSolveRtol = 1e-13;
 
 // throws std::invalid_argument for bad sizes (beta <= 0, lift <= 0, rise + dwell + return > 2 pi),
 // CamError AccelerationJump naming the boundary's angle
