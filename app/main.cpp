@@ -799,7 +799,7 @@ int run_cam_command(const CamOptions& opt) {
     fmt::print("jump speed: {:.6g} rpm ({:.6g} rad/s), limited at cam angle {:.6g} deg\n",
                r.jump.omega_rad_per_s * rpm_per_rad_s, r.jump.omega_rad_per_s, r.jump.at_theta_rad * cam::kDegPerRad);
   if (r.status == cam::RevolutionStatus::Jump) {
-    fmt::print("status: jump (the follower leaves the cam at cam angle {:.6g} deg; no impact model): no table written\n",
+    fmt::print("status: jump (the contact is lost around cam angle {:.6g} deg; no impact model): no table written\n",
                r.jump_at_theta_rad * cam::kDegPerRad);
     return kExitFailure;
   }
