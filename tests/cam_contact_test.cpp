@@ -139,4 +139,37 @@ TEST(CamContact, RegimeFollowsTheCriterionOverTheRevolution) {
   EXPECT_EQ(sliding, r.sliding_steps);
 }
 
+// a steep lift on a small base circle has concave flanks (rho_p < 0): the cam's radius there is
+// rho_p - R_r < 0 and the contact is Hertz's with that concave radius along the rolling direction
+TEST(CamContact, ConcaveFlankGivesHertzWithTheConcaveRadius) {
+  CamModel m = dwell_model(0);
+  m.geometry = {0.010, 0.005, 0};
+  DwellRiseDwellReturn d;
+  d.lift_m = 0.02;
+  d.rise_rad = 60 * kDeg;
+  d.dwell_high_rad = 30 * kDeg;
+  d.return_rad = 60 * kDeg;
+  m.law = make_dwell_rise_dwell_return(d);
+  m.min_radius_m = 0;
+  m.max_pressure_angle_rad = 80 * kDeg;
+  m.bodies.roller_width_m = 0.006;
+  const Revolution r = run_revolution(m);
+  ASSERT_EQ(r.status, RevolutionStatus::Complete);
+  int concave = 0;
+  for (const RevolutionRow& w : r.rows) {
+    if (!(w.kin.pitch_curvature_per_m < 0)) continue;
+    ++concave;
+    const double rho_cam = cam_radius_m(w.kin);
+    EXPECT_NEAR(rho_cam, 1 / w.kin.pitch_curvature_per_m - m.geometry.roller_radius_m, 1e-12);
+    EXPECT_LT(rho_cam, -m.geometry.roller_radius_m);  // the roller fits the hollow
+    const double Ry = 1 / contact::fit_parabola(roller_and_track_profiles(m.bodies).body1).curvature_per_m;
+    const contact::HertzContact h = contact::solve_hertz({{m.geometry.roller_radius_m, Ry}, {rho_cam, kInf}},
+                                                         m.bodies.pair, w.loads.normal_N);
+    EXPECT_NEAR(w.contact.a_m, h.a_m, 1e-9 * h.a_m);
+    EXPECT_NEAR(w.contact.p0_Pa, h.p0_Pa, 1e-9 * h.p0_Pa);
+  }
+  EXPECT_GT(concave, 0);
+  EXPECT_NE(revolution_csv(r).find(",concave,"), std::string::npos);
+}
+
 }  // namespace
