@@ -36,6 +36,8 @@
 #include "lib/tangential/steady.h"
 #include "lib/tangential/tangential.h"
 #include "app/plot.h"
+#include "cam/cam_case.h"
+#include "cam/revolution.h"
 #include "wear/wear_case.h"
 #include "wear/wear_loop.h"
 #include "wear/wear_output.h"
@@ -754,6 +756,78 @@ int run_run_command(const RunOptions& opt) {
   return life.ended_by == LifeEnd::Failed || life.ended_by == LifeEnd::NotRun ? kExitFailure : 0;
 }
 
+// ---- cam: one revolution of a disc cam with a translating roller follower ---------------------------
+
+struct CamOptions {
+  std::string case_path;
+  std::string output_directory;
+};
+
+CLI::App* add_cam_command(CLI::App& app, CamOptions& opt, CommonOptions& common) {
+  CLI::App* sub = app.add_subcommand(
+      "cam", "One revolution of a disc cam at constant speed with a translating roller follower (cam: section, "
+             "docs/cam-follower.md): lift, pressure angle, radius of curvature, loads, the Hertz contact and the "
+             "roller's regime at each cam angle. Prints the jump speed and a summary; writes revolution.csv.");
+  sub->footer(
+      "Above the jump speed the run stops with status jump (no table written), exit 1.\n"
+      "A design the model refuses (acceleration jump, table fit, undercut, pressure angle) is bad input at its\n"
+      "key's line, naming the cam angle.\n"
+      "Exit status: 0 success, 2 bad input (case file, options), 1 any other failure.");
+  sub->add_option("case", opt.case_path, "Cam case file (YAML), e.g. cases/cam-follower.yaml")->required();
+  sub->add_option("-o,--output", opt.output_directory,
+                  "Output directory (default: the case's output.directory, else out/<case name>)");
+  add_log_level_option(*sub, common);
+  return sub;
+}
+
+int run_cam_command(const CamOptions& opt) {
+  const cam::CamCase c = cam::read_cam_case(opt.case_path);
+  const std::filesystem::path dir = !opt.output_directory.empty()   ? std::filesystem::path(opt.output_directory)
+                                    : !c.output_directory.empty() ? std::filesystem::path(c.output_directory)
+                                                                   : std::filesystem::path("out") / c.name;
+  cam::Revolution r;
+  try {
+    r = cam::run_revolution(c.model);
+  } catch (const cam::CamError& e) {
+    throw cam::case_error_of(c, e);
+  }
+  const double rpm_per_rad_s = 60 / (2 * kPi);
+  fmt::print("cam {}: {:.6g} rpm\n", c.name, c.model.omega_rad_per_s * rpm_per_rad_s);
+  if (std::isinf(r.jump.omega_rad_per_s))
+    fmt::print("jump speed: none (the lift's acceleration is never negative)\n");
+  else
+    fmt::print("jump speed: {:.6g} rpm ({:.6g} rad/s), limited at cam angle {:.6g} deg\n",
+               r.jump.omega_rad_per_s * rpm_per_rad_s, r.jump.omega_rad_per_s, r.jump.at_theta_rad * cam::kDegPerRad);
+  if (r.status == cam::RevolutionStatus::Jump) {
+    fmt::print("status: jump (the contact is lost around cam angle {:.6g} deg; no impact model): no table written\n",
+               r.jump_at_theta_rad * cam::kDegPerRad);
+    return kExitFailure;
+  }
+  double fn_max = 0, p0_max = 0, phi_max = 0, t_max = 0, rho_min = std::numeric_limits<double>::infinity();
+  double at_p0 = 0, at_phi = 0;
+  for (const cam::RevolutionRow& w : r.rows) {
+    fn_max = std::max(fn_max, w.loads.normal_N);
+    if (w.contact.p0_Pa > p0_max) p0_max = w.contact.p0_Pa, at_p0 = w.kin.theta_rad;
+    if (std::abs(w.kin.pressure_angle_rad) > phi_max) phi_max = std::abs(w.kin.pressure_angle_rad), at_phi = w.kin.theta_rad;
+    t_max = std::max(t_max, std::abs(w.loads.shaft_torque_N_m));
+    if (w.kin.cam_curvature_per_m > 0) rho_min = std::min(rho_min, 1 / w.kin.cam_curvature_per_m);
+  }
+  fmt::print("status: complete, {} angle steps, cam circumference {:.6g} m\n", r.rows.size(), r.cam_circumference_m);
+  fmt::print("max |pressure angle| {:.4g} deg at {:.4g} deg; min convex cam radius {:.4g} m\n", phi_max * cam::kDegPerRad,
+             at_phi * cam::kDegPerRad, rho_min);
+  fmt::print("max normal load {:.5g} N; max peak pressure {:.5g} MPa at {:.4g} deg; max |shaft torque| {:.5g} N m\n",
+             fn_max, p0_max * 1e-6, at_p0 * cam::kDegPerRad, t_max);
+  fmt::print("roller: sliding at {} of {} angle steps, rolling outside the linear range at {}\n", r.sliding_steps,
+             r.rows.size(), r.outside_linear_steps);
+  if (r.edge_steps > 0)
+    fmt::print("warning: the contact reaches a body's edge at {} angle steps\n", r.edge_steps);
+  const OutputLock lock(dir);
+  remove_stale_temporaries(dir);
+  write_files_atomic({{dir / "revolution.csv", cam::revolution_csv(r)}});
+  spdlog::info("wrote revolution.csv to {}", dir.string());
+  return 0;
+}
+
 int main(int argc, char** argv) {
   CLI::App app{"rollwear: wear of bodies in rolling contact (Hertz normal problem, Kalker's simplified "
                "theory for the tangential one, steady or transient).",
@@ -772,6 +846,8 @@ int main(int argc, char** argv) {
   CLI::App* transient_cmd = add_transient_command(app, transient_opt, common);
   RunOptions run_opt;
   CLI::App* run_cmd = add_run_command(app, run_opt, common);
+  CamOptions cam_opt;
+  CLI::App* cam_cmd = add_cam_command(app, cam_opt, common);
   std::string plot_dir;
   CLI::App* plot_cmd = app.add_subcommand("plot", "PNG plots of a wear run's output folder (gnuplot): the worn "
                                                   "profiles at every snapshot, depth and peak pressure against "
@@ -792,6 +868,7 @@ int main(int argc, char** argv) {
     if (contact_cmd->parsed()) return run_contact(contact_opt);
     if (transient_cmd->parsed()) return run_transient_command(transient_opt);
     if (run_cmd->parsed()) return run_run_command(run_opt);
+    if (cam_cmd->parsed()) return run_cam_command(cam_opt);
     if (plot_cmd->parsed()) return plot_command(plot_dir);
     print_error("no subcommand ran");
     return kExitBadInput;

@@ -1,0 +1,161 @@
+// Reading a cam case (cam/cam_case.h).
+#include "cam/cam_case.h"
+
+#include <cmath>
+#include <filesystem>
+#include <limits>
+
+#include "lib/io/yaml_reader.h"
+#include "lib/numeric.h"
+
+namespace cam {
+
+using contact::CaseError;
+using contact::YamlMap;
+using contact::YamlValue;
+
+namespace {
+
+std::string positive_or_inf(double v) { return v > 0 ? "" : "must be > 0 (.inf for flat)"; }
+std::string poisson(double v) { return v >= 0 && v < 0.5 ? "" : "must be in [0, 0.5)"; }
+
+void read_lift(YamlMap& s, CamCase& c, double table_tolerance) {
+  if (s.optional_value("table", [&](const YamlValue& v) {
+        std::vector<double> lift;
+        std::vector<double> angle;
+        int row = 0;
+        for (const YamlValue& r : v.elements("a list of [angle_deg, lift_m] rows")) {
+          ++row;
+          const std::vector<YamlValue> pair = r.elements("a row [angle_deg, lift_m]");
+          if (pair.size() != 2) r.fail(fmt::format("row {}: expected [angle_deg, lift_m]", row));
+          angle.push_back(pair[0].as<double>(contact::finite, fmt::format("row {}: angle_deg", row)));
+          lift.push_back(pair[1].as<double>(contact::finite, fmt::format("row {}: lift_m", row)));
+        }
+        const std::size_t n = lift.size();
+        if (n < 8) v.fail(fmt::format("a lift table needs at least 8 rows, got {}", n));
+        for (std::size_t i = 0; i < n; ++i) {
+          const double want = 360.0 * static_cast<double>(i) / static_cast<double>(n);
+          if (std::abs(angle[i] - want) > 1e-9 * 360)
+            v.fail(fmt::format("row {}: angle_deg must be {:.10g} (equal steps of 360/{} from 0, 360 excluded), got "
+                               "{:.10g}", i + 1, want, n, angle[i]));
+        }
+        try {
+          c.model.law = make_table_law(lift, table_tolerance);
+        } catch (const CamError& e) {
+          throw case_error_of(c, e);
+        }
+      }))
+    return;
+  DwellRiseDwellReturn d;
+  std::string rise_law, return_law;
+  const auto law_name = [](const std::string& v) -> std::string {
+    try {
+      const SegmentLaw l = parse_segment_law(v);
+      return l == SegmentLaw::Dwell ? "must be cycloidal, polynomial-345 or harmonic" : "";
+    } catch (const std::invalid_argument& e) {
+      return e.what();
+    }
+  };
+  s.required("rise_law", rise_law, law_name);
+  s.required("return_law", return_law, law_name);
+  s.required("lift_m", d.lift_m, contact::positive_finite);
+  double rise_deg = 0, dwell_deg = 0, return_deg = 0;
+  s.required("rise_deg", rise_deg, contact::positive_finite);
+  s.optional("dwell_high_deg", dwell_deg, contact::nonnegative_finite);
+  s.required("return_deg", return_deg, contact::positive_finite);
+  if (rise_deg + dwell_deg + return_deg > 360)
+    s.fail("return_deg", fmt::format("rise_deg + dwell_high_deg + return_deg = {:.6g} must be <= 360",
+                                     rise_deg + dwell_deg + return_deg));
+  d.rise_law = parse_segment_law(rise_law);
+  d.return_law = parse_segment_law(return_law);
+  d.rise_rad = rise_deg / kDegPerRad;
+  d.dwell_high_rad = dwell_deg / kDegPerRad;
+  d.return_rad = return_deg / kDegPerRad;
+  try {
+    c.model.law = make_dwell_rise_dwell_return(d);
+  } catch (const CamError& e) {
+    throw case_error_of(c, e);
+  }
+}
+
+}  // namespace
+
+contact::CaseError case_error_of(const CamCase& c, const CamError& e) {
+  const std::string key = "cam." + e.key;
+  std::string where;
+  for (std::string k = key;;) {  // the key's place, else its closest enclosing section's
+    const auto it = c.locations.find(k);
+    if (it != c.locations.end()) {
+      where = it->second;
+      break;
+    }
+    const std::size_t dot = k.rfind('.');
+    if (dot == std::string::npos) break;
+    k = k.substr(0, dot);
+  }
+  if (where.empty()) where = c.path;
+  return CaseError(where + ": " + key + ": " + e.what());
+}
+
+CamCase read_cam_case(const std::string& path) {
+  CamCase c;
+  c.path = path;
+  c.name = std::filesystem::path(path).stem().string();
+  CamModel& m = c.model;
+  contact::read_yaml_file(path, &c.locations, [&](YamlMap& top) {
+    top.optional("name", c.name, [](const std::string& v) { return v.empty() ? "must not be empty" : ""; });
+    top.optional_section("output", [&](YamlMap& s) { s.optional("directory", c.output_directory); });
+    top.section("cam", [&](YamlMap& s) {
+      double rpm = 0, phi_max_deg = 30, table_tolerance = 0.02;
+      s.required("speed_rpm", rpm, contact::positive_finite);
+      m.omega_rad_per_s = rpm * 2 * contact::kPi / 60;
+      s.required("base_radius_m", m.geometry.base_radius_m, contact::positive_finite);
+      s.optional("offset_m", m.geometry.offset_m, contact::finite);
+      s.required("mu", m.mu, contact::in_closed(0, 2));
+      s.required("min_radius_m", m.min_radius_m, contact::nonnegative_finite);
+      s.optional("max_pressure_angle_deg", phi_max_deg, [](double v) {
+        return v > 0 && v < 90 ? "" : "must be in (0, 90)";
+      });
+      m.max_pressure_angle_rad = phi_max_deg / kDegPerRad;
+      s.optional("table_tolerance", table_tolerance, contact::positive_finite);
+      s.optional("angle_steps", m.angle_steps, [](int v) { return v >= 8 && v <= 1000000 ? "" : "must be in [8, 1000000]"; });
+      s.section("roller", [&](YamlMap& r) {
+        r.required("radius_m", m.geometry.roller_radius_m, contact::positive_finite);
+        r.required("width_m", m.bodies.roller_width_m, contact::positive_finite);
+        m.bodies.roller_crown_radius_m = std::numeric_limits<double>::infinity();
+        r.optional("crown_radius_m", m.bodies.roller_crown_radius_m, positive_or_inf);
+        r.required("E_Pa", m.bodies.pair.body1.E_Pa, contact::positive_finite);
+        r.required("nu", m.bodies.pair.body1.nu, poisson);
+        r.optional("inertia_kg_m2", m.train.roller_inertia_kg_m2, contact::nonnegative_finite);
+        r.optional("bearing_torque_N_m", m.train.bearing_torque_N_m, contact::nonnegative_finite);
+        r.optional("bearing_drag_N_m_s", m.train.bearing_drag_N_m_s, contact::nonnegative_finite);
+        if (!std::isinf(m.bodies.roller_crown_radius_m) && m.bodies.roller_width_m >= 2 * m.bodies.roller_crown_radius_m)
+          r.fail("crown_radius_m", "must exceed half the roller's width_m");
+      });
+      s.section("track", [&](YamlMap& t) {
+        t.required("width_m", m.bodies.track_width_m, contact::positive_finite);
+        m.bodies.track_crown_radius_m = std::numeric_limits<double>::infinity();
+        t.optional("crown_radius_m", m.bodies.track_crown_radius_m, positive_or_inf);
+        t.required("E_Pa", m.bodies.pair.body2.E_Pa, contact::positive_finite);
+        t.required("nu", m.bodies.pair.body2.nu, poisson);
+        if (!std::isinf(m.bodies.track_crown_radius_m) && m.bodies.track_width_m >= 2 * m.bodies.track_crown_radius_m)
+          t.fail("crown_radius_m", "must exceed half the track's width_m");
+      });
+      if (std::isinf(m.bodies.roller_crown_radius_m) && std::isinf(m.bodies.track_crown_radius_m))
+        s.fail("roller", "a cylindrical roller on a flat track is a line contact: give roller.crown_radius_m or "
+                         "track.crown_radius_m");
+      s.section("follower", [&](YamlMap& f) {
+        f.required("spring_rate_N_per_m", m.train.spring_rate_N_per_m, contact::nonnegative_finite);
+        f.required("preload_N", m.train.preload_N, contact::positive_finite);
+        f.required("moving_mass_kg", m.train.moving_mass_kg, contact::positive_finite);
+        f.optional("guide_mu", m.train.guide_mu, contact::in_closed(0, 2));
+      });
+      if (!(std::abs(m.geometry.offset_m) < m.geometry.base_radius_m + m.geometry.roller_radius_m))
+        s.fail("offset_m", "|offset_m| must be < base_radius_m + roller.radius_m");
+      s.section("lift", [&](YamlMap& l) { read_lift(l, c, table_tolerance); });
+    });
+  });
+  return c;
+}
+
+}  // namespace cam

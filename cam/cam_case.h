@@ -1,0 +1,50 @@
+// A cam case file (docs/cam-follower.md §6, cases/cam-follower.yaml): the document's keys `name`, `cam`
+// and `output`, read with the project's case reader (lib/io/yaml_reader.h): every key marked, a key left
+// over is an error naming file:line:col and its key path, a bad value likewise. Angles are given in degrees
+// (keys ending _deg), everything else in SI units. A design the model refuses (CamError: an acceleration
+// jump, a table fit, an undercut, a pressure angle) becomes a CaseError at its governing key's line.
+//
+//   name: cam-follower
+//   cam:
+//     speed_rpm: 300                       # constant, > 0 (counter-clockwise)
+//     base_radius_m: 0.040
+//     offset_m: 0                          # follower axis at x = offset (optional)
+//     mu: 0.1                              # roller-cam friction
+//     min_radius_m: 0.003                  # convex pitch curve: rho_pitch - R_roller >= this
+//     max_pressure_angle_deg: 30
+//     table_tolerance: 0.02                # lift table only: relative acceleration misfit
+//     angle_steps: 720
+//     roller: { radius_m: 0.013, width_m: 0.010, crown_radius_m: 0.5, E_Pa: 2.1e11, nu: 0.3,
+//               inertia_kg_m2: 5.0e-6, bearing_torque_N_m: 0.002, bearing_drag_N_m_s: 1.0e-5 }
+//     track:  { width_m: 0.012, crown_radius_m: .inf, E_Pa: 2.1e11, nu: 0.3 }
+//     follower: { spring_rate_N_per_m: 2.0e4, preload_N: 150, moving_mass_kg: 0.4, guide_mu: 0.05 }
+//     lift: { rise_law: cycloidal, lift_m: 0.010, rise_deg: 100, dwell_high_deg: 40,
+//             return_law: polynomial-345, return_deg: 100 }
+//     # or lift: { table: [[0, 0.0], [1, 1.2e-6], ...] }   # [angle_deg, lift_m], equal steps from 0, < 360
+//   output: { directory: out/cam-follower }
+#pragma once
+
+#include <string>
+
+#include "cam/cam_error.h"
+#include "cam/revolution.h"
+#include "lib/io/errors.h"
+#include "lib/io/key_locations.h"
+
+namespace cam {
+
+struct CamCase {
+  std::string path;
+  std::string name;             // name: or the file's stem
+  std::string output_directory; // output.directory, or "" (out/<name>)
+  CamModel model;
+  contact::KeyLocations locations;
+};
+
+// throws contact::CaseError (file, line, key)
+CamCase read_cam_case(const std::string& path);
+
+// a CamError as bad input at its key's place in the case file: "FILE:LINE:COL: cam.key: what"
+contact::CaseError case_error_of(const CamCase& c, const CamError& e);
+
+}  // namespace cam
