@@ -15,6 +15,7 @@
 
 #include "lib/patch.h"
 #include "lib/numeric.h"
+#include "lib/tangential/strip_node.h"
 #include "lib/tangential/tangential.h"
 
 namespace contact {
@@ -31,12 +32,6 @@ struct StripRates {
 };
 
 StripRates strip_rates(const ContactPatch& patch, const TangentialProblem& problem, int j);
-
-struct StripNode {  // traction at a node
-  double tx = 0, ty = 0;  // Pa
-  double ex = 0, ey = 0;  // direction of tau, kept from the last slip (0 before any)
-  bool stick = true;
-};
 
 struct IntervalGeometry {
   double x_hi = 0, x_lo = 0;  // x_hi > x_lo, both within [-a_j, a_j]

@@ -8,6 +8,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "lib/elastic.h"
 #include "lib/tangential/kalker.h"
@@ -81,5 +82,48 @@ struct TangentialSolution {
   double creep_work_W = 0;  // V (xi Fx + eta Fy + phi Mz), the work of the creep forces
   double stick_fraction = 0;  // stick area / contact area
 };
+
+// What one strip adds to the patch's totals, per unit width: the steady solver's strips and a
+// Satran step's alike.
+struct StripTotals {
+  double Fx = 0, Fy = 0, Mz = 0;  // integrals of tau_x, tau_y and x tau_y - y tau_x along the strip
+  double dissipated = 0;          // a power (steady, W/m) or a step's energy (Satran, J/m)
+  double stick_length = 0;
+  double counted_length = 0;  // node or cell-centre schemes: the length their points stand for (0: the exact 2 a_j)
+};
+
+struct PatchTotals {
+  double Fx_N = 0, Fy_N = 0, Mz_N_m = 0;
+  double dissipated = 0;      // W or J, as the strips'
+  double stick_fraction = 0;  // the stick share of the length the scheme counts (node schemes: dx per node)
+};
+
+// The strips in contact (a_j > 0) summed into the patch's totals, each times dy. `Strip` is StripTotals
+// or a struct derived from it.
+template <class Strip>
+PatchTotals patch_totals(const ContactPatch& patch, const std::vector<Strip>& strips) {
+  const Grid& g = patch.grid;
+  PatchTotals t;
+  double stick_area = 0, area = 0;
+  for (int j = 0; j < g.ny; ++j) {
+    if (!(patch.half_length_m(j) > 0)) continue;
+    const StripTotals& s = strips[j];
+    t.Fx_N += s.Fx * g.dy_m;
+    t.Fy_N += s.Fy * g.dy_m;
+    t.Mz_N_m += s.Mz * g.dy_m;
+    t.dissipated += s.dissipated * g.dy_m;
+    stick_area += s.stick_length * g.dy_m;
+    area += (s.counted_length > 0 ? s.counted_length : 2 * patch.half_length_m(j)) * g.dy_m;
+  }
+  t.stick_fraction = area > 0 ? stick_area / area : 0;
+  return t;
+}
+
+// The invariants of one strip's totals (ROLLWEAR_ASSERT, per strip): finite; when `bounded`, the traction's
+// resultant within mu times the strip's load (the exact mu pi/2 p_j a_j for path integrals, mu p_j times
+// the counted length for node or cell-centre sums); when `energy_scale` > 0, no negative dissipation beyond
+// the rounding of that scale (the size of the terms the dissipation is the difference of).
+void check_strip_totals(const ContactPatch& patch, double mu, int j, const StripTotals& s, bool bounded = true,
+                        double energy_scale = 0);
 
 }  // namespace contact
