@@ -163,74 +163,91 @@ struct ShiftScratch {
 // crossing into slip. The strip's two end intervals go through the whole kernel. The fields need each
 // interval's integrals: when they are written, every interval goes through the whole kernel.
 template <bool kFields, bool kSpin, bool kLateral>
-StripEnergy shift_strip(const ContactPatch& patch, const StripRates& r, int j, double L, const StepKinematics& k,
-                        ShiftScratch& scratch, TransientState& state, StepResult* fields) {
-  const Grid& g = patch.grid;
-  const double a = r.a_m, dq = k.dq_m, dx = g.dx_m;
-  const double* x = scratch.x.data();
-  StripNode* node = &state.node(0, j);  // node[i] sits at x_edge(i)
-  const double* edge_p = &patch.edge_pressure_Pa(0, j);
-  StripEnergy e;
-  const int i_top = std::min(g.nx - 1, static_cast<int>(std::floor((a + g.half_x_m) / g.dx_m)));
-  const int i_bot = std::max(0, static_cast<int>(std::floor((-a + g.half_x_m) / g.dx_m)));
-  // the integrals add up over the strip (per interval only for the fields)
-  IntervalSums strip;
-  double hi2 = 0, lo2 = 0, trail2 = 0;  // sums of |tau|^2 at the upstream, downstream, trailing nodes
+class ShiftStrip {
+ public:
+  ShiftStrip(const ContactPatch& patch, const StripRates& r, int j, double L, const StepKinematics& k,
+             ShiftScratch& scratch, TransientState& state, StepResult* fields)
+      : patch_(patch), r_(r), j_(j), L_(L), k_(k), scratch_(scratch), fields_(fields), a_(r.a_m), dx_(patch.grid.dx_m),
+        x_(scratch.x.data()), node_(&state.node(0, j)), edge_p_(&patch.edge_pressure_Pa(0, j)) {}
 
+  // the step of the strip: the trailing edge's intervals, the interior ones (the stick pass in blocks, then
+  // those whose stick test failed), the leading edge's; every interval through the whole kernel where the
+  // fields are written or the interior is shorter than a block
+  StripEnergy step() {
+    const Grid& g = patch_.grid;
+    const int i_top = std::min(g.nx - 1, static_cast<int>(std::floor((a_ + g.half_x_m) / g.dx_m)));
+    const int i_bot = std::max(0, static_cast<int>(std::floor((-a_ + g.half_x_m) / g.dx_m)));
+    // the interior intervals first .. last (both ends strictly inside the strip)
+    int first = i_bot, last = i_top;
+    while (first <= last && !(x_[first] > -a_)) ++first;
+    while (last >= first && !(x_[last + 1] < a_)) --last;
+    if (kFields || last - first + 1 < kBlock) {
+      for (int i = i_bot; i <= i_top; ++i) whole_interval(i);
+    } else {
+      for (int i = i_bot; i < first; ++i) whole_interval(i);
+      failed_intervals(stick_pass(first, last));
+      for (int i = last + 1; i <= i_top; ++i) whole_interval(i);
+    }
+    return energies();
+  }
+
+ private:
   // interval i: its part of the strip and the bound at x_lo (0 at the trailing edge)
-  auto geometry = [&](int i) {
+  IntervalGeometry geometry(int i) const {
     IntervalGeometry geo;
-    geo.x_hi = std::min(x[i + 1], a);
-    geo.x_lo = std::max(x[i], -a);
-    geo.bound_lo_Pa = geo.x_lo > -a ? r.mu * edge_p[i] : 0.0;
-    geo.load_N_per_m = patch.pressure_Pa(i, j) * dx;
-    geo.moment_N = patch.pressure_moment_Pa_m(i, j) * dx;
+    geo.x_hi = std::min(x_[i + 1], a_);
+    geo.x_lo = std::max(x_[i], -a_);
+    geo.bound_lo_Pa = geo.x_lo > -a_ ? r_.mu * edge_p_[i] : 0.0;
+    geo.load_N_per_m = patch_.pressure_Pa(i, j_) * dx_;
+    geo.moment_N = patch_.pressure_moment_Pa_m(i, j_) * dx_;
     return geo;
-  };
+  }
+
   // the totals of interval i from its old upstream node hi, and the new node lo (the trailing edge's
   // carries its energy out of the contact)
-  auto record = [&](int i, const IntervalGeometry& geo, const StripNode& hi, const StripNode& lo,
-                    const IntervalSums& cell) {
-    add_interval_sums(strip, cell);
-    hi2 += hi.tx * hi.tx + hi.ty * hi.ty;
-    lo2 += lo.tx * lo.tx + lo.ty * lo.ty;
-    if (geo.x_lo > -a) {
-      node[i] = lo;
+  void record(int i, const IntervalGeometry& geo, const StripNode& hi, const StripNode& lo, const IntervalSums& cell) {
+    add_interval_sums(strip_, cell);
+    hi2_ += hi.tx * hi.tx + hi.ty * hi.ty;
+    lo2_ += lo.tx * lo.tx + lo.ty * lo.ty;
+    if (geo.x_lo > -a_) {
+      node_[i] = lo;
     } else {
-      trail2 = lo.tx * lo.tx + lo.ty * lo.ty;
+      trail2_ = lo.tx * lo.tx + lo.ty * lo.ty;
     }
     if constexpr (kFields) {
       const double h = geo.x_hi - geo.x_lo;
-      fields->tau_x_Pa(i, j) = cell.Ix / dx;
-      fields->tau_y_Pa(i, j) = cell.Iy / dx;
-      fields->slip_x_m_per_s(i, j) = L * dq / k.dt_s * cell.slip_x / h;
-      fields->slip_y_m_per_s(i, j) = L * dq / k.dt_s * cell.slip_y / h;
+      fields_->tau_x_Pa(i, j_) = cell.Ix / dx_;
+      fields_->tau_y_Pa(i, j_) = cell.Iy / dx_;
+      fields_->slip_x_m_per_s(i, j_) = L_ * k_.dq_m / k_.dt_s * cell.slip_x / h;
+      fields_->slip_y_m_per_s(i, j_) = L_ * k_.dq_m / k_.dt_s * cell.slip_y / h;
     }
-  };
+  }
+
   // interval i through the whole kernel, from the old node i+1 (tau = 0 enters at the leading edge)
-  auto whole_interval = [&](int i) {
+  void whole_interval(int i) {
     const IntervalGeometry geo = geometry(i);
     if (!(geo.x_hi > geo.x_lo)) return;
-    const StripNode hi = geo.x_hi < a ? node[i + 1] : StripNode{};
+    const StripNode hi = geo.x_hi < a_ ? node_[i + 1] : StripNode{};
     IntervalSums cell;
-    const StripNode lo = whole_kernel<kSpin>(r, hi, geo, cell);
+    const StripNode lo = whole_kernel<kSpin>(r_, hi, geo, cell);
     record(i, geo, hi, lo, cell);
-  };
+  }
 
-  // the interior intervals first .. last; below them the trailing edge's, above them the leading edge's
-  int first = i_bot, last = i_top;
-  while (first <= last && !(x[first] > -a)) ++first;
-  while (last >= first && !(x[last + 1] < a)) --last;
-  if (kFields || last - first + 1 < kBlock) {
-    for (int i = i_bot; i <= i_top; ++i) whole_interval(i);
-  } else {
-    for (int i = i_bot; i < first; ++i) whole_interval(i);
-
-    // the stick pass, in blocks from the trailing side up; the last block is moved back to end at `last`,
-    // and its intervals below `from` were done by the block before. With spin Kalker's test also asks
-    // whether the stick solution stays inside the bound between the nodes, and a slip node whose slip
-    // stops dissipating sticks again (stick_step, spin_sticks): those intervals go to the whole kernel.
-    // (kSpin: compiled apart, so that without spin it does nothing more)
+  // The stick pass over the interior intervals first .. last, in blocks from the trailing side up; the last
+  // block is moved back to end at `last`, and its intervals below `from` were done by the block before. The
+  // intervals whose test fails are kept in the scratch (with their old upstream node) for failed_intervals;
+  // returns how many. With spin Kalker's test also asks whether the stick solution stays inside the bound
+  // between the nodes, and a slip node whose slip stops dissipating sticks again (stick_step, spin_sticks):
+  // those intervals fail too. (kSpin: compiled apart, so that without spin it does nothing more)
+  int stick_pass(int first, int last) {
+    const StripRates& r = r_;
+    const double* x = x_;
+    const double* edge_p = edge_p_;
+    StripNode* node = node_;
+    ShiftScratch& scratch = scratch_;
+    // the sums in registers through the pass (a node written may alias a member)
+    IntervalSums strip = strip_;
+    double hi2 = hi2_, lo2 = lo2_;
     const detail::BoundQuadratic bound_q = detail::bound_quadratic(r);
     int n_failed = 0;
     for (int from = first; from <= last; from += kBlock) {
@@ -343,11 +360,21 @@ StripEnergy shift_strip(const ContactPatch& patch, const StripRates& r, int j, d
       }
     }
 
-    // the intervals whose test failed: from a slip node the interval slips throughout (with spin until its
-    // slip stops dissipating, then it sticks again inside the interval, as in the kernel), from a stick node
-    // the whole kernel finds the crossing into slip, and so it does for the intervals of spin marked
-    // above. With a lateral creep rate the slip direction turns, and the turns from slip nodes
-    // are taken first, all at once (with xi alone they are asked for only where tau is not along x)
+    strip_ = strip;
+    hi2_ = hi2;
+    lo2_ = lo2;
+    return n_failed;
+  }
+
+  // The intervals whose stick test failed: from a slip node the interval slips throughout (with spin until
+  // its slip stops dissipating, then it sticks again inside the interval, as in the kernel), from a stick
+  // node the whole kernel finds the crossing into slip, and so it does for the intervals of spin marked by
+  // the stick pass. With a lateral creep rate the slip direction turns, and the turns from slip nodes are
+  // taken first, all at once (with xi alone they are asked for only where tau is not along x)
+  void failed_intervals(int n_failed) {
+    const StripRates& r = r_;
+    const double* x = x_;
+    ShiftScratch& scratch = scratch_;
     const bool turns = r.eta_L2_Pa_per_m != 0 || r.phi_L3_Pa_per_m2 != 0;
     for (int f = 0; turns && f < n_failed; ++f) {
       const int i = scratch.failed[f];
@@ -364,21 +391,44 @@ StripEnergy shift_strip(const ContactPatch& patch, const StripRates& r, int j, d
                                                                             : slip_throughout<kSpin>(r, hi, geo, turn, cell);
       record(i, geo, hi, lo, cell);
     }
-
-    for (int i = last + 1; i <= i_top; ++i) whole_interval(i);
   }
 
-  // energies of the strip: the per-interval formula summed (its last term telescopes)
-  e.creep = L * dq * creep_power_per_VL(r, strip);
-  e.dissipated = e.creep + L * dq * (hi2 - lo2) / 2;
-  e.E_start = hi2;  // the old interior nodes are the intervals' upstream nodes (the leading one is 0)
-  e.E_end = lo2 - trail2;  // the new ones their downstream nodes, but for the trailing edge's
-  e.trailing = L * dq * trail2 / 2;
-  e.Fx = strip.Ix;
-  e.Fy = strip.Iy;
-  e.Mz = strip.Ixy - r.y_m * strip.Ix;
-  e.stick_length = strip.stick_length_m;
-  return e;
+  // the strip's energies: the per-interval formula summed (its last term telescopes)
+  StripEnergy energies() const {
+    const double dq = k_.dq_m;
+    StripEnergy e;
+    e.creep = L_ * dq * creep_power_per_VL(r_, strip_);
+    e.dissipated = e.creep + L_ * dq * (hi2_ - lo2_) / 2;
+    e.E_start = hi2_;  // the old interior nodes are the intervals' upstream nodes (the leading one is 0)
+    e.E_end = lo2_ - trail2_;  // the new ones their downstream nodes, but for the trailing edge's
+    e.trailing = L_ * dq * trail2_ / 2;
+    e.Fx = strip_.Ix;
+    e.Fy = strip_.Iy;
+    e.Mz = strip_.Ixy - r_.y_m * strip_.Ix;
+    e.stick_length = strip_.stick_length_m;
+    return e;
+  }
+
+  const ContactPatch& patch_;
+  const StripRates& r_;
+  const int j_;
+  const double L_;
+  const StepKinematics& k_;
+  ShiftScratch& scratch_;
+  StepResult* fields_;
+  const double a_, dx_;
+  const double* x_;      // the nodes x_edge(i)
+  StripNode* node_;      // node_[i] sits at x_edge(i)
+  const double* edge_p_;
+  // the integrals add up over the strip (per interval only for the fields)
+  IntervalSums strip_;
+  double hi2_ = 0, lo2_ = 0, trail2_ = 0;  // sums of |tau|^2 at the upstream, downstream, trailing nodes
+};
+
+template <bool kFields, bool kSpin, bool kLateral>
+StripEnergy shift_strip(const ContactPatch& patch, const StripRates& r, int j, double L, const StepKinematics& k,
+                        ShiftScratch& scratch, TransientState& state, StepResult* fields) {
+  return ShiftStrip<kFields, kSpin, kLateral>(patch, r, j, L, k, scratch, state, fields).step();
 }
 
 // one strip, upwind (lf = false) or Lax-Friedrichs (lf = true) at CFL = dq/dx, split in two:
