@@ -7,12 +7,14 @@
 //   d tau/dx = ( xi/L1 - phi y/L3 ,  eta/L2 + phi x/L3 ).
 #pragma once
 
+#include <cmath>
 #include <string>
 #include <vector>
 
 #include "lib/elastic.h"
 #include "lib/tangential/kalker.h"
 #include "lib/patch.h"
+#include "lib/numeric.h"
 
 namespace contact {
 
@@ -119,11 +121,30 @@ PatchTotals patch_totals(const ContactPatch& patch, const std::vector<Strip>& st
   return t;
 }
 
+// what check_strip_totals compares with and names: a strip's load per unit width as the scheme counts it
+// (the exact pi/2 p_j a_j, or p_j times the counted length), and the strip's totals as text
+inline double strip_load_N_per_m(const ContactPatch& patch, int j, const StripTotals& s) {
+  return s.counted_length > 0 ? patch.strip_peak_Pa(j) * s.counted_length
+                              : kPi / 2 * patch.strip_peak_Pa(j) * patch.half_length_m(j);
+}
+std::string strip_totals_text(int j, const StripTotals& s);
+
 // The invariants of one strip's totals (ROLLWEAR_ASSERT, per strip): finite; when `bounded`, the traction's
 // resultant within mu times the strip's load (the exact mu pi/2 p_j a_j for path integrals, mu p_j times
 // the counted length for node or cell-centre sums); when `energy_scale` > 0, no negative dissipation beyond
-// the rounding of that scale (the size of the terms the dissipation is the difference of).
-void check_strip_totals(const ContactPatch& patch, double mu, int j, const StripTotals& s, bool bounded = true,
-                        double energy_scale = 0);
+// the rounding of that scale (the size of the terms the dissipation is the difference of). A few
+// comparisons on the way (inline: the steady strips of a small grid cost some 100 ns each).
+inline void check_strip_totals(const ContactPatch& patch, double mu, int j, const StripTotals& s, bool bounded = true,
+                               double energy_scale = 0) {
+  constexpr double kRelative = 1e-9;  // rounding allowance: the sums run over at most a few thousand terms
+  // a sum of finite numbers of this size is finite; a nan or an infinity stays one
+  ROLLWEAR_ASSERT(std::isfinite(s.Fx + s.Fy + s.Mz + s.dissipated),
+                  strip_totals_text(j, s) + " not finite");
+  ROLLWEAR_ASSERT(!bounded || s.Fx * s.Fx + s.Fy * s.Fy <= std::pow(mu * strip_load_N_per_m(patch, j, s) * (1 + kRelative), 2),
+                  strip_totals_text(j, s) + fmt::format(": |F| above mu times the strip's load, {} N/m",
+                                                        mu * strip_load_N_per_m(patch, j, s)));
+  ROLLWEAR_ASSERT(!(energy_scale > 0) || s.dissipated >= -kRelative * energy_scale,
+                  strip_totals_text(j, s) + fmt::format(": dissipation below 0 (scale {})", energy_scale));
+}
 
 }  // namespace contact
