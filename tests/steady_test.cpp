@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <cstdio>
 #include <ostream>
 #include <string>
@@ -90,6 +91,37 @@ TEST(SteadyTangential, SolverReproducesTheClosedFormExample) {
     EXPECT_LT(error_F, previous / 2) << n;
     previous = error_F;
   }
+}
+
+// The strip invariants the solvers assert (strip_totals_hold): each one fails on the strip that breaks it.
+TEST(SteadyTangential, StripInvariantsCatchWhatTheyName) {
+  const ContactPatch p = paper_patch(20, 20);
+  const int j = 10;
+  const double mu = 0.3, load = kPi / 2 * p.strip_peak_Pa(j) * p.half_length_m(j);  // exact strip load, N/m
+  StripTotals s;
+  s.Fx = -0.6 * mu * load;
+  s.Fy = 0.6 * mu * load;  // |F| = 0.85 mu load
+  s.dissipated = 1.0;
+  EXPECT_TRUE(strip_totals_hold(p, mu, j, s, true, 1.0));
+  StripTotals bad = s;
+  bad.Fx = std::nan("");
+  EXPECT_FALSE(strip_totals_hold(p, mu, j, bad, true, 1.0));  // not finite
+  PatchTotals t;
+  EXPECT_TRUE(patch_totals_finite(t));
+  t.Mz_N_m = std::numeric_limits<double>::infinity();
+  EXPECT_FALSE(patch_totals_finite(t));
+  bad = s;
+  bad.Fy = 0.9 * mu * load;  // |F| = 1.08 mu load
+  EXPECT_FALSE(strip_totals_hold(p, mu, j, bad, true, 1.0));
+  EXPECT_TRUE(strip_totals_hold(p, mu, j, bad, false, 1.0));  // not bounded: a step whose load fell
+  bad.counted_length = 2 * p.half_length_m(j);  // a node sum: mu p_j times the counted length, 1.27x more
+  EXPECT_TRUE(strip_totals_hold(p, mu, j, bad, true, 1.0));
+  bad = s;
+  bad.dissipated = -1e-6;
+  EXPECT_FALSE(strip_totals_hold(p, mu, j, bad, true, 1.0));  // below -1e-9 of the scale
+  EXPECT_TRUE(strip_totals_hold(p, mu, j, bad, true, 1e4));   // rounding of a larger scale
+  EXPECT_TRUE(strip_totals_hold(p, mu, j, bad, true, 0));     // dissipation not checked
+  EXPECT_NE(strip_invariant_text(p, mu, j, bad, true, 1.0).find("strip 10"), std::string::npos);
 }
 
 // Along x the consistent scheme reproduces the closed-form strip exactly: same a_j and p_j, any grid.

@@ -607,6 +607,7 @@ StepResult satran_step(const ContactPatch& patch, const TangentialProblem& probl
   state.mirror_images = strips < g.ny;  // after this step
   std::vector<StripEnergy> energies(g.ny);
   double E_start = 0, E_end = 0;  // sums of |tau|^2 over interior nodes
+  bool hold = true;               // every strip's invariants (strip_totals_hold)
   for (int j = 0; j < g.ny; ++j) {
     if (!(patch.half_length_m(j) > 0)) continue;
     StripEnergy& e = energies[j];
@@ -630,7 +631,7 @@ StepResult satran_step(const ContactPatch& patch, const TangentialProblem& probl
     // leaves nodes above the new bound, which the step's path means carry before they slip back onto it).
     // Not asserted: an exact shift step's strip dissipation >= 0, which random histories break beyond
     // rounding (docs/satran.md, "Invariants")
-    check_strip_totals(patch, problem.mu, j, e, load_held);
+    hold &= strip_totals_hold(patch, problem.mu, j, e, load_held, 0);
     r.strip_energy_J_per_m(j) = e.dissipated;
     r.creep_work_J += e.creep * g.dy_m;
     r.trailing_J += e.trailing * g.dy_m;
@@ -638,7 +639,15 @@ StepResult satran_step(const ContactPatch& patch, const TangentialProblem& probl
     E_start += e.E_start;
     E_end += e.E_end;
   }
+  ROLLWEAR_ASSERT(hold, [&] {
+    for (int j = 0; j < g.ny; ++j)
+      if (patch.half_length_m(j) > 0 && !strip_totals_hold(patch, problem.mu, j, energies[j], load_held, 0))
+        return strip_invariant_text(patch, problem.mu, j, energies[j], load_held, 0);
+    return std::string();
+  }());
   const PatchTotals totals = patch_totals(patch, energies);
+  ROLLWEAR_ASSERT(patch_totals_finite(totals), fmt::format("totals not finite: Fx {} Fy {} Mz {} dissipated {}",
+                                                          totals.Fx_N, totals.Fy_N, totals.Mz_N_m, totals.dissipated));
   r.Fx_N = totals.Fx_N;
   r.Fy_N = totals.Fy_N;
   r.Mz_N_m = totals.Mz_N_m;

@@ -586,22 +586,34 @@ TangentialSolution solve_steady(const ContactPatch& patch, const TangentialProbl
     }
   }
 
+  // the strips' invariants (strip_totals_hold): dissipation is a path integral of -tau . s (classic's cell
+  // sums too), >= 0 beyond the rounding of the terms it is the difference of, V L (mu p_j)^2 2 a_j at most
+  // (|tau| <= mu p_j along 2 a_j)
+  auto energy_scale = [&](int j) {
+    const double bound_j = problem.mu * patch.strip_peak_Pa(j);
+    return problem.speed_m_per_s * problem.L_m_per_Pa * bound_j * bound_j * 2 * patch.half_length_m(j);
+  };
+  bool hold = true;
   for (int j = 0; j < g.ny; ++j) {
     if (!(patch.half_length_m(j) > 0)) continue;
     const SteadyStrip& st = totals[j];
-    // dissipation is a path integral of -tau . s (classic's cell sums too): >= 0 beyond the rounding of
-    // the terms it is the difference of, V L (mu p_j)^2 2 a_j at most (|tau| <= mu p_j along 2 a_j)
-    const double bound_j = problem.mu * patch.strip_peak_Pa(j);
-    check_strip_totals(patch, problem.mu, j, st, true,
-                       problem.speed_m_per_s * problem.L_m_per_Pa * bound_j * bound_j * 2 * patch.half_length_m(j));
+    hold &= strip_totals_hold(patch, problem.mu, j, st, true, energy_scale(j));
     s.strip_power_W_per_m(j) = st.dissipated;
     s.strip_creep_power_W_per_m(j) = st.creep_power;
     s.strip_trailing_W_per_m(j) = st.trailing;
     s.strip_force_x_N_per_m(j) = st.Fx;
     s.strip_force_y_N_per_m(j) = st.Fy;
   }
+  ROLLWEAR_ASSERT(hold, [&] {
+    for (int j = 0; j < g.ny; ++j)
+      if (patch.half_length_m(j) > 0 && !strip_totals_hold(patch, problem.mu, j, totals[j], true, energy_scale(j)))
+        return strip_invariant_text(patch, problem.mu, j, totals[j], true, energy_scale(j));
+    return std::string();
+  }());
   // classic counts dx per cell centre in contact
   const PatchTotals t = patch_totals(patch, totals);
+  ROLLWEAR_ASSERT(patch_totals_finite(t), fmt::format("totals not finite: Fx {} Fy {} Mz {} dissipated {}",
+                                                          t.Fx_N, t.Fy_N, t.Mz_N_m, t.dissipated));
   s.Fx_N = t.Fx_N;
   s.Fy_N = t.Fy_N;
   s.Mz_N_m = t.Mz_N_m;

@@ -92,8 +92,15 @@ TangentialScheme parse_tangential_scheme(const std::string& name) {
 
 namespace contact {
 
-std::string strip_totals_text(int j, const StripTotals& s) {
-  return fmt::format("strip {}: Fx {} Fy {} Mz {} dissipated {}", j, s.Fx, s.Fy, s.Mz, s.dissipated);
+std::string strip_invariant_text(const ContactPatch& patch, double mu, int j, const StripTotals& s, bool bounded,
+                                 double energy_scale) {
+  std::string text = fmt::format("strip {}: Fx {} Fy {} Mz {} dissipated {} (N/m, W/m or J/m)", j, s.Fx, s.Fy, s.Mz,
+                                 s.dissipated);
+  if (bounded)
+    text += fmt::format(", |F| = {} against mu times the strip's load, {}", std::hypot(s.Fx, s.Fy),
+                        mu * strip_load_N_per_m(patch, j, s));
+  if (energy_scale > 0) text += fmt::format(", dissipation of scale {}", energy_scale);
+  return text;
 }
 
 }  // namespace contact

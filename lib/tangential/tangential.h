@@ -121,30 +121,32 @@ PatchTotals patch_totals(const ContactPatch& patch, const std::vector<Strip>& st
   return t;
 }
 
-// what check_strip_totals compares with and names: a strip's load per unit width as the scheme counts it
-// (the exact pi/2 p_j a_j, or p_j times the counted length), and the strip's totals as text
+// the text of a broken strip invariant (strip_totals_hold): the strip's numbers and what they are held to
+std::string strip_invariant_text(const ContactPatch& patch, double mu, int j, const StripTotals& s, bool bounded,
+                                 double energy_scale);
+
+// The invariants of one strip's totals: when `bounded`, the traction's resultant within mu times
+// the strip's load (the exact mu pi/2 p_j a_j for path integrals, mu p_j times the counted length for node
+// or cell-centre sums); when `energy_scale` > 0, no negative dissipation beyond 1e-9 of that scale (the size
+// of the terms the dissipation is the difference of). The solvers test every strip and assert once per
+// solve or step (ROLLWEAR_ASSERT), naming the first strip that broke one (strip_invariant_text): the
+// steady strips of a small grid cost some 2000 instructions each, and the checks must stay within 1 %.
+constexpr double kStripRounding = 1e-9;  // the sums run over at most a few thousand terms
 inline double strip_load_N_per_m(const ContactPatch& patch, int j, const StripTotals& s) {
   return s.counted_length > 0 ? patch.strip_peak_Pa(j) * s.counted_length
                               : kPi / 2 * patch.strip_peak_Pa(j) * patch.half_length_m(j);
 }
-std::string strip_totals_text(int j, const StripTotals& s);
-
-// The invariants of one strip's totals (ROLLWEAR_ASSERT, per strip): finite; when `bounded`, the traction's
-// resultant within mu times the strip's load (the exact mu pi/2 p_j a_j for path integrals, mu p_j times
-// the counted length for node or cell-centre sums); when `energy_scale` > 0, no negative dissipation beyond
-// the rounding of that scale (the size of the terms the dissipation is the difference of). A few
-// comparisons on the way (inline: the steady strips of a small grid cost some 100 ns each).
-inline void check_strip_totals(const ContactPatch& patch, double mu, int j, const StripTotals& s, bool bounded = true,
-                               double energy_scale = 0) {
-  constexpr double kRelative = 1e-9;  // rounding allowance: the sums run over at most a few thousand terms
-  // a sum of finite numbers of this size is finite; a nan or an infinity stays one
-  ROLLWEAR_ASSERT(std::isfinite(s.Fx + s.Fy + s.Mz + s.dissipated),
-                  strip_totals_text(j, s) + " not finite");
-  ROLLWEAR_ASSERT(!bounded || s.Fx * s.Fx + s.Fy * s.Fy <= std::pow(mu * strip_load_N_per_m(patch, j, s) * (1 + kRelative), 2),
-                  strip_totals_text(j, s) + fmt::format(": |F| above mu times the strip's load, {} N/m",
-                                                        mu * strip_load_N_per_m(patch, j, s)));
-  ROLLWEAR_ASSERT(!(energy_scale > 0) || s.dissipated >= -kRelative * energy_scale,
-                  strip_totals_text(j, s) + fmt::format(": dissipation below 0 (scale {})", energy_scale));
+// (a nan fails the comparisons; an infinity the bound, or the patch's totals, which the solvers assert finite:
+// a sum of finite strips of this size is finite, a nan or an infinity stays one)
+inline bool strip_totals_hold(const ContactPatch& patch, double mu, int j, const StripTotals& s, bool bounded,
+                              double energy_scale) {
+  const double limit = mu * strip_load_N_per_m(patch, j, s) * (1 + kStripRounding);
+  const bool within = !bounded || s.Fx * s.Fx + s.Fy * s.Fy <= limit * limit;
+  const bool dissipates = !(energy_scale > 0) || s.dissipated >= -kStripRounding * energy_scale;
+  return within & dissipates;
+}
+inline bool patch_totals_finite(const PatchTotals& t) {
+  return std::isfinite(t.Fx_N + t.Fy_N + t.Mz_N_m + t.dissipated + t.stick_fraction);
 }
 
 }  // namespace contact
