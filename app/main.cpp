@@ -332,16 +332,19 @@ CLI::App* add_transient_command(CLI::App& app, TransientOptions& opt, CommonOpti
   sub->footer(
       "Outputs (in the output directory; SI units, numbers at full precision):\n"
       "  timeseries.csv    one row per step: step,t_s,q_m,dt_s,speed_m_per_s,xi,eta,phi_per_m,normal_load_N,\n"
-      "                    omega1_rad_per_s,Fx_N,Fy_N,Mz_N_m,power_W,stick_fraction,balance_residual_W,cfl\n"
-      "                    (t_s, q_m: where the forces hold, the middle of a whole shift step, else its end)\n"
+      "                    omega1_rad_per_s,Fx_N,Fy_N,Mz_N_m,power_W,stick_fraction,balance_residual_W,cfl,\n"
+      "                    shortened,step_scheme (t_s, q_m: where the forces hold, the middle of a whole\n"
+      "                    shift step, else its end; shortened 1: the last step, cut short to end at t_end_s;\n"
+      "                    step_scheme: what the step ran, upwind in a shift run being the fallback at CFL < 1)\n"
       "  strip_power.csv   step,t_s,y_m,power_W_per_m: one row per strip and step\n"
       "  strip_energy.csv  y_m,energy_J_per_m: each strip's power integrated over the run\n"
       "  snapshot_<k>.csv  x_m,y_m,pressure_Pa,tau_x_Pa,tau_y_Pa,slip_x_m_per_s,slip_y_m_per_s,t_s: the fields\n"
       "                    for the k-th time of transient.snapshots_s (k from 1), at the end of the step that\n"
       "                    reached it; t_s is that step's end\n"
-      "  summary.csv       name,scheme,nx,ny,steps,t_end_s,q_end_m,dissipated_J, then the last step's\n"
-      "                    Fx_N,Fy_N,Mz_N_m,power_W,stick_fraction,omega1_rad_per_s, and sliding_end_s (t_s of\n"
-      "                    the first step with stick; nan if none)\n"
+      "  summary.csv       name,scheme,nx,ny,steps,t_end_s,q_end_m,dissipated_J, then the last whole step's\n"
+      "                    Fx_N,Fy_N,Mz_N_m,power_W,stick_fraction,omega1_rad_per_s (not the shortened last\n"
+      "                    step's), sliding_end_s (t_s of the first step with stick; nan if none), end_step\n"
+      "                    (the step those values are from) and fallback_steps (upwind steps of a shift run)\n"
       "The time series stream to temporary files during the run; every file is renamed into place at the\n"
       "end, so a failed or interrupted run leaves no partial file (SIGINT, SIGTERM, SIGHUP remove the\n"
       "temporaries at once; those of a killed run are removed by the next command on the folder).\n"
@@ -420,7 +423,6 @@ class Progress {
 // what the stdout summary needs from the steps
 struct RunLog {
   TransientRecord last;
-  std::optional<TransientRecord> last_full;  // the last step of a whole dx (CFL 1)
   double t_s = 0;                                                   // end of the last step
   double sliding_end_s = std::numeric_limits<double>::quiet_NaN();  // t_s of the first step with stick
   int sliding_end_step = 0;
@@ -428,25 +430,23 @@ struct RunLog {
 
 void print_transient_summary(const ContactCase& c, const TransientCase& t, const TransientResult& res,
                              const RunLog& log) {
-  const TransientRecord& r = log.last;
+  const TransientRecord& r = res.end;  // the last whole step (the shortened last step runs a cruder scheme)
   fmt::print("case {} ({}), {} x {} grid, {} scheme{}\n", c.name, c.path, res.grid.nx, res.grid.ny,
              to_string(t.settings.scheme), t.inertia ? ", roller inertia" : "");
-  fmt::print("  steps           {}\n", res.steps);
+  fmt::print("  steps           {}", res.steps);
+  if (res.fallback_steps > 0)
+    fmt::print(", {} of them upwind at CFL < 1 (the fallback: less accurate than shift)", res.fallback_steps);
+  fmt::print("\n");
   fmt::print("  end             t  = {:.6g} s, rolled q = {:.6g} mm\n", res.t_end_s, res.q_end_m * 1e3);
-  fmt::print("  last step       V  = {:.6g} m/s, xi = {:.6g}, F = {:.6g} N\n", r.speed_m_per_s, r.xi,
-             r.normal_load_N);
+  fmt::print("  end step        step {} ({}), V = {:.6g} m/s, xi = {:.6g}, F = {:.6g} N\n", r.step,
+             to_string(r.scheme), r.speed_m_per_s, r.xi, r.normal_load_N);
   fmt::print("  creep forces    Fx = {:.6g} N, Fy = {:.6g} N, Mz = {:.6g} N m\n", r.Fx_N, r.Fy_N, r.Mz_N_m);
-  fmt::print("  dissipated      P  = {:.6g} W (last step), E = {:.6g} J over the run\n", r.power_W,
+  fmt::print("  dissipated      P  = {:.6g} W (end step), E = {:.6g} J over the run\n", r.power_W,
              res.dissipated_J);
   fmt::print("  stick fraction     {:.4f}\n", r.stick_fraction);
-  // a shift run ends with a partial step (an upwind step at CFL < 1) to land on t_end_s; its end
-  // values are not those of the exact steps before it
-  if (t.settings.scheme == TransientScheme::Shift && !t.inertia && r.cfl < 1 && log.last_full) {
-    const TransientRecord& f = *log.last_full;
-    fmt::print("  last whole step P  = {:.6g} W, Fx = {:.6g} N, stick {:.4f} at t = {:.6g} s (the last step "
-               "covers {:.3f} dx to end at t_end_s)\n",
-               f.power_W, f.Fx_N, f.stick_fraction, f.t_s, r.cfl);
-  }
+  if (log.last.shortened)
+    fmt::print("  shortened step  step {} ({}, covers {:.3f} dx to end at t_end_s): P = {:.6g} W, Fx = {:.6g} N\n",
+               log.last.step, to_string(log.last.scheme), log.last.cfl, log.last.power_W, log.last.Fx_N);
   if (t.inertia) {
     fmt::print("  roller spin     omega1 = {:.6g} rad/s, omega1 R1 = {:.6g} m/s (path {:.6g} m/s)\n",
                r.omega1_rad_per_s, r.omega1_rad_per_s * t.inertia->R1_m,
@@ -512,7 +512,6 @@ int run_transient_command(const TransientOptions& opt) {
     timeseries->append(transient_row(r));
     strip_power->append(strip_power_rows(r, y_m, power_W_per_m));
     log.last = r;
-    if (r.cfl == 1) log.last_full = r;
     log.t_s += r.dt_s;
     if (log.sliding_end_step == 0 && r.stick_fraction > 0) {
       log.sliding_end_step = r.step;
@@ -541,8 +540,7 @@ int run_transient_command(const TransientOptions& opt) {
   std::vector<OutputFile> files = {{dir / "strip_energy.csv", strip_energy_csv(res.grid, res.strip_energy_J_per_m)}};
   for (std::size_t k = 0; k < res.snapshots.size(); ++k)
     files.push_back({dir / fmt::format("snapshot_{}.csv", k + 1), snapshot_csv(res.grid, res.snapshots[k])});
-  files.push_back({dir / "summary.csv", transient_summary_csv(c.name, t.settings.scheme, res, log.last,
-                                                              log.sliding_end_s)});
+  files.push_back({dir / "summary.csv", transient_summary_csv(c.name, t.settings.scheme, res, log.sliding_end_s)});
 
   print_transient_summary(c, t, res, log);
   write_files_atomic(files, {&*timeseries, &*strip_power});

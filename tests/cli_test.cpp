@@ -230,7 +230,9 @@ TEST(CsvOutput, TransientTablesHaveTheirColumnsAtFullPrecision) {
   ASSERT_EQ(rows.size(), 2u);
   EXPECT_TRUE(is_numeric_table(rows,
                                "step,t_s,q_m,dt_s,speed_m_per_s,xi,eta,phi_per_m,normal_load_N,omega1_rad_per_s,"
-                               "Fx_N,Fy_N,Mz_N_m,power_W,stick_fraction,balance_residual_W,cfl"));
+                               "Fx_N,Fy_N,Mz_N_m,power_W,stick_fraction,balance_residual_W,cfl,shortened,step_scheme",
+                               {18}));
+  EXPECT_EQ(rows[1].substr(rows[1].size() - 8), ",0,shift");
   const std::vector<std::string> cells = split(rows[1]);
   EXPECT_EQ(cells[0], "7");
   EXPECT_EQ(std::strtod(cells[1].c_str(), nullptr), r.t_s);  // reads back exactly
@@ -430,7 +432,7 @@ TEST_F(CommandLine, TransientOnSmallStartupWritesEveryTable) {
   ASSERT_EQ(summary.size(), 2u);
   EXPECT_TRUE(is_numeric_table(summary,
                                "name,scheme,nx,ny,steps,t_end_s,q_end_m,dissipated_J,Fx_N,Fy_N,Mz_N_m,power_W,"
-                               "stick_fraction,omega1_rad_per_s,sliding_end_s",
+                               "stick_fraction,omega1_rad_per_s,sliding_end_s,end_step,fallback_steps",
                                {0, 1}));
   const std::vector<std::string> totals = split(summary[1]);
   EXPECT_EQ(totals[0], "paper-startup");  // the file's name:
@@ -449,7 +451,8 @@ TEST_F(CommandLine, TransientOnSmallStartupWritesEveryTable) {
   ASSERT_EQ(series.size(), static_cast<std::size_t>(steps) + 1);
   EXPECT_TRUE(is_numeric_table(series,
                                "step,t_s,q_m,dt_s,speed_m_per_s,xi,eta,phi_per_m,normal_load_N,omega1_rad_per_s,"
-                               "Fx_N,Fy_N,Mz_N_m,power_W,stick_fraction,balance_residual_W,cfl"));
+                               "Fx_N,Fy_N,Mz_N_m,power_W,stick_fraction,balance_residual_W,cfl,shortened,step_scheme",
+                               {18}));
   const std::vector<double> step = column(series, 0), dt = column(series, 3), power = column(series, 13);
   double t = 0, energy = 0;
   for (int k = 0; k < steps; ++k) {

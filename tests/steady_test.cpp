@@ -7,6 +7,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <cstdio>
 #include <ostream>
 #include <string>
 
@@ -60,13 +62,66 @@ double total_force_closed_form(double a, double b, double p0, double xi, double 
   return sum * (kPi / n) / 3;
 }
 
-TEST(SteadyTangential, ClosedFormExampleOfPhysicsReference) {
-  // docs/physics.md §4: Fx = -159.882 N, P = 0.159882 W at V = 1 m/s (mu 0.3, xi 1e-3, C11 3.4269)
+// docs/physics.md §4's example: the closed form, integrated over the ellipse, gives the number the
+// document prints (Fx = -159.882 N, P = 0.159882 W at V = 1 m/s; mu 0.3, xi 1e-3, C11 3.4269)
+TEST(SteadyTangential, ClosedFormOfTheExampleGivesTheDocumentedForce) {
   const ContactPatch p = paper_patch(80, 80);
-  TangentialProblem pb = problem(p, {1e-3, 0, 0});
-  pb.flex.L1_m_per_Pa = 8 * p.a_m / (3 * 3.4269 * kG);  // C11 as docs/physics.md gives it, 5 digits
-  const double F = total_force_closed_form(p.a_m, p.b_m, p.p0_Pa, 1e-3, pb.flex.L1_m_per_Pa, 0.3);
+  const double L1 = 8 * p.a_m / (3 * 3.4269 * kG);  // C11 as docs/physics.md gives it, 5 digits
+  const double F = total_force_closed_form(p.a_m, p.b_m, p.p0_Pa, 1e-3, L1, 0.3);
   EXPECT_NEAR(F, 159.882, 0.0005);
+}
+
+// The steady solver on that example: its force and power are the closed form's, to the error of the
+// strips' quadrature across y (along x each strip is exact, SteadyStripExact), which halves at least
+// as the strips halve. Measured: |Fx| error 7.0e-5 at 80 x 80, 1.7e-5 at 160 x 160 (second order).
+TEST(SteadyTangential, SolverReproducesTheClosedFormExample) {
+  double previous = 1;
+  for (const int n : {80, 160}) {
+    const ContactPatch p = paper_patch(n, n);
+    TangentialProblem pb = problem(p, {1e-3, 0, 0});
+    pb.flex.L1_m_per_Pa = 8 * p.a_m / (3 * 3.4269 * kG);
+    const double F = total_force_closed_form(p.a_m, p.b_m, p.p0_Pa, 1e-3, pb.flex.L1_m_per_Pa, 0.3);
+    const TangentialSolution s = solve_steady(p, pb);
+    const double error_F = std::abs(-s.Fx_N / F - 1), error_P = std::abs(s.power_W / (F * 1.0 * 1e-3) - 1);
+    std::printf("  %d x %d: Fx %.6f N (closed form %.6f N), |Fx| error %.3e, P error %.3e\n", n, n, s.Fx_N, -F,
+                error_F, error_P);
+    constexpr double kQuadratureTol = 1e-4;  // across y at 80 strips (measured above)
+    EXPECT_LT(error_F, kQuadratureTol) << n;
+    EXPECT_LT(error_P, kQuadratureTol) << n;  // steady, pure xi: P = |Fx| V xi
+    EXPECT_LT(error_F, previous / 2) << n;
+    previous = error_F;
+  }
+}
+
+// The strip invariants the solvers assert (strip_totals_hold): each one fails on the strip that breaks it.
+TEST(SteadyTangential, StripInvariantsCatchWhatTheyName) {
+  const ContactPatch p = paper_patch(20, 20);
+  const int j = 10;
+  const double mu = 0.3, load = kPi / 2 * p.strip_peak_Pa(j) * p.half_length_m(j);  // exact strip load, N/m
+  StripTotals s;
+  s.Fx = -0.6 * mu * load;
+  s.Fy = 0.6 * mu * load;  // |F| = 0.85 mu load
+  s.dissipated = 1.0;
+  EXPECT_TRUE(strip_totals_hold(p, mu, j, s, true, 1.0));
+  StripTotals bad = s;
+  bad.Fx = std::nan("");
+  EXPECT_FALSE(strip_totals_hold(p, mu, j, bad, true, 1.0));  // not finite
+  PatchTotals t;
+  EXPECT_TRUE(patch_totals_finite(t));
+  t.Mz_N_m = std::numeric_limits<double>::infinity();
+  EXPECT_FALSE(patch_totals_finite(t));
+  bad = s;
+  bad.Fy = 0.9 * mu * load;  // |F| = 1.08 mu load
+  EXPECT_FALSE(strip_totals_hold(p, mu, j, bad, true, 1.0));
+  EXPECT_TRUE(strip_totals_hold(p, mu, j, bad, false, 1.0));  // not bounded: a step whose load fell
+  bad.counted_length = 2 * p.half_length_m(j);  // a node sum: mu p_j times the counted length, 1.27x more
+  EXPECT_TRUE(strip_totals_hold(p, mu, j, bad, true, 1.0));
+  bad = s;
+  bad.dissipated = -1e-6;
+  EXPECT_FALSE(strip_totals_hold(p, mu, j, bad, true, 1.0));  // below -1e-9 of the scale
+  EXPECT_TRUE(strip_totals_hold(p, mu, j, bad, true, 1e4));   // rounding of a larger scale
+  EXPECT_TRUE(strip_totals_hold(p, mu, j, bad, true, 0));     // dissipation not checked
+  EXPECT_NE(strip_invariant_text(p, mu, j, bad, true, 1.0).find("strip 10"), std::string::npos);
 }
 
 // Along x the consistent scheme reproduces the closed-form strip exactly: same a_j and p_j, any grid.

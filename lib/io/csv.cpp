@@ -214,7 +214,7 @@ namespace contact {
 
 std::string transient_header() {
   return "step,t_s,q_m,dt_s,speed_m_per_s,xi,eta,phi_per_m,normal_load_N,omega1_rad_per_s,Fx_N,Fy_N,Mz_N_m,"
-         "power_W,stick_fraction,balance_residual_W,cfl\n";
+         "power_W,stick_fraction,balance_residual_W,cfl,shortened,step_scheme\n";
 }
 
 std::string transient_row(const TransientRecord& r) {
@@ -225,6 +225,8 @@ std::string transient_row(const TransientRecord& r) {
     out += ',';
     put(out, v);
   }
+  out += r.shortened ? ",1," : ",0,";
+  out += to_string(r.scheme);
   out += '\n';
   return out;
 }
@@ -289,18 +291,19 @@ std::string snapshot_csv(const Grid& g, const Snapshot& s) {
 }
 
 std::string transient_summary_csv(const std::string& name, TransientScheme scheme, const TransientResult& res,
-                                  const TransientRecord& last, double sliding_end_s) {
+                                  double sliding_end_s) {
   std::string out =
       "name,scheme,nx,ny,steps,t_end_s,q_end_m,dissipated_J,Fx_N,Fy_N,Mz_N_m,power_W,stick_fraction,"
-      "omega1_rad_per_s,sliding_end_s\n";
+      "omega1_rad_per_s,sliding_end_s,end_step,fallback_steps\n";
+  const TransientRecord& end = res.end;
   out += csv_text(name);
   fmt::format_to(std::back_inserter(out), ",{},{},{},{}", to_string(scheme), res.grid.nx, res.grid.ny, res.steps);
-  for (const double v : {res.t_end_s, res.q_end_m, res.dissipated_J, last.Fx_N, last.Fy_N, last.Mz_N_m,
-                         last.power_W, last.stick_fraction, last.omega1_rad_per_s, sliding_end_s}) {
+  for (const double v : {res.t_end_s, res.q_end_m, res.dissipated_J, end.Fx_N, end.Fy_N, end.Mz_N_m,
+                         end.power_W, end.stick_fraction, end.omega1_rad_per_s, sliding_end_s}) {
     out += ',';
     put(out, v);
   }
-  out += '\n';
+  fmt::format_to(std::back_inserter(out), ",{},{}\n", end.step, res.fallback_steps);
   return out;
 }
 

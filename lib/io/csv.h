@@ -74,8 +74,10 @@ std::string summary_csv(const std::string& name, const ContactPatch& patch, cons
 
 // timeseries.csv: the header, then one row per step (transient_row):
 //   step,t_s,q_m,dt_s,speed_m_per_s,xi,eta,phi_per_m,normal_load_N,omega1_rad_per_s,Fx_N,Fy_N,Mz_N_m,
-//   power_W,stick_fraction,balance_residual_W,cfl
-// t_s and q_m are where the forces hold (TransientRecord): mid-step for exact shift steps.
+//   power_W,stick_fraction,balance_residual_W,cfl,shortened,step_scheme
+// t_s and q_m are where the forces hold (TransientRecord): mid-step for exact shift steps. shortened: 1
+// for the last step, cut short to end at t_end_s; step_scheme: what the step ran (shift, standstill,
+// upwind, lax-friedrichs; upwind in a shift run is the fallback at CFL < 1).
 std::string transient_header();
 std::string transient_row(const TransientRecord& r);
 
@@ -97,11 +99,13 @@ std::string snapshot_csv(const Grid& grid, const Snapshot& s);
 
 // summary.csv of a transient run: a header and one row:
 //   name,scheme,nx,ny,steps,t_end_s,q_end_m,dissipated_J,Fx_N,Fy_N,Mz_N_m,power_W,stick_fraction,
-//   omega1_rad_per_s,sliding_end_s
-// Fx_N ... omega1_rad_per_s: the last step's record; sliding_end_s: t_s of the first step with
-// stick_fraction > 0 (the end of gross sliding), nan if no step had stick.
+//   omega1_rad_per_s,sliding_end_s,end_step,fallback_steps
+// Fx_N ... omega1_rad_per_s: the run's end values, result.end (the last whole step's record, not the
+// step cut short to end at t_end_s), whose number is end_step; sliding_end_s: t_s of the first step
+// with stick_fraction > 0 (the end of gross sliding), nan if no step had stick; fallback_steps: the
+// shift run's steps that ran upwind at CFL < 1.
 std::string transient_summary_csv(const std::string& name, TransientScheme scheme, const TransientResult& result,
-                                  const TransientRecord& last, double sliding_end_s);
+                                  double sliding_end_s);
 
 // a text field quoted as RFC 4180 wants when it holds a comma, a quote or a line break
 std::string csv_text(const std::string& text);

@@ -28,6 +28,7 @@
 #include <vector>
 
 #include "lib/tangential/kalker.h"
+#include "lib/tangential/strip_march.h"
 
 namespace contact {
 
@@ -45,6 +46,22 @@ TransientScheme parse_transient_scheme(const std::string& name) {
   if (name == "upwind") return TransientScheme::Upwind;
   if (name == "lax-friedrichs") return TransientScheme::LaxFriedrichs;
   throw std::invalid_argument("unknown transient scheme '" + name + "' (valid: shift, upwind, lax-friedrichs)");
+}
+
+std::string to_string(StepScheme scheme) {
+  switch (scheme) {
+    case StepScheme::Shift: return "shift";
+    case StepScheme::Standstill: return "standstill";
+    case StepScheme::Upwind: return "upwind";
+    case StepScheme::LaxFriedrichs: return "lax-friedrichs";
+  }
+  return "unknown";
+}
+
+StepScheme step_scheme(TransientScheme scheme, double dq_m, double dx_m) {
+  if (scheme == TransientScheme::LaxFriedrichs) return StepScheme::LaxFriedrichs;
+  if (scheme == TransientScheme::Upwind) return StepScheme::Upwind;
+  return dq_m == dx_m ? StepScheme::Shift : dq_m == 0 ? StepScheme::Standstill : StepScheme::Upwind;
 }
 
 TransientState rest_state(const Grid& grid) {
@@ -83,12 +100,11 @@ void allocate_fields(StepResult& r, const Grid& g) {
   r.slip_y_m_per_s = Eigen::ArrayXXd::Zero(g.nx, g.ny);
 }
 
-// one strip, shift: returns (dissipated, creep, trailing) energies per unit width
-struct StripEnergy {
-  double dissipated = 0, creep = 0, trailing = 0, transport = 0, stick_length = 0;
-  double counted_length = 0;  // upwind, lax-friedrichs: dx per node in contact (0: shift, the exact 2 a_j)
+// one strip over a step, per unit width: its totals (dissipated: energy; counted_length: upwind and
+// lax-friedrichs count dx per node in contact, shift the exact 2 a_j) and the other energies
+struct StripEnergy : StripTotals {
+  double creep = 0, trailing = 0, transport = 0;
   double E_start = 0, E_end = 0;  // sums of |tau|^2 over the interior nodes before and after the step
-  double Fx = 0, Fy = 0, Mz = 0;
 };
 
 // the whole kernel for one interval, kept out of the loops over the strip
@@ -148,74 +164,91 @@ struct ShiftScratch {
 // crossing into slip. The strip's two end intervals go through the whole kernel. The fields need each
 // interval's integrals: when they are written, every interval goes through the whole kernel.
 template <bool kFields, bool kSpin, bool kLateral>
-StripEnergy shift_strip(const ContactPatch& patch, const StripRates& r, int j, double L, const StepKinematics& k,
-                        ShiftScratch& scratch, TransientState& state, StepResult* fields) {
-  const Grid& g = patch.grid;
-  const double a = r.a_m, dq = k.dq_m, dx = g.dx_m;
-  const double* x = scratch.x.data();
-  StripNode* node = &state.node(0, j);  // node[i] sits at x_edge(i)
-  const double* edge_p = &patch.edge_pressure_Pa(0, j);
-  StripEnergy e;
-  const int i_top = std::min(g.nx - 1, static_cast<int>(std::floor((a + g.half_x_m) / g.dx_m)));
-  const int i_bot = std::max(0, static_cast<int>(std::floor((-a + g.half_x_m) / g.dx_m)));
-  // the integrals add up over the strip (per interval only for the fields)
-  IntervalSums strip;
-  double hi2 = 0, lo2 = 0, trail2 = 0;  // sums of |tau|^2 at the upstream, downstream, trailing nodes
+class ShiftStrip {
+ public:
+  ShiftStrip(const ContactPatch& patch, const StripRates& r, int j, double L, const StepKinematics& k,
+             ShiftScratch& scratch, TransientState& state, StepResult* fields)
+      : patch_(patch), r_(r), j_(j), L_(L), k_(k), scratch_(scratch), fields_(fields), a_(r.a_m), dx_(patch.grid.dx_m),
+        x_(scratch.x.data()), node_(&state.node(0, j)), edge_p_(&patch.edge_pressure_Pa(0, j)) {}
 
+  // the step of the strip: the trailing edge's intervals, the interior ones (the stick pass in blocks, then
+  // those whose stick test failed), the leading edge's; every interval through the whole kernel where the
+  // fields are written or the interior is shorter than a block
+  StripEnergy step() {
+    const Grid& g = patch_.grid;
+    const int i_top = std::min(g.nx - 1, static_cast<int>(std::floor((a_ + g.half_x_m) / g.dx_m)));
+    const int i_bot = std::max(0, static_cast<int>(std::floor((-a_ + g.half_x_m) / g.dx_m)));
+    // the interior intervals first .. last (both ends strictly inside the strip)
+    int first = i_bot, last = i_top;
+    while (first <= last && !(x_[first] > -a_)) ++first;
+    while (last >= first && !(x_[last + 1] < a_)) --last;
+    if (kFields || last - first + 1 < kBlock) {
+      for (int i = i_bot; i <= i_top; ++i) whole_interval(i);
+    } else {
+      for (int i = i_bot; i < first; ++i) whole_interval(i);
+      failed_intervals(stick_pass(first, last));
+      for (int i = last + 1; i <= i_top; ++i) whole_interval(i);
+    }
+    return energies();
+  }
+
+ private:
   // interval i: its part of the strip and the bound at x_lo (0 at the trailing edge)
-  auto geometry = [&](int i) {
+  IntervalGeometry geometry(int i) const {
     IntervalGeometry geo;
-    geo.x_hi = std::min(x[i + 1], a);
-    geo.x_lo = std::max(x[i], -a);
-    geo.bound_lo_Pa = geo.x_lo > -a ? r.mu * edge_p[i] : 0.0;
-    geo.load_N_per_m = patch.pressure_Pa(i, j) * dx;
-    geo.moment_N = patch.pressure_moment_Pa_m(i, j) * dx;
+    geo.x_hi = std::min(x_[i + 1], a_);
+    geo.x_lo = std::max(x_[i], -a_);
+    geo.bound_lo_Pa = geo.x_lo > -a_ ? r_.mu * edge_p_[i] : 0.0;
+    geo.load_N_per_m = patch_.pressure_Pa(i, j_) * dx_;
+    geo.moment_N = patch_.pressure_moment_Pa_m(i, j_) * dx_;
     return geo;
-  };
+  }
+
   // the totals of interval i from its old upstream node hi, and the new node lo (the trailing edge's
   // carries its energy out of the contact)
-  auto record = [&](int i, const IntervalGeometry& geo, const StripNode& hi, const StripNode& lo,
-                    const IntervalSums& cell) {
-    add_interval_sums(strip, cell);
-    hi2 += hi.tx * hi.tx + hi.ty * hi.ty;
-    lo2 += lo.tx * lo.tx + lo.ty * lo.ty;
-    if (geo.x_lo > -a) {
-      node[i] = lo;
+  void record(int i, const IntervalGeometry& geo, const StripNode& hi, const StripNode& lo, const IntervalSums& cell) {
+    add_interval_sums(strip_, cell);
+    hi2_ += hi.tx * hi.tx + hi.ty * hi.ty;
+    lo2_ += lo.tx * lo.tx + lo.ty * lo.ty;
+    if (geo.x_lo > -a_) {
+      node_[i] = lo;
     } else {
-      trail2 = lo.tx * lo.tx + lo.ty * lo.ty;
+      trail2_ = lo.tx * lo.tx + lo.ty * lo.ty;
     }
     if constexpr (kFields) {
       const double h = geo.x_hi - geo.x_lo;
-      fields->tau_x_Pa(i, j) = cell.Ix / dx;
-      fields->tau_y_Pa(i, j) = cell.Iy / dx;
-      fields->slip_x_m_per_s(i, j) = L * dq / k.dt_s * cell.slip_x / h;
-      fields->slip_y_m_per_s(i, j) = L * dq / k.dt_s * cell.slip_y / h;
+      fields_->tau_x_Pa(i, j_) = cell.Ix / dx_;
+      fields_->tau_y_Pa(i, j_) = cell.Iy / dx_;
+      fields_->slip_x_m_per_s(i, j_) = L_ * k_.dq_m / k_.dt_s * cell.slip_x / h;
+      fields_->slip_y_m_per_s(i, j_) = L_ * k_.dq_m / k_.dt_s * cell.slip_y / h;
     }
-  };
+  }
+
   // interval i through the whole kernel, from the old node i+1 (tau = 0 enters at the leading edge)
-  auto whole_interval = [&](int i) {
+  void whole_interval(int i) {
     const IntervalGeometry geo = geometry(i);
     if (!(geo.x_hi > geo.x_lo)) return;
-    const StripNode hi = geo.x_hi < a ? node[i + 1] : StripNode{};
+    const StripNode hi = geo.x_hi < a_ ? node_[i + 1] : StripNode{};
     IntervalSums cell;
-    const StripNode lo = whole_kernel<kSpin>(r, hi, geo, cell);
+    const StripNode lo = whole_kernel<kSpin>(r_, hi, geo, cell);
     record(i, geo, hi, lo, cell);
-  };
+  }
 
-  // the interior intervals first .. last; below them the trailing edge's, above them the leading edge's
-  int first = i_bot, last = i_top;
-  while (first <= last && !(x[first] > -a)) ++first;
-  while (last >= first && !(x[last + 1] < a)) --last;
-  if (kFields || last - first + 1 < kBlock) {
-    for (int i = i_bot; i <= i_top; ++i) whole_interval(i);
-  } else {
-    for (int i = i_bot; i < first; ++i) whole_interval(i);
-
-    // the stick pass, in blocks from the trailing side up; the last block is moved back to end at `last`,
-    // and its intervals below `from` were done by the block before. With spin Kalker's test also asks
-    // whether the stick solution stays inside the bound between the nodes, and a slip node whose slip
-    // stops dissipating sticks again (stick_step, spin_sticks): those intervals go to the whole kernel.
-    // (kSpin: compiled apart, so that without spin it does nothing more)
+  // The stick pass over the interior intervals first .. last, in blocks from the trailing side up; the last
+  // block is moved back to end at `last`, and its intervals below `from` were done by the block before. The
+  // intervals whose test fails are kept in the scratch (with their old upstream node) for failed_intervals;
+  // returns how many. With spin Kalker's test also asks whether the stick solution stays inside the bound
+  // between the nodes, and a slip node whose slip stops dissipating sticks again (stick_step, spin_sticks):
+  // those intervals fail too. (kSpin: compiled apart, so that without spin it does nothing more)
+  int stick_pass(int first, int last) {
+    const StripRates& r = r_;
+    const double* x = x_;
+    const double* edge_p = edge_p_;
+    StripNode* node = node_;
+    ShiftScratch& scratch = scratch_;
+    // the sums in registers through the pass (a node written may alias a member)
+    IntervalSums strip = strip_;
+    double hi2 = hi2_, lo2 = lo2_;
     const detail::BoundQuadratic bound_q = detail::bound_quadratic(r);
     int n_failed = 0;
     for (int from = first; from <= last; from += kBlock) {
@@ -328,11 +361,21 @@ StripEnergy shift_strip(const ContactPatch& patch, const StripRates& r, int j, d
       }
     }
 
-    // the intervals whose test failed: from a slip node the interval slips throughout (with spin until its
-    // slip stops dissipating, then it sticks again inside the interval, as in the kernel), from a stick node
-    // the whole kernel finds the crossing into slip, and so it does for the intervals of spin marked
-    // above. With a lateral creep rate the slip direction turns, and the turns from slip nodes
-    // are taken first, all at once (with xi alone they are asked for only where tau is not along x)
+    strip_ = strip;
+    hi2_ = hi2;
+    lo2_ = lo2;
+    return n_failed;
+  }
+
+  // The intervals whose stick test failed: from a slip node the interval slips throughout (with spin until
+  // its slip stops dissipating, then it sticks again inside the interval, as in the kernel), from a stick
+  // node the whole kernel finds the crossing into slip, and so it does for the intervals of spin marked by
+  // the stick pass. With a lateral creep rate the slip direction turns, and the turns from slip nodes are
+  // taken first, all at once (with xi alone they are asked for only where tau is not along x)
+  void failed_intervals(int n_failed) {
+    const StripRates& r = r_;
+    const double* x = x_;
+    ShiftScratch& scratch = scratch_;
     const bool turns = r.eta_L2_Pa_per_m != 0 || r.phi_L3_Pa_per_m2 != 0;
     for (int f = 0; turns && f < n_failed; ++f) {
       const int i = scratch.failed[f];
@@ -349,21 +392,44 @@ StripEnergy shift_strip(const ContactPatch& patch, const StripRates& r, int j, d
                                                                             : slip_throughout<kSpin>(r, hi, geo, turn, cell);
       record(i, geo, hi, lo, cell);
     }
-
-    for (int i = last + 1; i <= i_top; ++i) whole_interval(i);
   }
 
-  // energies of the strip: the per-interval formula summed (its last term telescopes)
-  e.creep = L * dq * creep_power_per_VL(r, strip);
-  e.dissipated = e.creep + L * dq * (hi2 - lo2) / 2;
-  e.E_start = hi2;  // the old interior nodes are the intervals' upstream nodes (the leading one is 0)
-  e.E_end = lo2 - trail2;  // the new ones their downstream nodes, but for the trailing edge's
-  e.trailing = L * dq * trail2 / 2;
-  e.Fx = strip.Ix;
-  e.Fy = strip.Iy;
-  e.Mz = strip.Ixy - r.y_m * strip.Ix;
-  e.stick_length = strip.stick_length_m;
-  return e;
+  // the strip's energies: the per-interval formula summed (its last term telescopes)
+  StripEnergy energies() const {
+    const double dq = k_.dq_m;
+    StripEnergy e;
+    e.creep = L_ * dq * creep_power_per_VL(r_, strip_);
+    e.dissipated = e.creep + L_ * dq * (hi2_ - lo2_) / 2;
+    e.E_start = hi2_;  // the old interior nodes are the intervals' upstream nodes (the leading one is 0)
+    e.E_end = lo2_ - trail2_;  // the new ones their downstream nodes, but for the trailing edge's
+    e.trailing = L_ * dq * trail2_ / 2;
+    e.Fx = strip_.Ix;
+    e.Fy = strip_.Iy;
+    e.Mz = strip_.Ixy - r_.y_m * strip_.Ix;
+    e.stick_length = strip_.stick_length_m;
+    return e;
+  }
+
+  const ContactPatch& patch_;
+  const StripRates& r_;
+  const int j_;
+  const double L_;
+  const StepKinematics& k_;
+  ShiftScratch& scratch_;
+  StepResult* fields_;
+  const double a_, dx_;
+  const double* x_;      // the nodes x_edge(i)
+  StripNode* node_;      // node_[i] sits at x_edge(i)
+  const double* edge_p_;
+  // the integrals add up over the strip (per interval only for the fields)
+  IntervalSums strip_;
+  double hi2_ = 0, lo2_ = 0, trail2_ = 0;  // sums of |tau|^2 at the upstream, downstream, trailing nodes
+};
+
+template <bool kFields, bool kSpin, bool kLateral>
+StripEnergy shift_strip(const ContactPatch& patch, const StripRates& r, int j, double L, const StepKinematics& k,
+                        ShiftScratch& scratch, TransientState& state, StepResult* fields) {
+  return ShiftStrip<kFields, kSpin, kLateral>(patch, r, j, L, k, scratch, state, fields).step();
 }
 
 // one strip, upwind (lf = false) or Lax-Friedrichs (lf = true) at CFL = dq/dx, split in two:
@@ -492,6 +558,9 @@ StepResult satran_step(const ContactPatch& patch, const TangentialProblem& probl
     r.flexibility_J = L * dx / 2 * node_energy_sum(state) * g.dy_m - before;
   }
   state.L_m_per_Pa = L;
+  // the bound mu p(x) is nowhere lower than at the last step's end where the load has not fallen
+  const bool load_held = !(patch.normal_load_N < state.normal_load_N);
+  state.normal_load_N = patch.normal_load_N;
   // nodes outside the current contact carry no traction
   for (int j = 0; j < g.ny; ++j) {
     const double a = patch.half_length_m(j);
@@ -538,7 +607,8 @@ StepResult satran_step(const ContactPatch& patch, const TangentialProblem& probl
   const int strips = skips.mirrored && k.spin_rad == 0 && state.mirror_images ? first_mirrored_strip(patch, 0.0) : g.ny;
   state.mirror_images = strips < g.ny;  // after this step
   std::vector<StripEnergy> energies(g.ny);
-  double stick_area = 0, area = 0, E_start = 0, E_end = 0;  // sums of |tau|^2 over interior nodes
+  double E_start = 0, E_end = 0;  // sums of |tau|^2 over interior nodes
+  bool hold = true;               // every strip's invariants (strip_totals_hold)
   for (int j = 0; j < g.ny; ++j) {
     if (!(patch.half_length_m(j) > 0)) continue;
     StripEnergy& e = energies[j];
@@ -558,21 +628,32 @@ StepResult satran_step(const ContactPatch& patch, const TangentialProblem& probl
                       : explicit_strip(patch, problem, j, k, scheme == TransientScheme::LaxFriedrichs, state, old,
                                        fields ? &r : nullptr);
     }
+    // finite, and within mu times the strip's load unless the load fell in this step (a falling load
+    // leaves nodes above the new bound, which the step's path means carry before they slip back onto it).
+    // Not asserted: an exact shift step's strip dissipation >= 0, which random histories break beyond
+    // rounding (docs/satran.md, "Invariants")
+    hold &= strip_totals_hold(patch, problem.mu, j, e, load_held, 0);
     r.strip_energy_J_per_m(j) = e.dissipated;
-    r.dissipated_J += e.dissipated * g.dy_m;
     r.creep_work_J += e.creep * g.dy_m;
     r.trailing_J += e.trailing * g.dy_m;
     r.transport_J += e.transport * g.dy_m;
     E_start += e.E_start;
     E_end += e.E_end;
-    r.Fx_N += e.Fx * g.dy_m;
-    r.Fy_N += e.Fy * g.dy_m;
-    r.Mz_N_m += e.Mz * g.dy_m;
-    // the stick share of what the scheme counts: the node-based steps count dx per node in contact
-    stick_area += e.stick_length * g.dy_m;
-    area += (e.counted_length > 0 ? e.counted_length : 2 * patch.half_length_m(j)) * g.dy_m;
   }
-  r.stick_fraction = area > 0 ? stick_area / area : 0;
+  ROLLWEAR_ASSERT(hold, [&] {
+    for (int j = 0; j < g.ny; ++j)
+      if (patch.half_length_m(j) > 0 && !strip_totals_hold(patch, problem.mu, j, energies[j], load_held, 0))
+        return strip_invariant_text(patch, problem.mu, j, energies[j], load_held, 0);
+    return std::string();
+  }());
+  const PatchTotals totals = patch_totals(patch, energies);
+  ROLLWEAR_ASSERT(patch_totals_finite(totals), fmt::format("totals not finite: Fx {} Fy {} Mz {} dissipated {}",
+                                                          totals.Fx_N, totals.Fy_N, totals.Mz_N_m, totals.dissipated));
+  r.Fx_N = totals.Fx_N;
+  r.Fy_N = totals.Fy_N;
+  r.Mz_N_m = totals.Mz_N_m;
+  r.dissipated_J = totals.dissipated;
+  r.stick_fraction = totals.stick_fraction;
   r.elastic_change_J = L * dx / 2 * (E_end - E_start) * g.dy_m;
   r.balance_residual_J = r.dissipated_J - (r.creep_work_J - r.elastic_change_J - r.trailing_J - r.transport_J);
   return r;
@@ -666,227 +747,306 @@ class PatchCache {
   bool warned_ = false;  // of a load too small for the grid, once per run
 };
 
+
+// the CFL condition of the fixed-step schemes, checked before anything runs: the sub-steps per dt_s
+int fixed_step_substeps(const TransientCase& c, double dx) {
+  const TransientSettings& set = c.settings;
+  if (set.scheme == TransientScheme::Shift || c.inertia) return 1;
+  const double vmax = max_value(c.inputs.speed_m_per_s);
+  const double cfl = vmax * set.dt_s / dx;
+  if (!(cfl > 1 + 1e-12)) return 1;
+  if (!set.substep)
+    throw CflBreach("dt_s", std::to_string(set.dt_s) + " s breaks the CFL condition (V dt/dx = " +
+                                std::to_string(cfl) + " > 1 at V = " + std::to_string(vmax) +
+                                " m/s, dx = " + std::to_string(dx) + " m); the largest allowed dt is " +
+                                std::to_string(dx / vmax) + " s (or set substep: true)",
+                    set.dt_s, vmax, dx);
+  return static_cast<int>(std::ceil(cfl - 1e-12));
+}
+
+// a step cut short to end the run: shorter than it would be, beyond rounding
+bool cut_short(double dt_s, double natural_s) { return dt_s < natural_s * (1 - 1e-9); }
+
+// One step of a run without inertia: its kinematics, and the inputs it runs on.
+struct PrescribedStep {
+  StepKinematics k;
+  double V = 0, F = 0;
+  Creepages cr;
+  bool shortened = false;
+};
+
+// The step from t. Shift: one dx of rolling (dq = dx exactly, however short dt_s is). dt_s (0: no limit)
+// bounds only the steps that cannot roll a whole dx: a standstill (no rolling over dt_s: an exact step
+// that transports nothing), and the steps once the rolling stops for good less than dx further on (upwind
+// at CFL dq/dx < 1, the fallback). The end of the run cuts the last step short. Upwind and
+// lax-friedrichs: dt_s / substeps.
+// The creepages and the speed are taken at mid-step (the rigid slip over the step), the load at the
+// step's end, whose Coulomb bound the state at the step's end obeys (a falling load clips it in this step).
+PrescribedStep prescribed_step(const TransientCase& c, double t, double dx, int substeps) {
+  const TransientSettings& set = c.settings;
+  const History& speed = c.inputs.speed_m_per_s;
+  const double left = set.t_end_s - t;
+  PrescribedStep s;
+  StepKinematics& k = s.k;
+  if (set.scheme == TransientScheme::Shift) {
+    const double roll_s = time_to_accumulate(speed, t, dx) - t;  // +inf if the rolling never covers dx
+    const bool standstill = set.dt_s > 0 && integral(speed, t, t + std::min(set.dt_s, left)) == 0;
+    const double natural = standstill || (std::isinf(roll_s) && set.dt_s > 0) ? set.dt_s : roll_s;
+    k.dt_s = std::min(natural, left);
+    k.dq_m = k.dt_s == roll_s ? dx : std::min(dx, integral(speed, t, t + k.dt_s));
+    s.shortened = cut_short(k.dt_s, natural);
+  } else {
+    const double natural = set.dt_s / substeps;
+    k.dt_s = std::min(natural, left);
+    k.dq_m = std::min(dx, integral(speed, t, t + k.dt_s));
+    s.shortened = cut_short(k.dt_s, natural);
+  }
+  const double tm = t + k.dt_s / 2;
+  s.V = value_at(speed, tm);
+  s.F = value_at(c.inputs.normal_load_N, t + k.dt_s);
+  s.cr = {value_at(c.inputs.xi, tm), value_at(c.inputs.eta, tm), value_at(c.inputs.phi_per_m, tm)};
+  // rigid slip over the step: creepage x rolled distance
+  k.slip_x_m = s.cr.xi * k.dq_m;
+  k.slip_y_m = s.cr.eta * k.dq_m;
+  k.spin_rad = s.cr.phi_per_m * k.dq_m;
+  return s;
+}
+
+// One step of an inertia run: the roller's spin at the step's end, omega_end, balances the creep torque
+// over the step (implicit in omega1): J1 (omega_end - omega1) = (-R1 Fx - T_res) dt, with V and the slip
+// from the mean spin (omega1 + omega_end)/2.
+struct InertiaStep {
+  StepKinematics k;
+  StepResult r;
+  TransientState state;  // after the step
+  double omega_end = 0, V = 0, F = 0;
+  Creepages cr;
+  bool shortened = false;
+};
+
+InertiaStep inertia_step(const TransientCase& c, PatchCache& patches, const TransientState& state, double omega1,
+                         double t, double dx, bool fields) {
+  const RollerInertia& in = *c.inertia;
+  const TransientSettings& set = c.settings;
+  const double longest = set.dt_s, left = set.t_end_s - t;
+  const double V2_now = value_at(in.path_speed_m_per_s, t);
+  const double V_now = (omega1 * in.R1_m + V2_now) / 2;
+  const double dt_guess = std::min({V_now > 0 ? dx / V_now : longest, longest, left});
+  const double V2 = value_at(in.path_speed_m_per_s, t + dt_guess / 2);
+  InertiaStep s;
+  s.F = value_at(c.inputs.normal_load_N, t + dt_guess / 2);
+  const ContactPatch& patch = patches.at(s.F);
+  // the step from the mean spin; returns the residual of the spin balance
+  auto evaluate = [&](double omega_end, InertiaStep& out) {
+    const double omega_mid = (omega1 + omega_end) / 2;
+    const double Vm = std::max(0.0, (omega_mid * in.R1_m + V2) / 2);
+    StepKinematics& kk = out.k;
+    const double natural = std::min(Vm > 0 ? dx / Vm : longest, longest);
+    kk.dt_s = std::min(natural, left);
+    kk.dq_m = std::min(dx, Vm * kk.dt_s);
+    kk.slip_x_m = (V2 - omega_mid * in.R1_m) * kk.dt_s;
+    kk.slip_y_m = kk.spin_rad = 0;
+    out.shortened = cut_short(kk.dt_s, natural);
+    // creepage ratio for the mean flexibility: only xi here
+    const Creepages ratio{1.0, 0.0, 0.0};
+    const TangentialProblem pb = make_tangential_problem(patch, c.materials, ratio, c.mu, Vm);
+    out.state = state;
+    out.r = satran_step(patch, pb, kk, TransientScheme::Shift, out.state, fields, set.skips);
+    return in.J1_kg_m2 * (omega_end - omega1) - (-in.R1_m * out.r.Fx_N - in.T_res_N_m) * kk.dt_s;
+  };
+  // the bracket: the creep force is bounded by mu F
+  const double span = (c.mu * s.F * in.R1_m + std::abs(in.T_res_N_m)) * longest / in.J1_kg_m2 * 1.01 + 1e-12;
+  const double lo = std::max(0.0, omega1 - span), hi = omega1 + span;
+  const double f_lo = evaluate(lo, s), f_hi = evaluate(hi, s);
+  double omega_end = f_lo > 0 ? lo : hi;  // f_lo > 0: it cannot spin down below 0 within the bracket, it stops
+  if (f_lo <= 0 && f_hi >= 0) {  // the balance is monotone in omega_end
+    const RootResult root = find_root_bracketed([&](double w) { return evaluate(w, s); }, lo, hi, f_lo, f_hi,
+                                                1e-13 * std::max(1.0, hi));
+    if (!root.converged)
+      throw std::runtime_error(fmt::format("satran: the roller's spin balance at t = {:.6g} s did not converge "
+                                           "(residual {:.3g} after {} iterations)",
+                                           t, root.f, root.iterations));
+    omega_end = root.x;
+  }
+  evaluate(omega_end, s);
+  s.omega_end = omega_end;
+  s.V = s.k.dt_s > 0 ? s.k.dq_m / s.k.dt_s : 0;
+  s.cr.xi = s.V > 0 ? s.k.slip_x_m / s.k.dq_m : 0;
+  return s;
+}
+
+// A step's record: the forces of an exact shift step are averages over it (held at mid-step), those of an
+// explicit step end values
+TransientRecord record_of(const TransientCase& c, int step, double t, double q, double dx, const StepKinematics& k,
+                          const StepResult& r, double V, double F, const Creepages& cr, double omega1) {
+  const StepScheme ran = step_scheme(c.inertia ? TransientScheme::Shift : c.settings.scheme, k.dq_m, dx);
+  const bool averages = ran == StepScheme::Shift;
+  TransientRecord rec;
+  rec.step = step;
+  rec.t_s = t + (averages ? k.dt_s / 2 : k.dt_s);
+  rec.q_m = q + (averages ? k.dq_m / 2 : k.dq_m);
+  rec.dt_s = k.dt_s;
+  rec.speed_m_per_s = V;
+  rec.xi = cr.xi;
+  rec.eta = cr.eta;
+  rec.phi_per_m = cr.phi_per_m;
+  rec.normal_load_N = F;
+  rec.omega1_rad_per_s = omega1;
+  rec.Fx_N = r.Fx_N;
+  rec.Fy_N = r.Fy_N;
+  rec.Mz_N_m = r.Mz_N_m;
+  rec.power_W = k.dt_s > 0 ? r.dissipated_J / k.dt_s : 0;
+  rec.stick_fraction = r.stick_fraction;
+  rec.balance_residual_W = k.dt_s > 0 ? r.balance_residual_J / k.dt_s : 0;
+  rec.cfl = k.dq_m / dx;
+  rec.scheme = ran;
+  return rec;
+}
+
+// The run between steps: where it stands, and what it has gathered.
+struct RunState {
+  double t = 0, q = 0;
+  int step = 0;
+  double omega1 = 0;
+  TransientState tractions;
+  std::vector<double> snaps;  // the snapshot times, sorted
+  size_t next_snap = 0;
+  bool has_whole_step = false;  // res.end holds a whole step's record
+};
+
+// the fields only on a step that reaches the next snapshot time
+bool reaches_snapshot(const RunState& run, double dt) {
+  return run.next_snap < run.snaps.size() && run.snaps[run.next_snap] <= (run.t + dt) * (1 + 1e-12);
+}
+
+// a step taken: the clock advances, the energies add up, the observer sees it, the snapshots it reaches
+// are kept, and the run's end values follow the last whole step
+void record_step(RunState& run, TransientResult& res, const TransientRecord& rec, const StepKinematics& k,
+                 StepResult& r, const ContactPatch& patch, const StepObserver& observe) {
+  run.t += k.dt_s;
+  run.q += k.dq_m;
+  res.strip_energy_J_per_m += r.strip_energy_J_per_m;
+  res.dissipated_J += r.dissipated_J;
+  if (!rec.shortened || !run.has_whole_step) {
+    res.end = rec;
+    run.has_whole_step = !rec.shortened;
+  }
+  if (observe)
+    observe(rec, k.dt_s > 0 ? Eigen::ArrayXd(r.strip_energy_J_per_m / k.dt_s) : Eigen::ArrayXd::Zero(res.grid.ny));
+  while (run.next_snap < run.snaps.size() && run.snaps[run.next_snap] <= run.t * (1 + 1e-12)) {
+    Snapshot s;
+    s.t_s = run.t;
+    s.pressure_Pa = patch.pressure_Pa;
+    s.tau_x_Pa = r.tau_x_Pa;
+    s.tau_y_Pa = r.tau_y_Pa;
+    s.slip_x_m_per_s = r.slip_x_m_per_s;
+    s.slip_y_m_per_s = r.slip_y_m_per_s;
+    res.snapshots.push_back(std::move(s));
+    ++run.next_snap;
+  }
+  SPDLOG_TRACE("satran step {}: t {:.6e} s, Fx {:.6e} N, P {:.6e} W", run.step, run.t, r.Fx_N, rec.power_W);
+}
+
+// Steady running (shift, no inertia, after a whole step): once every input has been constant since the
+// state was last disturbed, long enough for the material now in contact to have entered under the
+// constant inputs, the rest of the constant stretch (whole steps, up to one step before the next change,
+// snapshot time or t_end_s) is one record with the last step's strip energies times its step count.
+void skip_steady_running(const TransientCase& c, RunState& run, TransientResult& res, const TransientRecord& rec,
+                         const StepKinematics& k, const StepResult& r, const ContactPatch& patch,
+                         const StepObserver& observe) {
+  const double dx = res.grid.dx_m;
+  const History* inputs[] = {&c.inputs.speed_m_per_s, &c.inputs.xi, &c.inputs.eta, &c.inputs.phi_per_m,
+                             &c.inputs.normal_load_N};
+  double since = 0, until = c.settings.t_end_s;
+  for (const History* h : inputs) {  // constant on [since, until], the last step [t - dt, t] included
+    since = std::max(since, constant_since(*h, run.t));
+    until = std::min(until, constant_until(*h, run.t));
+  }
+  if (run.next_snap < run.snaps.size()) until = std::min(until, run.snaps[run.next_snap]);
+  const double settle_m = 2 * patch.half_length_m.maxCoeff() + 2 * dx;
+  // a whole number of steps, so that the steps after the stretch fall where they would without the skip
+  const double whole_steps = std::floor((until - run.t) / k.dt_s) - 1;
+  if (!(whole_steps >= 2 && integral(c.inputs.speed_m_per_s, since, run.t - k.dt_s) >= settle_m)) return;
+  const double span = whole_steps * k.dt_s;
+  TransientRecord skip = rec;
+  skip.step = ++run.step;
+  skip.t_s = run.t + span / 2;
+  skip.q_m = run.q + rec.speed_m_per_s * span / 2;
+  skip.dt_s = span;
+  skip.cfl = rec.speed_m_per_s * span / dx;
+  skip.skipped = true;
+  run.t += span;
+  run.q += whole_steps * k.dq_m;
+  res.strip_energy_J_per_m += whole_steps * r.strip_energy_J_per_m;
+  res.dissipated_J += whole_steps * r.dissipated_J;
+  res.end = skip;
+  if (observe) observe(skip, Eigen::ArrayXd(r.strip_energy_J_per_m / k.dt_s));
+  SPDLOG_TRACE("satran: steady running skipped from t {:.6e} s to {:.6e} s", run.t - span, run.t);
+}
+
+// the grid covers the largest contact of the run
+Grid run_grid(const TransientCase& c) {
+  if (c.patch) return c.patch->grid;
+  const HertzContact largest = solve_hertz(c.bodies, c.materials, max_value(c.inputs.normal_load_N));
+  return make_grid(largest.a_m, largest.b_m, c.settings.grid);
+}
+
 }  // namespace
 
 TransientResult run_transient(const TransientCase& c, const StepObserver& observe) {
   check_run(c);
   const TransientSettings& set = c.settings;
   TransientResult res;
-  // the grid covers the largest contact of the run
-  if (c.patch) {
-    res.grid = c.patch->grid;
-  } else {
-    const HertzContact largest = solve_hertz(c.bodies, c.materials, max_value(c.inputs.normal_load_N));
-    res.grid = make_grid(largest.a_m, largest.b_m, set.grid);
-  }
+  res.grid = run_grid(c);
   const Grid& g = res.grid;
   const double dx = g.dx_m;
   res.strip_energy_J_per_m = Eigen::ArrayXd::Zero(g.ny);
-  TransientState state = rest_state(g);
   PatchCache patches(c, g);
+  const int substeps = fixed_step_substeps(c, dx);
+  const bool shift_run = set.scheme == TransientScheme::Shift || c.inertia;
 
-  // the CFL condition of the fixed-step schemes, checked before anything runs
-  int substeps = 1;
-  if (set.scheme != TransientScheme::Shift && !c.inertia) {
-    const double vmax = max_value(c.inputs.speed_m_per_s);
-    const double cfl = vmax * set.dt_s / dx;
-    if (cfl > 1 + 1e-12) {
-      if (!set.substep)
-        throw CflBreach("dt_s", std::to_string(set.dt_s) + " s breaks the CFL condition (V dt/dx = " +
-                                    std::to_string(cfl) + " > 1 at V = " + std::to_string(vmax) +
-                                    " m/s, dx = " + std::to_string(dx) + " m); the largest allowed dt is " +
-                                    std::to_string(dx / vmax) + " s (or set substep: true)",
-                        set.dt_s, vmax, dx);
-      substeps = static_cast<int>(std::ceil(cfl - 1e-12));
-    }
-  }
-
-  std::vector<double> snaps = set.snapshot_times_s;
-  std::sort(snaps.begin(), snaps.end());
-  size_t next_snap = 0;
-  double t = 0, q = 0;
-  double omega1 = c.inertia ? c.inertia->omega1_0_rad_per_s : 0.0;
-  const double longest = set.dt_s > 0 ? set.dt_s : std::numeric_limits<double>::infinity();
-  int step = 0;
-  while (t < set.t_end_s * (1 - 1e-12)) {
-    const double left = set.t_end_s - t;
+  RunState run;
+  run.tractions = rest_state(g);
+  run.snaps = set.snapshot_times_s;
+  std::sort(run.snaps.begin(), run.snaps.end());
+  run.omega1 = c.inertia ? c.inertia->omega1_0_rad_per_s : 0.0;
+  while (run.t < set.t_end_s * (1 - 1e-12)) {
     StepKinematics k;
-    TransientRecord rec;
     StepResult r;
-    double V = 0;
+    TransientRecord rec;
     double F = 0;
-    Creepages cr;
-    // the fields only on a step that reaches the next snapshot time (the step's length: below)
-    const auto reaches_snapshot = [&](double dt) {
-      return next_snap < snaps.size() && snaps[next_snap] <= (t + dt) * (1 + 1e-12);
-    };
     if (!c.inertia) {
-      // step length: one dx of rolling (shift), or the fixed step
-      if (set.scheme == TransientScheme::Shift) {
-        const double t_roll = time_to_accumulate(c.inputs.speed_m_per_s, t, dx);
-        k.dt_s = std::min({t_roll - t, longest, left});
-        k.dq_m = k.dt_s == t_roll - t ? dx : std::min(dx, integral(c.inputs.speed_m_per_s, t, t + k.dt_s));
-      } else {
-        k.dt_s = std::min(set.dt_s / substeps, left);
-        k.dq_m = std::min(dx, integral(c.inputs.speed_m_per_s, t, t + k.dt_s));
-      }
-      // the creepages and the speed at mid-step (the rigid slip over the step); the contact at the step's
-      // end, whose Coulomb bound the state at the step's end obeys (a falling load clips it in this step)
-      const double tm = t + k.dt_s / 2;
-      V = value_at(c.inputs.speed_m_per_s, tm);
-      F = value_at(c.inputs.normal_load_N, t + k.dt_s);
-      cr = {value_at(c.inputs.xi, tm), value_at(c.inputs.eta, tm), value_at(c.inputs.phi_per_m, tm)};
-      // rigid slip over the step: creepage x rolled distance
-      k.slip_x_m = cr.xi * k.dq_m;
-      k.slip_y_m = cr.eta * k.dq_m;
-      k.spin_rad = cr.phi_per_m * k.dq_m;
-      const ContactPatch& patch = patches.at(F);
-      const TangentialProblem pb = make_tangential_problem(patch, c.materials, cr, c.mu, V);
-      r = satran_step(patch, pb, k, set.scheme, state, reaches_snapshot(k.dt_s), set.skips);
+      const PrescribedStep s = prescribed_step(c, run.t, dx, substeps);
+      const ContactPatch& patch = patches.at(s.F);
+      const TangentialProblem pb = make_tangential_problem(patch, c.materials, s.cr, c.mu, s.V);
+      r = satran_step(patch, pb, s.k, set.scheme, run.tractions, reaches_snapshot(run, s.k.dt_s), set.skips);
+      k = s.k;
+      F = s.F;
+      rec = record_of(c, ++run.step, run.t, run.q, dx, k, r, s.V, s.F, s.cr, run.omega1);
+      rec.shortened = s.shortened;
     } else {
-      // the roller's spin at the end of the step balances the creep torque over the step (implicit)
-      const RollerInertia& in = *c.inertia;
-      const double V2_now = value_at(in.path_speed_m_per_s, t);
-      const double V_now = (omega1 * in.R1_m + V2_now) / 2;
-      const double dt_guess = std::min({V_now > 0 ? dx / V_now : longest, longest, left});
-      const double V2 = value_at(in.path_speed_m_per_s, t + dt_guess / 2);
-      F = value_at(c.inputs.normal_load_N, t + dt_guess / 2);
-      const ContactPatch& patch = patches.at(F);
-      TransientState trial_state;
-      auto evaluate = [&](double omega_end, StepResult& out, StepKinematics& kk) {
-        const double omega_mid = (omega1 + omega_end) / 2;
-        const double Vm = std::max(0.0, (omega_mid * in.R1_m + V2) / 2);
-        kk.dt_s = std::min({Vm > 0 ? dx / Vm : longest, longest, left});
-        kk.dq_m = std::min(dx, Vm * kk.dt_s);
-        kk.slip_x_m = (V2 - omega_mid * in.R1_m) * kk.dt_s;
-        kk.slip_y_m = kk.spin_rad = 0;
-        // creepage ratio for the mean flexibility: only xi here
-        const Creepages ratio{1.0, 0.0, 0.0};
-        const TangentialProblem pb = make_tangential_problem(patch, c.materials, ratio, c.mu, Vm);
-        trial_state = state;
-        out = satran_step(patch, pb, kk, TransientScheme::Shift, trial_state, reaches_snapshot(longest),
-                          set.skips);
-        // J1 (omega_end - omega1) = (-R1 Fx - T_res) dt
-        return in.J1_kg_m2 * (omega_end - omega1) - (-in.R1_m * out.Fx_N - in.T_res_N_m) * kk.dt_s;
-      };
-      // bracket: the creep force is bounded by mu F
-      const double span = (c.mu * F * in.R1_m + std::abs(in.T_res_N_m)) * longest / in.J1_kg_m2 * 1.01 + 1e-12;
-      double lo = std::max(0.0, omega1 - span), hi = omega1 + span;
-      StepResult r_lo, r_hi;
-      StepKinematics k_lo, k_hi;
-      double f_lo = evaluate(lo, r_lo, k_lo), f_hi = evaluate(hi, r_hi, k_hi);
-      if (f_lo > 0) {  // cannot spin down below zero within the bracket: the roller stops
-        hi = lo;
-        f_hi = f_lo;
-      }
-      // Illinois regula falsi on the monotone balance
-      double omega_end = f_lo > 0 ? lo : (f_hi < 0 ? hi : omega1);
-      int side = 0;
-      for (int it = 0; it < 100 && f_lo <= 0 && f_hi >= 0; ++it) {
-        omega_end = (lo * f_hi - hi * f_lo) / (f_hi - f_lo);
-        if (!(omega_end > lo && omega_end < hi)) omega_end = (lo + hi) / 2;
-        StepResult rr;
-        StepKinematics kk;
-        const double f = evaluate(omega_end, rr, kk);
-        if (std::abs(hi - lo) <= 1e-13 * std::max(1.0, std::abs(omega_end)) || f == 0) break;
-        if (f < 0) {
-          lo = omega_end;
-          f_lo = f;
-          if (side == -1) f_hi /= 2;
-          side = -1;
-        } else {
-          hi = omega_end;
-          f_hi = f;
-          if (side == 1) f_lo /= 2;
-          side = 1;
-        }
-      }
-      evaluate(omega_end, r, k);
-      state = trial_state;
-      omega1 = omega_end;
-      V = k.dt_s > 0 ? k.dq_m / k.dt_s : 0;
-      cr.xi = V > 0 ? k.slip_x_m / k.dq_m : 0;
+      InertiaStep s = inertia_step(c, patches, run.tractions, run.omega1, run.t, dx,
+                                   reaches_snapshot(run, set.dt_s));
+      run.tractions = std::move(s.state);
+      run.omega1 = s.omega_end;
+      k = s.k;
+      r = std::move(s.r);
+      F = s.F;
+      rec = record_of(c, ++run.step, run.t, run.q, dx, k, r, s.V, s.F, s.cr, run.omega1);
+      rec.shortened = s.shortened;
     }
-
-    // record the step
-    // the forces of an exact shift step are averages over it, those of an explicit step end values
-    const bool averages = set.scheme == TransientScheme::Shift && k.dq_m == dx;
-    rec.step = ++step;
-    rec.t_s = t + (averages ? k.dt_s / 2 : k.dt_s);
-    rec.q_m = q + (averages ? k.dq_m / 2 : k.dq_m);
-    rec.dt_s = k.dt_s;
-    rec.speed_m_per_s = V;
-    rec.xi = cr.xi;
-    rec.eta = cr.eta;
-    rec.phi_per_m = cr.phi_per_m;
-    rec.normal_load_N = F;
-    rec.omega1_rad_per_s = omega1;
-    rec.Fx_N = r.Fx_N;
-    rec.Fy_N = r.Fy_N;
-    rec.Mz_N_m = r.Mz_N_m;
-    rec.power_W = k.dt_s > 0 ? r.dissipated_J / k.dt_s : 0;
-    rec.stick_fraction = r.stick_fraction;
-    rec.balance_residual_W = k.dt_s > 0 ? r.balance_residual_J / k.dt_s : 0;
-    rec.cfl = k.dq_m / dx;
-    t += k.dt_s;
-    q += k.dq_m;
-    res.strip_energy_J_per_m += r.strip_energy_J_per_m;
-    res.dissipated_J += r.dissipated_J;
-    if (observe) observe(rec, k.dt_s > 0 ? Eigen::ArrayXd(r.strip_energy_J_per_m / k.dt_s) : Eigen::ArrayXd::Zero(g.ny));
-    while (next_snap < snaps.size() && snaps[next_snap] <= t * (1 + 1e-12)) {
-      Snapshot s;
-      s.t_s = t;
-      s.pressure_Pa = patches.at(F).pressure_Pa;
-      s.tau_x_Pa = r.tau_x_Pa;
-      s.tau_y_Pa = r.tau_y_Pa;
-      s.slip_x_m_per_s = r.slip_x_m_per_s;
-      s.slip_y_m_per_s = r.slip_y_m_per_s;
-      res.snapshots.push_back(std::move(s));
-      ++next_snap;
-    }
-    SPDLOG_TRACE("satran step {}: t {:.6e} s, Fx {:.6e} N, P {:.6e} W", step, t, r.Fx_N, rec.power_W);
+    if (shift_run && rec.scheme == StepScheme::Upwind) ++res.fallback_steps;
+    record_step(run, res, rec, k, r, patches.at(F), observe);
     if (!(k.dt_s > 0)) break;  // nothing left to advance
-
-    // steady running: every input constant since the state was last disturbed, long enough for the
-    // material now in contact to have entered under the constant inputs -> skip to the next change
-    if (set.skip_steady && set.scheme == TransientScheme::Shift && !c.inertia && k.dq_m == dx) {
-      const History* inputs[] = {&c.inputs.speed_m_per_s, &c.inputs.xi, &c.inputs.eta, &c.inputs.phi_per_m,
-                                 &c.inputs.normal_load_N};
-      double since = 0, until = set.t_end_s;
-      for (const History* h : inputs) {  // constant on [since, until], the last step [t - dt, t] included
-        since = std::max(since, constant_since(*h, t));
-        until = std::min(until, constant_until(*h, t));
-      }
-      if (next_snap < snaps.size()) until = std::min(until, snaps[next_snap]);
-      const double settle_m = 2 * patches.at(F).half_length_m.maxCoeff() + 2 * dx;
-      // a whole number of steps, so that the steps after the stretch fall where they would without the skip
-      const double whole_steps = std::floor((until - t) / k.dt_s) - 1;
-      if (whole_steps >= 2 && integral(c.inputs.speed_m_per_s, since, t - k.dt_s) >= settle_m) {
-        // the last step's strip powers are the steady ones: held over the stretch
-        const double span = whole_steps * k.dt_s;
-        const double rate = whole_steps;
-        TransientRecord skip = rec;
-        skip.step = ++step;
-        skip.t_s = t + span / 2;
-        skip.q_m = q + V * span / 2;
-        skip.dt_s = span;
-        skip.cfl = V * span / dx;
-        skip.skipped = true;
-        t += span;
-        q += whole_steps * k.dq_m;
-        res.strip_energy_J_per_m += rate * r.strip_energy_J_per_m;
-        res.dissipated_J += rate * r.dissipated_J;
-        if (observe) observe(skip, Eigen::ArrayXd(r.strip_energy_J_per_m / k.dt_s));
-        SPDLOG_TRACE("satran: steady running skipped from t {:.6e} s to {:.6e} s", t - span, t);
-      }
-    }
+    if (set.skip_steady && set.scheme == TransientScheme::Shift && !c.inertia && rec.scheme == StepScheme::Shift)
+      skip_steady_running(c, run, res, rec, k, r, patches.at(F), observe);
   }
-  res.steps = step;
-  res.t_end_s = t;
-  res.q_end_m = q;
-  res.final_state = std::move(state);
-  spdlog::debug("satran ({}): {} steps to t {:.6e} s, q {:.6e} m, dissipated {:.6e} J", to_string(set.scheme), step,
-                t, q, res.dissipated_J);
+  res.steps = run.step;
+  res.t_end_s = run.t;
+  res.q_end_m = run.q;
+  res.final_state = std::move(run.tractions);
+  spdlog::debug("satran ({}): {} steps to t {:.6e} s, q {:.6e} m, dissipated {:.6e} J, {} upwind fallback steps",
+                to_string(set.scheme), run.step, run.t, run.q, res.dissipated_J, res.fallback_steps);
   return res;
 }
 

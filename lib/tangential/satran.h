@@ -9,9 +9,10 @@
 //   shift          steps of rolled distance dq = dx: material moves exactly one node, and the
 //                  interval update is the steady solver's (lib/tangential/strip_march.h) applied to the previous
 //                  step's upstream node. Its steady state is the steady solver's to rounding, and the
-//                  discrete energy balance of §4 holds to rounding at every step. Where rolling does
-//                  not cover dx within the longest allowed step (V = 0, standstill or sliding), the
-//                  step falls back to upwind at CFL = dq/dx < 1.
+//                  discrete energy balance of §4 holds to rounding at every step. A step that rolls
+//                  less than dx (rolling that stops before covering dx, the last step cut short to
+//                  end the run, an inertia step bounded by dt_s) falls back to upwind at CFL = dq/dx
+//                  < 1 (StepScheme::Upwind, counted); one that rolls nothing is exact (Standstill).
 //   upwind         fixed dt, CFL = V dt/dx <= 1: tau* = tau_i + CFL (tau_{i+1} - tau_i) - c dt/L.
 //   lax-friedrichs the paper's scheme: tau* = (tau_{i+1} + tau_{i-1})/2 + CFL (tau_{i+1} - tau_{i-1})/2 - c dt/L.
 // The last two clip tau* to the bound node by node; the slip is (tau - tau*) L / dt. They smear at
@@ -36,7 +37,7 @@
 #include "lib/elastic.h"
 #include "lib/normal/hertz.h"
 #include "lib/history.h"
-#include "lib/tangential/strip_march.h"
+#include "lib/tangential/strip_node.h"
 #include "lib/tangential/tangential.h"
 
 namespace contact {
@@ -46,6 +47,15 @@ enum class TransientScheme { Shift, Upwind, LaxFriedrichs };
 std::string to_string(TransientScheme scheme);
 // throws std::invalid_argument naming the valid schemes
 TransientScheme parse_transient_scheme(const std::string& name);
+
+// The scheme one step actually ran. A shift run's steps are Shift (dq = dx, exact), Standstill (no rolling,
+// dq = 0: nothing is transported, exact too) or Upwind (0 < dq < dx: the fallback at CFL dq/dx < 1, which
+// smears like the upwind scheme: where rolling never covers dx before the run ends, the inertia's steps
+// bounded by dt_s, the last step cut short to end at t_end_s).
+enum class StepScheme { Shift, Standstill, Upwind, LaxFriedrichs };
+std::string to_string(StepScheme scheme);
+// what satran_step runs for `scheme` with the rolled distance dq on cells of length dx
+StepScheme step_scheme(TransientScheme scheme, double dq_m, double dx_m);
 
 // rigid kinematics over one step
 struct StepKinematics {
@@ -61,6 +71,7 @@ struct TransientState {
   int nx = 0, ny = 0;
   std::vector<StripNode> nodes;  // (nx+1) x ny: node i of strip j sits at x_edge(i), index i + j (nx+1)
   double L_m_per_Pa = 0;         // the flexibility the tractions refer to (u = L tau); 0 = not set yet
+  double normal_load_N = 0;      // the contact's load at the last step (0 = none yet)
   // strips j and ny - 1 - j hold the same nodes, bit for bit: true at rest and after a step that
   // mirrored its strips (TransientSkips::mirrored); whoever writes the nodes otherwise clears it
   bool mirror_images = false;
@@ -131,7 +142,8 @@ struct TransientInputs {
 // (radius R1, polar moment J1, resisting torque T_res) spins up under the creep force,
 //   J1 d omega1/dt = -R1 Fx - T_res,  w_x = V2 - omega1 R1,  V = (omega1 R1 + V2)/2 (docs/physics.md §5).
 // omega1 is advanced implicitly with the tractions: the end-of-step balance is solved for omega1.
-// Inertia runs use the shift scheme (with its fallback to time steps while rolling is slow).
+// Inertia runs use the shift scheme, with steps of at most dt_s (the coupling is stiff): where dt_s is
+// shorter than dx/V a step falls back to upwind at CFL V dt/dx < 1 (counted in TransientResult::fallback_steps).
 struct RollerInertia {
   double R1_m = 0;
   double J1_kg_m2 = 0;
@@ -143,7 +155,9 @@ struct RollerInertia {
 struct TransientSettings {
   TransientScheme scheme = TransientScheme::Shift;
   double t_end_s = 0;
-  double dt_s = 0;        // upwind, lax-friedrichs: the step; shift: the longest step (0 = no limit)
+  // upwind, lax-friedrichs: the step. shift: a step rolls one dx whatever dt_s is; dt_s (0 = no limit)
+  // bounds only the steps that roll nothing (a standstill, exact) and the inertia's steps
+  double dt_s = 0;
   bool substep = false;   // split a step that breaks CFL <= 1 instead of refusing it
   GridSpec grid;
   std::vector<double> snapshot_times_s;  // fields are recorded at the end of the step that reaches each
@@ -181,7 +195,10 @@ struct TransientRecord {  // one step
   double stick_fraction = 0;
   double balance_residual_W = 0;
   double cfl = 0;
+  StepScheme scheme = StepScheme::Shift;  // what the step ran
   bool skipped = false;  // steady running skipped (settings.skip_steady): dt_s spans the whole stretch
+  // the last step, cut short to end at t_end_s (shift: an upwind step at CFL < 1): not the run's end values
+  bool shortened = false;
 };
 
 struct Snapshot {
@@ -197,6 +214,10 @@ struct TransientResult {
   int steps = 0;
   double t_end_s = 0, q_end_m = 0;
   double dissipated_J = 0;
+  // the run's end values: the last whole step's record (the last step's if no step is whole), since the
+  // step cut short to end at t_end_s runs a less accurate scheme
+  TransientRecord end;
+  int fallback_steps = 0;  // shift runs: steps that ran upwind at CFL < 1 (StepScheme::Upwind)
 };
 
 // called after every step with the record and the strip powers P_l(y_j) of the step (W/m)

@@ -77,11 +77,9 @@ namespace contact {
 
 namespace {
 
-struct StripTotals {
-  double Fx = 0, Fy = 0, Mz = 0;  // per unit width
-  double power = 0, creep_power = 0, trailing = 0;
-  double stick_length = 0;
-  double counted_length = 0;  // classic: the length its cell centres stand for (0: the exact 2 a_j)
+// a strip's totals (dissipated: its power, W/m) and what the steady solution also reports per strip
+struct SteadyStrip : StripTotals {
+  double creep_power = 0, trailing = 0;
 };
 
 // the stick solution from a node at x_s (docs/physics.md §3): tau_x linear, tau_y quadratic in t = x_s - x
@@ -365,8 +363,8 @@ class StripMarch {
   }
 
   // when done: the totals, with the elastic energy carried out at the trailing edge
-  StripTotals totals() const {
-    StripTotals st = st_;
+  SteadyStrip totals() const {
+    SteadyStrip st = st_;
     st.trailing = VL_ * (node_.tx * node_.tx + node_.ty * node_.ty) / 2;
     return st;
   }
@@ -380,7 +378,7 @@ class StripMarch {
     st_.Fx += sums.Ix;
     st_.Fy += sums.Iy;
     st_.Mz += sums.Ixy - r_.y_m * sums.Ix;
-    st_.power += VL_ * dissipation_per_VL(r_, hi, lo, sums);
+    st_.dissipated += VL_ * dissipation_per_VL(r_, hi, lo, sums);
     st_.creep_power += VL_ * creep_power_per_VL(r_, sums);
     st_.stick_length += sums.stick_length_m;
   }
@@ -400,7 +398,7 @@ class StripMarch {
   bool in_stretch_ = false;
   StripNode stretch_first_;
   IntervalSums stretch_;
-  StripTotals st_;
+  SteadyStrip st_;
 };
 
 // Pure xi on strip j (eta = phi = 0): the consistent march's result in closed form (docs/physics.md §4).
@@ -410,8 +408,8 @@ class StripMarch {
 // could, so it never sticks again): Fx = -alpha t_s^2/2 - sign(alpha) G a S(1 - t_s/a), S the integral of
 // sqrt(1 - u^2) from -1. tau = 0 at both ends, so the strip's power is its creep power -V L alpha Fx.
 // The march reaches the same numbers, since it integrates these pieces exactly on any grid.
-StripTotals pure_xi_strip(const StripRates& r, double VL) {
-  StripTotals st;
+SteadyStrip pure_xi_strip(const StripRates& r, double VL) {
+  SteadyStrip st;
   const double a = r.a_m, alpha = r.alpha_Pa_per_m, G = r.bound_Pa;
   if (alpha == 0) {  // no creepage: no traction, all stick
     st.stick_length = 2 * a;
@@ -420,14 +418,14 @@ StripTotals pure_xi_strip(const StripRates& r, double VL) {
   const double t_s = 2 * a * G * G / (a * a * alpha * alpha + G * G);
   st.Fx = -alpha * t_s * t_s / 2 - std::copysign(G * a * semi_ellipse_integral(1 - t_s / a), alpha);
   st.Mz = -r.y_m * st.Fx;
-  st.power = st.creep_power = -VL * alpha * st.Fx;
+  st.dissipated = st.creep_power = -VL * alpha * st.Fx;
   st.stick_length = t_s;
   return st;
 }
 
 // all strips below `strips` in closed form (pure xi)
-std::vector<StripTotals> pure_xi_strips(const ContactPatch& patch, const TangentialProblem& pb, int strips) {
-  std::vector<StripTotals> totals(patch.grid.ny);
+std::vector<SteadyStrip> pure_xi_strips(const ContactPatch& patch, const TangentialProblem& pb, int strips) {
+  std::vector<SteadyStrip> totals(patch.grid.ny);
   const double VL = pb.speed_m_per_s * pb.L_m_per_Pa;
   for (int j = 0; j < strips; ++j)
     if (patch.half_length_m(j) > 0) totals[j] = pure_xi_strip(strip_rates(patch, pb, j), VL);
@@ -436,7 +434,7 @@ std::vector<StripTotals> pure_xi_strips(const ContactPatch& patch, const Tangent
 
 // the consistent march of the strips below `strips`, two at a time
 template <bool kFields, bool kSpin>
-std::vector<StripTotals> march_consistent(const ContactPatch& patch, const TangentialProblem& pb,
+std::vector<SteadyStrip> march_consistent(const ContactPatch& patch, const TangentialProblem& pb,
                                           TangentialSolution& s, int strips) {
   const Grid& g = patch.grid;
   Eigen::ArrayXd x(g.nx + 1);
@@ -447,7 +445,7 @@ std::vector<StripTotals> march_consistent(const ContactPatch& patch, const Tange
     return StripMarch<kFields, kSpin>(patch, pb, j, x.data(), turn, {kFields ? &s : nullptr, j, g.dx_m, VL});
   };
 
-  std::vector<StripTotals> totals(g.ny);
+  std::vector<SteadyStrip> totals(g.ny);
   int j = 0;
   for (; j + 1 < strips; j += 2) {
     StripMarch<kFields, kSpin> a = strip(j, turns.data()), b = strip(j + 1, turns.data() + g.nx);
@@ -472,14 +470,14 @@ std::vector<StripTotals> march_consistent(const ContactPatch& patch, const Tange
 
 // the march compiled with or without spin (phi/L3 is the same on every strip)
 template <bool kFields>
-std::vector<StripTotals> march_consistent_strips(const ContactPatch& patch, const TangentialProblem& pb,
+std::vector<SteadyStrip> march_consistent_strips(const ContactPatch& patch, const TangentialProblem& pb,
                                                  TangentialSolution& s, int strips) {
   const bool spin = patch.grid.ny > 0 && has_spin(strip_rates(patch, pb, 0));
   return spin ? march_consistent<kFields, true>(patch, pb, s, strips)
               : march_consistent<kFields, false>(patch, pb, s, strips);
 }
 
-StripTotals march_classic(const ContactPatch& patch, const TangentialProblem& pb, int j, FieldWriter out) {
+SteadyStrip march_classic(const ContactPatch& patch, const TangentialProblem& pb, int j, FieldWriter out) {
   const Grid& g = patch.grid;
   const StripRates r = strip_rates(patch, pb, j);
   const double a = r.a_m, y = r.y_m, alpha = r.alpha_Pa_per_m;
@@ -488,7 +486,7 @@ StripTotals march_classic(const ContactPatch& patch, const TangentialProblem& pb
   const double G = r.bound_Pa;
   const double dx = g.dx_m;
 
-  StripTotals st;
+  SteadyStrip st;
   double tx = 0, ty = 0;
   for (int i = g.nx - 1; i >= 0; --i) {
     const double x = g.x_m(i);
@@ -507,7 +505,7 @@ StripTotals march_classic(const ContactPatch& patch, const TangentialProblem& pb
     st.Fx += tx * dx;
     st.Fy += ty * dx;
     st.Mz += (x * ty - y * tx) * dx;
-    st.power += power * dx;
+    st.dissipated += power * dx;
     st.creep_power += -VL * (alpha * tx + (eta_L2 + phi_L3 * x) * ty) * dx;
     if (!slip) st.stick_length += dx;
     st.counted_length += dx;
@@ -517,11 +515,11 @@ StripTotals march_classic(const ContactPatch& patch, const TangentialProblem& pb
 }
 
 // the classic march of the strips below `strips`
-std::vector<StripTotals> march_classic_strips(const ContactPatch& patch, const TangentialProblem& pb,
+std::vector<SteadyStrip> march_classic_strips(const ContactPatch& patch, const TangentialProblem& pb,
                                               TangentialSolution& s, bool fields, int strips) {
   const Grid& g = patch.grid;
   const double VL = pb.speed_m_per_s * pb.L_m_per_Pa;
-  std::vector<StripTotals> totals(g.ny);
+  std::vector<SteadyStrip> totals(g.ny);
   for (int j = 0; j < strips; ++j) {
     if (!(patch.half_length_m(j) > 0)) continue;
     totals[j] = march_classic(patch, pb, j, {fields ? &s : nullptr, j, g.dx_m, VL});
@@ -569,7 +567,7 @@ TangentialSolution solve_steady(const ContactPatch& patch, const TangentialProbl
   const int strips = first_mirrored_strip(patch, c.phi_per_m, options.skips);
   const bool closed_form = options.skips && !options.fields && scheme == TangentialScheme::Consistent &&
                            c.eta == 0 && c.phi_per_m == 0;
-  std::vector<StripTotals> totals =
+  std::vector<SteadyStrip> totals =
       scheme == TangentialScheme::Classic ? march_classic_strips(patch, problem, s, options.fields, strips)
       : closed_form                       ? pure_xi_strips(patch, problem, strips)
       : options.fields                    ? march_consistent_strips<true>(patch, problem, s, strips)
@@ -588,24 +586,39 @@ TangentialSolution solve_steady(const ContactPatch& patch, const TangentialProbl
     }
   }
 
-  double stick_area = 0, area = 0;
+  // the strips' invariants (strip_totals_hold): dissipation is a path integral of -tau . s (classic's cell
+  // sums too), >= 0 beyond the rounding of the terms it is the difference of, V L (mu p_j)^2 2 a_j at most
+  // (|tau| <= mu p_j along 2 a_j)
+  auto energy_scale = [&](int j) {
+    const double bound_j = problem.mu * patch.strip_peak_Pa(j);
+    return problem.speed_m_per_s * problem.L_m_per_Pa * bound_j * bound_j * 2 * patch.half_length_m(j);
+  };
+  bool hold = true;
   for (int j = 0; j < g.ny; ++j) {
     if (!(patch.half_length_m(j) > 0)) continue;
-    const StripTotals& st = totals[j];
-    s.strip_power_W_per_m(j) = st.power;
+    const SteadyStrip& st = totals[j];
+    hold &= strip_totals_hold(patch, problem.mu, j, st, true, energy_scale(j));
+    s.strip_power_W_per_m(j) = st.dissipated;
     s.strip_creep_power_W_per_m(j) = st.creep_power;
     s.strip_trailing_W_per_m(j) = st.trailing;
     s.strip_force_x_N_per_m(j) = st.Fx;
     s.strip_force_y_N_per_m(j) = st.Fy;
-    s.Fx_N += st.Fx * g.dy_m;
-    s.Fy_N += st.Fy * g.dy_m;
-    s.Mz_N_m += st.Mz * g.dy_m;
-    s.power_W += st.power * g.dy_m;
-    // the stick share of what the scheme counts: classic counts dx per cell centre in contact
-    stick_area += st.stick_length * g.dy_m;
-    area += (st.counted_length > 0 ? st.counted_length : 2 * patch.half_length_m(j)) * g.dy_m;
   }
-  s.stick_fraction = area > 0 ? stick_area / area : 0;
+  ROLLWEAR_ASSERT(hold, [&] {
+    for (int j = 0; j < g.ny; ++j)
+      if (patch.half_length_m(j) > 0 && !strip_totals_hold(patch, problem.mu, j, totals[j], true, energy_scale(j)))
+        return strip_invariant_text(patch, problem.mu, j, totals[j], true, energy_scale(j));
+    return std::string();
+  }());
+  // classic counts dx per cell centre in contact
+  const PatchTotals t = patch_totals(patch, totals);
+  ROLLWEAR_ASSERT(patch_totals_finite(t), fmt::format("totals not finite: Fx {} Fy {} Mz {} dissipated {}",
+                                                          t.Fx_N, t.Fy_N, t.Mz_N_m, t.dissipated));
+  s.Fx_N = t.Fx_N;
+  s.Fy_N = t.Fy_N;
+  s.Mz_N_m = t.Mz_N_m;
+  s.power_W = t.dissipated;
+  s.stick_fraction = t.stick_fraction;
   // work of the creep forces, with the local xi of each strip where the rolling radius varies
   double xi_Fx = c.xi * s.Fx_N;
   if (patch.strip_xi_offset.size() == g.ny)

@@ -15,6 +15,7 @@
 
 #include "lib/patch.h"
 #include "lib/numeric.h"
+#include "lib/tangential/strip_node.h"
 #include "lib/tangential/tangential.h"
 
 namespace contact {
@@ -31,12 +32,6 @@ struct StripRates {
 };
 
 StripRates strip_rates(const ContactPatch& patch, const TangentialProblem& problem, int j);
-
-struct StripNode {  // traction at a node
-  double tx = 0, ty = 0;  // Pa
-  double ex = 0, ey = 0;  // direction of tau, kept from the last slip (0 before any)
-  bool stick = true;
-};
 
 struct IntervalGeometry {
   double x_hi = 0, x_lo = 0;  // x_hi > x_lo, both within [-a_j, a_j]
@@ -612,32 +607,14 @@ inline bool slip_stop_bracket(const SlipPath& path, double x_lo, SlipPath::Point
   return false;
 }
 
-// the root of a slip part's density in a bracket [b, a] (density(a) >= 0 > density(b)): regula falsi with
-// the Illinois modification, halving where a step would leave the bracket and every 8th step; the end of
-// the final bracket on the side where the density is <= 0, so that the part ends where its slip has stopped
+// the root of a slip part's density in a bracket [b, a] (density(a) >= 0 > density(b)), to rounding of a_j:
+// the end of the final bracket on the side where the density is < 0, so that the part ends where its slip
+// has stopped
 inline double slip_stop(const SlipPath& path, SlipPath::Point a, SlipPath::Point b) {
-  double xa = a.x, fa = a.density, xb = b.x, fb = b.density;
-  if (!(fa > 0)) return xa;
-  int side = 0;
-  for (int it = 0; it < 200 && xa - xb > 4e-16 * path.r.a_m; ++it) {
-    double xm = (xa * fb - xb * fa) / (fb - fa);
-    if (!(xm > xb && xm < xa) || it % 8 == 7) xm = xb + (xa - xb) / 2;
-    if (!(xm > xb && xm < xa)) break;
-    const double fm = path.at(xm).density;
-    if (fm > 0) {
-      xa = xm;
-      fa = fm;
-      if (side == 1) fb /= 2;
-      side = 1;
-    } else {
-      xb = xm;
-      fb = fm;
-      if (side == -1) fa /= 2;
-      side = -1;
-      if (fm == 0) break;
-    }
-  }
-  return xb;
+  if (!(a.density > 0)) return a.x;
+  const RootResult root = find_root_bracketed([&](double x) { return path.at(x).density; }, b.x, a.x, b.density,
+                                              a.density, 4e-16 * path.r.a_m);
+  return root.lo;  // f(lo) keeps the sign of f(b): the side where the slip has stopped (or the root itself)
 }
 
 constexpr int kRestickParts = 4;  // slip parts in one interval, at most (the last one slips on to x_lo)

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "lib/numeric.h"
+
 namespace contact {
 
 double mean_flexibility_m_per_Pa(const Flexibilities& f, const Creepages& c, double a_m, double b_m) {
@@ -84,6 +86,21 @@ TangentialScheme parse_tangential_scheme(const std::string& name) {
   if (name == "consistent") return TangentialScheme::Consistent;
   if (name == "classic") return TangentialScheme::Classic;
   throw std::invalid_argument("unknown tangential scheme '" + name + "' (valid: consistent, classic)");
+}
+
+}  // namespace contact
+
+namespace contact {
+
+std::string strip_invariant_text(const ContactPatch& patch, double mu, int j, const StripTotals& s, bool bounded,
+                                 double energy_scale) {
+  std::string text = fmt::format("strip {}: Fx {} Fy {} Mz {} dissipated {} (N/m, W/m or J/m)", j, s.Fx, s.Fy, s.Mz,
+                                 s.dissipated);
+  if (bounded)
+    text += fmt::format(", |F| = {} against mu times the strip's load, {}", std::hypot(s.Fx, s.Fy),
+                        mu * strip_load_N_per_m(patch, j, s));
+  if (energy_scale > 0) text += fmt::format(", dissipation of scale {}", energy_scale);
+  return text;
 }
 
 }  // namespace contact

@@ -7,11 +7,14 @@
 //   d tau/dx = ( xi/L1 - phi y/L3 ,  eta/L2 + phi x/L3 ).
 #pragma once
 
+#include <cmath>
 #include <string>
+#include <vector>
 
 #include "lib/elastic.h"
 #include "lib/tangential/kalker.h"
 #include "lib/patch.h"
+#include "lib/numeric.h"
 
 namespace contact {
 
@@ -81,5 +84,69 @@ struct TangentialSolution {
   double creep_work_W = 0;  // V (xi Fx + eta Fy + phi Mz), the work of the creep forces
   double stick_fraction = 0;  // stick area / contact area
 };
+
+// What one strip adds to the patch's totals, per unit width: the steady solver's strips and a
+// Satran step's alike.
+struct StripTotals {
+  double Fx = 0, Fy = 0, Mz = 0;  // integrals of tau_x, tau_y and x tau_y - y tau_x along the strip
+  double dissipated = 0;          // a power (steady, W/m) or a step's energy (Satran, J/m)
+  double stick_length = 0;
+  double counted_length = 0;  // node or cell-centre schemes: the length their points stand for (0: the exact 2 a_j)
+};
+
+struct PatchTotals {
+  double Fx_N = 0, Fy_N = 0, Mz_N_m = 0;
+  double dissipated = 0;      // W or J, as the strips'
+  double stick_fraction = 0;  // the stick share of the length the scheme counts (node schemes: dx per node)
+};
+
+// The strips in contact (a_j > 0) summed into the patch's totals, each times dy. `Strip` is StripTotals
+// or a struct derived from it.
+template <class Strip>
+PatchTotals patch_totals(const ContactPatch& patch, const std::vector<Strip>& strips) {
+  const Grid& g = patch.grid;
+  PatchTotals t;
+  double stick_area = 0, area = 0;
+  for (int j = 0; j < g.ny; ++j) {
+    if (!(patch.half_length_m(j) > 0)) continue;
+    const StripTotals& s = strips[j];
+    t.Fx_N += s.Fx * g.dy_m;
+    t.Fy_N += s.Fy * g.dy_m;
+    t.Mz_N_m += s.Mz * g.dy_m;
+    t.dissipated += s.dissipated * g.dy_m;
+    stick_area += s.stick_length * g.dy_m;
+    area += (s.counted_length > 0 ? s.counted_length : 2 * patch.half_length_m(j)) * g.dy_m;
+  }
+  t.stick_fraction = area > 0 ? stick_area / area : 0;
+  return t;
+}
+
+// the text of a broken strip invariant (strip_totals_hold): the strip's numbers and what they are held to
+std::string strip_invariant_text(const ContactPatch& patch, double mu, int j, const StripTotals& s, bool bounded,
+                                 double energy_scale);
+
+// The invariants of one strip's totals: when `bounded`, the traction's resultant within mu times
+// the strip's load (the exact mu pi/2 p_j a_j for path integrals, mu p_j times the counted length for node
+// or cell-centre sums); when `energy_scale` > 0, no negative dissipation beyond 1e-9 of that scale (the size
+// of the terms the dissipation is the difference of). The solvers test every strip and assert once per
+// solve or step (ROLLWEAR_ASSERT), naming the first strip that broke one (strip_invariant_text): the
+// steady strips of a small grid cost some 2000 instructions each, and the checks must stay within 1 %.
+constexpr double kStripRounding = 1e-9;  // the sums run over at most a few thousand terms
+inline double strip_load_N_per_m(const ContactPatch& patch, int j, const StripTotals& s) {
+  return s.counted_length > 0 ? patch.strip_peak_Pa(j) * s.counted_length
+                              : kPi / 2 * patch.strip_peak_Pa(j) * patch.half_length_m(j);
+}
+// (a nan fails the comparisons; an infinity the bound, or the patch's totals, which the solvers assert finite:
+// a sum of finite strips of this size is finite, a nan or an infinity stays one)
+inline bool strip_totals_hold(const ContactPatch& patch, double mu, int j, const StripTotals& s, bool bounded,
+                              double energy_scale) {
+  const double limit = mu * strip_load_N_per_m(patch, j, s) * (1 + kStripRounding);
+  const bool within = !bounded || s.Fx * s.Fx + s.Fy * s.Fy <= limit * limit;
+  const bool dissipates = !(energy_scale > 0) || s.dissipated >= -kStripRounding * energy_scale;
+  return within & dissipates;
+}
+inline bool patch_totals_finite(const PatchTotals& t) {
+  return std::isfinite(t.Fx_N + t.Fy_N + t.Mz_N_m + t.dissipated + t.stick_fraction);
+}
 
 }  // namespace contact
