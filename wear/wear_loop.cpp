@@ -182,11 +182,13 @@ NormalState normal_state(const WearModel& m, const Eigen::VectorXd& state, WearC
   problem.grid = m.grid;
   problem.semi_hertz = m.normal_options;
   NormalState n;
+  bool converged = false;
   for (int refinement = 0;; ++refinement) {
     try {
       const contact::NormalSolution s = contact::solve_normal(problem);
       n.normal = s.on_profiles;
       n.solver = s.solver;
+      converged = s.solve_converged;
       break;
     } catch (const contact::NoStripCentreError& e) {
       // a worn profile can split the contact into narrow patches that no strip centre of the case's grid
@@ -204,8 +206,7 @@ NormalState normal_state(const WearModel& m, const Eigen::VectorXd& state, WearC
   // no approach carries the load (the semi-Hertzian root find, remedy included, did not converge): no
   // result to wear with; the life ends at its last accepted step (a contact cut at a body's edge is the
   // edge limit's, below, but only once its approach carries the load)
-  if (n.normal.status.kind == contact::SolveStatus::Kind::MaxIterations ||
-      !(n.normal.status.residual <= m.normal_options.load_rtol))
+  if (!converged)
     throw NormalNotConverged(fmt::format("the normal problem did not converge: {}", n.normal.status.message));
   // the lifetime's edge limit: how far the contact is from the end of the profiles' overlap
   const double lo = std::max(profiles.body1.y_m(0), profiles.body2.y_m(0));

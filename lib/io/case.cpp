@@ -438,7 +438,7 @@ GridSpec grid_of(const ContactCase& c) {
   return g;
 }
 
-NormalSolution solve_normal_of(const ContactCase& c) {
+NormalProblem normal_problem_of(const ContactCase& c) {
   NormalProblem problem;
   problem.choice = parse_normal_choice(c.solver.normal);  // validated when read
   problem.bodies = {{c.bodies.body1.Rx_m, c.bodies.body1.Ry_m}, {c.bodies.body2.Rx_m, c.bodies.body2.Ry_m}};
@@ -450,18 +450,15 @@ NormalSolution solve_normal_of(const ContactCase& c) {
   problem.normal_load_N = normal_load_of(c);
   problem.grid = grid_of(c);
   problem.curvature_rtol = kCaseCurvatureRtol;
-  NormalSolution n;
+  return problem;
+}
+
+NormalSolution solve_normal_of(const ContactCase& c) {
   try {
-    n = solve_normal(problem);
+    return solve_normal_converged(normal_problem_of(c));
   } catch (const NormalChoiceError& e) {
     throw CaseError(where(c, "solver.normal") + "solver.normal, profiles: " + e.what());
   }
-  // a contact cut at a body's edge is reported with the patch (reaches_edge); any other unconverged
-  // solve is no result
-  if (!n.status.converged() && !n.reaches_edge)
-    throw NormalSolveError(fmt::format("the normal problem ({}) did not converge: {}", to_string(n.solver),
-                                       n.status.message));
-  return n;
 }
 
 double normal_load_of(const ContactCase& c) { return steady_value(c, c.load.normal_load_N, "load.normal_load_N"); }

@@ -142,15 +142,12 @@ inline const std::vector<std::string>& normal_solver_names() {
 // profiles of constant curvature within this (relative) tolerance are treated by Hertz (lib/normal/normal.h)
 constexpr double kCaseCurvatureRtol = kConstantCurvatureRtol;
 
-// A normal solve that did not converge (status MaxIterations, or the half-space's Failed): no result;
-// the command line ends with exit 1 and this message.
-struct NormalSolveError : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
-
 // the normal problem of a case as solver.normal asks (lib/normal/normal.h chooses; this only builds the
-// problem from the case). Throws CaseError for a case the solver named cannot treat, NormalSolveError
-// for a solve that did not converge; a contact reaching a body's edge comes back with reaches_edge.
+// problem from the case)
+NormalProblem normal_problem_of(const ContactCase& c);
+// its solve (solve_normal_converged): throws CaseError for a case the solver named cannot treat,
+// NormalSolveError (lib/normal/normal.h) for a solve that did not converge, at a body's edge too; a
+// converged contact reaching a body's edge comes back with reaches_edge.
 NormalSolution solve_normal_of(const ContactCase& c);
 
 // the steady values: throw CaseError naming the key if its history is not a constant
