@@ -569,6 +569,8 @@ struct ApproachSearch {
   double lo = 0, hi = std::numeric_limits<double>::infinity();  // the bracket
   double residual_lo = 0, residual_hi = 0;
   bool bracketed() const { return lo > 0 && std::isfinite(hi); }
+  // the bracket closed on a jump of F(delta) across the load (see find_approach)
+  bool on_jump() const { return !converged && bracketed() && hi / lo - 1 < kJumpWidth; }
 };
 
 // Secant in (log delta, log F), kept inside the bracket [lo, hi]; a secant step that did not halve
@@ -599,7 +601,7 @@ ApproachSearch find_approach(Solver& solver, double F, double delta, double eps,
     }
     // a bracket narrower than 1e-9 of delta with the residual above load_rtol at both ends: F(delta)
     // jumps across the load there (a continuous F would need d ln F / d ln delta > 1e3; Hertz's is 1.5)
-    if (s.hi / s.lo - 1 < kJumpWidth) break;
+    if (s.on_jump()) break;
     const double ld = std::log(delta), lf = std::log(s.ev.F);
     double slope = 1.5;  // Hertz: F ~ delta^(3/2)
     if (s.evaluations > 1 && ld != prev_ld) slope = std::clamp((lf - prev_lf) / (ld - prev_ld), 0.5, 4.0);
@@ -641,7 +643,8 @@ void describe_approach(const ApproachSearch& search, int evaluations, const std:
   std::snprintf(msg, sizeof msg, "load residual %.1e %s tol %.1e after %d evaluations", std::abs(search.residual),
                 search.converged ? "<=" : ">", options.load_rtol, evaluations);
   res.status.message = msg + remedy;
-  if (!search.converged && search.bracketed()) res.status.message += "; " + jump_text(search);
+  res.load_jumps = search.on_jump();
+  if (res.load_jumps) res.status.message += "; " + jump_text(search);
   res.status.kind = search.converged ? SolveStatus::Kind::Converged : SolveStatus::Kind::MaxIterations;
   // the caller decides what an unconverged or edge-reaching solve means: the status says it, no warning here
   if (!search.converged) spdlog::debug("semi-Hertz: approach not found: {}", res.status.message);
