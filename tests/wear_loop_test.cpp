@@ -64,7 +64,8 @@ TEST(WearLoop, VolumeRateEqualsEnergyRateTimesCoefficient) {
     const double volume_rate = 2 * kPi * m.Rx1_m * profile_area_m2(r.dstate_dN.head(m.n1).array(), m.profiles.body1.y_m);
     EXPECT_NEAR(volume_rate / (k_E_of(m) * r.energy_per_revolution_J), 1.0, 1e-13) << "pass " << pass;
     EXPECT_GT(r.energy_per_revolution_J, 0);
-    EXPECT_EQ(r.contact.normal_solver, pass == 0 ? "hertz" : "semi-hertz");
+    EXPECT_EQ(r.contact.normal_solver,
+              pass == 0 ? contact::NormalSolverKind::Hertz : contact::NormalSolverKind::SemiHertz);
     // the energy per revolution is the steady power times a revolution's time, 2 pi R / V
     EXPECT_NEAR(r.energy_per_revolution_J / (r.contact.power_W * 2 * kPi * m.Rx1_m / m.speed_m_per_s), 1.0, 1e-12);
     state.head(m.n1) = 4e6 * r.dstate_dN.head(m.n1);  // a worn crown (about 10 um deep)

@@ -100,7 +100,7 @@ std::string wear_report_text(const WearModel& m, const WearReport& r) {
   s += fmt::format("dissipated_J: {}\n", g17(dissipated_energy_J(m, l.state)));
   s += fmt::format("p0_Pa: {}\n", g17(l.contact.p0_Pa));
   s += fmt::format("a_m: {}\nb_m: {}\n", g17(l.contact.a_m), g17(l.contact.b_m));
-  s += fmt::format("normal_solver: {}\n", l.contact.normal_solver);
+  s += fmt::format("normal_solver: {}\n", contact::to_string(l.contact.normal_solver));
   const LifeCounters& n = l.counters;
   s += fmt::format("steps: {}\nrejected_steps: {}\nrhs_evals: {}\n", n.steps, n.rejected, n.rhs_evals);
   s += fmt::format("rate_evaluations: {}\nlimit_evaluations: {}\n", n.rate_evaluations, n.limit_evaluations);

@@ -229,11 +229,10 @@ void read_inertia(YamlMap& m, InertiaSection& in) {
 
 void read_solver(YamlMap& m, SolverSection& s) {
   m.optional("normal", s.normal);
-  const std::vector<std::string>& names = normal_solver_names();
-  if (std::find(names.begin(), names.end(), s.normal) == names.end()) {
-    std::string valid;
-    for (const std::string& n : names) valid += (valid.empty() ? "" : ", ") + n;
-    m.fail("normal", "unknown normal solver '" + clipped(s.normal) + "' (valid: " + valid + ")");
+  try {
+    parse_normal_choice(s.normal);
+  } catch (const std::invalid_argument& e) {
+    m.fail("normal", e.what());
   }
   m.optional("tangential", s.tangential);
   try {

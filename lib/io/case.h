@@ -134,11 +134,6 @@ void validate_transient(const ContactCase& c);
 Bodies bodies_of(const ContactCase& c);
 ElasticPair materials_of(const ContactCase& c);
 GridSpec grid_of(const ContactCase& c);
-// the normal solvers solver.normal names, in the order listed in messages
-inline const std::vector<std::string>& normal_solver_names() {
-  static const std::vector<std::string> kNames = {"auto", "hertz", "semi-hertz", "halfspace"};
-  return kNames;
-}
 // profiles of constant curvature within this (relative) tolerance are treated by Hertz (lib/normal/normal.h)
 constexpr double kCaseCurvatureRtol = kConstantCurvatureRtol;
 

@@ -6,7 +6,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
+#include "lib/io/errors.h"
 #include "lib/normal/halfspace.h"
 #include "lib/numeric.h"
 
@@ -80,22 +82,12 @@ void solve_on_halfspace(const NormalProblem& p, const SemiHertzResult& sh, Norma
 }  // namespace
 
 NormalChoice parse_normal_choice(const std::string& name) {
-  if (name == "auto") return NormalChoice::Auto;
-  if (name == "hertz") return NormalChoice::Hertz;
-  if (name == "semi-hertz") return NormalChoice::SemiHertz;
-  if (name == "halfspace") return NormalChoice::Halfspace;
-  throw std::invalid_argument("normal solver must be auto, hertz, semi-hertz or halfspace, got '" + name + "'");
+  if (const std::optional<NormalChoice> c = enum_from_name(kNormalChoiceNames, name)) return *c;
+  throw std::invalid_argument("unknown normal solver '" + clipped(name) + "' (valid: " +
+                              enum_names_list(kNormalChoiceNames) + ")");
 }
 
-const char* to_string(NormalChoice c) {
-  switch (c) {
-    case NormalChoice::Auto: return "auto";
-    case NormalChoice::Hertz: return "hertz";
-    case NormalChoice::SemiHertz: return "semi-hertz";
-    case NormalChoice::Halfspace: return "halfspace";
-  }
-  return "unknown";
-}
+const char* to_string(NormalChoice c) { return enum_name(kNormalChoiceNames, c); }
 
 NormalSolution solve_normal(const NormalProblem& p) {
   NormalSolution n;

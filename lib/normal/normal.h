@@ -15,6 +15,7 @@
 
 #include "lib/elastic.h"
 #include "lib/grid.h"
+#include "lib/io/enum_names.h"
 #include "lib/normal/hertz.h"
 #include "lib/normal/profile.h"
 #include "lib/normal/semi_hertz.h"
@@ -27,7 +28,14 @@ namespace contact {
 // solver.normal of a case
 enum class NormalChoice { Auto, Hertz, SemiHertz, Halfspace };
 
-// "auto" | "hertz" | "semi-hertz" | "halfspace"; throws std::invalid_argument for anything else
+// its names, in the order messages list them
+constexpr EnumTable<NormalChoice, 4> kNormalChoiceNames = {{{NormalChoice::Auto, "auto"},
+                                                            {NormalChoice::Hertz, "hertz"},
+                                                            {NormalChoice::SemiHertz, "semi-hertz"},
+                                                            {NormalChoice::Halfspace, "halfspace"}}};
+
+// "auto" | "hertz" | "semi-hertz" | "halfspace"; throws std::invalid_argument naming the valid ones for
+// anything else
 NormalChoice parse_normal_choice(const std::string& name);
 const char* to_string(NormalChoice c);
 
