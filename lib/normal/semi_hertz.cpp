@@ -31,6 +31,7 @@
 #include <string>
 #include <vector>
 
+#include "lib/io/number.h"
 #include "lib/normal/hertz.h"
 #include "lib/numeric.h"
 
@@ -44,11 +45,7 @@ constexpr double kLoadBalanceRtol = 1e-9;
 constexpr double kPeakRtol = 1e-9;
 constexpr double kJumpWidth = 1e-9;  // the root find's bracket, relative: narrower is a jump of F(delta)
 
-std::string num(double v) {
-  char buf[40];
-  std::snprintf(buf, sizeof buf, "%.6g", v);
-  return buf;
-}
+std::string num(double v) { return six_digits(v); }  // lib/io/number.h
 
 // Hertz's ellipse against log(rho), rho = larger/smaller curvature >= 1: eps of the major semi-axis
 // and K(e), so that with C the smaller curvature
