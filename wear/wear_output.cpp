@@ -1,5 +1,6 @@
 #include "wear/wear_output.h"
 
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -7,10 +8,13 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <system_error>
 
 #include <spdlog/fmt/fmt.h>
 
 #include "lib/history.h"
+#include "lib/io/csv_reader.h"
+#include "lib/io/errors.h"
 #include "lib/io/number.h"
 #include "lib/numeric.h"
 
@@ -29,7 +33,8 @@ std::string law_text(const WearLaw& law) {
   switch (parse_wear_law(law.law)) {
     case WearLawKind::Energy: return fmt::format("energy, k_E {} m^3/J", round_trip(law.k_E_m3_per_J));
     case WearLawKind::Archard:
-      return fmt::format("archard, K {}, H {} Pa (k_E = K/(H mu))", round_trip(law.archard_k), round_trip(law.hardness_Pa));
+      return fmt::format("archard, K {}, H {} Pa (k_E = K/(H mu))", round_trip(law.archard_k),
+                         round_trip(law.hardness_Pa));
     case WearLawKind::Kth: return fmt::format("kth, H {} Pa", round_trip(law.hardness_Pa));
     case WearLawKind::Usfd: return fmt::format("usfd, rho {} kg/m^3", round_trip(law.density_kg_per_m3));
   }
@@ -195,25 +200,35 @@ Checkpoint read_checkpoint(const std::filesystem::path& path) {
 }
 
 std::string summary_up_to(const std::filesystem::path& path, long steps) {
-  std::ifstream in(path);
-  if (!in) throw std::runtime_error(path.string() + ": cannot read the summary of the run to resume");
-  std::string out, line;
-  bool header = false;
+  // the rows' steps from the one CSV reader (lib/io/csv_reader.h); the text kept is the file's own, line
+  // for line up to the last row kept, so that a resumed summary is byte for byte the uninterrupted one
+  contact::CsvTable t;
+  try {
+    t = contact::read_csv_table(path.string());
+  } catch (const std::runtime_error&) {
+    throw std::runtime_error(path.string() + ": cannot read the summary of the run to resume");
+  }
+  if (t.header.empty() || t.header[0] != "step")
+    throw std::runtime_error(fmt::format("{}: not a wear summary (no header row starting with 'step')", path.string()));
   long last = -1;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#' || !header) {
-      if (!line.empty() && line[0] != '#') header = true;
-      out += line + "\n";
-      continue;
-    }
-    const long step = std::strtol(line.c_str(), nullptr, 10);
+  int last_line = t.header_line;  // the last line kept
+  for (std::size_t k = 0; k < t.rows.size(); ++k) {
+    const std::string& cell = t.rows[k][0];
+    long step = 0;
+    const auto [end, ec] = std::from_chars(cell.data(), cell.data() + cell.size(), step);
+    if (ec != std::errc() || end != cell.data() + cell.size())
+      throw std::runtime_error(fmt::format("{}:{}: expected a step number, got '{}'", path.string(), t.row_lines[k],
+                                           contact::clipped(cell)));
     if (step > steps) break;
-    out += line + "\n";
     last = step;
+    last_line = t.row_lines[k];
   }
   if (last != steps)
     throw std::runtime_error(fmt::format("{}: the summary ends at step {}, the checkpoint is at step {}", path.string(),
                                          last, steps));
+  std::ifstream in(path, std::ios::binary);
+  std::string out, line;
+  for (int number = 1; number <= last_line && std::getline(in, line); ++number) out += line + "\n";
   return out;
 }
 
