@@ -12,6 +12,8 @@
 #include <spdlog/spdlog.h>
 
 #include "lib/normal/semi_hertz.h"
+#include "lib/tangential/satran.h"
+#include "lib/tangential/tangential.h"
 #include "lib/io/number.h"
 #include "lib/io/yaml_reader.h"
 

@@ -32,10 +32,13 @@
 #include "lib/io/key_locations.h"
 #include "lib/patch.h"
 #include "lib/normal/profile.h"
-#include "lib/tangential/satran.h"
-#include "lib/tangential/tangential.h"
 
 namespace contact {
+
+// the tangential and transient inputs this reader builds (lib/tangential/tangential.h, satran.h): a
+// caller that builds them includes those headers; the case itself needs only their names
+struct Creepages;
+struct TransientCase;
 
 struct BodySection {                  // bodies.body1 / bodies.body2
   double Rx_m = kFlat, Ry_m = kFlat;  // required (Ry_m: only without profiles:); .inf for flat, negative for concave
