@@ -396,27 +396,28 @@ class Solver {
     March(const Gap& gap, double t) : gap_(gap), t_(t) {}
     double integral_to(double y) {
       const std::vector<double>& ys = gap_.y;
-      while (s_ + 2 < ys.size() && ys[s_ + 1] <= y) {
-        double I1 = 0;
-        positive_segment(ys[s_], ys[s_ + 1], t_ - gap_.h[s_], t_ - gap_.h[s_ + 1], acc_, I1);
-        ++s_;
-      }
+      advance_to(y);
       double part = acc_, I1 = 0;
       positive_segment(ys[s_], y, t_ - gap_.h[s_], g_at(y), part, I1);
       return part;
     }
     double g_at(double y) {
       const std::vector<double>& ys = gap_.y;
-      while (s_ + 2 < ys.size() && ys[s_ + 1] <= y) {
-        double I1 = 0;
-        positive_segment(ys[s_], ys[s_ + 1], t_ - gap_.h[s_], t_ - gap_.h[s_ + 1], acc_, I1);
-        ++s_;
-      }
+      advance_to(y);
       const double w = (y - ys[s_]) / (ys[s_ + 1] - ys[s_]);
       return t_ - (gap_.h[s_] + w * (gap_.h[s_ + 1] - gap_.h[s_]));
     }
 
    private:
+    // to the segment holding y, the integral of g_+ taken over the segments passed
+    void advance_to(double y) {
+      const std::vector<double>& ys = gap_.y;
+      while (s_ + 2 < ys.size() && ys[s_ + 1] <= y) {
+        double I1 = 0;
+        positive_segment(ys[s_], ys[s_ + 1], t_ - gap_.h[s_], t_ - gap_.h[s_ + 1], acc_, I1);
+        ++s_;
+      }
+    }
     const Gap& gap_;
     double t_;
     std::size_t s_ = 0;  // segment [s_, s_ + 1]
