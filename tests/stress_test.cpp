@@ -1192,7 +1192,7 @@ LifeCheck run_checked_life(const wear::WearCase& c, const std::string& what, Wea
   EXPECT_TRUE(out.life.state.allFinite()) << what;
   out.ok = bad.empty() && out.life.state.allFinite();
   const double hmax = wear::max_depth_m(m, out.life.state);
-  out.effective_rtol = c.wear.stepping.method == "adaptive"
+  out.effective_rtol = wear::integrator_options(c.wear.stepping).method == wear::IntegratorOptions::Method::Adaptive
                            ? c.wear.stepping.rtol + c.wear.stepping.atol_m / std::max(hmax, 1e-300)
                            : std::numeric_limits<double>::infinity();
   if (out.life.failure == wear::LifeFailure::UnresolvedContact) {
