@@ -141,7 +141,7 @@ GridSpec grid_of(const ContactCase& c);
 constexpr double kCaseCurvatureRtol = kConstantCurvatureRtol;
 
 // the normal problem of a case as solver.normal asks (lib/normal/normal.h chooses; this only builds the
-// problem from the case)
+// problem from the case); its profiles point into c, which must outlive it
 NormalProblem normal_problem_of(const ContactCase& c);
 // its solve (solve_normal_converged): throws CaseError for a case the solver named cannot treat,
 // NormalSolveError (lib/normal/normal.h) for a solve that did not converge, at a body's edge too; a
