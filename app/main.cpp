@@ -87,7 +87,8 @@ CLI::App* add_contact_command(CLI::App& app, ContactOptions& opt, CommonOptions&
       "The summary names the normal solver that ran (and why, for solver.normal: auto) and the number of\n"
       "contact patches. strips.csv's y_m is in the profiles' lateral coordinate.\n"
       "A contact that reaches a body's edge (the end of its profile) is a warning line in the summary; the\n"
-      "outputs are written and the exit status stays 0.\n"
+      "outputs are written and the exit status stays 0 (if its normal solve converged; an unconverged one,\n"
+      "at an edge or not, is exit 1).\n"
       "Exit status: 0 success, 2 bad input (case file, options), 1 any other failure.");
   sub->add_option("case", opt.case_path, "Case file (YAML), e.g. cases/paper.yaml")->required();
   sub->add_option("-o,--output", opt.output_directory,

@@ -647,7 +647,7 @@ TEST_F(CaseReader, ProfileWithTwoFormsOrNoneIsAnError) {
 TEST_F(CaseReader, UnknownNormalSolverListsValidOnes) {
   const std::string e = error_of(profiles_case("{ flat: { width_m: 0.020 } }", "exact"));
   EXPECT_NE(e.find(path() + ":9:19: solver.normal: unknown normal solver 'exact' (valid: auto, hertz, "
-                   "semi-hertz, halfspace)"),
+                   "semi-hertz or halfspace)"),
             std::string::npos)
       << e;
 }

@@ -74,6 +74,31 @@ TEST(NormalChoice, UnconvergedSolveIsNoResult) {
   EXPECT_EQ(s.status.kind, SolveStatus::Kind::MaxIterations) << s.status.message;
 }
 
+// A contact cut at a body's edge is a result only when its solve converged: the edge alone made an
+// unconverged solve usable (solve_normal_of returned it). The roller of UnconvergedSolveIsNoResult, 4 mm
+// wide under 1500 N, with the root find starved to a few evaluations: the contact reaches the roller's
+// edges, its load is not carried, and the case's solve refuses it.
+TEST(NormalChoice, UnconvergedSolveAtABodysEdgeIsNoResult) {
+  ContactCase c = read_contact_case((kSource / "cases" / "worn-crown.yaml").string());
+  c.profiles->profiles = {crowned_profile(0.5, 0.004), flat_profile(0.030)};
+  c.solver.normal = "semi-hertz";
+  c.solver.nx = c.solver.ny = 20;
+  NormalProblem starved = normal_problem_of(c);
+  starved.semi_hertz.max_iterations = 2;
+  const NormalSolution n = solve_normal(starved);
+  ASSERT_TRUE(n.reaches_edge) << n.status.message;
+  ASSERT_GT(n.status.residual, starved.semi_hertz.load_rtol) << n.status.message;
+  EXPECT_FALSE(n.solve_converged) << n.status.message;
+  EXPECT_THROW(solve_normal_converged(starved), NormalSolveError);
+
+  // the same contact with the root find's default evaluations: cut at the edge, its load carried, a result
+  const NormalSolution cut = solve_normal_of(c);
+  EXPECT_TRUE(cut.reaches_edge);
+  EXPECT_EQ(cut.status.kind, SolveStatus::Kind::Failed);
+  EXPECT_TRUE(cut.solve_converged) << cut.status.message;
+  EXPECT_LE(cut.status.residual, SemiHertzOptions{}.load_rtol) << cut.status.message;
+}
+
 // The continuous rule is exact where the self-consistent one is: on constant curvature both give
 // Hertz's approach (B_e = B at any level), here within the 64-cell quadrature's 2e-3 of Hertz.
 TEST(SemiHertzRootFind, ContinuousRuleKeepsHertzOnConstantCurvature) {

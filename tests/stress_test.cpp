@@ -861,14 +861,13 @@ void semi_hertz_case(Rng& r, const std::string& tag, SemiHertzTally& t, bool str
                                        tag, k1, w1, k2, w2, Rx1, radius_text(Rx2), F, nx, ny,
                                        auto_solver ? "solve_normal_on_profiles" : "solve_semi_hertz");
   set_current_case(what);
-  const rollwear_test::ExpectWarnings warnings;  // a contact reaching a body's edge warns
+  const rollwear_test::ExpectWarnings warnings;  // none: the edge and a jump are the status's (semi_hertz.h)
   SemiHertzResult s;
   try {
     s = auto_solver ? solve_normal_on_profiles(pr, Rx1, Rx2, mat, F, {nx, ny})
                     : solve_semi_hertz(pr, Rx1, Rx2, mat, F, {nx, ny});
-  } catch (const std::invalid_argument& e) {
-    // a grid too coarse to hold a disconnected contact is refused by name; anything else is a finding
-    ASSERT_NE(std::string(e.what()).find("strip"), std::string::npos) << what << ": threw " << e.what();
+  } catch (const NoStripCentreError&) {
+    // a grid too coarse to hold a disconnected contact is refused by its type; anything else is a finding
     ++refused;
     return;
   } catch (const std::exception& e) {
@@ -885,14 +884,14 @@ void semi_hertz_case(Rng& r, const std::string& tag, SemiHertzTally& t, bool str
   const bool jump = s.status.residual > SemiHertzOptions{}.load_rtol;
   if (jump) {
     ASSERT_FALSE(strict) << what << ": " << s.status.message;
-    ASSERT_NE(s.status.message.find("jumps from"), std::string::npos) << what << ": " << s.status.message;
+    ASSERT_TRUE(s.load_jumps) << what << ": " << s.status.message;
     ++t.jumps;
     t.jumps_inside += !s.reaches_edge;
     t.worst_jump_residual = std::max(t.worst_jump_residual, s.status.residual);
   } else {
     t.worst_residual = std::max(t.worst_residual, s.status.residual);
   }
-  ASSERT_EQ(warnings.count(), (s.reaches_edge ? 1 : 0) + (jump ? 1 : 0))
+  ASSERT_EQ(warnings.count(), 0)
       << what << ": " << s.status.message << (warnings.count() > 0 ? "; " + warnings.messages()[0] : "");
   ASSERT_TRUE(std::isfinite(p.a_m) && std::isfinite(p.b_m) && std::isfinite(p.p0_Pa) && std::isfinite(s.approach_m))
       << what << ": a " << p.a_m << " b " << p.b_m << " p0 " << p.p0_Pa << " delta " << s.approach_m;
@@ -1180,20 +1179,20 @@ LifeCheck run_checked_life(const wear::WearCase& c, const std::string& what, Wea
   const rollwear_test::ExpectWarnings warnings;  // the contact reaching the edge, max_steps, finding 7
   try {
     out.life = wear::run_life(m, c, wear::LifeStart{}, hooks, cache);
-  } catch (const std::exception& e) {
-    const std::string message = e.what();
+  } catch (const contact::CaseError&) {
     out.ok = false;
-    if (message.find("too coarse for the contact") != std::string::npos)
-      ++found.refused;  // a clear refusal, as designed, before the life starts
-    else
-      ADD_FAILURE() << what << ": run_life threw " << message;
+    ++found.refused;  // a clear refusal (the profile's nodes too coarse for the contact), before the life starts
+    return out;
+  } catch (const std::exception& e) {
+    out.ok = false;
+    ADD_FAILURE() << what << ": run_life threw " << e.what();
     return out;
   }
   EXPECT_TRUE(bad.empty()) << what << ": " << bad;
   EXPECT_TRUE(out.life.state.allFinite()) << what;
   out.ok = bad.empty() && out.life.state.allFinite();
   const double hmax = wear::max_depth_m(m, out.life.state);
-  out.effective_rtol = c.wear.stepping.method == "adaptive"
+  out.effective_rtol = wear::integrator_options(c.wear.stepping).method == wear::IntegratorOptions::Method::Adaptive
                            ? c.wear.stepping.rtol + c.wear.stepping.atol_m / std::max(hmax, 1e-300)
                            : std::numeric_limits<double>::infinity();
   if (out.life.failure == wear::LifeFailure::UnresolvedContact) {

@@ -87,7 +87,7 @@ TEST_F(WearCaseReader, ErrorsNameFileLineAndKey) {
             file + ":12:37: wear.body1.archard_k: must be in (0, 1], got 2");
   // an unknown law
   EXPECT_EQ(error_of(kContact + "wear:\n  body1: { law: magic }\n  revolutions: 1\n"),
-            file + ":12:17: wear.body1.law: unknown wear law 'magic' (valid: energy, archard, kth, usfd)");
+            file + ":12:17: wear.body1.law: unknown wear law 'magic' (valid: energy, archard, kth or usfd)");
   // a typo is a key left over, not a default
   EXPECT_NE(error_of(kContact + "wear:\n  body1: { k_E_m3_per_J: 1.0e-13 }\n  revolutions: 1\n  revolution: 1\n")
                 .find(file + ":14:3: wear.revolution: unknown key"),

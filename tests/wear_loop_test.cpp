@@ -19,6 +19,7 @@
 #include "lib/io/case.h"
 #include "lib/numeric.h"
 #include "tests/log_capture.h"
+#include "tests/temp_dir.h"
 #include "wear/profile_update.h"
 #include "wear/wear_output.h"
 
@@ -64,7 +65,8 @@ TEST(WearLoop, VolumeRateEqualsEnergyRateTimesCoefficient) {
     const double volume_rate = 2 * kPi * m.Rx1_m * profile_area_m2(r.dstate_dN.head(m.n1).array(), m.profiles.body1.y_m);
     EXPECT_NEAR(volume_rate / (k_E_of(m) * r.energy_per_revolution_J), 1.0, 1e-13) << "pass " << pass;
     EXPECT_GT(r.energy_per_revolution_J, 0);
-    EXPECT_EQ(r.contact.normal_solver, pass == 0 ? "hertz" : "semi-hertz");
+    EXPECT_EQ(r.contact.normal_solver,
+              pass == 0 ? contact::NormalSolverKind::Hertz : contact::NormalSolverKind::SemiHertz);
     // the energy per revolution is the steady power times a revolution's time, 2 pi R / V
     EXPECT_NEAR(r.energy_per_revolution_J / (r.contact.power_W * 2 * kPi * m.Rx1_m / m.speed_m_per_s), 1.0, 1e-12);
     state.head(m.n1) = 4e6 * r.dstate_dN.head(m.n1);  // a worn crown (about 10 um deep)
@@ -599,6 +601,34 @@ TEST(WearLoop, LifeEndWordsReadBack) {
     EXPECT_EQ(parse_life_end(to_string(e)), e) << to_string(e);
   EXPECT_EQ(to_string(LifeResult{}.ended_by), "not_run");
   EXPECT_THROW(parse_life_end("edge reached"), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace wear
+
+namespace wear {
+namespace {
+
+class WearOutput : public rollwear_test::TempDirTest {};
+
+// A resumed run's summary.csv starts from the file's own text up to the checkpoint's step, byte for byte
+// (read by lib/io/csv_reader.h): comments and header as written, no row after that step.
+TEST_F(WearOutput, SummaryUpToKeepsTheFileTextToTheCheckpointStep) {
+  const std::string head = "# case: x\n# revolutions of body1 (R 0.02 m); one row per accepted step\nstep,revolutions\n";
+  const std::string rows = "0,0\n1,1e+06\n2,2.5e+06\n";
+  const std::filesystem::path p = dir_ / "summary.csv";
+  std::ofstream(p) << head << rows << "3,4e+06\n4,5e";  // a row torn by the kill
+  EXPECT_EQ(summary_up_to(p, 2), head + rows);
+  EXPECT_EQ(summary_up_to(p, 0), head + "0,0\n");
+  EXPECT_THROW(summary_up_to(p, 7), std::runtime_error);  // the summary ends before the checkpoint
+  std::ofstream(p) << head << "0,0\nx,1\n";
+  try {
+    summary_up_to(p, 1);
+    ADD_FAILURE() << "a row without a step number must be refused";
+  } catch (const std::runtime_error& e) {
+    EXPECT_EQ(std::string(e.what()), p.string() + ":5: expected a step number, got 'x'");
+  }
+  EXPECT_THROW(summary_up_to(dir_ / "none.csv", 0), std::runtime_error);
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 // KTH and USFD are sums over cells of the fields the tangential solver wrote; a stretch of duration
 // T at speed V counts V T / (2 pi R_w) passages.
 #include "wear/wear_law.h"
+#include "lib/io/number.h"
 #include "lib/numeric.h"
 #include "lib/io/errors.h"
 
@@ -15,6 +16,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 
 namespace wear {
@@ -28,7 +30,7 @@ constexpr double kKg_per_m2_per_ug_per_mm2 = 1e-3;
 // 1 Pa = 1e-6 N/mm^2 (MPa)
 constexpr double kN_per_mm2_per_Pa = 1e-6;
 
-std::string number(double v) { return fmt::format("{:.6g}", v); }
+std::string number(double v) { return contact::six_digits(v); }  // lib/io/number.h
 
 [[noreturn]] void fail(const std::string& key, const std::string& range, double got) {
   throw contact::SettingError("wear", key, "must be " + range + ", got " + number(got));
@@ -156,15 +158,7 @@ double cell_pressure_slip_Pa_m_per_s(const CellFields& f, int i, int j) {
 
 // ---- KTH wear map ----
 
-std::string to_string(KthRegion region) {
-  switch (region) {
-    case KthRegion::MildSlow: return "mild (slow)";
-    case KthRegion::Severe: return "severe";
-    case KthRegion::MildFast: return "mild (fast)";
-    case KthRegion::Catastrophic: return "catastrophic";
-  }
-  return "?";
-}
+std::string to_string(KthRegion region) { return contact::enum_name(kKthRegionNames, region); }
 
 KthRegion kth_region(const KthWearMap& map, double pressure_over_hardness, double slip_speed_m_per_s) {
   if (pressure_over_hardness > map.pressure_ratio) return KthRegion::Catastrophic;
@@ -196,14 +190,7 @@ Eigen::ArrayXd kth_depth_per_passage(const CellFields& fields, const KthWearMap&
 
 // ---- USFD T gamma/A ----
 
-std::string to_string(UsfdRegion region) {
-  switch (region) {
-    case UsfdRegion::Mild: return "mild";
-    case UsfdRegion::Severe: return "severe";
-    case UsfdRegion::Catastrophic: return "catastrophic";
-  }
-  return "?";
-}
+std::string to_string(UsfdRegion region) { return contact::enum_name(kUsfdRegionNames, region); }
 
 UsfdRegion usfd_region(const UsfdWearFunction& f, double x) {
   const double mild = f.mild_slope * x;
@@ -241,21 +228,12 @@ Eigen::ArrayXd usfd_depth_per_passage(const CellFields& fields, const UsfdWearFu
 
 // ---- the wear law of a case ----
 
-std::string to_string(WearLawKind kind) {
-  switch (kind) {
-    case WearLawKind::Energy: return "energy";
-    case WearLawKind::Archard: return "archard";
-    case WearLawKind::Kth: return "kth";
-    case WearLawKind::Usfd: return "usfd";
-  }
-  return "?";
-}
+std::string to_string(WearLawKind kind) { return contact::enum_name(kWearLawNames, kind); }
 
 WearLawKind parse_wear_law(const std::string& name) {
-  for (WearLawKind k : {WearLawKind::Energy, WearLawKind::Archard, WearLawKind::Kth, WearLawKind::Usfd})
-    if (name == to_string(k)) return k;
-  throw contact::SettingError("wear", "law", "unknown wear law '" + contact::clipped(name) +
-                                                "' (valid: energy, archard, kth, usfd)");
+  if (const std::optional<WearLawKind> k = contact::enum_from_name(kWearLawNames, name)) return *k;
+  throw contact::SettingError("wear", "law", "unknown wear law '" + contact::clipped(name) + "' (valid: " +
+                                                contact::enum_names_list(kWearLawNames) + ")");
 }
 
 void validate(const WearLaw& law) {

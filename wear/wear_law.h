@@ -48,6 +48,7 @@
 #include <string>
 #include <vector>
 
+#include "lib/io/enum_names.h"
 #include "lib/patch.h"
 #include "lib/tangential/satran.h"
 #include "lib/tangential/tangential.h"
@@ -115,6 +116,10 @@ struct KthWearMap {
 };
 
 enum class KthRegion { MildSlow, Severe, MildFast, Catastrophic };
+constexpr contact::EnumTable<KthRegion, 4> kKthRegionNames = {{{KthRegion::MildSlow, "mild (slow)"},
+                                                               {KthRegion::Severe, "severe"},
+                                                               {KthRegion::MildFast, "mild (fast)"},
+                                                               {KthRegion::Catastrophic, "catastrophic"}}};
 std::string to_string(KthRegion region);
 
 KthRegion kth_region(const KthWearMap& map, double pressure_over_hardness, double slip_speed_m_per_s);
@@ -141,6 +146,8 @@ struct UsfdWearFunction {
 };
 
 enum class UsfdRegion { Mild, Severe, Catastrophic };
+constexpr contact::EnumTable<UsfdRegion, 3> kUsfdRegionNames = {
+    {{UsfdRegion::Mild, "mild"}, {UsfdRegion::Severe, "severe"}, {UsfdRegion::Catastrophic, "catastrophic"}}};
 std::string to_string(UsfdRegion region);
 
 UsfdRegion usfd_region(const UsfdWearFunction& f, double Tgamma_over_A_N_per_mm2);
@@ -154,8 +161,13 @@ Eigen::ArrayXd usfd_depth_per_passage(const CellFields& fields, const UsfdWearFu
 // ---- the wear law of a case, and the depth per duty cycle ----
 
 enum class WearLawKind { Energy, Archard, Kth, Usfd };
+// the names of wear.bodyN.law, in the order messages list them
+constexpr contact::EnumTable<WearLawKind, 4> kWearLawNames = {{{WearLawKind::Energy, "energy"},
+                                                               {WearLawKind::Archard, "archard"},
+                                                               {WearLawKind::Kth, "kth"},
+                                                               {WearLawKind::Usfd, "usfd"}}};
 std::string to_string(WearLawKind kind);
-// throws std::invalid_argument naming the valid laws
+// throws contact::SettingError (a std::invalid_argument) naming the valid laws
 WearLawKind parse_wear_law(const std::string& name);
 
 struct WearLaw {                         // the case's wear section (YAML keys = field names)

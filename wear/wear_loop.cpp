@@ -14,6 +14,7 @@
 #include <spdlog/spdlog.h>
 
 #include "lib/io/case.h"
+#include "lib/io/enum_names.h"
 #include "lib/numeric.h"
 #include "lib/tangential/steady.h"
 #include "wear/profile_update.h"
@@ -182,11 +183,13 @@ NormalState normal_state(const WearModel& m, const Eigen::VectorXd& state, WearC
   problem.grid = m.grid;
   problem.semi_hertz = m.normal_options;
   NormalState n;
+  bool converged = false;
   for (int refinement = 0;; ++refinement) {
     try {
       const contact::NormalSolution s = contact::solve_normal(problem);
       n.normal = s.on_profiles;
       n.solver = s.solver;
+      converged = s.solve_converged;
       break;
     } catch (const contact::NoStripCentreError& e) {
       // a worn profile can split the contact into narrow patches that no strip centre of the case's grid
@@ -204,8 +207,7 @@ NormalState normal_state(const WearModel& m, const Eigen::VectorXd& state, WearC
   // no approach carries the load (the semi-Hertzian root find, remedy included, did not converge): no
   // result to wear with; the life ends at its last accepted step (a contact cut at a body's edge is the
   // edge limit's, below, but only once its approach carries the load)
-  if (n.normal.status.kind == contact::SolveStatus::Kind::MaxIterations ||
-      !(n.normal.status.residual <= m.normal_options.load_rtol))
+  if (!converged)
     throw NormalNotConverged(fmt::format("the normal problem did not converge: {}", n.normal.status.message));
   // the lifetime's edge limit: how far the contact is from the end of the profiles' overlap
   const double lo = std::max(profiles.body1.y_m(0), profiles.body2.y_m(0));
@@ -286,7 +288,7 @@ WearRate wear_rate(const WearModel& m, const Eigen::VectorXd& state, WearCache& 
   r.contact.power_W = duty.duration_s > 0 ? duty.dissipated_J / duty.duration_s : 0;
   r.contact.edge_margin_m = n.edge_margin_m;
   r.contact.edge_limit_m = edge_limit_value_m(worn, n.normal);
-  r.contact.normal_solver = contact::to_string(n.solver);
+  r.contact.normal_solver = n.solver;
 
   if (cache.rates.size() >= kCachedRates) cache.rates.erase(cache.rates.begin());
   cache.rates.emplace_back(key, r);
@@ -317,11 +319,15 @@ namespace {
 enum Limit { kDepth, kPressure, kEdge, kLimits };
 constexpr LifeEnd kLimitEnds[kLimits] = {LifeEnd::MaxDepth, LifeEnd::MaxPressure, LifeEnd::Edge};
 
-constexpr std::pair<LifeEnd, const char*> kLifeEndWords[] = {
-    {LifeEnd::NotRun, "not_run"},   {LifeEnd::MaxDepth, "max_depth"}, {LifeEnd::MaxPressure, "max_pressure"},
-    {LifeEnd::Edge, "edge"},        {LifeEnd::Revolutions, "revolutions"}, {LifeEnd::MaxSteps, "max_steps"},
-    {LifeEnd::Stopped, "stopped"},  {LifeEnd::Failed, "failed"},
-};
+// the report's words (lib/io/enum_names.h)
+constexpr contact::EnumTable<LifeEnd, 8> kLifeEndWords = {
+    {{LifeEnd::NotRun, "not_run"}, {LifeEnd::MaxDepth, "max_depth"}, {LifeEnd::MaxPressure, "max_pressure"},
+     {LifeEnd::Edge, "edge"}, {LifeEnd::Revolutions, "revolutions"}, {LifeEnd::MaxSteps, "max_steps"},
+     {LifeEnd::Stopped, "stopped"}, {LifeEnd::Failed, "failed"}}};
+constexpr contact::EnumTable<LifeFailure, 5> kLifeFailureWords = {
+    {{LifeFailure::None, "none"}, {LifeFailure::Integrator, "integrator"},
+     {LifeFailure::UnresolvedContact, "unresolved_contact"}, {LifeFailure::WornThrough, "worn_through"},
+     {LifeFailure::NormalNotConverged, "normal_not_converged"}}};
 
 // The wear is carried by the worn bodies' profile nodes: a contact narrower than a few node spacings
 // would put a strip's wear on one node and the next solve could not see the worn shape. Throws
@@ -447,31 +453,15 @@ std::optional<LifeEnd> life_end_of(const IntegratorResult& r) {
 
 }  // namespace
 
-std::string to_string(LifeEnd e) {
-  for (const auto& [end, word] : kLifeEndWords)
-    if (end == e) return word;
-  return "not_run";
-}
+std::string to_string(LifeEnd e) { return contact::enum_name(kLifeEndWords, e); }
 
 LifeEnd parse_life_end(const std::string& word) {
-  std::string valid;
-  for (const auto& [end, w] : kLifeEndWords) {
-    if (word == w) return end;
-    valid += (valid.empty() ? "" : ", ") + std::string(w);
-  }
-  throw std::invalid_argument(fmt::format("'{}' is not how a life ends (one of {})", word, valid));
+  if (const std::optional<LifeEnd> e = contact::enum_from_name(kLifeEndWords, word)) return *e;
+  throw std::invalid_argument(fmt::format("'{}' is not how a life ends (one of {})", contact::clipped(word),
+                                          contact::enum_names_list(kLifeEndWords)));
 }
 
-std::string to_string(LifeFailure f) {
-  switch (f) {
-    case LifeFailure::None: return "none";
-    case LifeFailure::Integrator: return "integrator";
-    case LifeFailure::UnresolvedContact: return "unresolved_contact";
-    case LifeFailure::WornThrough: return "worn_through";
-    case LifeFailure::NormalNotConverged: return "normal_not_converged";
-  }
-  return "none";
-}
+std::string to_string(LifeFailure f) { return contact::enum_name(kLifeFailureWords, f); }
 
 namespace {
 

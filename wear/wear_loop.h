@@ -87,7 +87,7 @@ struct ContactReport {
   double power_W = 0;     // mean dissipated power over the duty cycle
   double edge_margin_m = 0;  // lateral, 0 once the contact reaches the edge
   double edge_limit_m = 0;   // edge_limit_value_m: < 0 inside, > 0 past the edge (the edge limit's function)
-  std::string normal_solver;  // hertz (constant curvature) or semi-hertz
+  contact::NormalSolverKind normal_solver = contact::NormalSolverKind::SemiHertz;  // Hertz (constant curvature) or semi-Hertz
 };
 
 struct WearRate {

@@ -1,5 +1,6 @@
 #include "wear/wear_output.h"
 
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -7,10 +8,14 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <system_error>
 
 #include <spdlog/fmt/fmt.h>
 
 #include "lib/history.h"
+#include "lib/io/csv_reader.h"
+#include "lib/io/errors.h"
+#include "lib/io/number.h"
 #include "lib/numeric.h"
 
 namespace wear {
@@ -21,15 +26,17 @@ namespace {
 
 constexpr const char* kCheckpointMagic = "rollwear-wear-checkpoint 2";  // 2: the life's counters
 
-std::string g17(double v) { return fmt::format("{:.17g}", v); }
+// every number at full precision: the shortest text that reads back as the same double (lib/io/number.h)
+using contact::round_trip;
 
 std::string law_text(const WearLaw& law) {
   switch (parse_wear_law(law.law)) {
-    case WearLawKind::Energy: return fmt::format("energy, k_E {} m^3/J", law.k_E_m3_per_J);
+    case WearLawKind::Energy: return fmt::format("energy, k_E {} m^3/J", round_trip(law.k_E_m3_per_J));
     case WearLawKind::Archard:
-      return fmt::format("archard, K {}, H {} Pa (k_E = K/(H mu))", law.archard_k, law.hardness_Pa);
-    case WearLawKind::Kth: return fmt::format("kth, H {} Pa", law.hardness_Pa);
-    case WearLawKind::Usfd: return fmt::format("usfd, rho {} kg/m^3", law.density_kg_per_m3);
+      return fmt::format("archard, K {}, H {} Pa (k_E = K/(H mu))", round_trip(law.archard_k),
+                         round_trip(law.hardness_Pa));
+    case WearLawKind::Kth: return fmt::format("kth, H {} Pa", round_trip(law.hardness_Pa));
+    case WearLawKind::Usfd: return fmt::format("usfd, rho {} kg/m^3", round_trip(law.density_kg_per_m3));
   }
   return law.law;
 }
@@ -50,7 +57,7 @@ std::string wear_summary_header(const WearModel& m) {
   if (m.law1) s += fmt::format("# body1 wears: {}\n", law_text(*m.law1));
   if (m.law2) s += fmt::format("# body2 wears: {}\n", law_text(*m.law2));
   s += fmt::format("# revolutions of body{} (R {} m); one row per accepted step, step 0 unworn\n", m.law1 ? 1 : 2,
-                   m.reference_radius_m);
+                   round_trip(m.reference_radius_m));
   s += "step,revolutions,hours,max_depth_m,worn_volume_m3,dissipated_J,a_m,b_m,p0_Pa,Fx_N,power_W,"
        "step_revolutions,error_estimate,rejected,rhs_evals\n";
   return s;
@@ -58,10 +65,10 @@ std::string wear_summary_header(const WearModel& m) {
 
 std::string wear_summary_row(const WearModel& m, const LifeStep& s, double hours_per_rev) {
   const Eigen::VectorXd& h = *s.state;
-  return fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n", s.step, g17(s.N), g17(s.N * hours_per_rev),
-                     g17(max_depth_m(m, h)), g17(worn_volume_m3(m, h, 1) + worn_volume_m3(m, h, 2)),
-                     g17(dissipated_energy_J(m, h)), g17(s.contact.a_m), g17(s.contact.b_m), g17(s.contact.p0_Pa),
-                     g17(s.contact.Fx_N), g17(s.contact.power_W), g17(s.info.step), g17(s.info.error_estimate),
+  return fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n", s.step, round_trip(s.N), round_trip(s.N * hours_per_rev),
+                     round_trip(max_depth_m(m, h)), round_trip(worn_volume_m3(m, h, 1) + worn_volume_m3(m, h, 2)),
+                     round_trip(dissipated_energy_J(m, h)), round_trip(s.contact.a_m), round_trip(s.contact.b_m), round_trip(s.contact.p0_Pa),
+                     round_trip(s.contact.Fx_N), round_trip(s.contact.power_W), round_trip(s.info.step), round_trip(s.info.error_estimate),
                      s.info.rejected, s.info.rhs_evals);
 }
 
@@ -70,12 +77,12 @@ std::string wear_snapshot_csv(const WearModel& m, int body, double N, double hou
   const int n = body == 1 ? m.n1 : m.n2;
   const int offset = body == 1 ? 0 : m.n1;
   if (n == 0) throw std::invalid_argument(fmt::format("wear snapshot: body{} does not wear", body));
-  std::string s = fmt::format("# case: {}\n# body: body{}\n# revolutions: {}\n# hours: {}\n", m.name, body, g17(N),
-                              g17(hours));
+  std::string s = fmt::format("# case: {}\n# body: body{}\n# revolutions: {}\n# hours: {}\n", m.name, body, round_trip(N),
+                              round_trip(hours));
   s += "y_m,z_original_m,z_m,depth_m\n";
   for (int i = 0; i < n; ++i) {
     const double d = state(offset + i);
-    s += fmt::format("{},{},{},{}\n", g17(p.y_m(i)), g17(p.z_m(i)), g17(p.z_m(i) + d), g17(d));
+    s += fmt::format("{},{},{},{}\n", round_trip(p.y_m(i)), round_trip(p.z_m(i)), round_trip(p.z_m(i) + d), round_trip(d));
   }
   return s;
 }
@@ -91,16 +98,16 @@ std::string wear_report_text(const WearModel& m, const WearReport& r) {
   s += fmt::format("ended_by: {}\n", to_string(l.ended_by));
   if (l.failure != LifeFailure::None) s += fmt::format("failure: {}\n", to_string(l.failure));
   s += fmt::format("message: {}\n", l.message);
-  s += fmt::format("revolutions: {}\n", g17(l.N));
-  s += fmt::format("hours: {}\n", g17(l.N * r.hours_per_revolution));
+  s += fmt::format("revolutions: {}\n", round_trip(l.N));
+  s += fmt::format("hours: {}\n", round_trip(l.N * r.hours_per_revolution));
   s += fmt::format("reference_body: body{}\n", m.law1 ? 1 : 2);
-  s += fmt::format("max_depth_m: {}\n", g17(max_depth_m(m, l.state)));
-  if (m.law1) s += fmt::format("worn_volume_body1_m3: {}\n", g17(worn_volume_m3(m, l.state, 1)));
-  if (m.law2) s += fmt::format("worn_volume_body2_m3: {}\n", g17(worn_volume_m3(m, l.state, 2)));
-  s += fmt::format("dissipated_J: {}\n", g17(dissipated_energy_J(m, l.state)));
-  s += fmt::format("p0_Pa: {}\n", g17(l.contact.p0_Pa));
-  s += fmt::format("a_m: {}\nb_m: {}\n", g17(l.contact.a_m), g17(l.contact.b_m));
-  s += fmt::format("normal_solver: {}\n", l.contact.normal_solver);
+  s += fmt::format("max_depth_m: {}\n", round_trip(max_depth_m(m, l.state)));
+  if (m.law1) s += fmt::format("worn_volume_body1_m3: {}\n", round_trip(worn_volume_m3(m, l.state, 1)));
+  if (m.law2) s += fmt::format("worn_volume_body2_m3: {}\n", round_trip(worn_volume_m3(m, l.state, 2)));
+  s += fmt::format("dissipated_J: {}\n", round_trip(dissipated_energy_J(m, l.state)));
+  s += fmt::format("p0_Pa: {}\n", round_trip(l.contact.p0_Pa));
+  s += fmt::format("a_m: {}\nb_m: {}\n", round_trip(l.contact.a_m), round_trip(l.contact.b_m));
+  s += fmt::format("normal_solver: {}\n", contact::to_string(l.contact.normal_solver));
   const LifeCounters& n = l.counters;
   s += fmt::format("steps: {}\nrejected_steps: {}\nrhs_evals: {}\n", n.steps, n.rejected, n.rhs_evals);
   s += fmt::format("rate_evaluations: {}\nlimit_evaluations: {}\n", n.rate_evaluations, n.limit_evaluations);
@@ -193,25 +200,35 @@ Checkpoint read_checkpoint(const std::filesystem::path& path) {
 }
 
 std::string summary_up_to(const std::filesystem::path& path, long steps) {
-  std::ifstream in(path);
-  if (!in) throw std::runtime_error(path.string() + ": cannot read the summary of the run to resume");
-  std::string out, line;
-  bool header = false;
+  // the rows' steps from the one CSV reader (lib/io/csv_reader.h); the text kept is the file's own, line
+  // for line up to the last row kept, so that a resumed summary is byte for byte the uninterrupted one
+  contact::CsvTable t;
+  try {
+    t = contact::read_csv_table(path.string());
+  } catch (const std::runtime_error&) {
+    throw std::runtime_error(path.string() + ": cannot read the summary of the run to resume");
+  }
+  if (t.header.empty() || t.header[0] != "step")
+    throw std::runtime_error(fmt::format("{}: not a wear summary (no header row starting with 'step')", path.string()));
   long last = -1;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#' || !header) {
-      if (!line.empty() && line[0] != '#') header = true;
-      out += line + "\n";
-      continue;
-    }
-    const long step = std::strtol(line.c_str(), nullptr, 10);
+  int last_line = t.header_line;  // the last line kept
+  for (std::size_t k = 0; k < t.rows.size(); ++k) {
+    const std::string& cell = t.rows[k][0];
+    long step = 0;
+    const auto [end, ec] = std::from_chars(cell.data(), cell.data() + cell.size(), step);
+    if (ec != std::errc() || end != cell.data() + cell.size())
+      throw std::runtime_error(fmt::format("{}:{}: expected a step number, got '{}'", path.string(), t.row_lines[k],
+                                           contact::clipped(cell)));
     if (step > steps) break;
-    out += line + "\n";
     last = step;
+    last_line = t.row_lines[k];
   }
   if (last != steps)
     throw std::runtime_error(fmt::format("{}: the summary ends at step {}, the checkpoint is at step {}", path.string(),
                                          last, steps));
+  std::ifstream in(path, std::ios::binary);
+  std::string out, line;
+  for (int number = 1; number <= last_line && std::getline(in, line); ++number) out += line + "\n";
   return out;
 }
 

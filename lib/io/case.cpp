@@ -12,6 +12,8 @@
 #include <spdlog/spdlog.h>
 
 #include "lib/normal/semi_hertz.h"
+#include "lib/tangential/satran.h"
+#include "lib/tangential/tangential.h"
 #include "lib/io/number.h"
 #include "lib/io/yaml_reader.h"
 
@@ -229,11 +231,10 @@ void read_inertia(YamlMap& m, InertiaSection& in) {
 
 void read_solver(YamlMap& m, SolverSection& s) {
   m.optional("normal", s.normal);
-  const std::vector<std::string>& names = normal_solver_names();
-  if (std::find(names.begin(), names.end(), s.normal) == names.end()) {
-    std::string valid;
-    for (const std::string& n : names) valid += (valid.empty() ? "" : ", ") + n;
-    m.fail("normal", "unknown normal solver '" + clipped(s.normal) + "' (valid: " + valid + ")");
+  try {
+    parse_normal_choice(s.normal);
+  } catch (const std::invalid_argument& e) {
+    m.fail("normal", e.what());
   }
   m.optional("tangential", s.tangential);
   try {
@@ -438,7 +439,7 @@ GridSpec grid_of(const ContactCase& c) {
   return g;
 }
 
-NormalSolution solve_normal_of(const ContactCase& c) {
+NormalProblem normal_problem_of(const ContactCase& c) {
   NormalProblem problem;
   problem.choice = parse_normal_choice(c.solver.normal);  // validated when read
   problem.bodies = {{c.bodies.body1.Rx_m, c.bodies.body1.Ry_m}, {c.bodies.body2.Rx_m, c.bodies.body2.Ry_m}};
@@ -450,18 +451,15 @@ NormalSolution solve_normal_of(const ContactCase& c) {
   problem.normal_load_N = normal_load_of(c);
   problem.grid = grid_of(c);
   problem.curvature_rtol = kCaseCurvatureRtol;
-  NormalSolution n;
+  return problem;
+}
+
+NormalSolution solve_normal_of(const ContactCase& c) {
   try {
-    n = solve_normal(problem);
+    return solve_normal_converged(normal_problem_of(c));
   } catch (const NormalChoiceError& e) {
     throw CaseError(where(c, "solver.normal") + "solver.normal, profiles: " + e.what());
   }
-  // a contact cut at a body's edge is reported with the patch (reaches_edge); any other unconverged
-  // solve is no result
-  if (!n.status.converged() && !n.reaches_edge)
-    throw NormalSolveError(fmt::format("the normal problem ({}) did not converge: {}", to_string(n.solver),
-                                       n.status.message));
-  return n;
 }
 
 double normal_load_of(const ContactCase& c) { return steady_value(c, c.load.normal_load_N, "load.normal_load_N"); }

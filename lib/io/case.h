@@ -32,10 +32,13 @@
 #include "lib/io/key_locations.h"
 #include "lib/patch.h"
 #include "lib/normal/profile.h"
-#include "lib/tangential/satran.h"
-#include "lib/tangential/tangential.h"
 
 namespace contact {
+
+// the tangential and transient inputs this reader builds (lib/tangential/tangential.h, satran.h): a
+// caller that builds them includes those headers; the case itself needs only their names
+struct Creepages;
+struct TransientCase;
 
 struct BodySection {                  // bodies.body1 / bodies.body2
   double Rx_m = kFlat, Ry_m = kFlat;  // required (Ry_m: only without profiles:); .inf for flat, negative for concave
@@ -134,23 +137,15 @@ void validate_transient(const ContactCase& c);
 Bodies bodies_of(const ContactCase& c);
 ElasticPair materials_of(const ContactCase& c);
 GridSpec grid_of(const ContactCase& c);
-// the normal solvers solver.normal names, in the order listed in messages
-inline const std::vector<std::string>& normal_solver_names() {
-  static const std::vector<std::string> kNames = {"auto", "hertz", "semi-hertz", "halfspace"};
-  return kNames;
-}
 // profiles of constant curvature within this (relative) tolerance are treated by Hertz (lib/normal/normal.h)
 constexpr double kCaseCurvatureRtol = kConstantCurvatureRtol;
 
-// A normal solve that did not converge (status MaxIterations, or the half-space's Failed): no result;
-// the command line ends with exit 1 and this message.
-struct NormalSolveError : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
-
 // the normal problem of a case as solver.normal asks (lib/normal/normal.h chooses; this only builds the
-// problem from the case). Throws CaseError for a case the solver named cannot treat, NormalSolveError
-// for a solve that did not converge; a contact reaching a body's edge comes back with reaches_edge.
+// problem from the case); its profiles point into c, which must outlive it
+NormalProblem normal_problem_of(const ContactCase& c);
+// its solve (solve_normal_converged): throws CaseError for a case the solver named cannot treat,
+// NormalSolveError (lib/normal/normal.h) for a solve that did not converge, at a body's edge too; a
+// converged contact reaching a body's edge comes back with reaches_edge.
 NormalSolution solve_normal_of(const ContactCase& c);
 
 // the steady values: throw CaseError naming the key if its history is not a constant

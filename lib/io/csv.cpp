@@ -28,6 +28,33 @@ void check_length(const char* what, Eigen::Index n, Eigen::Index ny) {
   if (n != ny) throw std::invalid_argument(fmt::format("csv: {} has {} strips, the grid {}", what, n, ny));
 }
 
+// the per-cell fields of a file on grid g: the grid's coordinates and each field's shape checked
+using CellField = std::pair<const char*, const Eigen::ArrayXXd*>;
+void check_cell_fields(const Grid& g, std::initializer_list<CellField> fields) {
+  check_length("grid x_m", g.x_m.size(), g.nx);
+  check_length("grid y_m", g.y_m.size(), g.ny);
+  for (const auto& [what, a] : fields) check_shape(what, a->rows(), a->cols(), g.nx, g.ny);
+}
+
+// one row per cell (strip j by strip, i along it): x_m, y_m, each field, then last(i, j) for the last column
+template <class Last>
+void put_cell_rows(std::string& out, const Grid& g, std::initializer_list<CellField> fields, const Last& last) {
+  for (int j = 0; j < g.ny; ++j) {
+    for (int i = 0; i < g.nx; ++i) {
+      put(out, g.x_m(i));
+      out += ',';
+      put(out, g.y_m(j));
+      out += ',';
+      for (const CellField& f : fields) {
+        put(out, (*f.second)(i, j));
+        out += ',';
+      }
+      last(i, j);
+      out += '\n';
+    }
+  }
+}
+
 fs::path temporary_for(const fs::path& path) {
   fs::path tmp = path;
   tmp += ".tmp." + std::to_string(::getpid());
@@ -135,28 +162,16 @@ std::string csv_text(const std::string& text) {
 
 std::string fields_csv(const ContactPatch& patch, const TangentialSolution& s) {
   const Grid& g = patch.grid;
-  check_length("grid x_m", g.x_m.size(), g.nx);
-  check_length("grid y_m", g.y_m.size(), g.ny);
-  check_shape("pressure_Pa", patch.pressure_Pa.rows(), patch.pressure_Pa.cols(), g.nx, g.ny);
-  check_shape("tau_x_Pa", s.tau_x_Pa.rows(), s.tau_x_Pa.cols(), g.nx, g.ny);
-  check_shape("tau_y_Pa", s.tau_y_Pa.rows(), s.tau_y_Pa.cols(), g.nx, g.ny);
-  check_shape("slip_x_m_per_s", s.slip_x_m_per_s.rows(), s.slip_x_m_per_s.cols(), g.nx, g.ny);
-  check_shape("slip_y_m_per_s", s.slip_y_m_per_s.rows(), s.slip_y_m_per_s.cols(), g.nx, g.ny);
-  check_shape("power_W_per_m2", s.power_W_per_m2.rows(), s.power_W_per_m2.cols(), g.nx, g.ny);
+  const std::initializer_list<CellField> fields = {
+      {"pressure_Pa", &patch.pressure_Pa},       {"tau_x_Pa", &s.tau_x_Pa},
+      {"tau_y_Pa", &s.tau_y_Pa},                 {"slip_x_m_per_s", &s.slip_x_m_per_s},
+      {"slip_y_m_per_s", &s.slip_y_m_per_s},     {"power_W_per_m2", &s.power_W_per_m2}};
+  check_cell_fields(g, fields);
   check_shape("state", s.state.rows(), s.state.cols(), g.nx, g.ny);
 
   std::string out = "x_m,y_m,pressure_Pa,tau_x_Pa,tau_y_Pa,slip_x_m_per_s,slip_y_m_per_s,power_W_per_m2,state\n";
   out.reserve(out.size() + static_cast<std::size_t>(g.nx) * g.ny * 200);
-  for (int j = 0; j < g.ny; ++j) {
-    for (int i = 0; i < g.nx; ++i) {
-      for (const double v : {g.x_m(i), g.y_m(j), patch.pressure_Pa(i, j), s.tau_x_Pa(i, j), s.tau_y_Pa(i, j),
-                             s.slip_x_m_per_s(i, j), s.slip_y_m_per_s(i, j), s.power_W_per_m2(i, j)}) {
-        put(out, v);
-        out += ',';
-      }
-      fmt::format_to(std::back_inserter(out), "{}\n", s.state(i, j));
-    }
-  }
+  put_cell_rows(out, g, fields, [&](int i, int j) { fmt::format_to(std::back_inserter(out), "{}", s.state(i, j)); });
   return out;
 }
 
@@ -264,29 +279,16 @@ std::string strip_energy_csv(const Grid& g, const Eigen::ArrayXd& energy_J_per_m
 }
 
 std::string snapshot_csv(const Grid& g, const Snapshot& s) {
-  check_length("grid x_m", g.x_m.size(), g.nx);
-  check_length("grid y_m", g.y_m.size(), g.ny);
-  check_shape("pressure_Pa", s.pressure_Pa.rows(), s.pressure_Pa.cols(), g.nx, g.ny);
-  check_shape("tau_x_Pa", s.tau_x_Pa.rows(), s.tau_x_Pa.cols(), g.nx, g.ny);
-  check_shape("tau_y_Pa", s.tau_y_Pa.rows(), s.tau_y_Pa.cols(), g.nx, g.ny);
-  check_shape("slip_x_m_per_s", s.slip_x_m_per_s.rows(), s.slip_x_m_per_s.cols(), g.nx, g.ny);
-  check_shape("slip_y_m_per_s", s.slip_y_m_per_s.rows(), s.slip_y_m_per_s.cols(), g.nx, g.ny);
+  const std::initializer_list<CellField> fields = {
+      {"pressure_Pa", &s.pressure_Pa},       {"tau_x_Pa", &s.tau_x_Pa},          {"tau_y_Pa", &s.tau_y_Pa},
+      {"slip_x_m_per_s", &s.slip_x_m_per_s}, {"slip_y_m_per_s", &s.slip_y_m_per_s}};
+  check_cell_fields(g, fields);
 
   std::string out = "x_m,y_m,pressure_Pa,tau_x_Pa,tau_y_Pa,slip_x_m_per_s,slip_y_m_per_s,t_s\n";
   out.reserve(out.size() + static_cast<std::size_t>(g.nx) * g.ny * 180);
   std::string t;
   put(t, s.t_s);
-  for (int j = 0; j < g.ny; ++j) {
-    for (int i = 0; i < g.nx; ++i) {
-      for (const double v : {g.x_m(i), g.y_m(j), s.pressure_Pa(i, j), s.tau_x_Pa(i, j), s.tau_y_Pa(i, j),
-                             s.slip_x_m_per_s(i, j), s.slip_y_m_per_s(i, j)}) {
-        put(out, v);
-        out += ',';
-      }
-      out += t;
-      out += '\n';
-    }
-  }
+  put_cell_rows(out, g, fields, [&](int, int) { out += t; });
   return out;
 }
 

@@ -414,7 +414,9 @@ HalfspaceSolution solve_halfspace(const Grid& grid, const Eigen::ArrayXXd& gap_m
 
   // a contact cut by the grid's border misses the pressure outside it
   const Eigen::ArrayXXd& ps = s.pressure_Pa;
-  if ((ps.row(0) > 0).any() || (ps.row(nx - 1) > 0).any() || (ps.col(0) > 0).any() || (ps.col(ny - 1) > 0).any())
+  s.reaches_border =
+      (ps.row(0) > 0).any() || (ps.row(nx - 1) > 0).any() || (ps.col(0) > 0).any() || (ps.col(ny - 1) > 0).any();
+  if (s.reaches_border)
     spdlog::warn("halfspace ({} x {}): the contact reaches the grid's border (half-sizes {:.3e} m x {:.3e} m): "
                  "enlarge the grid",
                  nx, ny, grid.half_x_m, grid.half_y_m);

@@ -36,6 +36,7 @@ struct HalfspaceSolution {
   double approach_m = 0;        // rigid approach (penetration) delta, measured from the gap's zero
   double contact_area_m2 = 0;   // loaded cells times dx dy
   SolveStatus status;           // iterations, complementarity residual, message with the numbers
+  bool reaches_border = false;  // a cell on the grid's border is loaded: the contact is cut by the grid
 };
 
 // Displacement of the surface at (x, y) relative to the centre of a dx x dy rectangle carrying unit

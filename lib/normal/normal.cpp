@@ -6,7 +6,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
+#include "lib/io/errors.h"
 #include "lib/normal/halfspace.h"
 #include "lib/numeric.h"
 
@@ -23,6 +25,13 @@ void take_profile_result(const SemiHertzResult& r, NormalSolution& n) {
   n.grid_y0_m = r.grid_y0_m;
   n.status = r.status;
   n.on_profiles = r;
+}
+
+// the semi-Hertzian (or Hertzian) solve converged: its load residual within load_rtol, at an edge too
+// (status Failed there says only that the contact is cut)
+bool profile_solve_converged(const SemiHertzResult& r, const SemiHertzOptions& options) {
+  if (r.solver == NormalSolverKind::Hertz) return r.status.converged();
+  return r.status.kind != SolveStatus::Kind::MaxIterations && r.status.residual <= options.load_rtol;
 }
 
 // the half-space solver on the semi-Hertzian contact's box enlarged by 25 %, within the profiles' overlap
@@ -62,6 +71,7 @@ void solve_on_halfspace(const NormalProblem& p, const SemiHertzResult& sh, Norma
   // half-space's own Failed (a search direction lost, a non-finite residual) is a solve that did not
   // converge
   n.status = s.status;
+  n.solve_converged = s.status.converged();
   if (n.status.kind == SolveStatus::Kind::Failed) n.status.kind = SolveStatus::Kind::MaxIterations;
   if (n.reaches_edge) {
     n.status.kind = SolveStatus::Kind::Failed;
@@ -72,22 +82,12 @@ void solve_on_halfspace(const NormalProblem& p, const SemiHertzResult& sh, Norma
 }  // namespace
 
 NormalChoice parse_normal_choice(const std::string& name) {
-  if (name == "auto") return NormalChoice::Auto;
-  if (name == "hertz") return NormalChoice::Hertz;
-  if (name == "semi-hertz") return NormalChoice::SemiHertz;
-  if (name == "halfspace") return NormalChoice::Halfspace;
-  throw std::invalid_argument("normal solver must be auto, hertz, semi-hertz or halfspace, got '" + name + "'");
+  if (const std::optional<NormalChoice> c = enum_from_name(kNormalChoiceNames, name)) return *c;
+  throw std::invalid_argument("unknown normal solver '" + clipped(name) + "' (valid: " +
+                              enum_names_list(kNormalChoiceNames) + ")");
 }
 
-const char* to_string(NormalChoice c) {
-  switch (c) {
-    case NormalChoice::Auto: return "auto";
-    case NormalChoice::Hertz: return "hertz";
-    case NormalChoice::SemiHertz: return "semi-hertz";
-    case NormalChoice::Halfspace: return "halfspace";
-  }
-  return "unknown";
-}
+const char* to_string(NormalChoice c) { return enum_name(kNormalChoiceNames, c); }
 
 NormalSolution solve_normal(const NormalProblem& p) {
   NormalSolution n;
@@ -102,6 +102,7 @@ NormalSolution solve_normal(const NormalProblem& p) {
     n.reason = "solver.normal " + choice + ", no profiles: Hertz from the radii";
     n.status.kind = SolveStatus::Kind::Converged;
     n.status.message = "Hertz's closed form";
+    n.solve_converged = true;
     return n;
   }
 
@@ -115,6 +116,7 @@ NormalSolution solve_normal(const NormalProblem& p) {
       throw NormalChoiceError("Hertz needs profiles of constant curvature whose ellipse fits inside their overlap; "
                               "use normal: auto, semi-hertz or halfspace");
     take_profile_result(r, n);
+    n.solve_converged = profile_solve_converged(r, p.semi_hertz);
     n.solver = r.solver;
     n.reason = p.choice == NormalChoice::Hertz     ? "solver.normal hertz, profiles of constant curvature"
                : r.solver == NormalSolverKind::Hertz ? "solver.normal auto: both profiles have constant curvature"
@@ -125,6 +127,7 @@ NormalSolution solve_normal(const NormalProblem& p) {
   const SemiHertzResult sh = solve_semi_hertz(profiles, Rx1, Rx2, p.pair, p.normal_load_N, p.grid, p.semi_hertz);
   if (p.choice != NormalChoice::Halfspace) {
     take_profile_result(sh, n);
+    n.solve_converged = profile_solve_converged(sh, p.semi_hertz);
     n.solver = NormalSolverKind::SemiHertz;
     n.reason = p.choice == NormalChoice::Auto ? "solver.normal auto: the geometry is worn" : "solver.normal semi-hertz";
     return n;
@@ -138,6 +141,16 @@ NormalSolution solve_normal(const NormalProblem& p) {
   solve_on_halfspace(p, sh, n);
   n.solver = NormalSolverKind::Halfspace;
   n.reason = "solver.normal halfspace, on the semi-Hertzian contact's box enlarged by 25 %";
+  return n;
+}
+
+NormalSolution solve_normal_converged(const NormalProblem& problem) {
+  NormalSolution n = solve_normal(problem);
+  // an unconverged solve is no result, at a body's edge too; a converged contact cut at the edge is
+  // reported with the patch (reaches_edge)
+  if (!n.solve_converged)
+    throw NormalSolveError(fmt::format("the normal problem ({}) did not converge: {}", to_string(n.solver),
+                                       n.status.message));
   return n;
 }
 

@@ -10,10 +10,12 @@
 // every crossing. Which solver ran is NormalSolution::solver.
 #pragma once
 
+#include <stdexcept>
 #include <string>
 
 #include "lib/elastic.h"
 #include "lib/grid.h"
+#include "lib/io/enum_names.h"
 #include "lib/normal/hertz.h"
 #include "lib/normal/profile.h"
 #include "lib/normal/semi_hertz.h"
@@ -26,7 +28,14 @@ namespace contact {
 // solver.normal of a case
 enum class NormalChoice { Auto, Hertz, SemiHertz, Halfspace };
 
-// "auto" | "hertz" | "semi-hertz" | "halfspace"; throws std::invalid_argument for anything else
+// its names, in the order messages list them
+constexpr EnumTable<NormalChoice, 4> kNormalChoiceNames = {{{NormalChoice::Auto, "auto"},
+                                                            {NormalChoice::Hertz, "hertz"},
+                                                            {NormalChoice::SemiHertz, "semi-hertz"},
+                                                            {NormalChoice::Halfspace, "halfspace"}}};
+
+// "auto" | "hertz" | "semi-hertz" | "halfspace"; throws std::invalid_argument naming the valid ones for
+// anything else
 NormalChoice parse_normal_choice(const std::string& name);
 const char* to_string(NormalChoice c);
 
@@ -59,6 +68,11 @@ struct NormalSolution {
   // to be used as a result), Failed (the contact reaches a body's edge: a body narrower than the contact
   // cannot carry the load)
   SolveStatus status;
+  // the solver's own convergence, whether or not the contact reaches an edge (status.residual against
+  // the solver's tolerance): Hertz's closed form; the semi-Hertzian load residual |F(delta)/F - 1| within
+  // SemiHertzOptions::load_rtol; the half-space's complementarity residual within its tol (and its box's
+  // semi-Hertzian solve converged). A solve that did not converge is never used as a result.
+  bool solve_converged = false;
 };
 
 // Typed failures of the choice itself (not of the input's values): Hertz asked for on geometry it
@@ -67,10 +81,20 @@ struct NormalChoiceError : std::invalid_argument {
   using std::invalid_argument::invalid_argument;
 };
 
+// A normal solve that did not converge (NormalSolution::solve_converged false), a contact cut at a
+// body's edge included: no result; the command line ends with exit 1 and this message.
+struct NormalSolveError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
 // Solves the normal problem as the choice asks. Throws std::invalid_argument for bad values (from the
 // solvers), NormalChoiceError when Hertz is asked for on profiles not of constant curvature or whose
 // ellipse does not fit, NoStripCentreError (semi_hertz.h) for a grid too coarse for the contact.
 // The status is the caller's to check.
 NormalSolution solve_normal(const NormalProblem& problem);
+
+// solve_normal, and a NormalSolveError naming the solver and its status unless the solve converged; a
+// converged contact cut at a body's edge comes back (reaches_edge, status Failed)
+NormalSolution solve_normal_converged(const NormalProblem& problem);
 
 }  // namespace contact

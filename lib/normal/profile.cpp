@@ -9,6 +9,7 @@
 #include "lib/normal/profile.h"
 #include "lib/io/csv_reader.h"
 #include "lib/io/errors.h"
+#include "lib/io/number.h"
 
 #include <cstring>
 
@@ -29,17 +30,8 @@ namespace contact {
 
 namespace {
 
-std::string num(double v) {
-  char buf[40];
-  std::snprintf(buf, sizeof buf, "%.6g", v);
-  return buf;
-}
-
-std::string full(double v) {
-  char buf[40];
-  std::snprintf(buf, sizeof buf, "%.17g", v);
-  return buf;
-}
+// numbers as text (lib/io/number.h): six digits in messages, the shortest round trip in the CSV text
+std::string num(double v) { return six_digits(v); }
 
 
 // the checks shared by validate_profile and the CSV reader; where(i) names point i
@@ -178,7 +170,12 @@ std::string profile_csv(const Profile& profile, const std::string& comment) {
   std::string l;
   while (!comment.empty() && std::getline(ss, l)) out += "# " + l + "\n";
   out += "y_m,z_m\n";
-  for (Eigen::Index i = 0; i < profile.y_m.size(); ++i) out += full(profile.y_m(i)) + "," + full(profile.z_m(i)) + "\n";
+  for (Eigen::Index i = 0; i < profile.y_m.size(); ++i) {
+    append_round_trip(out, profile.y_m(i));
+    out += ',';
+    append_round_trip(out, profile.z_m(i));
+    out += '\n';
+  }
   return out;
 }
 

@@ -31,6 +31,7 @@
 #include <string>
 #include <vector>
 
+#include "lib/io/number.h"
 #include "lib/normal/hertz.h"
 #include "lib/numeric.h"
 
@@ -44,11 +45,7 @@ constexpr double kLoadBalanceRtol = 1e-9;
 constexpr double kPeakRtol = 1e-9;
 constexpr double kJumpWidth = 1e-9;  // the root find's bracket, relative: narrower is a jump of F(delta)
 
-std::string num(double v) {
-  char buf[40];
-  std::snprintf(buf, sizeof buf, "%.6g", v);
-  return buf;
-}
+std::string num(double v) { return six_digits(v); }  // lib/io/number.h
 
 // Hertz's ellipse against log(rho), rho = larger/smaller curvature >= 1: eps of the major semi-axis
 // and K(e), so that with C the smaller curvature
@@ -399,27 +396,28 @@ class Solver {
     March(const Gap& gap, double t) : gap_(gap), t_(t) {}
     double integral_to(double y) {
       const std::vector<double>& ys = gap_.y;
-      while (s_ + 2 < ys.size() && ys[s_ + 1] <= y) {
-        double I1 = 0;
-        positive_segment(ys[s_], ys[s_ + 1], t_ - gap_.h[s_], t_ - gap_.h[s_ + 1], acc_, I1);
-        ++s_;
-      }
+      advance_to(y);
       double part = acc_, I1 = 0;
       positive_segment(ys[s_], y, t_ - gap_.h[s_], g_at(y), part, I1);
       return part;
     }
     double g_at(double y) {
       const std::vector<double>& ys = gap_.y;
-      while (s_ + 2 < ys.size() && ys[s_ + 1] <= y) {
-        double I1 = 0;
-        positive_segment(ys[s_], ys[s_ + 1], t_ - gap_.h[s_], t_ - gap_.h[s_ + 1], acc_, I1);
-        ++s_;
-      }
+      advance_to(y);
       const double w = (y - ys[s_]) / (ys[s_ + 1] - ys[s_]);
       return t_ - (gap_.h[s_] + w * (gap_.h[s_ + 1] - gap_.h[s_]));
     }
 
    private:
+    // to the segment holding y, the integral of g_+ taken over the segments passed
+    void advance_to(double y) {
+      const std::vector<double>& ys = gap_.y;
+      while (s_ + 2 < ys.size() && ys[s_ + 1] <= y) {
+        double I1 = 0;
+        positive_segment(ys[s_], ys[s_ + 1], t_ - gap_.h[s_], t_ - gap_.h[s_ + 1], acc_, I1);
+        ++s_;
+      }
+    }
     const Gap& gap_;
     double t_;
     std::size_t s_ = 0;  // segment [s_, s_ + 1]
@@ -569,6 +567,8 @@ struct ApproachSearch {
   double lo = 0, hi = std::numeric_limits<double>::infinity();  // the bracket
   double residual_lo = 0, residual_hi = 0;
   bool bracketed() const { return lo > 0 && std::isfinite(hi); }
+  // the bracket closed on a jump of F(delta) across the load (see find_approach)
+  bool on_jump() const { return !converged && bracketed() && hi / lo - 1 < kJumpWidth; }
 };
 
 // Secant in (log delta, log F), kept inside the bracket [lo, hi]; a secant step that did not halve
@@ -599,7 +599,7 @@ ApproachSearch find_approach(Solver& solver, double F, double delta, double eps,
     }
     // a bracket narrower than 1e-9 of delta with the residual above load_rtol at both ends: F(delta)
     // jumps across the load there (a continuous F would need d ln F / d ln delta > 1e3; Hertz's is 1.5)
-    if (s.hi / s.lo - 1 < kJumpWidth) break;
+    if (s.on_jump()) break;
     const double ld = std::log(delta), lf = std::log(s.ev.F);
     double slope = 1.5;  // Hertz: F ~ delta^(3/2)
     if (s.evaluations > 1 && ld != prev_ld) slope = std::clamp((lf - prev_lf) / (ld - prev_ld), 0.5, 4.0);
@@ -641,7 +641,8 @@ void describe_approach(const ApproachSearch& search, int evaluations, const std:
   std::snprintf(msg, sizeof msg, "load residual %.1e %s tol %.1e after %d evaluations", std::abs(search.residual),
                 search.converged ? "<=" : ">", options.load_rtol, evaluations);
   res.status.message = msg + remedy;
-  if (!search.converged && search.bracketed()) res.status.message += "; " + jump_text(search);
+  res.load_jumps = search.on_jump();
+  if (res.load_jumps) res.status.message += "; " + jump_text(search);
   res.status.kind = search.converged ? SolveStatus::Kind::Converged : SolveStatus::Kind::MaxIterations;
   // the caller decides what an unconverged or edge-reaching solve means: the status says it, no warning here
   if (!search.converged) spdlog::debug("semi-Hertz: approach not found: {}", res.status.message);

@@ -93,6 +93,8 @@ struct SemiHertzResult {
   bool reaches_edge = false;  // the contact reaches an end of the profiles' overlap (a body's edge)
   int patches = 0;            // separate contact patches along y (disconnected contact)
   ApproachRule rule = ApproachRule::SelfConsistent;
+  bool load_jumps = false;    // not converged because F(delta) jumps across the load: the root find's
+                              // bracket closed on the jump (the status's message says where and by how much)
   NormalSolverKind solver = NormalSolverKind::SemiHertz;  // Hertz when solve_normal_on_profiles took the closed form
   // Converged: the load is carried within load_rtol. MaxIterations: no approach found (a warning; the
   // result must not be used). Failed when reaches_edge: a body is narrower than the contact, the

@@ -2,18 +2,16 @@
 // chooses it).
 #pragma once
 
+#include "lib/io/enum_names.h"
+
 namespace contact {
 
 enum class NormalSolverKind { Hertz, SemiHertz, Halfspace };
 
 // "hertz", "semi-hertz", "halfspace": the names of the case's solver.normal and of the reports
-inline const char* to_string(NormalSolverKind k) {
-  switch (k) {
-    case NormalSolverKind::Hertz: return "hertz";
-    case NormalSolverKind::SemiHertz: return "semi-hertz";
-    case NormalSolverKind::Halfspace: return "halfspace";
-  }
-  return "unknown";
-}
+constexpr EnumTable<NormalSolverKind, 3> kNormalSolverKindNames = {{{NormalSolverKind::Hertz, "hertz"},
+                                                                    {NormalSolverKind::SemiHertz, "semi-hertz"},
+                                                                    {NormalSolverKind::Halfspace, "halfspace"}}};
+inline const char* to_string(NormalSolverKind k) { return enum_name(kNormalSolverKindNames, k); }
 
 }  // namespace contact

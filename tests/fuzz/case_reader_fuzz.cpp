@@ -23,6 +23,8 @@
 #include <system_error>
 
 #include "lib/io/case.h"
+#include "lib/tangential/satran.h"
+#include "lib/tangential/tangential.h"
 #include "wear/wear_case.h"
 
 namespace {
