@@ -27,36 +27,31 @@
 #include <string>
 #include <vector>
 
+#include "lib/io/enum_names.h"
 #include "lib/tangential/kalker.h"
 #include "lib/tangential/strip_march.h"
 
 namespace contact {
 
-std::string to_string(TransientScheme scheme) {
-  switch (scheme) {
-    case TransientScheme::Shift: return "shift";
-    case TransientScheme::Upwind: return "upwind";
-    case TransientScheme::LaxFriedrichs: return "lax-friedrichs";
-  }
-  return "unknown";
-}
+namespace {
+constexpr EnumTable<TransientScheme, 3> kTransientSchemes = {{{TransientScheme::Shift, "shift"},
+                                                             {TransientScheme::Upwind, "upwind"},
+                                                             {TransientScheme::LaxFriedrichs, "lax-friedrichs"}}};
+constexpr EnumTable<StepScheme, 4> kStepSchemes = {{{StepScheme::Shift, "shift"},
+                                                    {StepScheme::Standstill, "standstill"},
+                                                    {StepScheme::Upwind, "upwind"},
+                                                    {StepScheme::LaxFriedrichs, "lax-friedrichs"}}};
+}  // namespace
+
+std::string to_string(TransientScheme scheme) { return enum_name(kTransientSchemes, scheme); }
 
 TransientScheme parse_transient_scheme(const std::string& name) {
-  if (name == "shift") return TransientScheme::Shift;
-  if (name == "upwind") return TransientScheme::Upwind;
-  if (name == "lax-friedrichs") return TransientScheme::LaxFriedrichs;
-  throw std::invalid_argument("unknown transient scheme '" + name + "' (valid: shift, upwind, lax-friedrichs)");
+  if (const std::optional<TransientScheme> scheme = enum_from_name(kTransientSchemes, name)) return *scheme;
+  throw std::invalid_argument("unknown transient scheme '" + name + "' (valid: " + enum_names_list(kTransientSchemes) +
+                              ")");
 }
 
-std::string to_string(StepScheme scheme) {
-  switch (scheme) {
-    case StepScheme::Shift: return "shift";
-    case StepScheme::Standstill: return "standstill";
-    case StepScheme::Upwind: return "upwind";
-    case StepScheme::LaxFriedrichs: return "lax-friedrichs";
-  }
-  return "unknown";
-}
+std::string to_string(StepScheme scheme) { return enum_name(kStepSchemes, scheme); }
 
 StepScheme step_scheme(TransientScheme scheme, double dq_m, double dx_m) {
   if (scheme == TransientScheme::LaxFriedrichs) return StepScheme::LaxFriedrichs;
