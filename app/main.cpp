@@ -36,6 +36,7 @@
 #include "lib/tangential/steady.h"
 #include "lib/tangential/tangential.h"
 #include "app/plot.h"
+#include "app/sweep_command.h"
 #include "wear/wear_case.h"
 #include "wear/wear_loop.h"
 #include "wear/wear_output.h"
@@ -772,6 +773,9 @@ int main(int argc, char** argv) {
   CLI::App* transient_cmd = add_transient_command(app, transient_opt, common);
   RunOptions run_opt;
   CLI::App* run_cmd = add_run_command(app, run_opt, common);
+  SweepOptions sweep_opt;
+  CLI::App* sweep_cmd = add_sweep_command(app, sweep_opt);
+  add_log_level_option(*sweep_cmd, common);
   std::string plot_dir;
   CLI::App* plot_cmd = app.add_subcommand("plot", "PNG plots of a wear run's output folder (gnuplot): the worn "
                                                   "profiles at every snapshot, depth and peak pressure against "
@@ -793,6 +797,7 @@ int main(int argc, char** argv) {
     if (transient_cmd->parsed()) return run_transient_command(transient_opt);
     if (run_cmd->parsed()) return run_run_command(run_opt);
     if (plot_cmd->parsed()) return plot_command(plot_dir);
+    if (sweep_cmd->parsed()) return run_sweep_command(sweep_opt);
     print_error("no subcommand ran");
     return kExitBadInput;
   } catch (const std::exception& e) {  // CaseError: bad input, 2; anything else 1 (lib/io/errors.h)
