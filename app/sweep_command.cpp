@@ -1,6 +1,7 @@
 #include "app/sweep_command.h"
 
 #include <fcntl.h>
+#include <malloc.h>
 #include <sys/file.h>
 #include <unistd.h>
 
@@ -134,6 +135,10 @@ int run_sweep_command(const SweepOptions& opt) {
         spdlog::info("{}", line);
       }
     };
+  // glibc gives each thread's arena back to the system (madvise) whenever its top is free: with a case per
+  // thread that was 1.3 s of 5.3 s on cases/sweep-grid.yaml (strace: 122 000 madvise calls, holding the
+  // process's memory map lock). Kept up to 256 MiB per arena, the sweep's system time is 0.1 s.
+  mallopt(M_TRIM_THRESHOLD, 256 * 1024 * 1024);
   const FolderLock lock(o.output_directory);
   spdlog::info("sweep {}: {} cases, shard {}/{}, {} threads, into {}", opt.sweep_path, wear::case_count(s), o.shard_k,
                o.shard_n, o.threads, o.output_directory.string());
