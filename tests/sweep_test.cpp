@@ -311,4 +311,25 @@ TEST_F(SweepFile, BadAxisIsExitTwoBeforeAnyCaseRuns) {
   EXPECT_FALSE(fs::exists(dir_ / "out" / "case_0000")) << "a case ran before the sweep was validated";
 }
 
+TEST_F(SweepFile, SlurmArrayScriptShardsMergeToTheWholeTable) {
+  // scripts/sweep-slurm.sh as Slurm runs it: each task with its array variables (an array 0-2, so the
+  // script's K counts from SLURM_ARRAY_TASK_MIN), then --merge of the shard folders
+  const fs::path sweep = sweep_file("axes:\n  - { key: load.normal_load_N, values: [1000, 1500, 2000, 2500] }\n");
+  const Process whole = rollwear("sweep " + q(sweep) + " -o " + q(dir_ / "whole") + " -q --log-level warn", dir_);
+  ASSERT_EQ(whole.exit_code, 0) << whole.err;
+  for (int task = 0; task < 3; ++task) {
+    const std::string command = "SLURM_ARRAY_TASK_ID=" + std::to_string(task) +
+                                " SLURM_ARRAY_TASK_MIN=0 SLURM_ARRAY_TASK_COUNT=3 SLURM_CPUS_PER_TASK=2 ROLLWEAR='" +
+                                std::string(ROLLWEAR_EXE) + "' " + q(kSource / "scripts" / "sweep-slurm.sh") + " " + q(sweep) +
+                                " " + q(dir_ / "array") + " 2>/dev/null";
+    ASSERT_EQ(std::system(command.c_str()), 0) << command;
+  }
+  EXPECT_TRUE(fs::exists(dir_ / "array" / "shard_3" / "results.csv"));
+  const Process merged = rollwear("sweep --merge " + q(dir_ / "array" / "shard_1") + " " + q(dir_ / "array" / "shard_2") +
+                                      " " + q(dir_ / "array" / "shard_3") + " -o " + q(dir_ / "array"),
+                                  dir_);
+  ASSERT_EQ(merged.exit_code, 0) << merged.err;
+  EXPECT_EQ(read_text(dir_ / "array" / "results.csv"), read_text(dir_ / "whole" / "results.csv"));
+}
+
 }  // namespace
