@@ -189,6 +189,51 @@ TEST_F(SweepFile, RandomCaseDependsOnSeedAndIndexAlone) {
   EXPECT_EQ(*strata.rbegin(), kCount - 1);
 }
 
+TEST_F(SweepFile, RankCorrelationReachesItsTargetAndKeepsTheMarginals) {
+  // Iman-Conover on a 400-case Latin hypercube: Spearman's rho within 0.05 of the target (the method's
+  // error is O(1/sqrt(n)), 0.05 = 1/sqrt(400)), each input's values (and so its strata) unchanged
+  constexpr long kCount = 400;
+  constexpr double kRhoTolerance = 0.05;
+  const std::string inputs =
+      "random:\n  method: latin-hypercube\n  count: 400\n  seed: 9\n  inputs:\n"
+      "    - { key: friction.mu, distribution: uniform, min: 0, max: 1 }\n"
+      "    - { key: load.normal_load_N, distribution: normal, mean: 1500, sd: 100 }\n"
+      "    - { key: wear.body1.archard_k, distribution: lognormal, median: 1.0e-4, sigma_ln: 0.5 }\n";
+  const Sweep plain = read_sweep(sweep_file(inputs).string());
+  const Sweep s = read_sweep(
+      sweep_file(inputs + "  correlation: [[1, 0.7, 0], [0.7, 1, -0.4], [0, -0.4, 1]]\n", "correlated.yaml").string());
+  std::vector<std::vector<double>> column(3), plain_column(3);
+  for (long i = 0; i < kCount; ++i)
+    for (std::size_t a = 0; a < 3; ++a) {
+      column[a].push_back(case_inputs(s, i)[a]);
+      plain_column[a].push_back(case_inputs(plain, i)[a]);
+    }
+  EXPECT_NEAR(spearman(column[0], column[1]), 0.7, kRhoTolerance);
+  EXPECT_NEAR(spearman(column[1], column[2]), -0.4, kRhoTolerance);
+  EXPECT_NEAR(spearman(column[0], column[2]), 0.0, kRhoTolerance);
+  EXPECT_GT(std::abs(spearman(plain_column[0], plain_column[1]) - 0.7), 0.5) << "uncorrelated draws already correlated";
+  for (std::size_t a = 0; a < 3; ++a) {
+    std::sort(column[a].begin(), column[a].end());
+    std::sort(plain_column[a].begin(), plain_column[a].end());
+    EXPECT_EQ(column[a], plain_column[a]) << "input " << a;
+  }
+  // a matrix no correlation can have: refused at its line
+  try {
+    read_sweep(sweep_file(inputs + "  correlation: [[1, 0.9, -0.9], [0.9, 1, 0.9], [-0.9, 0.9, 1]]\n", "bad.yaml").string());
+    FAIL() << "no error";
+  } catch (const contact::CaseError& e) {
+    EXPECT_NE(std::string(e.what()).find("bad.yaml:10:16: random.correlation: must be positive definite"), std::string::npos) << e.what();
+  }
+}
+
+TEST(SweepRandom, SpearmanOfMonotoneAndReversedSamples) {
+  const std::vector<double> x = {0.3, 1.0, -2.0, 5.0, 4.0};
+  std::vector<double> cube, reversed;
+  for (const double v : x) cube.push_back(v * v * v), reversed.push_back(-std::exp(v));
+  EXPECT_DOUBLE_EQ(spearman(x, cube), 1.0);
+  EXPECT_DOUBLE_EQ(spearman(x, reversed), -1.0);
+}
+
 TEST_F(SweepFile, ShippedSweepsReadAndEveryCaseIsValid) {
   for (const char* name : {"sweep-grid.yaml", "sweep-monte-carlo.yaml"}) {
     const Sweep s = read_sweep((kSource / "cases" / name).string());

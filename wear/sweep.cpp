@@ -19,6 +19,9 @@
 #include <stdexcept>
 #include <thread>
 
+#include <Eigen/Cholesky>
+#include <Eigen/Core>
+
 #include <spdlog/spdlog.h>
 
 #include "lib/io/csv.h"
@@ -97,6 +100,75 @@ double quantile(const RandomInput& in, double u) {
     }
   }
   throw std::logic_error("quantile: unknown distribution");
+}
+
+namespace {
+// the order of the sample's values, ties by their index: rank r is x[order[r]]
+std::vector<std::size_t> order_of(const std::vector<double>& x) {
+  std::vector<std::size_t> o(x.size());
+  std::iota(o.begin(), o.end(), std::size_t{0});
+  std::sort(o.begin(), o.end(), [&](std::size_t a, std::size_t b) { return x[a] < x[b] || (x[a] == x[b] && a < b); });
+  return o;
+}
+std::vector<double> ranks_of(const std::vector<double>& x) {
+  const std::vector<std::size_t> o = order_of(x);
+  std::vector<double> r(x.size());
+  for (std::size_t k = 0; k < o.size(); ++k) r[o[k]] = static_cast<double>(k);
+  return r;
+}
+double pearson(const std::vector<double>& a, const std::vector<double>& b) {
+  const double n = static_cast<double>(a.size());
+  const double ma = std::accumulate(a.begin(), a.end(), 0.0) / n, mb = std::accumulate(b.begin(), b.end(), 0.0) / n;
+  double sab = 0, saa = 0, sbb = 0;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    sab += (a[i] - ma) * (b[i] - mb);
+    saa += (a[i] - ma) * (a[i] - ma);
+    sbb += (b[i] - mb) * (b[i] - mb);
+  }
+  return sab / std::sqrt(saa * sbb);
+}
+}  // namespace
+
+double spearman(const std::vector<double>& a, const std::vector<double>& b) {
+  if (a.size() != b.size() || a.size() < 2) throw std::invalid_argument("spearman: two samples of one length >= 2");
+  return pearson(ranks_of(a), ranks_of(b));
+}
+
+void iman_conover(std::vector<std::vector<double>>& x, const std::vector<std::vector<double>>& target) {
+  const std::size_t n = x.size(), k = target.size();
+  if (n <= k) throw std::invalid_argument("iman_conover: needs more samples (" + std::to_string(n) + ") than inputs (" + std::to_string(k) + ")");
+  Eigen::MatrixXd C(k, k), R(n, k);
+  for (std::size_t a = 0; a < k; ++a)
+    for (std::size_t b = 0; b < k; ++b) C(a, b) = target[a][b];
+  // scores in the ranks of each column
+  std::vector<double> score(n);
+  for (std::size_t r = 0; r < n; ++r) score[r] = normal_quantile((r + 1.0) / (n + 1.0));
+  std::vector<std::vector<double>> column(k, std::vector<double>(n));
+  for (std::size_t a = 0; a < k; ++a) {
+    for (std::size_t i = 0; i < n; ++i) column[a][i] = x[i][a];
+    const std::vector<std::size_t> o = order_of(column[a]);
+    for (std::size_t r = 0; r < n; ++r) R(static_cast<Eigen::Index>(o[r]), static_cast<Eigen::Index>(a)) = score[r];
+  }
+  // the scores' own correlation T, removed (L_T^-1) and the target's put in (L_C)
+  Eigen::MatrixXd centred = R.rowwise() - R.colwise().mean();
+  Eigen::MatrixXd T = centred.transpose() * centred;
+  const Eigen::VectorXd sd = T.diagonal().cwiseSqrt();
+  T = sd.cwiseInverse().asDiagonal() * T * sd.cwiseInverse().asDiagonal();
+  const Eigen::LLT<Eigen::MatrixXd> lc(C), lt(T);
+  if (lc.info() != Eigen::Success) throw std::invalid_argument("iman_conover: the target correlation is not positive definite");
+  if (lt.info() != Eigen::Success) throw std::invalid_argument("iman_conover: the scores' correlation is singular");
+  // S = L_C L_T^-1, applied to the rows of R: R S^T, S^T = L_T^-T L_C^T (a triangular solve)
+  const Eigen::MatrixXd St = lt.matrixU().solve(Eigen::MatrixXd(lc.matrixU()));
+  const Eigen::MatrixXd target_scores = R * St;
+  // each column's values in the order of the correlated scores
+  for (std::size_t a = 0; a < k; ++a) {
+    std::vector<double> sorted = column[a];
+    std::sort(sorted.begin(), sorted.end());
+    std::vector<double> t(n);
+    for (std::size_t i = 0; i < n; ++i) t[i] = target_scores(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(a));
+    const std::vector<std::size_t> o = order_of(t);
+    for (std::size_t r = 0; r < n; ++r) x[o[r]][a] = sorted[r];
+  }
 }
 
 // ---- the sweep file ----
@@ -238,6 +310,31 @@ Sweep read_sweep(const std::string& path) {
             s.inputs.push_back(std::move(in));
           });
       });
+      r.optional_value("correlation", [&](const YamlValue& v) {
+        const std::size_t k = s.inputs.size();
+        const std::vector<YamlValue> rows = v.elements("a matrix of rank correlations, one row per input, e.g. [[1, 0.5], [0.5, 1]]");
+        if (rows.size() != k) v.fail("needs " + std::to_string(k) + " rows (one per input), got " + std::to_string(rows.size()));
+        for (std::size_t a = 0; a < k; ++a) {
+          const std::vector<YamlValue> e = rows[a].elements("a row of numbers");
+          if (e.size() != k) rows[a].fail("row " + std::to_string(a + 1) + " needs " + std::to_string(k) + " numbers, got " + std::to_string(e.size()));
+          std::vector<double> row;
+          for (std::size_t b = 0; b < k; ++b)
+            row.push_back(e[b].as<double>(contact::in_closed(-1, 1), "row " + std::to_string(a + 1) + " element " + std::to_string(b + 1)));
+          if (row[a] != 1) rows[a].fail("row " + std::to_string(a + 1) + ": the diagonal must be 1, got " + round_trip(row[a]));
+          s.correlation.push_back(row);
+        }
+        for (std::size_t a = 0; a < k; ++a)
+          for (std::size_t b = 0; b < a; ++b)
+            if (s.correlation[a][b] != s.correlation[b][a])
+              rows[a].fail("must be symmetric: row " + std::to_string(a + 1) + " element " + std::to_string(b + 1) + " is " +
+                           round_trip(s.correlation[a][b]) + ", row " + std::to_string(b + 1) + " element " + std::to_string(a + 1) +
+                           " " + round_trip(s.correlation[b][a]));
+        Eigen::MatrixXd C(k, k);
+        for (std::size_t a = 0; a < k; ++a)
+          for (std::size_t b = 0; b < k; ++b) C(a, b) = s.correlation[a][b];
+        if (Eigen::LLT<Eigen::MatrixXd>(C).info() != Eigen::Success) v.fail("must be positive definite (a possible correlation matrix)");
+        if (s.count <= static_cast<long>(k)) v.fail("needs count > the number of inputs (" + std::to_string(k) + ")");
+      });
     });
     if (has_axes == has_random)
       m.fail_here("give either axes: (a grid) or random: (sampling), " + std::string(has_axes ? "not both" : "none given"));
@@ -247,6 +344,27 @@ Sweep read_sweep(const std::string& path) {
   s.base_path = std::filesystem::path(base).is_absolute() ? std::filesystem::path(base)
                                                           : std::filesystem::path(path).parent_path() / base;
   s.base_path = s.base_path.lexically_normal();
+  if (s.sampling != Sampling::Grid) {
+    const std::size_t n = static_cast<std::size_t>(s.count), k = s.inputs.size();
+    s.samples.assign(n, std::vector<double>(k));
+    for (std::size_t a = 0; a < k; ++a) {
+      std::vector<long> perm;  // a Latin hypercube's stratum of each case: a permutation drawn by Fisher-Yates
+      if (s.sampling == Sampling::LatinHypercube) {
+        perm.resize(n);
+        std::iota(perm.begin(), perm.end(), 0L);
+        for (long j = s.count - 1; j > 0; --j) {
+          const double w = unit_uniform(s.seed, static_cast<std::uint64_t>(j), kPermutationStream + a);
+          std::swap(perm[static_cast<std::size_t>(j)], perm[static_cast<std::size_t>(std::min<long>(j, static_cast<long>(w * (j + 1))))]);
+        }
+      }
+      for (std::size_t i = 0; i < n; ++i) {
+        double u = unit_uniform(s.seed, i, a);
+        if (!perm.empty()) u = std::clamp((static_cast<double>(perm[i]) + u) / static_cast<double>(n), 0x1p-53, 1 - 0x1p-53);
+        s.samples[i][a] = quantile(s.inputs[a], u);
+      }
+    }
+    if (!s.correlation.empty()) iman_conover(s.samples, s.correlation);
+  }
   return s;
 }
 
@@ -278,22 +396,7 @@ std::vector<double> case_inputs(const Sweep& s, long i) {
     }
     return v;
   }
-  for (std::size_t a = 0; a < s.inputs.size(); ++a) {
-    double u = unit_uniform(s.seed, static_cast<std::uint64_t>(i), a);
-    if (s.sampling == Sampling::LatinHypercube) {
-      // stratum of case i on this input: a permutation of 0..n-1 drawn by Fisher-Yates from (seed, input)
-      std::vector<long> perm(static_cast<std::size_t>(s.count));
-      std::iota(perm.begin(), perm.end(), 0L);
-      for (long k = s.count - 1; k > 0; --k) {
-        const double w = unit_uniform(s.seed, static_cast<std::uint64_t>(k), kPermutationStream + a);
-        std::swap(perm[static_cast<std::size_t>(k)], perm[static_cast<std::size_t>(std::min<long>(k, static_cast<long>(w * (k + 1))))]);
-      }
-      u = (static_cast<double>(perm[static_cast<std::size_t>(i)]) + u) / static_cast<double>(s.count);
-      u = std::clamp(u, 0x1p-53, 1 - 0x1p-53);
-    }
-    v.push_back(quantile(s.inputs[a], u));
-  }
-  return v;
+  return s.samples[static_cast<std::size_t>(i)];
 }
 
 // ---- the cases ----

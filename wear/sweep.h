@@ -63,6 +63,15 @@ struct RandomInput {
 // the input's value at probability u in (0, 1)
 double quantile(const RandomInput& in, double u);
 
+// Iman and Conover's (1982) rearrangement: each column of x (n samples x k inputs) permuted so that the
+// columns' rank correlations approach `target` (k x k, symmetric, unit diagonal, positive definite); every
+// column keeps its values, so the marginal distributions (and a Latin hypercube's strata) are unchanged.
+// Scores are van der Waerden's, Phi^-1(r / (n + 1)). Throws std::invalid_argument when n <= k or a matrix
+// is not positive definite.
+void iman_conover(std::vector<std::vector<double>>& x, const std::vector<std::vector<double>>& target);
+// Spearman's rank correlation of two equally long samples (ties ranked by their order)
+double spearman(const std::vector<double>& a, const std::vector<double>& b);
+
 // ---- the sweep file ----
 
 enum class Combine { Product, Zip };
@@ -84,6 +93,8 @@ struct Sweep {
   std::vector<RandomInput> inputs;  // random
   long count = 0;                 // random: the number of cases
   std::uint64_t seed = 0;
+  std::vector<std::vector<double>> correlation;  // random: target rank correlations of the inputs, or empty
+  std::vector<std::vector<double>> samples;      // random: every case's inputs (count x inputs), drawn by read_sweep
 };
 
 // reads the sweep file; CaseError (file, line, key) on any problem of the file itself. The cases are
@@ -94,7 +105,8 @@ Sweep read_sweep(const std::string& path);
 std::vector<std::string> varied_keys(const Sweep& s);
 // the number of cases
 long case_count(const Sweep& s);
-// case i's values of the varied keys (product: the last axis varies fastest)
+// case i's values of the varied keys (product: the last axis varies fastest). Random: Monte Carlo draws
+// depend on (seed, i) alone; a Latin hypercube's on (seed, count); with a correlation: on all of them.
 std::vector<double> case_inputs(const Sweep& s, long i);
 
 // ---- the cases ----
