@@ -106,9 +106,11 @@ int run_sweep_command(const SweepOptions& opt) {
     if (!opt.sweep_path.empty()) throw CaseError("--merge takes shard folders, not a sweep file");
     if (opt.output_directory.empty()) throw CaseError("--merge needs -o OUT, the folder of the merged results.csv");
     std::vector<std::filesystem::path> dirs(opt.merge.begin(), opt.merge.end());
-    const std::string table = wear::merge_results(dirs);
+    std::string info;
+    const std::string table = wear::merge_results(dirs, &info);
     const FolderLock lock(opt.output_directory);
-    contact::write_file_atomic(std::filesystem::path(opt.output_directory) / "results.csv", table);
+    const std::filesystem::path out = opt.output_directory;
+    contact::write_files_atomic({{out / "results.csv", table}, {out / "summary.txt", wear::sweep_summary(table, info)}});
     spdlog::info("merged {} folders into {}", dirs.size(), (std::filesystem::path(opt.output_directory) / "results.csv").string());
     return 0;
   }

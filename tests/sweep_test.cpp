@@ -377,4 +377,58 @@ TEST_F(SweepFile, SlurmArrayScriptShardsMergeToTheWholeTable) {
   EXPECT_EQ(read_text(dir_ / "array" / "results.csv"), read_text(dir_ / "whole" / "results.csv"));
 }
 
+// a results table of given lives (ended_by revolutions: censored) for sweep_summary
+std::string table_of(const std::vector<std::pair<double, std::string>>& lives) {
+  std::string t = results_header({"friction.mu"});
+  long i = 0;
+  for (const auto& [life, ended_by] : lives) {
+    CaseOutcome o;
+    o.index = i++;
+    o.inputs = {0.1 * static_cast<double>(i)};
+    o.life_revolutions = life;
+    o.ended_by = ended_by;
+    o.status = "ok";
+    t += results_row(o);
+  }
+  return t;
+}
+
+std::string summary_line(const std::string& summary, const std::string& start) {
+  const std::size_t at = summary.find(start);
+  return at == std::string::npos ? "" : summary.substr(at, summary.find('\n', at) - at);
+}
+
+TEST(SweepSummary, KaplanMeierQuantilesOfCensoredLives) {
+  const std::string info = "cases 5\nsampling monte-carlo\nseed 1\n";
+  // uncensored: the empirical quantiles, B10 = the 1st of 10 lives, B50 = the 5th
+  std::vector<std::pair<double, std::string>> ten;
+  for (int k = 1; k <= 10; ++k) ten.emplace_back(k * 1e6, "max_depth");
+  const std::string plain = sweep_summary(table_of(ten), info);
+  EXPECT_EQ(summary_line(plain, "B10 life: ").substr(0, 19), "B10 life: 1e+06 rev") << plain;
+  EXPECT_EQ(summary_line(plain, "B50 life: ").substr(0, 19), "B50 life: 5e+06 rev") << plain;
+  // 1, 2, 3 (censored), 4, 5: Kaplan-Meier's F = 0.2, 0.4, then 1 - 0.6 x 1/2 = 0.7 at 4, so B50 = 4
+  // (counting the censored life as a failure would give 3)
+  const std::string censored = sweep_summary(
+      table_of({{1e6, "max_depth"}, {2e6, "edge"}, {3e6, "revolutions"}, {4e6, "max_depth"}, {5e6, "max_depth"}}), info);
+  EXPECT_EQ(summary_line(censored, "B50 life: ").substr(0, 19), "B50 life: 4e+06 rev") << censored;
+  EXPECT_NE(censored.find("max_steps; Kaplan-Meier): 1"), std::string::npos) << censored;
+  // every life censored: B50 is beyond the budget
+  const std::string all = sweep_summary(table_of({{1e6, "revolutions"}, {1e6, "revolutions"}}), info);
+  EXPECT_NE(summary_line(all, "B50 life: ").find("beyond the budget"), std::string::npos) << all;
+}
+
+TEST_F(SweepFile, GridElasticityOfArchardsCoefficientIsMinusOne) {
+  // the wear rate is proportional to K (Archard, k_E = K/(H mu)): the life to a depth limit scales as 1/K
+  // (docs/physics.md §6), so d ln(life)/d ln(K) = -1; to within the adaptive stepping's tolerance (rtol 1e-3)
+  constexpr double kTolerance = 2e-3;
+  const fs::path sweep = sweep_file("axes:\n  - { key: wear.body1.archard_k, log: { from: 5.0e-5, to: 2.0e-4, count: 3 } }\n");
+  const Process p = rollwear("sweep " + q(sweep) + " -o " + q(dir_ / "out") + " -q --log-level warn", dir_);
+  ASSERT_EQ(p.exit_code, 0) << p.err;
+  const std::string summary = read_text(dir_ / "out" / "summary.txt");
+  const std::string line = summary_line(summary, "  wear.body1.archard_k: ");
+  ASSERT_FALSE(line.empty()) << summary;
+  EXPECT_NEAR(std::stod(line.substr(std::string("  wear.body1.archard_k: ").size())), -1.0, kTolerance) << summary;
+  EXPECT_NE(line.find("central"), std::string::npos) << summary;
+}
+
 }  // namespace

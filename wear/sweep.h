@@ -172,13 +172,24 @@ struct SweepRunSummary {
   long failed = 0;   // status other than ok, this shard's
 };
 // validates the shard's cases, runs those not finished on `threads` threads (one case per thread), then
-// writes results.csv (this shard's rows, by index) and sweep.txt (the sweep's fingerprint, case count,
-// shard) atomically. A finished case whose case.yaml differs from the one generated now is a CaseError
+// writes results.csv (this shard's rows, by index), sweep.txt (the sweep's fingerprint, case count, shard,
+// sampling, seed and axes) and, for the whole sweep (shard 1/1), summary.txt atomically. A finished case whose case.yaml differs from the one generated now is a CaseError
 // (the sweep changed: use another folder).
 SweepRunSummary run_sweep(const Sweep& s, const SweepRunOptions& o);
 
+// The summary of a whole sweep's table (summary.txt), from results.csv's text and sweep.txt's:
+//   random sampling: the life's B10 and B50 (Kaplan-Meier: a life that reached wear.revolutions or
+//     max_steps is right-censored there) with 95 % percentile bootstrap intervals (kBootstrapResamples
+//     resamples drawn by the project's generator from the sweep's seed), and Spearman's rank correlation
+//     of each input with the life; cases whose status is not ok are counted apart and left out;
+//   a product grid: d ln(life) / d ln(x) of each axis by central differences about the base case (the
+//     grid point nearest the base case's values; one-sided at an axis' end), the other axes held there.
+constexpr int kBootstrapResamples = 1000;
+std::string sweep_summary(const std::string& results_csv, const std::string& sweep_txt);
+
 // joins the results.csv of shard folders into the whole sweep's table (rows sorted by index); CaseError
-// when the folders are of different sweeps, a case is in two of them, or a case is missing
-std::string merge_results(const std::vector<std::filesystem::path>& dirs);
+// when the folders are of different sweeps, a case is in two of them, or a case is missing. `sweep_txt`
+// receives the first folder's sweep.txt (the input of sweep_summary).
+std::string merge_results(const std::vector<std::filesystem::path>& dirs, std::string* sweep_txt = nullptr);
 
 }  // namespace wear
