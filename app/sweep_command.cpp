@@ -27,7 +27,9 @@ using contact::CaseError;
 // a second sweep or run there fails (exit 1) instead of writing the same cases
 class FolderLock {
  public:
-  explicit FolderLock(const std::filesystem::path& dir) : path_(dir / ".rollwear.lock") {
+  explicit FolderLock(const std::filesystem::path& dir) : path_(dir / ".rollwear.lock"), dir_(dir) {
+    std::error_code exists_ec;
+    created_ = !std::filesystem::exists(dir, exists_ec);
     std::filesystem::create_directories(dir);
     fd_ = ::open(path_.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
     if (fd_ < 0) throw std::runtime_error(path_.string() + ": cannot create the lock file: " + std::strerror(errno));
@@ -47,11 +49,13 @@ class FolderLock {
     std::error_code ec;
     std::filesystem::remove(path_, ec);
     ::close(fd_);
+    if (created_ && std::filesystem::is_empty(dir_, ec)) std::filesystem::remove(dir_, ec);  // refused before writing
   }
 
  private:
-  std::filesystem::path path_;
+  std::filesystem::path path_, dir_;
   int fd_ = -1;
+  bool created_ = false;
 };
 
 void parse_shard(const std::string& text, int& k, int& n) {

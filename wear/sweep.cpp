@@ -9,6 +9,7 @@
 #include <chrono>
 #include <cmath>
 #include <condition_variable>
+#include <exception>
 #include <fstream>
 #include <map>
 #include <mutex>
@@ -774,15 +775,22 @@ SweepRunSummary run_sweep(const Sweep& s, const SweepRunOptions& o) {
   for (const auto& [i, row] : rows)
     if (row_status(row, nkeys) != "ok") ++failed;
   std::size_t running = 0;
+  std::exception_ptr error;  // a failure outside a case's own (the disk): the first one ends the sweep, exit 1
   const auto work = [&] {
-    for (std::size_t k = next++; k < pending.size(); k = next++) {
-      const auto& [i, text] = pending[k];
-      const CaseOutcome c = run_case(text, i, case_inputs(s, i), out / case_folder_name(i));
+    try {
+      for (std::size_t k = next++; k < pending.size(); k = next++) {
+        const auto& [i, text] = pending[k];
+        const CaseOutcome c = run_case(text, i, case_inputs(s, i), out / case_folder_name(i));
+        const std::lock_guard<std::mutex> lock(mutex);
+        rows[i] = results_row(c);
+        ++done;
+        if (c.status != "ok") ++failed;
+        changed.notify_all();
+      }
+    } catch (...) {
       const std::lock_guard<std::mutex> lock(mutex);
-      rows[i] = results_row(c);
-      ++done;
-      if (c.status != "ok") ++failed;
-      changed.notify_all();
+      if (!error) error = std::current_exception();
+      next = pending.size();  // no new case starts; the running ones finish (and are kept for a resume)
     }
     const std::lock_guard<std::mutex> lock(mutex);
     --running;
@@ -806,6 +814,7 @@ SweepRunSummary run_sweep(const Sweep& s, const SweepRunOptions& o) {
     }
   }
   for (std::thread& t : pool) t.join();
+  if (error) std::rethrow_exception(error);
   summary.failed = 0;
   std::string table = results_header(varied_keys(s));
   for (const auto& [i, row] : rows) {
