@@ -339,12 +339,17 @@ TEST_F(SweepFile, ThreadsShardsAndResumeGiveTheWholeSweepsTable) {
   fs::remove(dir_ / "whole" / "case_0001" / "row.csv");
   fs::remove(dir_ / "whole" / "case_0004" / "row.csv");
   fs::remove(dir_ / "whole" / "results.csv");
+  // a killed process's temporaries: its own names removed, any other file kept (pid 999999999: above pid_max)
+  write_text(dir_ / "whole" / "case_0001" / "summary.csv.tmp.999999999", "torn");
+  write_text(dir_ / "whole" / "case_0001" / "notes.txt.tmp.999999999", "the user's");
   const fs::path untouched = dir_ / "whole" / "case_0002" / "report.txt";
   const auto before = fs::last_write_time(untouched);
   const Process resumed = rollwear("sweep " + q(sweep) + " -o " + q(dir_ / "whole") + quiet, dir_);
   ASSERT_EQ(resumed.exit_code, 0) << resumed.err;
   EXPECT_NE(resumed.out.find("2 run now, 4 finished before"), std::string::npos) << resumed.out;
   EXPECT_EQ(fs::last_write_time(untouched), before);
+  EXPECT_FALSE(fs::exists(dir_ / "whole" / "case_0001" / "summary.csv.tmp.999999999"));
+  EXPECT_TRUE(fs::exists(dir_ / "whole" / "case_0001" / "notes.txt.tmp.999999999"));
   EXPECT_EQ(read_text(dir_ / "whole" / "results.csv"), table);
 }
 

@@ -595,16 +595,19 @@ long row_index(const std::string& row) {
 
 namespace {
 
-// temporaries (NAME.tmp.<pid>) a killed run left in dir and dir/snapshots, of processes that no longer run
+// temporaries (OWN_NAME.tmp.<pid>, lib/io/csv.h) a killed sweep left in dir and dir/snapshots, of processes
+// that no longer run; files of any other name stay
 void remove_stale_temporaries(const std::filesystem::path& dir) {
-  static const std::regex kTemporary(".+\\.tmp\\.([0-9]{1,10})");
+  static const std::regex kTemporary(
+      "(case\\.yaml|row\\.csv|summary\\.csv|report\\.txt|snapshot_[0-9]{4}_body[12]\\.csv|results\\.csv|sweep\\.txt|"
+      "summary\\.txt|\\.validate\\.yaml)\\.tmp\\.([0-9]{1,10})");
   for (const std::filesystem::path& d : {dir, dir / "snapshots"}) {
     std::error_code ec;
     for (const auto& entry : std::filesystem::directory_iterator(d, ec)) {
       std::smatch m;
       const std::string name = entry.path().filename().string();
       if (!std::regex_match(name, m, kTemporary)) continue;
-      const long pid = std::strtol(m[1].str().c_str(), nullptr, 10);
+      const long pid = std::strtol(m[2].str().c_str(), nullptr, 10);
       if (pid > 0 && pid != ::getpid() && ::kill(static_cast<pid_t>(pid), 0) != 0 && errno == ESRCH)
         std::filesystem::remove(entry.path(), ec);
     }
@@ -742,7 +745,8 @@ SweepRunSummary run_sweep(const Sweep& s, const SweepRunOptions& o) {
   const std::vector<long> indices = shard_indices(total, o.shard_k, o.shard_n);
   const std::filesystem::path& out = o.output_directory;
   std::filesystem::create_directories(out);
-  validate_cases(s, indices, out / fmt::format(".validate.tmp.{}.yaml", ::getpid()));
+  remove_stale_temporaries(out);
+  validate_cases(s, indices, out / ".validate.yaml");
 
   // what is finished (row.csv next to the same case.yaml) and what is to run
   const YAML::Node base = load_base_case(s);
