@@ -278,10 +278,10 @@ TEST_F(SweepFile, KeyTheBaseCaseLacksIsAnError) {
 TEST_F(SweepFile, FailedCaseIsARowNotAnException) {
   CaseOutcome o;
   ASSERT_NO_THROW(o = run_case("name: broken\nfriction: { mu: 0.3 }\n", 3, {0.3}, dir_ / "case_0003"));
-  EXPECT_EQ(o.status, "bad_input");
+  EXPECT_EQ(o.status, CaseStatus::BadInput);
   EXPECT_FALSE(o.message.empty());
   EXPECT_EQ(read_text(dir_ / "case_0003" / "row.csv"), results_row(o));
-  EXPECT_EQ(row_status(results_row(o), 1), "bad_input");
+  EXPECT_EQ(row_status(results_row(o), 1), CaseStatus::BadInput);
   EXPECT_EQ(row_index(results_row(o)), 3);
 }
 
@@ -383,7 +383,7 @@ TEST_F(SweepFile, SlurmArrayScriptShardsMergeToTheWholeTable) {
 }
 
 // a results table of given lives (ended_by revolutions: censored) for sweep_summary
-std::string table_of(const std::vector<std::pair<double, std::string>>& lives) {
+std::string table_of(const std::vector<std::pair<double, LifeEnd>>& lives) {
   std::string t = results_header({"friction.mu"});
   long i = 0;
   for (const auto& [life, ended_by] : lives) {
@@ -392,7 +392,7 @@ std::string table_of(const std::vector<std::pair<double, std::string>>& lives) {
     o.inputs = {0.1 * static_cast<double>(i)};
     o.life_revolutions = life;
     o.ended_by = ended_by;
-    o.status = "ok";
+    o.status = CaseStatus::Ok;
     t += results_row(o);
   }
   return t;
@@ -406,19 +406,20 @@ std::string summary_line(const std::string& summary, const std::string& start) {
 TEST(SweepSummary, KaplanMeierQuantilesOfCensoredLives) {
   const std::string info = "cases 5\nsampling monte-carlo\nseed 1\n";
   // uncensored: the empirical quantiles, B10 = the 1st of 10 lives, B50 = the 5th
-  std::vector<std::pair<double, std::string>> ten;
-  for (int k = 1; k <= 10; ++k) ten.emplace_back(k * 1e6, "max_depth");
+  std::vector<std::pair<double, LifeEnd>> ten;
+  for (int k = 1; k <= 10; ++k) ten.emplace_back(k * 1e6, LifeEnd::MaxDepth);
   const std::string plain = sweep_summary(table_of(ten), info);
   EXPECT_EQ(summary_line(plain, "B10 life: ").substr(0, 19), "B10 life: 1e+06 rev") << plain;
   EXPECT_EQ(summary_line(plain, "B50 life: ").substr(0, 19), "B50 life: 5e+06 rev") << plain;
   // 1, 2, 3 (censored), 4, 5: Kaplan-Meier's F = 0.2, 0.4, then 1 - 0.6 x 1/2 = 0.7 at 4, so B50 = 4
   // (counting the censored life as a failure would give 3)
   const std::string censored = sweep_summary(
-      table_of({{1e6, "max_depth"}, {2e6, "edge"}, {3e6, "revolutions"}, {4e6, "max_depth"}, {5e6, "max_depth"}}), info);
+      table_of({{1e6, LifeEnd::MaxDepth}, {2e6, LifeEnd::Edge}, {3e6, LifeEnd::Revolutions}, {4e6, LifeEnd::MaxDepth},
+                {5e6, LifeEnd::MaxDepth}}), info);
   EXPECT_EQ(summary_line(censored, "B50 life: ").substr(0, 19), "B50 life: 4e+06 rev") << censored;
   EXPECT_NE(censored.find("max_steps; Kaplan-Meier): 1"), std::string::npos) << censored;
   // every life censored: B50 is beyond the budget
-  const std::string all = sweep_summary(table_of({{1e6, "revolutions"}, {1e6, "revolutions"}}), info);
+  const std::string all = sweep_summary(table_of({{1e6, LifeEnd::Revolutions}, {1e6, LifeEnd::Revolutions}}), info);
   EXPECT_NE(summary_line(all, "B50 life: ").find("beyond the budget"), std::string::npos) << all;
 }
 

@@ -559,6 +559,22 @@ std::string csv_field(const std::string& text) {
 }
 }  // namespace
 
+std::string to_string(CaseStatus s) {
+  switch (s) {
+    case CaseStatus::Ok: return "ok";
+    case CaseStatus::Failed: return "failed";
+    case CaseStatus::BadInput: return "bad_input";
+    case CaseStatus::Error: return "error";
+  }
+  return "error";
+}
+
+CaseStatus parse_case_status(const std::string& word) {
+  for (const CaseStatus s : {CaseStatus::Ok, CaseStatus::Failed, CaseStatus::BadInput, CaseStatus::Error})
+    if (to_string(s) == word) return s;
+  throw std::invalid_argument("not a case status: '" + contact::clipped(word) + "' (ok, failed, bad_input, error)");
+}
+
 std::string results_header(const std::vector<std::string>& keys) {
   std::string h = "index";
   for (const std::string& k : keys) h += "," + csv_field(k);
@@ -568,19 +584,19 @@ std::string results_header(const std::vector<std::string>& keys) {
 std::string results_row(const CaseOutcome& o) {
   std::string r = std::to_string(o.index);
   for (const double v : o.inputs) r += "," + round_trip(v);
-  r += "," + round_trip(o.life_revolutions) + "," + o.ended_by + "," + round_trip(o.max_depth_m) + "," +
-       round_trip(o.worn_volume_m3) + "," + o.status + "," + csv_field(o.message);
+  r += "," + round_trip(o.life_revolutions) + "," + to_string(o.ended_by) + "," + round_trip(o.max_depth_m) + "," +
+       round_trip(o.worn_volume_m3) + "," + to_string(o.status) + "," + csv_field(o.message);
   return r + "\n";
 }
 
-std::string row_status(const std::string& row, std::size_t keys) {
+CaseStatus row_status(const std::string& row, std::size_t keys) {
   std::size_t at = 0;
   for (std::size_t k = 0; k < keys + 5; ++k) {  // index, the inputs, life, ended_by, depth, volume
     at = row.find(',', at);
     if (at == std::string::npos) throw std::invalid_argument("not a results row: " + contact::clipped(row));
     ++at;
   }
-  return row.substr(at, row.find(',', at) - at);
+  return parse_case_status(row.substr(at, row.find(',', at) - at));
 }
 
 long row_index(const std::string& row) {
@@ -678,17 +694,17 @@ CaseOutcome run_case(const std::string& yaml_text, long index, const std::vector
     files.push_back({dir / "report.txt", wear_report_text(m, report)});
     contact::write_files_atomic(files);
     o.life_revolutions = life.N;
-    o.ended_by = to_string(life.ended_by);
+    o.ended_by = life.ended_by;
     o.max_depth_m = max_depth_m(m, life.state);
     o.worn_volume_m3 = (m.n1 > 0 ? worn_volume_m3(m, life.state, 1) : 0.0) + (m.n2 > 0 ? worn_volume_m3(m, life.state, 2) : 0.0);
     const bool failed = life.ended_by == LifeEnd::Failed || life.ended_by == LifeEnd::NotRun;
-    o.status = failed ? "failed" : "ok";
+    o.status = failed ? CaseStatus::Failed : CaseStatus::Ok;
     o.message = life.message;
   } catch (const CaseError& e) {
-    o.status = "bad_input";
+    o.status = CaseStatus::BadInput;
     o.message = e.what();
   } catch (const std::exception& e) {
-    o.status = "error";
+    o.status = CaseStatus::Error;
     o.message = e.what();
   }
   contact::write_file_atomic(dir / "row.csv", results_row(o));
@@ -777,7 +793,7 @@ SweepRunSummary run_sweep(const Sweep& s, const SweepRunOptions& o) {
   long done = summary.resumed, failed = 0;
   const std::size_t nkeys = varied_keys(s).size();
   for (const auto& [i, row] : rows)
-    if (row_status(row, nkeys) != "ok") ++failed;
+    if (row_status(row, nkeys) != CaseStatus::Ok) ++failed;
   std::size_t running = 0;
   std::exception_ptr error;  // a failure outside a case's own (the disk): the first one ends the sweep, exit 1
   const auto work = [&] {
@@ -788,7 +804,7 @@ SweepRunSummary run_sweep(const Sweep& s, const SweepRunOptions& o) {
         const std::lock_guard<std::mutex> lock(mutex);
         rows[i] = results_row(c);
         ++done;
-        if (c.status != "ok") ++failed;
+        if (c.status != CaseStatus::Ok) ++failed;
         changed.notify_all();
       }
     } catch (...) {
@@ -823,7 +839,7 @@ SweepRunSummary run_sweep(const Sweep& s, const SweepRunOptions& o) {
   std::string table = results_header(varied_keys(s));
   for (const auto& [i, row] : rows) {
     table += row;
-    if (row_status(row, nkeys) != "ok") ++summary.failed;
+    if (row_status(row, nkeys) != CaseStatus::Ok) ++summary.failed;
   }
   std::string info = fmt::format("fingerprint {:016x}\ncases {}\nshard {}/{}\nsampling {}\nseed {}\n", sweep_fingerprint(s),
                                  total, o.shard_k, o.shard_n, sampling_name(s), s.seed);
@@ -976,8 +992,9 @@ std::string sweep_summary(const std::string& results_csv, const std::string& swe
     r.index = row_index(line);
     for (std::size_t a = 0; a < k; ++a) r.inputs.push_back(to_double(f[1 + a]));
     r.life = to_double(f[1 + k]);
-    r.censored = f[2 + k] == "revolutions" || f[2 + k] == "max_steps";
-    r.ok = f[5 + k] == "ok";
+    const LifeEnd end = parse_life_end(f[2 + k]);
+    r.censored = end == LifeEnd::Revolutions || end == LifeEnd::MaxSteps;
+    r.ok = parse_case_status(f[5 + k]) == CaseStatus::Ok;
     rows.push_back(r);
   }
   std::vector<const TableRow*> ok;

@@ -36,6 +36,8 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include "wear/wear_loop.h"
+
 namespace wear {
 
 // ---- the project's generator and inverse CDFs ----
@@ -127,22 +129,29 @@ void validate_cases(const Sweep& s, const std::vector<long>& indices, const std:
 
 // ---- the results table ----
 
+// how a case ended, the results table's status column: ok (a limit or the budget ended the life), failed
+// (the wear loop failed: LifeEnd::Failed or NotRun), bad_input (a CaseError), error (any other exception)
+enum class CaseStatus { Ok, Failed, BadInput, Error };
+std::string to_string(CaseStatus s);
+// the inverse of to_string; throws std::invalid_argument naming the word
+CaseStatus parse_case_status(const std::string& word);
+
 // one case's row: index, the varied inputs, life_revolutions, ended_by, max_depth_m, worn_volume_m3,
-// status (ok | failed | bad_input | error), message
+// status, message
 struct CaseOutcome {
   long index = 0;
   std::vector<double> inputs;
   double life_revolutions = std::numeric_limits<double>::quiet_NaN();
-  std::string ended_by = "not_run";
+  LifeEnd ended_by = LifeEnd::NotRun;
   double max_depth_m = std::numeric_limits<double>::quiet_NaN();
   double worn_volume_m3 = std::numeric_limits<double>::quiet_NaN();
-  std::string status = "error";
+  CaseStatus status = CaseStatus::Error;  // the pessimistic default
   std::string message;
 };
 std::string results_header(const std::vector<std::string>& keys);
 std::string results_row(const CaseOutcome& o);  // one line, ending in '\n'
-// a row's status column (the inputs before it are `keys` columns); std::invalid_argument for a line that has none
-std::string row_status(const std::string& row, std::size_t keys);
+// a row's status (the inputs before it are `keys` columns); std::invalid_argument for a line that has none
+CaseStatus row_status(const std::string& row, std::size_t keys);
 // the leading index of a row; throws std::invalid_argument for a line that has none
 long row_index(const std::string& row);
 
