@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <csignal>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -22,6 +23,24 @@
 namespace {
 
 using contact::CaseError;
+
+// the line printed when a signal ends the sweep (write(2) only: async-signal-safe), then the signal re-raised
+char g_interrupted[8192];
+volatile std::sig_atomic_t g_interrupted_size = 0;
+char g_lock_path[4096];  // the folder's lock file, unlinked too ("" when none)
+void on_signal(int sig) {
+  if (g_lock_path[0] != '\0') ::unlink(g_lock_path);
+  if (g_interrupted_size > 0 && ::write(STDERR_FILENO, g_interrupted, static_cast<std::size_t>(g_interrupted_size)) < 0) {
+  }
+  std::signal(sig, SIG_DFL);
+  std::raise(sig);
+}
+void say_on_signal(const std::string& line) {
+  const std::size_t n = std::min(line.size(), sizeof g_interrupted);
+  std::memcpy(g_interrupted, line.data(), n);
+  g_interrupted_size = static_cast<std::sig_atomic_t>(n);
+  for (const int sig : {SIGINT, SIGTERM, SIGHUP}) std::signal(sig, on_signal);
+}
 
 // the folder held while the sweep writes into it (flock on .rollwear.lock, as the other commands hold theirs):
 // a second sweep or run there fails (exit 1) instead of writing the same cases
@@ -39,6 +58,7 @@ class FolderLock {
       throw std::runtime_error(dir.string() + " is in use by another rollwear run (lock file " + path_.string() +
                                "); wait for it to end, or give another output folder with -o");
     }
+    if (path_.string().size() < sizeof g_lock_path) std::memcpy(g_lock_path, path_.c_str(), path_.string().size() + 1);
     const std::string pid = std::to_string(::getpid()) + "\n";
     if (::ftruncate(fd_, 0) != 0 || ::pwrite(fd_, pid.data(), pid.size(), 0) < 0) spdlog::debug("{}: cannot write the PID", path_.string());
   }
@@ -47,6 +67,7 @@ class FolderLock {
   ~FolderLock() {
     if (fd_ < 0) return;
     std::error_code ec;
+    g_lock_path[0] = '\0';
     std::filesystem::remove(path_, ec);
     ::close(fd_);
     if (created_ && std::filesystem::is_empty(dir_, ec)) std::filesystem::remove(dir_, ec);  // refused before writing
@@ -148,6 +169,9 @@ int run_sweep_command(const SweepOptions& opt) {
   const FolderLock lock(o.output_directory);
   spdlog::info("sweep {}: {} cases, shard {}/{}, {} threads, into {}", opt.sweep_path, wear::case_count(s), o.shard_k,
                o.shard_n, o.threads, o.output_directory.string());
+  std::string again = "rollwear sweep " + opt.sweep_path + " -o " + o.output_directory.string();
+  if (o.shard_n > 1) again += " --shard " + opt.shard;
+  say_on_signal("\nrollwear: interrupted; the finished cases are kept, and the sweep continues with: " + again + "\n");
   const wear::SweepRunSummary r = wear::run_sweep(s, o);
   if (drawn) std::fprintf(stderr, "\r\033[K");
   fmt::print("sweep {}: {} cases in this shard, {} run now, {} finished before, {} not ok; table {}\n", opt.sweep_path,
