@@ -19,6 +19,7 @@
 #include "lib/io/csv.h"
 #include "lib/io/errors.h"
 #include "wear/sweep.h"
+#include "wear/sweep_summary.h"
 
 namespace {
 

@@ -18,6 +18,7 @@
 #include "lib/io/errors.h"
 #include "temp_dir.h"
 #include "wear/sweep.h"
+#include "wear/sweep_summary.h"
 
 namespace {
 

@@ -36,43 +36,10 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include "wear/sweep_random.h"
 #include "wear/wear_loop.h"
 
 namespace wear {
-
-// ---- the project's generator and inverse CDFs ----
-
-// SplitMix64's output function (Steele, Lea, Flood 2014; Vigna's reference code): a bijective mix
-std::uint64_t splitmix64(std::uint64_t x);
-// the i-th state of the SplitMix64 stream from `seed` mixed: splitmix64(seed + (i + 1) * golden gamma)
-std::uint64_t splitmix64_stream(std::uint64_t seed, std::uint64_t i);
-// a uniform number in (0, 1), never 0 or 1, from the 53 high bits of the key (seed, i, input) hashed
-double unit_uniform(std::uint64_t seed, std::uint64_t i, std::uint64_t input);
-// the standard normal quantile (Acklam's rational approximation, relative error below 1.15e-9)
-double normal_quantile(double p);
-// the standard normal CDF, 0.5 erfc(-x / sqrt 2)
-double normal_cdf(double x);
-
-enum class Distribution { Uniform, Normal, LogNormal, TruncatedNormal };
-struct RandomInput {
-  std::string key;       // the case key, e.g. friction.mu
-  std::string location;  // FILE:LINE:COL of its entry in the sweep file
-  Distribution distribution = Distribution::Uniform;
-  double min = 0, max = 0;       // uniform; truncated-normal's bounds
-  double mean = 0, sd = 0;       // normal, truncated-normal
-  double median = 0, sigma_ln = 0;  // lognormal: exp(ln median + sigma_ln z)
-};
-// the input's value at probability u in (0, 1)
-double quantile(const RandomInput& in, double u);
-
-// Iman and Conover's (1982) rearrangement: each column of x (n samples x k inputs) permuted so that the
-// columns' rank correlations approach `target` (k x k, symmetric, unit diagonal, positive definite); every
-// column keeps its values, so the marginal distributions (and a Latin hypercube's strata) are unchanged.
-// Scores are van der Waerden's, Phi^-1(r / (n + 1)). Throws std::invalid_argument when n <= k or a matrix
-// is not positive definite.
-void iman_conover(std::vector<std::vector<double>>& x, const std::vector<std::vector<double>>& target);
-// Spearman's rank correlation of two equally long samples (ties ranked by their order)
-double spearman(const std::vector<double>& a, const std::vector<double>& b);
 
 // ---- the sweep file ----
 
@@ -185,16 +152,6 @@ struct SweepRunSummary {
 // sampling, seed and axes) and, for the whole sweep (shard 1/1), summary.txt atomically. A finished case whose case.yaml differs from the one generated now is a CaseError
 // (the sweep changed: use another folder).
 SweepRunSummary run_sweep(const Sweep& s, const SweepRunOptions& o);
-
-// The summary of a whole sweep's table (summary.txt), from results.csv's text and sweep.txt's:
-//   random sampling: the life's B10 and B50 (Kaplan-Meier: a life that reached wear.revolutions or
-//     max_steps is right-censored there) with 95 % percentile bootstrap intervals (kBootstrapResamples
-//     resamples drawn by the project's generator from the sweep's seed), and Spearman's rank correlation
-//     of each input with the life; cases whose status is not ok are counted apart and left out;
-//   a product grid: d ln(life) / d ln(x) of each axis by central differences about the base case (the
-//     grid point nearest the base case's values; one-sided at an axis' end), the other axes held there.
-constexpr int kBootstrapResamples = 1000;
-std::string sweep_summary(const std::string& results_csv, const std::string& sweep_txt);
 
 // joins the results.csv of shard folders into the whole sweep's table (rows sorted by index); CaseError
 // when the folders are of different sweeps, a case is in two of them, or a case is missing. `sweep_txt`
