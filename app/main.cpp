@@ -36,6 +36,7 @@
 #include "lib/tangential/steady.h"
 #include "lib/tangential/tangential.h"
 #include "app/plot.h"
+#include "app/sweep_command.h"
 #include "cam/cam_case.h"
 #include "cam/revolution.h"
 #include "wear/wear_case.h"
@@ -847,6 +848,9 @@ int main(int argc, char** argv) {
   CLI::App* run_cmd = add_run_command(app, run_opt, common);
   CamOptions cam_opt;
   CLI::App* cam_cmd = add_cam_command(app, cam_opt, common);
+  SweepOptions sweep_opt;
+  CLI::App* sweep_cmd = add_sweep_command(app, sweep_opt);
+  add_log_level_option(*sweep_cmd, common);
   std::string plot_dir;
   CLI::App* plot_cmd = app.add_subcommand("plot", "PNG plots of a wear run's output folder (gnuplot): the worn "
                                                   "profiles at every snapshot, depth and peak pressure against "
@@ -869,6 +873,7 @@ int main(int argc, char** argv) {
     if (run_cmd->parsed()) return run_run_command(run_opt);
     if (cam_cmd->parsed()) return run_cam_command(cam_opt);
     if (plot_cmd->parsed()) return plot_command(plot_dir);
+    if (sweep_cmd->parsed()) return run_sweep_command(sweep_opt);
     print_error("no subcommand ran");
     return kExitBadInput;
   } catch (const std::exception& e) {  // CaseError: bad input, 2; anything else 1 (lib/io/errors.h)

@@ -1,0 +1,778 @@
+#include "wear/sweep.h"
+
+#include <signal.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cerrno>
+#include <chrono>
+#include <cmath>
+#include <condition_variable>
+#include <exception>
+#include <fstream>
+#include <map>
+#include <mutex>
+#include <numeric>
+#include <regex>
+#include <set>
+#include <sstream>
+#include <stdexcept>
+#include <thread>
+
+#include <Eigen/Cholesky>
+#include <Eigen/Core>
+
+#include <spdlog/spdlog.h>
+
+#include "lib/io/csv.h"
+#include "lib/io/errors.h"
+#include "lib/io/number.h"
+#include "lib/io/yaml_reader.h"
+#include "lib/normal/profile.h"
+#include "wear/wear_case.h"
+#include "wear/wear_loop.h"
+#include "wear/wear_output.h"
+#include "wear/sweep_random.h"
+#include "wear/sweep_summary.h"
+
+namespace wear {
+
+using contact::CaseError;
+using contact::YamlMap;
+using contact::YamlValue;
+using contact::round_trip;
+
+namespace {
+// a separate stream for the Latin hypercube's permutations (a key no input index reaches)
+constexpr std::uint64_t kPermutationStream = 0x5157a11e00000000ull;
+}  // namespace
+
+// ---- the sweep file ----
+
+namespace {
+
+const std::set<std::string>& distribution_names() {
+  static const std::set<std::string> k = {"uniform", "normal", "lognormal", "truncated-normal"};
+  return k;
+}
+
+std::string finite(double v) { return std::isfinite(v) ? "" : "must be finite"; }
+
+std::string key_path_check(const std::string& key) {
+  if (key.empty() || key.front() == '.' || key.back() == '.' || key.find("..") != std::string::npos)
+    return "must be a key path of the case, e.g. friction.mu";
+  return "";
+}
+
+// values of one grid axis: values, linear or log
+void read_axis_values(YamlMap& a, SweepAxis& axis) {
+  int forms = 0;
+  a.optional_value("values", [&](const YamlValue& v) {
+    ++forms;
+    const std::vector<YamlValue> e = v.elements("a list of numbers, e.g. [0.2, 0.3]");
+    if (e.empty()) v.fail("needs at least one value");
+    for (std::size_t k = 0; k < e.size(); ++k)
+      axis.values.push_back(e[k].as<double>(finite, "element " + std::to_string(k + 1)));
+  });
+  for (const bool logarithmic : {false, true}) {
+    a.optional_section(logarithmic ? "log" : "linear", [&](YamlMap& r) {
+      ++forms;
+      double from = 0, to = 0;
+      int count = 0;
+      const auto check = logarithmic ? contact::positive_finite : finite;
+      r.required("from", from, check);
+      r.required("to", to, check);
+      r.required("count", count, [](int n) { return n >= 1 ? "" : "must be >= 1"; });
+      for (int k = 0; k < count; ++k) {
+        const double t = count == 1 ? 0.0 : static_cast<double>(k) / (count - 1);
+        double v = logarithmic ? std::exp(std::log(from) + (std::log(to) - std::log(from)) * t) : from + (to - from) * t;
+        if (k == 0) v = from;
+        if (k == count - 1 && count > 1) v = to;  // the ends as written
+        axis.values.push_back(v);
+      }
+    });
+  }
+  if (forms != 1) a.fail_here("give exactly one of values: [...], linear: {from, to, count} or log: {from, to, count}");
+}
+
+void read_input(YamlMap& m, RandomInput& in) {
+  std::string name;
+  m.required("distribution", name, [](const std::string& d) {
+    return distribution_names().count(d) ? "" : "must be one of uniform, normal, lognormal, truncated-normal";
+  });
+  if (name == "uniform" || name == "truncated-normal") {
+    m.required("min", in.min, finite);
+    m.required("max", in.max, finite);
+    if (!(in.max > in.min)) m.fail("max", "must be > min (" + round_trip(in.min) + "), got " + round_trip(in.max));
+  }
+  if (name == "normal" || name == "truncated-normal") {
+    m.required("mean", in.mean, finite);
+    m.required("sd", in.sd, contact::positive_finite);
+  }
+  if (name == "lognormal") {
+    m.required("median", in.median, contact::positive_finite);
+    m.required("sigma_ln", in.sigma_ln, contact::positive_finite);
+  }
+  in.distribution = name == "uniform"  ? Distribution::Uniform
+                    : name == "normal" ? Distribution::Normal
+                    : name == "lognormal" ? Distribution::LogNormal
+                                          : Distribution::TruncatedNormal;
+  if (in.distribution == Distribution::TruncatedNormal &&
+      !(normal_cdf((in.max - in.mean) / in.sd) - normal_cdf((in.min - in.mean) / in.sd) > 1e-12))
+    m.fail_here("[min, max] holds no probability of the normal (mean, sd): move the bounds nearer the mean");
+}
+
+}  // namespace
+
+Sweep read_sweep(const std::string& path) {
+  Sweep s;
+  s.path = path;
+  std::string base;
+  bool has_axes = false, has_random = false;
+  std::set<std::string> keys;
+  const auto add_key = [&](const YamlMap& m, const std::string& key) {
+    if (!keys.insert(key).second) m.fail("key", "'" + key + "' is varied twice");
+  };
+  contact::read_yaml_file(path, nullptr, [&](YamlMap& m) {
+    m.required("base", base);
+    m.optional_section("output", [&](YamlMap& o) { o.optional("directory", s.output_directory); });
+    std::string combine = "product";
+    m.optional("combine", combine, [](const std::string& c) { return c == "product" || c == "zip" ? "" : "must be product or zip"; });
+    s.combine = combine == "zip" ? Combine::Zip : Combine::Product;
+    has_axes = m.optional_value("axes", [&](const YamlValue& v) {
+      const std::vector<YamlValue> e = v.elements("a list of axes, e.g. - { key: friction.mu, values: [0.2, 0.3] }");
+      if (e.empty()) v.fail("needs at least one axis");
+      for (const YamlValue& a : e)
+        a.mapping([&](YamlMap& am) {
+          SweepAxis axis;
+          axis.location = a.location();
+          am.required("key", axis.key, key_path_check);
+          add_key(am, axis.key);
+          read_axis_values(am, axis);
+          s.axes.push_back(std::move(axis));
+        });
+      if (s.combine == Combine::Zip)
+        for (const SweepAxis& axis : s.axes)
+          if (axis.values.size() != s.axes.front().values.size())
+            throw CaseError(axis.location + ": axes: " + axis.key + ": zip needs axes of one length; it has " +
+                            std::to_string(axis.values.size()) + " values, " + s.axes.front().key + " " +
+                            std::to_string(s.axes.front().values.size()));
+    });
+    m.optional_section("random", [&](YamlMap& r) {
+      has_random = true;
+      std::string method;
+      r.required("method", method, [](const std::string& x) {
+        return x == "monte-carlo" || x == "latin-hypercube" ? "" : "must be monte-carlo or latin-hypercube";
+      });
+      s.sampling = method == "monte-carlo" ? Sampling::MonteCarlo : Sampling::LatinHypercube;
+      int count = 0;
+      r.required("count", count, [](int n) { return n >= 1 ? "" : "must be >= 1"; });
+      s.count = count;
+      double seed = 0;  // read as a number: an integer in [0, 2^53]
+      r.required("seed", seed, [](double x) {
+        return x >= 0 && x <= kTwoPow53 && std::floor(x) == x ? "" : "must be an integer in [0, 2^53]";
+      });
+      s.seed = static_cast<std::uint64_t>(seed);
+      r.required_value("inputs", [&](const YamlValue& v) {
+        const std::vector<YamlValue> e = v.elements("a list of inputs, e.g. - { key: friction.mu, distribution: uniform, min: 0.2, max: 0.4 }");
+        if (e.empty()) v.fail("needs at least one input");
+        for (const YamlValue& x : e)
+          x.mapping([&](YamlMap& xm) {
+            RandomInput in;
+            in.location = x.location();
+            xm.required("key", in.key, key_path_check);
+            add_key(xm, in.key);
+            read_input(xm, in);
+            s.inputs.push_back(std::move(in));
+          });
+      });
+      r.optional_value("correlation", [&](const YamlValue& v) {
+        const std::size_t k = s.inputs.size();
+        const std::vector<YamlValue> rows = v.elements("a matrix of rank correlations, one row per input, e.g. [[1, 0.5], [0.5, 1]]");
+        if (rows.size() != k) v.fail("needs " + std::to_string(k) + " rows (one per input), got " + std::to_string(rows.size()));
+        for (std::size_t a = 0; a < k; ++a) {
+          const std::vector<YamlValue> e = rows[a].elements("a row of numbers");
+          if (e.size() != k) rows[a].fail("row " + std::to_string(a + 1) + " needs " + std::to_string(k) + " numbers, got " + std::to_string(e.size()));
+          std::vector<double> row;
+          for (std::size_t b = 0; b < k; ++b)
+            row.push_back(e[b].as<double>(contact::in_closed(-1, 1), "row " + std::to_string(a + 1) + " element " + std::to_string(b + 1)));
+          if (row[a] != 1) rows[a].fail("row " + std::to_string(a + 1) + ": the diagonal must be 1, got " + round_trip(row[a]));
+          s.correlation.push_back(row);
+        }
+        for (std::size_t a = 0; a < k; ++a)
+          for (std::size_t b = 0; b < a; ++b)
+            if (s.correlation[a][b] != s.correlation[b][a])
+              rows[a].fail("must be symmetric: row " + std::to_string(a + 1) + " element " + std::to_string(b + 1) + " is " +
+                           round_trip(s.correlation[a][b]) + ", row " + std::to_string(b + 1) + " element " + std::to_string(a + 1) +
+                           " " + round_trip(s.correlation[b][a]));
+        Eigen::MatrixXd C(k, k);
+        for (std::size_t a = 0; a < k; ++a)
+          for (std::size_t b = 0; b < k; ++b) C(a, b) = s.correlation[a][b];
+        if (Eigen::LLT<Eigen::MatrixXd>(C).info() != Eigen::Success) v.fail("must be positive definite (a possible correlation matrix)");
+        if (s.count <= static_cast<long>(k)) v.fail("needs count > the number of inputs (" + std::to_string(k) + ")");
+      });
+    });
+    if (has_axes == has_random)
+      m.fail_here("give either axes: (a grid) or random: (sampling), " + std::string(has_axes ? "not both" : "none given"));
+  });
+  if (has_random && s.combine == Combine::Zip)
+    throw CaseError(path + ": combine: applies to axes:, not to random:");
+  s.base_path = std::filesystem::path(base).is_absolute() ? std::filesystem::path(base)
+                                                          : std::filesystem::path(path).parent_path() / base;
+  s.base_path = s.base_path.lexically_normal();
+  if (s.sampling != Sampling::Grid) {
+    const std::size_t n = static_cast<std::size_t>(s.count), k = s.inputs.size();
+    s.samples.assign(n, std::vector<double>(k));
+    for (std::size_t a = 0; a < k; ++a) {
+      std::vector<long> perm;  // a Latin hypercube's stratum of each case: a permutation drawn by Fisher-Yates
+      if (s.sampling == Sampling::LatinHypercube) {
+        perm.resize(n);
+        std::iota(perm.begin(), perm.end(), 0L);
+        for (long j = s.count - 1; j > 0; --j) {
+          const double w = unit_uniform(s.seed, static_cast<std::uint64_t>(j), kPermutationStream + a);
+          std::swap(perm[static_cast<std::size_t>(j)], perm[static_cast<std::size_t>(std::min<long>(j, static_cast<long>(w * (j + 1))))]);
+        }
+      }
+      for (std::size_t i = 0; i < n; ++i) {
+        double u = unit_uniform(s.seed, i, a);
+        if (!perm.empty()) u = std::clamp((static_cast<double>(perm[i]) + u) / static_cast<double>(n), 0x1p-53, 1 - 0x1p-53);
+        s.samples[i][a] = quantile(s.inputs[a], u);
+      }
+    }
+    if (!s.correlation.empty()) iman_conover(s.samples, s.correlation);
+  }
+  return s;
+}
+
+std::vector<std::string> varied_keys(const Sweep& s) {
+  std::vector<std::string> k;
+  for (const SweepAxis& a : s.axes) k.push_back(a.key);
+  for (const RandomInput& in : s.inputs) k.push_back(in.key);
+  return k;
+}
+
+long case_count(const Sweep& s) {
+  if (s.sampling != Sampling::Grid) return s.count;
+  if (s.combine == Combine::Zip) return static_cast<long>(s.axes.front().values.size());
+  long n = 1;
+  for (const SweepAxis& a : s.axes) n *= static_cast<long>(a.values.size());
+  return n;
+}
+
+std::vector<double> case_inputs(const Sweep& s, long i) {
+  if (i < 0 || i >= case_count(s)) throw std::out_of_range("case_inputs: no case " + std::to_string(i));
+  std::vector<double> v;
+  if (s.sampling == Sampling::Grid) {
+    v.resize(s.axes.size());
+    long rest = i;
+    for (std::size_t a = s.axes.size(); a-- > 0;) {
+      const long n = static_cast<long>(s.axes[a].values.size());
+      v[a] = s.axes[a].values[static_cast<std::size_t>(s.combine == Combine::Zip ? i : rest % n)];
+      rest /= n;
+    }
+    return v;
+  }
+  return s.samples[static_cast<std::size_t>(i)];
+}
+
+// ---- the cases ----
+
+namespace {
+
+std::string key_location(const Sweep& s, const std::string& key) {
+  for (const SweepAxis& a : s.axes)
+    if (a.key == key) return a.location;
+  for (const RandomInput& in : s.inputs)
+    if (in.key == key) return in.location;
+  return s.path;
+}
+
+std::vector<std::string> split_key(const std::string& key) {
+  std::vector<std::string> parts;
+  std::stringstream ss(key);
+  for (std::string p; std::getline(ss, p, '.');) parts.push_back(p);
+  return parts;
+}
+
+// doc's value at the key path set to the number (the parents must be mappings of the base case)
+void set_key(const Sweep& s, YAML::Node doc, const std::string& key, double value) {
+  const std::vector<std::string> parts = split_key(key);
+  YAML::Node cur = doc;
+  std::string walked;
+  for (std::size_t k = 0; k + 1 < parts.size(); ++k) {
+    walked += (walked.empty() ? "" : ".") + parts[k];
+    const YAML::Node& const_cur = cur;
+    const YAML::Node next = const_cur[parts[k]];
+    if (!next || !next.IsMap())
+      throw CaseError(key_location(s, key) + ": " + key + ": the base case " + s.base_path.string() + " has no mapping " +
+                      walked + (next ? " (it holds " + contact::yaml_describe(next) + ")" : ""));
+    cur.reset(next);
+  }
+  const YAML::Node& const_cur = cur;
+  const YAML::Node old = const_cur[parts.back()];
+  if (old && !old.IsScalar() && !old.IsNull())
+    throw CaseError(key_location(s, key) + ": " + key + ": the base case holds " + contact::yaml_describe(old) +
+                    " there (a time history or a list); a sweep replaces a number");
+  cur[parts.back()] = round_trip(value);
+}
+
+YAML::Node with_inputs(const Sweep& s, const YAML::Node& base, long i, const std::vector<double>& inputs,
+                       const std::vector<bool>& use) {
+  YAML::Node doc = YAML::Clone(base);
+  const std::vector<std::string> keys = varied_keys(s);
+  for (std::size_t k = 0; k < keys.size(); ++k)
+    if (use[k]) set_key(s, doc, keys[k], inputs[k]);
+  const std::string stem = base["name"] && base["name"].IsScalar() ? base["name"].Scalar() : s.base_path.stem().string();
+  doc["name"] = stem + "-" + fmt::format("{:04d}", i);
+  return doc;
+}
+
+std::string emit(const Sweep& s, const YAML::Node& doc, long i, const std::vector<double>& inputs) {
+  YAML::Emitter out;
+  out << doc;
+  std::string head = fmt::format("# case {} of the sweep {} (base {}):", i, std::filesystem::path(s.path).filename().string(),
+                                 s.base_path.filename().string());
+  const std::vector<std::string> keys = varied_keys(s);
+  for (std::size_t k = 0; k < keys.size(); ++k) head += " " + keys[k] + " = " + round_trip(inputs[k]);
+  return head + "\n" + out.c_str() + "\n";
+}
+
+}  // namespace
+
+YAML::Node load_base_case(const Sweep& s) {
+  YAML::Node doc = contact::load_yaml_file(s.base_path.string());
+  if (!doc.IsMap()) throw CaseError(s.base_path.string() + ": expected a mapping of sections");
+  const YAML::Node& cdoc = doc;
+  // profile files are relative to the case file: made absolute, the generated case reads them from anywhere
+  if (cdoc["profiles"] && cdoc["profiles"].IsMap())
+    for (const char* body : {"body1", "body2"}) {
+      const YAML::Node p = cdoc["profiles"][body];
+      if (!p || !p.IsMap() || !p["file"] || !p["file"].IsScalar()) continue;
+      const std::filesystem::path f = p["file"].Scalar();
+      if (f.is_relative()) doc["profiles"][body]["file"] = std::filesystem::absolute(s.base_path.parent_path() / f).lexically_normal().string();
+    }
+  // each case writes into its own folder: the base's output folder is not theirs
+  if (cdoc["output"] && cdoc["output"].IsMap() && cdoc["output"]["directory"]) {
+    doc["output"].remove("directory");
+    if (doc["output"].size() == 0) doc.remove("output");
+  }
+  return doc;
+}
+
+std::string case_yaml(const Sweep& s, const YAML::Node& base, long i, const std::vector<double>& inputs) {
+  return emit(s, with_inputs(s, base, i, inputs, std::vector<bool>(inputs.size(), true)), i, inputs);
+}
+
+std::string case_folder_name(long i) { return fmt::format("case_{:04d}", i); }
+
+namespace {
+
+// "" when the wear case reader and model take the text, else the reader's message
+std::string refusal(const std::string& text, const std::filesystem::path& scratch, const std::string& shown_as) {
+  contact::write_file_atomic(scratch, text);
+  try {
+    const WearCase c = read_wear_case(scratch.string());
+    (void)make_wear_model(c);
+    return "";
+  } catch (const CaseError& e) {
+    std::string m = e.what();
+    const std::string p = scratch.string();
+    for (std::size_t at = m.find(p); at != std::string::npos; at = m.find(p, at + shown_as.size()))
+      m.replace(at, p.size(), shown_as);
+    return m;
+  }
+}
+
+}  // namespace
+
+void validate_cases(const Sweep& s, const std::vector<long>& indices, const std::filesystem::path& scratch) {
+  struct RemoveScratch {
+    const std::filesystem::path& p;
+    ~RemoveScratch() {
+      std::error_code ec;
+      std::filesystem::remove(p, ec);
+    }
+  } remove_scratch{scratch};
+  const YAML::Node base = load_base_case(s);
+  const std::vector<std::string> keys = varied_keys(s);
+  const std::vector<bool> none(keys.size(), false);
+  const std::string base_refused = refusal(emit(s, with_inputs(s, base, 0, case_inputs(s, 0), none), 0, case_inputs(s, 0)),
+                                           scratch, s.base_path.string() + " (as the base of the sweep)");
+  if (!base_refused.empty()) throw CaseError(s.path + ": base: the base case is refused: " + base_refused);
+  for (const long i : indices) {
+    const std::vector<double> in = case_inputs(s, i);
+    const std::string shown = case_folder_name(i) + "/case.yaml";
+    const std::string why = refusal(case_yaml(s, base, i, in), scratch, shown);
+    if (why.empty()) continue;
+    // the culprit: the value the reader refuses alone
+    for (std::size_t k = 0; k < keys.size(); ++k) {
+      std::vector<bool> only(keys.size(), false);
+      only[k] = true;
+      const std::string alone = refusal(emit(s, with_inputs(s, base, i, in, only), i, in), scratch, shown);
+      if (!alone.empty())
+        throw CaseError(key_location(s, keys[k]) + ": " + keys[k] + ": case " + std::to_string(i) + "'s value " +
+                        round_trip(in[k]) + " is refused: " + alone);
+    }
+    std::string values;
+    for (std::size_t k = 0; k < keys.size(); ++k) values += (k ? ", " : "") + keys[k] + " = " + round_trip(in[k]);
+    throw CaseError(s.path + ": case " + std::to_string(i) + " (" + values +
+                    "): each value passes alone, the combination is refused: " + why);
+  }
+}
+
+// ---- the results table ----
+
+namespace {
+std::string csv_field(const std::string& text) {
+  std::string t = text;
+  for (char& ch : t)
+    if (ch == '\n' || ch == '\r') ch = ' ';
+  if (t.find_first_of(",\"") == std::string::npos) return t;
+  std::string q = "\"";
+  for (const char ch : t) q += ch == '"' ? std::string("\"\"") : std::string(1, ch);
+  return q + "\"";
+}
+}  // namespace
+
+std::string to_string(CaseStatus s) {
+  switch (s) {
+    case CaseStatus::Ok: return "ok";
+    case CaseStatus::Failed: return "failed";
+    case CaseStatus::BadInput: return "bad_input";
+    case CaseStatus::Error: return "error";
+  }
+  return "error";
+}
+
+CaseStatus parse_case_status(const std::string& word) {
+  for (const CaseStatus s : {CaseStatus::Ok, CaseStatus::Failed, CaseStatus::BadInput, CaseStatus::Error})
+    if (to_string(s) == word) return s;
+  throw std::invalid_argument("not a case status: '" + contact::clipped(word) + "' (ok, failed, bad_input, error)");
+}
+
+std::string results_header(const std::vector<std::string>& keys) {
+  std::string h = "index";
+  for (const std::string& k : keys) h += "," + csv_field(k);
+  return h + ",life_revolutions,ended_by,max_depth_m,worn_volume_m3,status,message\n";
+}
+
+std::string results_row(const CaseOutcome& o) {
+  std::string r = std::to_string(o.index);
+  for (const double v : o.inputs) r += "," + round_trip(v);
+  r += "," + round_trip(o.life_revolutions) + "," + to_string(o.ended_by) + "," + round_trip(o.max_depth_m) + "," +
+       round_trip(o.worn_volume_m3) + "," + to_string(o.status) + "," + csv_field(o.message);
+  return r + "\n";
+}
+
+CaseStatus row_status(const std::string& row, std::size_t keys) {
+  std::size_t at = 0;
+  for (std::size_t k = 0; k < keys + 5; ++k) {  // index, the inputs, life, ended_by, depth, volume
+    at = row.find(',', at);
+    if (at == std::string::npos) throw std::invalid_argument("not a results row: " + contact::clipped(row));
+    ++at;
+  }
+  return parse_case_status(row.substr(at, row.find(',', at) - at));
+}
+
+long row_index(const std::string& row) {
+  const std::size_t comma = row.find(',');
+  const std::string head = row.substr(0, comma);
+  if (head.empty() || head.find_first_not_of("0123456789") != std::string::npos)
+    throw std::invalid_argument("not a results row: " + contact::clipped(row));
+  return std::stol(head);
+}
+
+// ---- running ----
+
+namespace {
+
+// temporaries (OWN_NAME.tmp.<pid>, lib/io/csv.h) a killed sweep left in dir and dir/snapshots, of processes
+// that no longer run; files of any other name stay
+void remove_stale_temporaries(const std::filesystem::path& dir) {
+  static const std::regex kTemporary(
+      "(case\\.yaml|row\\.csv|summary\\.csv|report\\.txt|snapshot_[0-9]{4}_body[12]\\.csv|results\\.csv|sweep\\.txt|"
+      "summary\\.txt|\\.validate\\.yaml)\\.tmp\\.([0-9]{1,10})");
+  for (const std::filesystem::path& d : {dir, dir / "snapshots"}) {
+    std::error_code ec;
+    for (const auto& entry : std::filesystem::directory_iterator(d, ec)) {
+      std::smatch m;
+      const std::string name = entry.path().filename().string();
+      if (!std::regex_match(name, m, kTemporary)) continue;
+      const long pid = std::strtol(m[2].str().c_str(), nullptr, 10);
+      if (pid > 0 && pid != ::getpid() && ::kill(static_cast<pid_t>(pid), 0) != 0 && errno == ESRCH)
+        std::filesystem::remove(entry.path(), ec);
+    }
+  }
+}
+
+}  // namespace
+
+CaseOutcome run_case(const std::string& yaml_text, long index, const std::vector<double>& inputs,
+                     const std::filesystem::path& dir) {
+  CaseOutcome o;
+  o.index = index;
+  o.inputs = inputs;
+  std::filesystem::create_directories(dir);
+  remove_stale_temporaries(dir);
+  const std::filesystem::path case_path = dir / "case.yaml";
+  contact::write_file_atomic(case_path, yaml_text);
+  try {
+    const WearCase c = read_wear_case(case_path.string());
+    const WearModel m = make_wear_model(c);
+    const double hours_per_rev = hours_per_revolution(m);
+    WearCache cache;
+    LifeStart start;
+    start.state = initial_state(m);
+    LifeStep s0;
+    s0.state = &start.state;
+    s0.contact = wear_rate(m, start.state, cache).contact;
+    start.counters = cache.counters;
+    std::string summary = wear_summary_header(m) + wear_summary_row(m, s0, hours_per_rev);
+    std::vector<contact::OutputFile> files;
+    int snapshots = 0;
+    const auto snapshot = [&](double N, const Eigen::VectorXd& state) {
+      for (int body : {1, 2})
+        if ((body == 1 ? m.n1 : m.n2) > 0)
+          files.push_back({dir / wear_snapshot_path(snapshots, body), wear_snapshot_csv(m, body, N, N * hours_per_rev, state)});
+      ++snapshots;
+    };
+    snapshot(0, start.state);
+    double last_N = 0;
+    LifeHooks hooks;
+    hooks.on_step = [&](const LifeStep& s) {
+      summary += wear_summary_row(m, s, hours_per_rev);
+      last_N = s.N;
+      return true;
+    };
+    hooks.on_snapshot = snapshot;
+    const auto t0 = std::chrono::steady_clock::now();
+    const LifeResult life = run_life(m, c, start, hooks, cache);
+    if (life.N > last_N) {  // a limit located within a step: its state is the last row (as rollwear run)
+      LifeStep end;
+      end.step = life.counters.steps;
+      end.N = life.N;
+      end.state = &life.state;
+      end.info.step = life.N - last_N;
+      end.info.rhs_evals = life.counters.rhs_evals;
+      end.info.rejected = life.counters.rejected;
+      end.counters = life.counters;
+      end.contact = life.contact;
+      summary += wear_summary_row(m, end, hours_per_rev);
+    }
+    snapshot(life.N, life.state);
+    WearReport report;
+    report.case_name = m.name;
+    report.life = life;
+    report.hours_per_revolution = hours_per_rev;
+    report.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    files.push_back({dir / "summary.csv", summary});
+    files.push_back({dir / "report.txt", wear_report_text(m, report)});
+    contact::write_files_atomic(files);
+    o.life_revolutions = life.N;
+    o.ended_by = life.ended_by;
+    o.max_depth_m = max_depth_m(m, life.state);
+    o.worn_volume_m3 = (m.n1 > 0 ? worn_volume_m3(m, life.state, 1) : 0.0) + (m.n2 > 0 ? worn_volume_m3(m, life.state, 2) : 0.0);
+    const bool failed = life.ended_by == LifeEnd::Failed || life.ended_by == LifeEnd::NotRun;
+    o.status = failed ? CaseStatus::Failed : CaseStatus::Ok;
+    o.message = life.message;
+  } catch (const CaseError& e) {
+    o.status = CaseStatus::BadInput;
+    o.message = e.what();
+  } catch (const std::exception& e) {
+    o.status = CaseStatus::Error;
+    o.message = e.what();
+  }
+  contact::write_file_atomic(dir / "row.csv", results_row(o));
+  return o;
+}
+
+std::vector<long> shard_indices(long count, int k, int n) {
+  if (n < 1 || k < 1 || k > n) throw CaseError("--shard: K/N needs 1 <= K <= N, got " + std::to_string(k) + "/" + std::to_string(n));
+  std::vector<long> v;
+  for (long i = k - 1; i < count; i += n) v.push_back(i);
+  return v;
+}
+
+namespace {
+
+std::string read_text(const std::filesystem::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  if (!in) throw std::runtime_error(p.string() + ": cannot read");
+  std::ostringstream t;
+  t << in.rdbuf();
+  return t.str();
+}
+
+std::string sampling_name(const Sweep& s) {
+  switch (s.sampling) {
+    case Sampling::Grid: return s.combine == Combine::Zip ? "zip" : "product";
+    case Sampling::MonteCarlo: return "monte-carlo";
+    case Sampling::LatinHypercube: return "latin-hypercube";
+  }
+  return "product";
+}
+
+// the base case's number at the key path, NaN when it has none there
+double base_value(const YAML::Node& base, const std::string& key) {
+  YAML::Node cur = YAML::Clone(base);
+  for (const std::string& part : split_key(key)) {
+    const YAML::Node& c = cur;
+    if (!c.IsMap() || !c[part]) return std::numeric_limits<double>::quiet_NaN();
+    cur.reset(c[part]);
+  }
+  double v = 0;
+  return cur.IsScalar() && YAML::convert<double>::decode(cur, v) ? v : std::numeric_limits<double>::quiet_NaN();
+}
+
+std::uint64_t sweep_fingerprint(const Sweep& s) {
+  const std::string text = read_text(s.path) + '\0' + read_text(s.base_path);
+  return contact::hash_words(text.data(), text.size());
+}
+
+}  // namespace
+
+SweepRunSummary run_sweep(const Sweep& s, const SweepRunOptions& o) {
+  const long total = case_count(s);
+  const std::vector<long> indices = shard_indices(total, o.shard_k, o.shard_n);
+  const std::filesystem::path& out = o.output_directory;
+  std::filesystem::create_directories(out);
+  remove_stale_temporaries(out);
+  validate_cases(s, indices, out / ".validate.yaml");
+
+  // what is finished (row.csv next to the same case.yaml) and what is to run
+  const YAML::Node base = load_base_case(s);
+  std::map<long, std::string> rows;
+  std::vector<std::pair<long, std::string>> pending;  // index, case text
+  SweepRunSummary summary;
+  summary.cases = static_cast<long>(indices.size());
+  for (const long i : indices) {
+    const std::string text = case_yaml(s, base, i, case_inputs(s, i));
+    const std::filesystem::path dir = out / case_folder_name(i);
+    if (std::filesystem::exists(dir / "row.csv")) {
+      if (read_text(dir / "case.yaml") != text)
+        throw CaseError(s.path + ": " + (dir / "case.yaml").string() + " finished with other inputs than case " +
+                        std::to_string(i) + " has now (the sweep or its base changed): give another output folder");
+      rows[i] = read_text(dir / "row.csv");
+      ++summary.resumed;
+    } else {
+      pending.emplace_back(i, text);
+    }
+  }
+  if (summary.resumed > 0)
+    spdlog::info("sweep: {} of {} cases finished before, {} to run", summary.resumed, summary.cases, pending.size());
+
+  // one case per thread, the next pending one taken when a thread is free
+  std::mutex mutex;
+  std::condition_variable changed;
+  std::atomic<std::size_t> next{0};
+  long done = summary.resumed, failed = 0;
+  const std::size_t nkeys = varied_keys(s).size();
+  for (const auto& [i, row] : rows)
+    if (row_status(row, nkeys) != CaseStatus::Ok) ++failed;
+  std::size_t running = 0;
+  std::exception_ptr error;  // a failure outside a case's own (the disk): the first one ends the sweep, exit 1
+  const auto work = [&] {
+    try {
+      for (std::size_t k = next++; k < pending.size(); k = next++) {
+        const auto& [i, text] = pending[k];
+        const CaseOutcome c = run_case(text, i, case_inputs(s, i), out / case_folder_name(i));
+        const std::lock_guard<std::mutex> lock(mutex);
+        rows[i] = results_row(c);
+        ++done;
+        if (c.status != CaseStatus::Ok) ++failed;
+        changed.notify_all();
+      }
+    } catch (...) {
+      const std::lock_guard<std::mutex> lock(mutex);
+      if (!error) error = std::current_exception();
+      next = pending.size();  // no new case starts; the running ones finish (and are kept for a resume)
+    }
+    const std::lock_guard<std::mutex> lock(mutex);
+    --running;
+    changed.notify_all();
+  };
+  const int threads = std::max(1, std::min<int>(o.threads, static_cast<int>(pending.size())));
+  const auto t0 = std::chrono::steady_clock::now();
+  std::vector<std::thread> pool;
+  running = pending.empty() ? 0 : static_cast<std::size_t>(threads);
+  for (int t = 0; t < threads && !pending.empty(); ++t) pool.emplace_back(work);
+  {
+    std::unique_lock<std::mutex> lock(mutex);
+    double last_report_s = 0;
+    while (running > 0) {
+      changed.wait_for(lock, std::chrono::duration<double>(o.progress_interval_s));
+      const double elapsed_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      if (o.progress && (elapsed_s - last_report_s >= o.progress_interval_s || running == 0)) {
+        o.progress(done, failed, summary.cases, elapsed_s);
+        last_report_s = elapsed_s;
+      }
+    }
+  }
+  for (std::thread& t : pool) t.join();
+  if (error) std::rethrow_exception(error);
+  summary.failed = 0;
+  std::string table = results_header(varied_keys(s));
+  for (const auto& [i, row] : rows) {
+    table += row;
+    if (row_status(row, nkeys) != CaseStatus::Ok) ++summary.failed;
+  }
+  std::string info = fmt::format("fingerprint {:016x}\ncases {}\nshard {}/{}\nsampling {}\nseed {}\n", sweep_fingerprint(s),
+                                 total, o.shard_k, o.shard_n, sampling_name(s), s.seed);
+  for (const SweepAxis& a : s.axes) info += fmt::format("axis {} {} {}\n", a.key, a.values.size(), round_trip(base_value(base, a.key)));
+  std::vector<contact::OutputFile> files = {{out / "results.csv", table}, {out / "sweep.txt", info}};
+  if (o.shard_n == 1) files.push_back({out / "summary.txt", sweep_summary(table, info)});
+  contact::write_files_atomic(files);
+  return summary;
+}
+
+std::string merge_results(const std::vector<std::filesystem::path>& dirs, std::string* sweep_txt) {
+  if (dirs.empty()) throw CaseError("--merge: give the shards' output folders");
+  std::string header, fingerprint;
+  long total = -1;
+  std::map<long, std::pair<std::string, std::string>> rows;  // index -> row, folder
+  for (const std::filesystem::path& d : dirs) {
+    if (!std::filesystem::exists(d / "sweep.txt") || !std::filesystem::exists(d / "results.csv"))
+      throw CaseError(d.string() + ": not the output folder of a finished sweep shard (no sweep.txt and results.csv)");
+    std::istringstream info(read_text(d / "sweep.txt"));
+    std::string word, fp;
+    long cases = -1;
+    while (info >> word) {
+      if (word == "fingerprint") info >> fp;
+      else if (word == "cases") info >> cases;
+      else info >> word;
+    }
+    if (fingerprint.empty()) {
+      fingerprint = fp, total = cases;
+      if (sweep_txt) *sweep_txt = read_text(d / "sweep.txt");
+    }
+    if (fp != fingerprint || cases != total)
+      throw CaseError(d.string() + ": a shard of another sweep than " + dirs.front().string() + " (sweep.txt differs)");
+    std::istringstream table(read_text(d / "results.csv"));
+    std::string line;
+    std::getline(table, line);
+    if (header.empty()) header = line;
+    if (line != header) throw CaseError((d / "results.csv").string() + ": its columns differ from " + dirs.front().string() + "'s");
+    while (std::getline(table, line)) {
+      if (line.empty()) continue;
+      const long i = row_index(line);
+      const auto [it, inserted] = rows.emplace(i, std::make_pair(line + "\n", d.string()));
+      if (!inserted)
+        throw CaseError(d.string() + ": case " + std::to_string(i) + " is also in " + it->second.second + " (shards overlap)");
+    }
+  }
+  std::vector<long> missing;
+  for (long i = 0; i < total; ++i)
+    if (!rows.count(i)) missing.push_back(i);
+  if (!missing.empty()) {
+    std::string list;
+    for (std::size_t k = 0; k < std::min<std::size_t>(missing.size(), 10); ++k) list += (k ? ", " : "") + std::to_string(missing[k]);
+    throw CaseError("--merge: " + std::to_string(missing.size()) + " of " + std::to_string(total) + " cases missing (" + list +
+                    (missing.size() > 10 ? ", ..." : "") + "): a shard not given, or not finished");
+  }
+  std::string out = header + "\n";
+  for (const auto& [i, r] : rows) out += r.first;
+  return out;
+}
+
+}  // namespace wear

@@ -1,0 +1,161 @@
+// A sweep (`rollwear sweep`, docs/sweeps.md): many independent wear lives of one base case, each with
+// some of its keys replaced. The sweep file names the base case and how it varies:
+//
+//   base: paper-wear.yaml                     # relative to the sweep file
+//   output: { directory: out/sweep-grid }     # optional; -o overrides; default out/<sweep file stem>
+//   combine: product                          # product (default) or zip of the axes
+//   axes:                                     # any key of the case by its path
+//     - { key: friction.mu, values: [0.2, 0.3, 0.4] }
+//     - { key: load.normal_load_N, linear: { from: 1000, to: 2000, count: 5 } }
+//     - { key: wear.body1.archard_k, log: { from: 1.0e-5, to: 1.0e-4, count: 3 } }
+//
+// or random sampling:
+//
+//   random:
+//     method: latin-hypercube                 # monte-carlo | latin-hypercube
+//     count: 32
+//     seed: 2026
+//     inputs:
+//       - { key: wear.body1.archard_k, distribution: lognormal, median: 1.0e-4, sigma_ln: 0.3 }
+//       - { key: friction.mu, distribution: uniform, min: 0.2, max: 0.4 }
+//       - { key: load.normal_load_N, distribution: normal, mean: 1500, sd: 100 }
+//       - { key: kinematics.xi, distribution: truncated-normal, mean: 1.0e-3, sd: 3.0e-4, min: 0, max: 2.0e-3 }
+//
+// Case i's inputs depend on (seed, i) alone (and, for a Latin hypercube, the count): each draw is
+// SplitMix64 keyed by (seed, i, input) and transformed by the inverse CDFs below, written here in
+// plain arithmetic and <cmath> (no std::*_distribution, whose results differ between standard
+// libraries), so threads, shards and a resumed run see the same cases.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include <yaml-cpp/yaml.h>
+
+#include "wear/sweep_random.h"
+#include "wear/wear_loop.h"
+
+namespace wear {
+
+// ---- the sweep file ----
+
+enum class Combine { Product, Zip };
+enum class Sampling { Grid, MonteCarlo, LatinHypercube };
+
+struct SweepAxis {
+  std::string key;
+  std::string location;  // FILE:LINE:COL of the axis in the sweep file
+  std::vector<double> values;
+};
+
+struct Sweep {
+  std::string path;               // the sweep file
+  std::filesystem::path base_path;  // the base case (resolved against the sweep file's folder)
+  std::string output_directory;   // output.directory, "" when not given
+  Sampling sampling = Sampling::Grid;
+  Combine combine = Combine::Product;
+  std::vector<SweepAxis> axes;    // grid
+  std::vector<RandomInput> inputs;  // random
+  long count = 0;                 // random: the number of cases
+  std::uint64_t seed = 0;
+  std::vector<std::vector<double>> correlation;  // random: target rank correlations of the inputs, or empty
+  std::vector<std::vector<double>> samples;      // random: every case's inputs (count x inputs), drawn by read_sweep
+};
+
+// reads the sweep file; CaseError (file, line, key) on any problem of the file itself. The cases are
+// checked by validate_cases.
+Sweep read_sweep(const std::string& path);
+
+// the varied keys, in the order of the results table's columns
+std::vector<std::string> varied_keys(const Sweep& s);
+// the number of cases
+long case_count(const Sweep& s);
+// case i's values of the varied keys (product: the last axis varies fastest). Random: Monte Carlo draws
+// depend on (seed, i) alone; a Latin hypercube's on (seed, count); with a correlation: on all of them.
+std::vector<double> case_inputs(const Sweep& s, long i);
+
+// ---- the cases ----
+
+// the base case's YAML with its relative profile files made absolute (the generated case lives elsewhere)
+YAML::Node load_base_case(const Sweep& s);
+// case i's YAML text: the base with the varied keys replaced (numbers as lib/io/number.h round_trip
+// writes them) and name: <base name>-NNNN. CaseError at the key's entry in the sweep file when the
+// base case has no such mapping, or holds a mapping or a list there.
+std::string case_yaml(const Sweep& s, const YAML::Node& base, long i, const std::vector<double>& inputs);
+
+// Every case of `indices` read by the wear case reader and model (as `rollwear run` would) before any
+// runs. A refused case is a CaseError naming the sweep file, the line of the axis (or input) whose value
+// alone the reader refuses, the key, the case and the reader's own message; a combination refused while
+// each value alone passes names every varied key. `scratch` is a file the cases are written to in turn
+// (removed after).
+void validate_cases(const Sweep& s, const std::vector<long>& indices, const std::filesystem::path& scratch);
+
+// ---- the results table ----
+
+// how a case ended, the results table's status column: ok (a limit or the budget ended the life), failed
+// (the wear loop failed: LifeEnd::Failed or NotRun), bad_input (a CaseError), error (any other exception)
+enum class CaseStatus { Ok, Failed, BadInput, Error };
+std::string to_string(CaseStatus s);
+// the inverse of to_string; throws std::invalid_argument naming the word
+CaseStatus parse_case_status(const std::string& word);
+
+// one case's row: index, the varied inputs, life_revolutions, ended_by, max_depth_m, worn_volume_m3,
+// status, message
+struct CaseOutcome {
+  long index = 0;
+  std::vector<double> inputs;
+  double life_revolutions = std::numeric_limits<double>::quiet_NaN();
+  LifeEnd ended_by = LifeEnd::NotRun;
+  double max_depth_m = std::numeric_limits<double>::quiet_NaN();
+  double worn_volume_m3 = std::numeric_limits<double>::quiet_NaN();
+  CaseStatus status = CaseStatus::Error;  // the pessimistic default
+  std::string message;
+};
+std::string results_header(const std::vector<std::string>& keys);
+std::string results_row(const CaseOutcome& o);  // one line, ending in '\n'
+// a row's status (the inputs before it are `keys` columns); std::invalid_argument for a line that has none
+CaseStatus row_status(const std::string& row, std::size_t keys);
+// the leading index of a row; throws std::invalid_argument for a line that has none
+long row_index(const std::string& row);
+
+// "case_0007"
+std::string case_folder_name(long i);
+
+// Runs one case in `dir` (case.yaml written there first): the wear life as `rollwear run` runs it,
+// writing summary.csv, snapshots/ and report.txt, then row.csv (its results row: the mark that the case
+// is finished). Never throws for the case's own failure: that is the row's status and message.
+CaseOutcome run_case(const std::string& yaml_text, long index, const std::vector<double>& inputs,
+                     const std::filesystem::path& dir);
+
+// the cases of shard k (1-based) of n: i with i % n == k - 1
+std::vector<long> shard_indices(long count, int k, int n);
+
+struct SweepRunOptions {
+  std::filesystem::path output_directory;
+  int shard_k = 1, shard_n = 1;
+  int threads = 1;
+  // called from the thread that runs run_sweep, at most every `progress_interval_s`, and at the end
+  std::function<void(long done, long failed, long total, double elapsed_s)> progress;
+  double progress_interval_s = 1.0;
+};
+struct SweepRunSummary {
+  long cases = 0;    // this shard's
+  long resumed = 0;  // finished before this run (row.csv present, same case.yaml): not run again
+  long failed = 0;   // status other than ok, this shard's
+};
+// validates the shard's cases, runs those not finished on `threads` threads (one case per thread), then
+// writes results.csv (this shard's rows, by index), sweep.txt (the sweep's fingerprint, case count, shard,
+// sampling, seed and axes) and, for the whole sweep (shard 1/1), summary.txt atomically. A finished case whose case.yaml differs from the one generated now is a CaseError
+// (the sweep changed: use another folder).
+SweepRunSummary run_sweep(const Sweep& s, const SweepRunOptions& o);
+
+// joins the results.csv of shard folders into the whole sweep's table (rows sorted by index); CaseError
+// when the folders are of different sweeps, a case is in two of them, or a case is missing. `sweep_txt`
+// receives the first folder's sweep.txt (the input of sweep_summary).
+std::string merge_results(const std::vector<std::filesystem::path>& dirs, std::string* sweep_txt = nullptr);
+
+}  // namespace wear
