@@ -340,6 +340,82 @@ TEST(ExactRolling, StartFromRestBuildsUpAsContactDoes) {
   EXPECT_LT(last / steady.fields.Fx_N, 1.0);
 }
 
+// Reference: the general step at dq = dx is the one-cell step (theta = 1 takes the previous field of
+// cell i + 1 exactly; V = dx/dt): the same tractions to the solver's tolerance.
+TEST(ExactRolling, RollByOneCellIsTheOneCellStep) {
+  const ElasticPair pair = paper_steel();
+  const double G = combined_shear_modulus_Pa(pair), nu = combined_poisson(pair), mu = 0.3, V = 2.0;
+  const ContactPatch p = paper_patch(16);
+  const Creepages c{1e-3, 3e-4, 1.0};
+  ExactOptions tight;
+  tight.tol = 1e-12;
+  tight.stick_tol = 1e-12;
+  ExactSolution one, roll;
+  for (int k = 0; k < 5; ++k) {  // five steps from rest, each from its own chain's previous step
+    one = solve_exact_rolling_step(p, G, nu, c, mu, V, k == 0 ? nullptr : &one, tight);
+    roll = solve_exact_roll(p, G, nu, c, mu, p.grid.dx_m, p.grid.dx_m / V, k == 0 ? nullptr : &roll, tight);
+    ASSERT_TRUE(one.status.converged() && roll.status.converged());
+  }
+  const double scale = mu * p.p0_Pa;
+  EXPECT_LT((roll.fields.tau_x_Pa - one.fields.tau_x_Pa).abs().maxCoeff(), 1e-9 * scale);
+  EXPECT_LT((roll.fields.tau_y_Pa - one.fields.tau_y_Pa).abs().maxCoeff(), 1e-9 * scale);
+  EXPECT_NEAR(roll.fields.power_W, one.fields.power_W, 1e-8 * one.fields.power_W);
+  EXPECT_NEAR(roll.fields.creep_work_W, one.fields.creep_work_W, 1e-8 * std::abs(one.fields.creep_work_W));
+}
+
+// Reference: a standing contact (V = 0, dq = 0) has no rigid slip: the previous displacement held,
+// every cell sticks and keeps its traction.
+TEST(ExactRolling, StandingContactKeepsItsTractions) {
+  const ElasticPair pair = paper_steel();
+  const double G = combined_shear_modulus_Pa(pair), nu = combined_poisson(pair), mu = 0.3;
+  const ContactPatch p = paper_patch(16);
+  ExactOptions tight;
+  tight.tol = 1e-12;
+  tight.stick_tol = 1e-12;
+  ExactSolution s = solve_exact_steady(p, G, nu, {1e-3, 0, 0}, mu, 1.0, tight);
+  ASSERT_TRUE(s.status.converged());
+  const ExactSolution held = solve_exact_roll(p, G, nu, {1e-3, 0, 0}, mu, 0.0, 1e-5, &s, tight);
+  ASSERT_TRUE(held.status.converged()) << held.status.message;
+  const double scale = mu * p.p0_Pa;
+  EXPECT_LT((held.fields.tau_x_Pa - s.fields.tau_x_Pa).abs().maxCoeff(), 1e-9 * scale);
+  EXPECT_LT(held.fields.slip_x_m_per_s.abs().maxCoeff(), 1e-9 * 1e-3 * p.grid.dx_m / 1e-5);
+  EXPECT_NEAR(held.fields.creep_work_W, 0, 1e-300);
+}
+
+// the start-up from rest over q = 2a in steps of dq (a whole number of them), Fx/Fx_ss at its end
+double startup_ratio(int n, double dq_over_dx) {
+  const ElasticPair pair = paper_steel();
+  const double G = combined_shear_modulus_Pa(pair), nu = combined_poisson(pair), mu = 0.3, V = 1.0;
+  const ContactPatch p = paper_patch(n);
+  const ExactSolution steady = solve_exact_steady(p, G, nu, {1e-3, 0, 0}, mu, V);
+  const double dq = dq_over_dx * p.grid.dx_m;
+  const int steps = static_cast<int>(std::lround(n / dq_over_dx));  // 2a = n dx
+  ExactSolution s;
+  for (int k = 0; k < steps; ++k) {
+    s = solve_exact_roll(p, G, nu, {1e-3, 0, 0}, mu, dq, dq / V, k == 0 ? nullptr : &s);
+    EXPECT_TRUE(s.status.converged()) << s.status.message;
+  }
+  return s.fields.Fx_N / steady.fields.Fx_N;
+}
+
+// Reference: the rolling step of dq = dx (Kalker's discretisation, checked against CONTACT above).
+// Steps of dq = dx/2 interpolate the carried displacement linearly (first order), so their start-up
+// converges to the dq = dx one as the grid is refined: the difference of Fx/Fx_ss after rolling 2a
+// falls at first order over the grids 8, 16, 32.
+TEST(ExactRolling, HalfCellStepsConvergeToTheOneCellSteps) {
+  std::vector<double> diff;
+  for (const int n : {8, 16, 32}) {
+    const double one = startup_ratio(n, 1.0), half = startup_ratio(n, 0.5);
+    diff.push_back(std::abs(half - one));
+  }
+  // measured: 0.50565 / 0.49801, 0.51107 / 0.50699, 0.51656 / 0.51448 (dq = dx / dx/2), differences
+  // 7.6e-3, 4.1e-3, 2.1e-3: ratios 1.87, 1.96
+  constexpr double kFirstOrderRatio = 1.6;
+  EXPECT_GT(diff[0] / diff[1], kFirstOrderRatio);
+  EXPECT_GT(diff[1] / diff[2], kFirstOrderRatio);
+  EXPECT_LT(diff[2], 0.005);
+}
+
 // ---- shift
 
 // Reference: Cattaneo-Mindlin (Johnson 1985, ch. 7), a sphere on a flat loaded tangentially from

@@ -28,6 +28,7 @@
 
 #include "lib/patch.h"
 #include "lib/solve_status.h"
+#include "lib/tangential/satran.h"
 #include "lib/tangential/tangential.h"
 
 namespace contact {
@@ -77,10 +78,35 @@ ExactSolution solve_exact_steady(const ContactPatch& patch, double G_Pa, double 
 // Each step is a problem with the symmetric positive definite A (no transport inside the step);
 // the same method solves it with a diagonal preconditioner, the Newton iteration starting from the
 // previous step's tractions (a warm start; the patch and grid must be the previous step's).
-// Steady rolling is its fixed point. Not yet: dq other than dx (interpolation), V = 0.
+// Steady rolling is its fixed point. solve_exact_roll below is the general step (dq <= dx).
 ExactSolution solve_exact_rolling_step(const ContactPatch& patch, double G_Pa, double nu, const Creepages& creepages,
                                        double mu, double speed_m_per_s, const ExactSolution* previous,
                                        const ExactOptions& opt = {});
+
+// One step of transient rolling over the rolled distance dq_m in [0, dx] taking dt_s > 0. The
+// material now at cell i was at x_i + dq at the previous step: the previous displacement difference
+// there is interpolated linearly between cells i and i + 1 (theta = dq/dx), and the slip over the step
+//   S_i = w_i dq + u_i - u_prev(x_i + dq),   u = A tau,
+// obeys Coulomb's law; the slip velocities reported are S/dt, the creep work (dq/dt)(xi Fx + eta Fy +
+// phi Mz). dq = dx is solve_exact_rolling_step at V = dx/dt (the same numbers: theta = 1 takes cell
+// i + 1 exactly); dq = 0 (V = 0) is a standing contact: no rigid slip, the previous field held, only
+// a change of the load or the bound moves the tractions. Linear interpolation is first order: the
+// step converges to the dq = dx one as the grid is refined (docs/exact-theory.md).
+ExactSolution solve_exact_roll(const ContactPatch& patch, double G_Pa, double nu, const Creepages& creepages,
+                               double mu, double dq_m, double dt_s, const ExactSolution* previous,
+                               const ExactOptions& opt = {});
+
+// The 'transient' run of a case with the exact theory (solver.tangential: exact): the steps of
+// Satran's shift scheme (dq = dx, shortened to the longest step dt_s or to land on t_end_s, the
+// creepages and speed at mid-step, the contact at the step's end), each one solve_exact_roll from
+// the previous step's solution. The grid is the one of the largest load (or c.patch's) and stays:
+// a changing load changes the cells in contact on it and their bound, the carried displacement is
+// on the same cells, so nothing is re-mapped. Records hold the step's end values; the balance
+// residual is nan (the half-space stores elastic energy outside the contact, no discrete balance
+// is defined). No inertia, scheme shift only (SettingError otherwise, as run_transient's);
+// an unconverged step throws std::runtime_error with its status. final_state is left at rest.
+TransientResult run_exact_transient(const TransientCase& c, const StepObserver& observe = {},
+                                    const ExactOptions& opt = {});
 
 // Shift (no rolling): the bodies' rigid shift (shift_x_m, shift_y_m) of body 1 over body 2 during
 // a time step dt_s, from the previous state (previous == nullptr: from rest). Per cell the slip
