@@ -18,6 +18,7 @@
 #include "lib/normal/halfspace.h"
 #include "lib/normal/hertz.h"
 #include "lib/numeric.h"
+#include "lib/patch.h"
 #include "tests/log_capture.h"
 
 namespace contact {
@@ -462,6 +463,72 @@ TEST(ExactShift, CattaneoMindlinAtZeroPoisson) {
   EXPECT_LT(worst_in, 0.01 * mu * p.p0_Pa) << worst_in / (mu * p.p0_Pa) << " (all cells: " << worst / (mu * p.p0_Pa)
                                            << " at r/a " << worst_r << ")";
   EXPECT_LT(s.fields.tau_y_Pa.abs().maxCoeff(), 1e-9 * mu * p.p0_Pa);
+}
+
+// ---- plane strain
+
+// Reference: Carter's closed form (Johnson 1985, ch. 8; docs/exact-theory.md §6), two-dimensional
+// steady rolling of quasi-identical cylinders with the pressure p0 sqrt(1 - x^2/a^2): the stick zone
+// of half-length a' = a (1 - xi/xi_c), xi_c = 2 (1 - nu) mu p0/G, at the leading edge (centre
+// d = a - a'), the traction tau_x = -mu p0 [sqrt(1 - x^2/a^2) - (a'/a) sqrt(1 - (x - d)^2/a'^2)] and
+// Fx = -mu Fn (1 - (a'/a)^2) per unit width. Compared as cell means (the closed form integrated over
+// each cell), on one strip of n cells.
+struct CarterError {
+  double force = 0;     // |Fx/Fx_carter - 1|
+  double traction = 0;  // max over cells |tau - tau_carter| / (mu p0)
+  double away = 0;      // the same over the cells more than kStickEndZone a from the stick zone's ends
+};
+// the closed form's slope is infinite at both ends of the stick zone (x = a and x = a - 2 a'): the
+// first-order scheme's error there falls as sqrt(h) over a zone that shrinks with h, and at first
+// order beyond a fixed distance from them
+constexpr double kStickEndZone = 0.05;
+CarterError carter_error(int n, double xi_over_critical) {
+  const double E = 210e9, nu = 0.28, G = E / (2 * (1 + nu)), mu = 0.3, p0 = 1e9, a = 0.25e-3;
+  ContactPatch p;
+  p.grid = make_grid(a, 1e-3, {n, 1});
+  p.half_length_m = Eigen::ArrayXd::Constant(1, a);
+  p.strip_peak_Pa = Eigen::ArrayXd::Constant(1, p0);
+  fill_strip_pressures(p);
+  const double xi_c = 2 * (1 - nu) * mu * p0 / G, xi = xi_over_critical * xi_c;
+  ExactOptions o;
+  o.plane_strain = true;
+  const ExactSolution s = solve_exact_steady(p, G, nu, {xi, 0, 0}, mu, 1.0, o);
+  EXPECT_TRUE(s.status.converged()) << s.status.message;
+  const double a1 = a * (1 - xi_over_critical), d = a - a1, width = p.grid.dy_m;
+  const double Fn = kPi * a * p0 / 2, Fx = -mu * Fn * (1 - (a1 / a) * (a1 / a));
+  CarterError e;
+  e.force = std::abs(s.fields.Fx_N / width / Fx - 1);
+  const double dx = p.grid.dx_m;
+  for (int i = 0; i < n; ++i) {
+    const double x0 = p.grid.x_m(i) - dx / 2, x1 = p.grid.x_m(i) + dx / 2;
+    const double full = a * (semi_ellipse_integral(x1 / a) - semi_ellipse_integral(x0 / a));
+    const double stick = a1 * (semi_ellipse_integral((x1 - d) / a1) - semi_ellipse_integral((x0 - d) / a1));
+    const double tau = -mu * p0 * (full - (a1 / a) * stick) / dx;
+    const double err = std::abs(s.fields.tau_x_Pa(i, 0) - tau) / (mu * p0);
+    e.traction = std::max(e.traction, err);
+    if (std::abs(p.grid.x_m(i) - (d - a1)) > kStickEndZone * a && p.grid.x_m(i) < a - kStickEndZone * a)
+      e.away = std::max(e.away, err);
+  }
+  EXPECT_LT(s.fields.tau_y_Pa.abs().maxCoeff(), 1e-9 * mu * p0);
+  return e;
+}
+
+// Measured (docs/exact-theory.md §6), at xi/xi_c = 0.5 on 100, 200, 400, 800, 6400 cells: Fx 3.6e-3,
+// 1.8e-3, 9.0e-4, 4.5e-4, 5.6e-5 (first order); the traction beyond 0.05 a from the stick zone's ends
+// 6.5e-3, 3.0e-3, 1.5e-3, 7.7e-4, 9.7e-5 of mu p0 (first order); over all cells 2.2e-2, 1.5e-2,
+// 1.1e-2, 7.6e-3, 2.7e-3 (as sqrt(h): at the ends).
+TEST(ExactPlaneStrain, CartersClosedForm) {
+  constexpr double kCarterTol = 0.005;  // the target: Fx and the traction within 0.5 %
+  constexpr int n = 400;
+  for (const double r : {0.25, 0.5, 0.75}) {
+    const CarterError e = carter_error(n, r);
+    EXPECT_LT(e.force, kCarterTol) << "xi/xi_c " << r;
+    EXPECT_LT(e.away, kCarterTol) << "xi/xi_c " << r;
+  }
+  // at the stick zone's ends the error falls as sqrt(h): by 2 from 100 to 400 cells
+  const double coarse = carter_error(100, 0.5).traction, fine = carter_error(400, 0.5).traction;
+  EXPECT_GT(coarse / fine, 1.8);
+  EXPECT_LT(coarse / fine, 2.2);
 }
 
 TEST(ExactSteady, RejectsBadInput) {

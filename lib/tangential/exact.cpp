@@ -79,6 +79,17 @@
 
 namespace contact {
 
+TangentialInfluence line_load_influence(double x_m, double dx_m, double G_Pa, double nu) {
+  // integral of ln|t| over [x - c, x + c]: t ln|t| - t between the ends (0 ln 0 = 0)
+  const auto f = [](double t) { return t != 0 ? t * std::log(std::abs(t)) - t : 0.0; };
+  const double c = dx_m / 2, L = f(x_m + c) - f(x_m - c);
+  TangentialInfluence a;
+  a.xx = -2 * (1 - nu) / (kPi * G_Pa) * L;
+  a.yy = -2 / (kPi * G_Pa) * L;
+  a.xy = 0;
+  return a;
+}
+
 namespace {
 
 // restart length of GMRES
@@ -128,7 +139,7 @@ struct TangentialOperator {
   fftw_plan rf[2] = {nullptr, nullptr}, cf[2] = {nullptr, nullptr};
   fftw_plan cb[2] = {nullptr, nullptr}, rb[2] = {nullptr, nullptr};
 
-  TangentialOperator(int nx_ext, int ny_, double dx, double dy, double G, double nu)
+  TangentialOperator(int nx_ext, int ny_, double dx, double dy, double G, double nu, bool plane_strain)
       : nxe(nx_ext), ny(ny_), mx(2 * nx_ext), my(2 * ny_), nk(nx_ext + 1),
         rows_x(fftw_alloc<double>(static_cast<std::size_t>(mx) * ny_)),
         rows_y(fftw_alloc<double>(static_cast<std::size_t>(mx) * ny_)),
@@ -162,7 +173,8 @@ struct TangentialOperator {
     // the first quadrant, then by parity: xx, yy even in both offsets, xy odd in both
     for (int l = 0; l < ny; ++l) {
       for (int k = 0; k < nxe; ++k) {
-        const TangentialInfluence a = cerruti_rectangle_influence(k * dx, l * dy, dx, dy, G, nu);
+        const TangentialInfluence a = plane_strain ? line_load_influence(k * dx, dx, G, nu)
+                                                   : cerruti_rectangle_influence(k * dx, l * dy, dx, dy, G, nu);
         for (const int sl : {1, -1}) {
           if (sl < 0 && l == 0) continue;
           const std::size_t n = static_cast<std::size_t>(sl > 0 ? l : my - l);
@@ -312,9 +324,13 @@ ExactSolution solve_exact(const ContactPatch& patch, double G_Pa, double nu, con
 
   const int nxe = nx + 1;  // one row ahead of the leading edge
   const double dx = grid.dx_m, dy = grid.dy_m;
-  TangentialOperator A(nxe, ny, dx, dy, G_Pa, nu);
-  const TangentialInfluence A0 = cerruti_rectangle_influence(0, 0, dx, dy, G_Pa, nu);
-  const TangentialInfluence A1 = cerruti_rectangle_influence(dx, 0, dx, dy, G_Pa, nu);
+  if (opt.plane_strain && ny != 1)
+    throw std::invalid_argument(fmt::format("{}: plane strain takes one strip (ny = 1), got {}", mode, ny));
+  TangentialOperator A(nxe, ny, dx, dy, G_Pa, nu, opt.plane_strain);
+  const TangentialInfluence A0 = opt.plane_strain ? line_load_influence(0, dx, G_Pa, nu)
+                                                  : cerruti_rectangle_influence(0, 0, dx, dy, G_Pa, nu);
+  const TangentialInfluence A1 = opt.plane_strain ? line_load_influence(dx, dx, G_Pa, nu)
+                                                  : cerruti_rectangle_influence(dx, 0, dx, dy, G_Pa, nu);
   // steady: u_(i+1) is A tau too; a rolling step: it is the previous step's, known
   const double upstream = transient ? 0.0 : 1.0;
   const double bx = (A0.xx - upstream * A1.xx) / dx, by = (A0.yy - upstream * A1.yy) / dx;

@@ -44,12 +44,21 @@ struct TangentialInfluence {
 TangentialInfluence cerruti_rectangle_influence(double x_m, double y_m, double dx_m, double dy_m, double G_Pa,
                                                 double nu);
 
+// The same in plane strain (two-dimensional: the cell a strip dx wide along x, infinitely long in y,
+// docs/exact-theory.md §6): line loads on the half-plane of both bodies,
+//   xx: -2 (1 - nu)/(pi G) I(x),  yy: -2/(pi G) I(x) (antiplane),  xy: 0,
+//   I(x) = integral of ln|t| over [x - dx/2, x + dx/2]   (lengths in metres: the constant of the
+// two-dimensional displacement, which rolling differences out, is the one of that unit).
+TangentialInfluence line_load_influence(double x_m, double dx_m, double G_Pa, double nu);
+
 struct ExactOptions {
   double tol = 1e-9;              // on the fixed-point residual above
   int max_iterations = 200;       // active-set iterations (each one GMRES solve on the stick cells)
   int max_stick_iterations = 20000;  // GMRES iterations (FFT products) over the whole solve
   double stick_tol = 1e-11;       // GMRES: relative residual of the all-stick solve (the linear theory);
                                   // later solves go to max(stick_tol, residual / 100)
+  bool plane_strain = false;      // two-dimensional (Carter's problem): one strip (ny = 1) of infinite
+                                  // width with line_load_influence; forces are those of the strip's dy
 };
 
 struct ExactSolution {
