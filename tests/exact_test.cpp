@@ -15,6 +15,7 @@
 
 #include "lib/elastic.h"
 #include "lib/grid.h"
+#include "lib/history.h"
 #include "lib/normal/halfspace.h"
 #include "lib/normal/hertz.h"
 #include "lib/numeric.h"
@@ -415,6 +416,62 @@ TEST(ExactRolling, HalfCellStepsConvergeToTheOneCellSteps) {
   EXPECT_GT(diff[0] / diff[1], kFirstOrderRatio);
   EXPECT_GT(diff[1] / diff[2], kFirstOrderRatio);
   EXPECT_LT(diff[2], 0.005);
+}
+
+// Reference: Coulomb's bound |tau| <= mu p at every cell of the contact of the step's end, while
+// the load falls and rises (the contact shrinks and grows on the fixed grid of the largest load) and
+// the speed ramps up from rest (steps of dq < dx within the longest step dt_s); the run from rest
+// with constant inputs and the rolling steps by hand give the same forces.
+TEST(ExactTransient, HistoriesOfLoadAndSpeedKeepCoulombsBound) {
+  TransientCase c;
+  c.bodies = {{20e-3, 500e-3}, {25e-3, kFlat}};
+  c.materials = paper_steel();
+  c.mu = 0.3;
+  const HertzContact h = solve_hertz(c.bodies, c.materials, kPaperLoad_N);
+  const double dx = 2 * h.a_m / 16, V = 1.0;
+  c.inputs.speed_m_per_s = ramp_history(0, 0, 4 * dx / V, V);  // from rest: dq < dx at first
+  c.inputs.xi = constant_history(1e-3);
+  c.inputs.eta = constant_history(2e-4);
+  c.inputs.normal_load_N = {{0, 10 * dx / V, 16 * dx / V, 24 * dx / V}, {kPaperLoad_N, kPaperLoad_N, 900, 1200}};
+  c.settings.grid = {16, 16};
+  c.settings.t_end_s = 30 * dx / V;
+  c.settings.dt_s = dx / V;  // the longest step
+  for (int k = 1; k <= 30; ++k) c.settings.snapshot_times_s.push_back(k * dx / V);
+  std::vector<double> cfl;
+  const TransientResult r =
+      run_exact_transient(c, [&](const TransientRecord& rec, const Eigen::ArrayXd&) { cfl.push_back(rec.cfl); });
+  ASSERT_EQ(cfl.size(), 30u);  // steps of the longest dt_s: less than dx rolled during the ramp
+  EXPECT_NEAR(cfl[0], 0.125, 1e-9);
+  EXPECT_NEAR(cfl[3], 0.875, 1e-9);
+  EXPECT_NEAR(cfl[4], 1, 1e-9);
+  ASSERT_GE(r.snapshots.size(), 30u);
+  int partial = 0;
+  for (const Snapshot& s : r.snapshots) {
+    const Eigen::ArrayXXd t = (s.tau_x_Pa.square() + s.tau_y_Pa.square()).sqrt();
+    EXPECT_TRUE((t <= c.mu * s.pressure_Pa * (1 + 1e-9) + 1e-9 * c.mu * 1e9).all()) << "t " << s.t_s;
+    partial += (s.pressure_Pa > 0).count() < (r.snapshots.front().pressure_Pa > 0).count();
+  }
+  EXPECT_GT(partial, 3);  // the contact shrank for a while
+  EXPECT_NEAR(r.q_end_m, integral(c.inputs.speed_m_per_s, 0, c.settings.t_end_s), 1e-12 * r.q_end_m);
+
+  // constant inputs: the run is the chain of one-cell steps
+  TransientCase k = c;
+  k.inputs.speed_m_per_s = constant_history(V);
+  k.inputs.normal_load_N = constant_history(kPaperLoad_N);
+  k.settings.dt_s = 0;
+  k.settings.t_end_s = 6 * dx / V;
+  k.settings.snapshot_times_s.clear();
+  std::vector<double> Fx;
+  run_exact_transient(k, [&](const TransientRecord& rec, const Eigen::ArrayXd&) { Fx.push_back(rec.Fx_N); });
+  ASSERT_EQ(Fx.size(), 6u);
+  const ContactPatch p = hertz_patch(h, make_grid(h.a_m, h.b_m, {16, 16}));
+  const ElasticPair pair = paper_steel();
+  ExactSolution s;
+  for (int n = 0; n < 6; ++n) {
+    s = solve_exact_rolling_step(p, combined_shear_modulus_Pa(pair), combined_poisson(pair), {1e-3, 2e-4, 0}, c.mu,
+                                 V, n == 0 ? nullptr : &s);
+    EXPECT_NEAR(Fx[n], s.fields.Fx_N, 1e-6 * std::abs(s.fields.Fx_N)) << n;
+  }
 }
 
 // ---- shift
