@@ -801,6 +801,13 @@ ContactPatch exact_contact_at(const TransientCase& c, const Grid& grid, double F
 
 }  // namespace
 
+ExactOptions exact_run_options() {
+  ExactOptions o;
+  o.tol = 1e-6;
+  o.stick_tol = 1e-8;
+  return o;
+}
+
 TransientResult run_exact_transient(const TransientCase& c, const StepObserver& observe, const ExactOptions& opt) {
   const TransientSettings& set = c.settings;
   check_history(c.inputs.speed_m_per_s, "speed_m_per_s");
