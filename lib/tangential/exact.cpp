@@ -649,6 +649,15 @@ ExactSolution solve_exact(const ContactPatch& patch, double G_Pa, double nu, con
         }
       newton_step(std::max(opt.stick_tol, 1e-2 * residual));
     }
+    // the iterate obeys the bound to the tolerance only (a slip cell's Newton traction is
+    // -g e + tau_t t, |tau| = g sqrt(1 + (tau_t/g)^2)): onto the bound, a change within the tolerance
+    for (const int q : cells) {
+      const double t = std::hypot(TX[q], TY[q]);
+      if (t > Gb[q]) {
+        TX[q] *= Gb[q] / t;
+        TY[q] *= Gb[q] / t;
+      }
+    }
     A.apply(tx, ty, ux, uy);
   }
   out.active_set_iterations = outer;
