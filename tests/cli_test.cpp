@@ -666,8 +666,9 @@ TEST_F(CommandLine, TransientWithExactTheoryBuildsUpAsContactDoes) {
   for (std::size_t k = 1; k < Fx.size(); ++k) EXPECT_LT(Fx[k], Fx[k - 1] + 1e-9 * std::abs(Fx_ss)) << k;
 }
 
-// The exact solver is refused where it does not run, with the key: a wear run, mu = 0.
-TEST_F(CommandLine, ExactTheoryRefusedWithoutFriction) {
+// The exact solver is refused where it does not run, at the key: mu = 0, a transient scheme other than
+// shift, a roller's inertia (exit 2, nothing written).
+TEST_F(CommandLine, ExactTheoryRefusedWhereItDoesNotRun) {
   const fs::path c = dir_ / "nofriction.yaml";
   std::ofstream(c) << with_solver(with_solver(read_text(kSource / "cases" / "paper.yaml"), "tangential: consistent",
                                               "tangential: exact"),
@@ -676,6 +677,22 @@ TEST_F(CommandLine, ExactTheoryRefusedWithoutFriction) {
   EXPECT_EQ(r.exit_code, 2) << r.err;
   EXPECT_NE(r.err.find(": friction.mu, solver.tangential: the exact solver needs mu > 0"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(dir_ / "o"));
+  // the transient run: the shift scheme's steps only, no inertia; refused before the first step
+  const fs::path upwind = dir_ / "upwind.yaml";
+  std::ofstream(upwind) << with_solver(read_text(kSource / "cases" / "paper.yaml"), "tangential: consistent, nx: 80",
+                                       "tangential: exact, nx: 8, ny: 8 }\ntransient: { scheme: upwind, dt_s: 1.0e-6, "
+                                       "t_end_s: 1.0e-5 }\n#");
+  const ProcessResult u = rollwear("transient " + quoted(upwind) + " -o " + quoted(dir_ / "u"), dir_);
+  EXPECT_EQ(u.exit_code, 2) << u.err;
+  EXPECT_NE(u.err.find(": transient.scheme: the exact solver rolls by steps of dq <= dx"), std::string::npos) << u.err;
+  const fs::path spin = dir_ / "spin.yaml";
+  std::ofstream(spin) << with_solver(read_text(kSource / "cases" / "roller-spinup.yaml"), "solver:     { nx: 40",
+                                     "solver:     { tangential: exact, nx: 40");
+  const ProcessResult i = rollwear("transient " + quoted(spin) + " -o " + quoted(dir_ / "i"), dir_);
+  EXPECT_EQ(i.exit_code, 2) << i.err;
+  EXPECT_NE(i.err.find(": inertia: the exact solver's run has no roller inertia"), std::string::npos) << i.err;
+  EXPECT_FALSE(fs::exists(dir_ / "u"));
+  EXPECT_FALSE(fs::exists(dir_ / "i"));
 }
 
 // ---- contact on profiles ---------------------------------------------------------------------------
