@@ -413,6 +413,18 @@ ExactSolution solve_exact(const ContactPatch& patch, double G_Pa, double nu, con
   // run of contact cells and divided by the own coefficient (the inverse of the local part of D A,
   // b (I - S)), then taken along t on the slip cells
   auto precondition = [&](const Eigen::VectorXd& z, Eigen::VectorXd& x) {
+    if (transient) {  // the diagonal of the rows, the slip rows' own term |s|/g included
+      for (int c = 0; c < nc; ++c) {
+        const int o = offset[c];
+        if (slip[c]) {
+          x(o) = z(o) / (ey[c] * ey[c] * bx + ex[c] * ex[c] * by + sabs[c] / Gb[cells[c]]);
+        } else {
+          x(o) = z(o) / bx;
+          x(o + 1) = z(o + 1) / by;
+        }
+      }
+      return;
+    }
     double ax = 0, ay = 0;
     for (int c = nc - 1; c >= 0; --c) {
       const int q = cells[c], o = offset[c];
