@@ -430,10 +430,12 @@ ExactSolution solve_exact(const ContactPatch& patch, double G_Pa, double nu, con
       const int q = cells[c], o = offset[c];
       const bool upstream_in = !transient && c + 1 < nc && cells[c + 1] == q + 1;
       if (!upstream_in) ax = ay = 0;
-      if (slip[c]) {
-        ax += -ey[c] * z(o) / bx;
-        ay += ex[c] * z(o) / by;
-        x(o) = -ey[c] * ax + ex[c] * ay;
+      if (slip[c]) {  // the row t.(B (tau_i - tau_(i+1))) + (|s|/g) tau_t = z, tau_i = tau_t t
+        const double tb = ey[c] * ey[c] * bx + ex[c] * ex[c] * by + sabs[c] / Gb[q];
+        const double tt = (z(o) + (-ey[c] * bx * ax + ex[c] * by * ay)) / tb;
+        x(o) = tt;
+        ax = -ey[c] * tt;
+        ay = ex[c] * tt;
       } else {
         ax += z(o) / bx;
         ay += z(o + 1) / by;
