@@ -32,6 +32,7 @@
 #include "lib/io/csv.h"
 #include "lib/io/errors.h"
 #include "lib/normal/hertz.h"
+#include "lib/tangential/exact.h"
 #include "lib/tangential/satran.h"
 #include "lib/tangential/steady.h"
 #include "lib/tangential/tangential.h"
@@ -297,7 +298,17 @@ int run_contact(const ContactOptions& opt) {
   const bool fields = c.output.fields && !opt.no_fields;
   SteadyOptions steady_options;
   steady_options.fields = fields;  // not asked for: not computed either
-  const TangentialSolution solution = solve_steady(patch, problem, scheme, steady_options);
+  TangentialSolution solution;
+  if (scheme == TangentialScheme::Exact) {  // Kalker's exact theory on the half-space (lib/tangential/exact.h)
+    const ElasticPair pair = materials_of(c);
+    const ExactSolution e = solve_exact_steady(patch, combined_shear_modulus_Pa(pair), combined_poisson(pair),
+                                               creepages_of(c), c.friction.mu, speed_of(c));
+    if (!e.status.converged()) throw SolverError("exact steady solve: " + e.status.message);
+    spdlog::info("exact steady solve: {}", e.status.message);
+    solution = e.fields;
+  } else {
+    solution = solve_steady(patch, problem, scheme, steady_options);
+  }
 
   // every output computed before anything is written
   const std::filesystem::path dir = output_directory(opt.output_directory, c);
@@ -434,7 +445,9 @@ void print_transient_summary(const ContactCase& c, const TransientCase& t, const
                              const RunLog& log) {
   const TransientRecord& r = res.end;  // the last whole step (the shortened last step runs a cruder scheme)
   fmt::print("case {} ({}), {} x {} grid, {} scheme{}\n", c.name, c.path, res.grid.nx, res.grid.ny,
-             to_string(t.settings.scheme), t.inertia ? ", roller inertia" : "");
+             to_string(t.settings.scheme),
+             t.inertia ? ", roller inertia"
+             : parse_tangential_scheme(c.solver.tangential) == TangentialScheme::Exact ? ", exact theory" : "");
   fmt::print("  steps           {}", res.steps);
   if (res.fallback_steps > 0)
     fmt::print(", {} of them upwind at CFL < 1 (the fallback: less accurate than shift)", res.fallback_steps);
@@ -525,7 +538,8 @@ int run_transient_command(const TransientOptions& opt) {
 
   TransientResult res;
   try {
-    res = run_transient(t, observe);
+    res = parse_tangential_scheme(c.solver.tangential) == TangentialScheme::Exact ? run_exact_transient(t, observe)
+                                                                                  : run_transient(t, observe);
   } catch (const SettingError& e) {  // the settings refused: the key (data) and its line
     throw transient_error(c, e);
   } catch (const std::invalid_argument& e) {  // inside the solver, on settings that passed: its failure

@@ -237,6 +237,7 @@ TEST_F(CaseReader, UnknownSchemeListsValidOnes) {
   EXPECT_NE(message.find("fastsim"), std::string::npos) << message;
   EXPECT_NE(message.find("consistent"), std::string::npos) << message;
   EXPECT_NE(message.find("classic"), std::string::npos) << message;
+  EXPECT_NE(message.find("exact"), std::string::npos) << message;
 }
 
 TEST_F(CaseReader, SyntaxErrorReportsLine) {

@@ -16,6 +16,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iomanip>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -557,6 +558,144 @@ TEST_F(CommandLine, TransientHelpListsItsOptions) {
   for (const char* word : {"case", "-o,--output", "--no-fields", "-q,--quiet", "--log-level", "trace", "--help",
                            "timeseries.csv", "strip_power.csv", "snapshot_"})
     EXPECT_NE(help.out.find(word), std::string::npos) << word << " missing from:\n" << help.out;
+}
+
+// ---- Kalker's exact theory (solver.tangential: exact) ---------------------------------------------
+
+// a case's text with solver: { ... } replaced
+std::string with_solver(std::string text, const std::string& from, const std::string& to) {
+  const std::size_t at = text.find(from);
+  if (at == std::string::npos) return "the case lacks " + from;  // fails to read
+  return text.replace(at, from.size(), to);
+}
+
+// the CONTACT results stored with their provenance in tests/data/exact/contact_reference.csv
+double contact_reference(const std::string& quantity, const std::string& grid) {
+  for (const std::string& line : lines_of(read_text(kSource / "tests" / "data" / "exact" / "contact_reference.csv"))) {
+    const std::vector<std::string> cells = split(line);
+    if (cells.size() == 3 && cells[0] == quantity && cells[1] == grid) return std::strtod(cells[2].c_str(), nullptr);
+  }
+  ADD_FAILURE() << quantity << "," << grid << " not in contact_reference.csv";
+  return std::nan("");
+}
+
+// Reference: CONTACT's steady Fx of the paper's case on 80 x 80 (tests/data/exact), within 0.5 %;
+// the tables as the fast solvers write them, the per-cell power adding up to the strips' and the
+// total, printed beside the creep forces' work.
+TEST_F(CommandLine, ContactWithExactTheoryMatchesContactsForce) {
+  const fs::path c = dir_ / "paper-exact.yaml";
+  std::ofstream(c) << with_solver(read_text(kSource / "cases" / "paper.yaml"), "tangential: consistent",
+                                  "tangential: exact");
+  const fs::path out = dir_ / "exact";
+  const ProcessResult r = rollwear("contact " + quoted(c) + " -o " + quoted(out) + " --log-level warn", dir_);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.err, "");
+  EXPECT_NE(r.out.find("exact scheme"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("creep work = "), std::string::npos) << r.out;
+
+  const std::vector<std::string> summary = lines_of(read_text(out / "summary.csv"));
+  ASSERT_EQ(summary.size(), 2u);
+  const std::vector<std::string> row = split(summary[1]);
+  EXPECT_EQ(row[16], "exact");
+  const double Fx = std::strtod(row[10].c_str(), nullptr), P = std::strtod(row[13].c_str(), nullptr);
+  const double work = std::strtod(row[14].c_str(), nullptr);
+  constexpr double kContactTol = 0.005;  // the target against CONTACT on the same grid
+  EXPECT_NEAR(Fx / contact_reference("Fx_N", "80x80"), 1, kContactTol) << Fx;
+  EXPECT_NEAR(work, 1.0 * 1e-3 * Fx, 1e-12);  // V xi Fx
+  // the grid's power falls short of the work at first order: -7.5 % at 80 x 80 (docs/exact-theory.md)
+  EXPECT_NEAR(P / -work - 1, -0.075, 0.005);
+
+  const std::vector<std::string> fields = lines_of(read_text(out / "fields.csv"));
+  ASSERT_EQ(fields.size(), 80u * 80u + 1u);
+  EXPECT_TRUE(is_numeric_table(
+      fields, "x_m,y_m,pressure_Pa,tau_x_Pa,tau_y_Pa,slip_x_m_per_s,slip_y_m_per_s,power_W_per_m2,state"));
+  const std::vector<std::string> strips = lines_of(read_text(out / "strips.csv"));
+  ASSERT_EQ(strips.size(), 80u + 1u);
+  const std::vector<double> x = column(fields, 0), y = column(fields, 1), density = column(fields, 7),
+                            state = column(fields, 8), strip_power = column(strips, 5);
+  const double dx = x[1] - x[0], dy = y[80] - y[0];
+  double total = 0, slip = 0, stick = 0;
+  for (std::size_t k = 0; k < density.size(); ++k) {
+    total += density[k] * dx * dy;
+    EXPECT_GE(density[k], -1e-6 * P / (dx * dy)) << "cell " << k;  // Coulomb: tau opposes the slip
+    slip += state[k] == 2;
+    stick += state[k] == 1;
+  }
+  EXPECT_NEAR(total / P, 1, 1e-9);
+  EXPECT_GT(slip, 0);
+  EXPECT_GT(stick, slip);
+  double across = 0;
+  for (const double p : strip_power) across += p * dy;
+  EXPECT_NEAR(across / P, 1, 1e-9);
+}
+
+// Reference: CONTACT's start-up of the paper's contact from rest (tests/data/exact), Fx/Fx_ss at
+// q/a = 0.5, 2, 4, 8, run by 'transient' on 20 x 20 with the steady Fx of 'contact' on the same grid.
+// The coarse grid's own error is up to 2 % (docs/exact-theory.md: 0.1554, 0.5127, 0.7659, 0.9460
+// here against CONTACT's 80 x 80 0.1585, 0.5198, 0.7727, 0.9491).
+TEST_F(CommandLine, TransientWithExactTheoryBuildsUpAsContactDoes) {
+  std::string text = with_solver(read_text(kSource / "cases" / "paper.yaml"), "tangential: consistent, nx: 80, ny: 80",
+                                 "tangential: exact, nx: 20, ny: 20");
+  const fs::path steady_case = dir_ / "steady.yaml", transient_case = dir_ / "startup.yaml";
+  std::ofstream(steady_case) << text;
+  const double a = solve_hertz({{0.020, 0.500}, {0.025, kFlat}}, {{210e9, 0.28}, {210e9, 0.28}}, 1500).a_m;
+  // 8 a at V = 1 m/s and a little more: the last step is a partial one (interpolated)
+  std::ofstream(transient_case) << text << "transient: { scheme: shift, t_end_s: " << std::setprecision(17) << 8.35 * a
+                                << " }\n";
+  const ProcessResult s = rollwear("contact " + quoted(steady_case) + " -o " + quoted(dir_ / "s") + " --log-level warn", dir_);
+  ASSERT_EQ(s.exit_code, 0) << s.err;
+  const ProcessResult r =
+      rollwear("transient " + quoted(transient_case) + " -o " + quoted(dir_ / "t") + " --log-level warn", dir_);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("exact theory"), std::string::npos) << r.out;
+  const double Fx_ss = std::strtod(split(lines_of(read_text(dir_ / "s" / "summary.csv"))[1])[10].c_str(), nullptr);
+  const std::vector<std::string> series = lines_of(read_text(dir_ / "t" / "timeseries.csv"));
+  ASSERT_EQ(series.size(), 84u + 1u);  // 83 steps of dx = a/10 and a last one of dx/2 (interpolated)
+  const std::vector<double> q = column(series, 2), Fx = column(series, 10), cfl = column(series, 16);
+  constexpr double kCoarseGridTol = 0.025;
+  int checked = 0;
+  for (const char* at : {"0.5", "2", "4", "8"}) {
+    const double expected = contact_reference(std::string("Fx_over_Fx_ss_at_q_over_a_") + at, "80x80");
+    for (std::size_t k = 0; k < q.size(); ++k)
+      if (std::abs(q[k] / a - std::stod(at)) < 1e-6) {
+        EXPECT_NEAR(Fx[k] / Fx_ss, expected, kCoarseGridTol * expected) << "q/a " << at;
+        ++checked;
+      }
+  }
+  EXPECT_EQ(checked, 4);
+  for (std::size_t k = 0; k + 1 < q.size(); ++k) EXPECT_EQ(cfl[k], 1) << k;
+  EXPECT_NEAR(cfl.back(), 0.5, 1e-6);
+  // the start-up's force rises monotonically
+  for (std::size_t k = 1; k < Fx.size(); ++k) EXPECT_LT(Fx[k], Fx[k - 1] + 1e-9 * std::abs(Fx_ss)) << k;
+}
+
+// The exact solver is refused where it does not run, at the key: mu = 0, a transient scheme other than
+// shift, a roller's inertia (exit 2, nothing written).
+TEST_F(CommandLine, ExactTheoryRefusedWhereItDoesNotRun) {
+  const fs::path c = dir_ / "nofriction.yaml";
+  std::ofstream(c) << with_solver(with_solver(read_text(kSource / "cases" / "paper.yaml"), "tangential: consistent",
+                                              "tangential: exact"),
+                                  "{ mu: 0.3 }", "{ mu: 0 }");
+  const ProcessResult r = rollwear("contact " + quoted(c) + " -o " + quoted(dir_ / "o"), dir_);
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find(": friction.mu, solver.tangential: the exact solver needs mu > 0"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(dir_ / "o"));
+  // the transient run: the shift scheme's steps only, no inertia; refused before the first step
+  const fs::path upwind = dir_ / "upwind.yaml";
+  std::ofstream(upwind) << with_solver(read_text(kSource / "cases" / "paper.yaml"), "tangential: consistent, nx: 80",
+                                       "tangential: exact, nx: 8, ny: 8 }\ntransient: { scheme: upwind, dt_s: 1.0e-6, "
+                                       "t_end_s: 1.0e-5 }\n#");
+  const ProcessResult u = rollwear("transient " + quoted(upwind) + " -o " + quoted(dir_ / "u"), dir_);
+  EXPECT_EQ(u.exit_code, 2) << u.err;
+  EXPECT_NE(u.err.find(": transient.scheme: the exact solver rolls by steps of dq <= dx"), std::string::npos) << u.err;
+  const fs::path spin = dir_ / "spin.yaml";
+  std::ofstream(spin) << with_solver(read_text(kSource / "cases" / "roller-spinup.yaml"), "solver:     { nx: 40",
+                                     "solver:     { tangential: exact, nx: 40");
+  const ProcessResult i = rollwear("transient " + quoted(spin) + " -o " + quoted(dir_ / "i"), dir_);
+  EXPECT_EQ(i.exit_code, 2) << i.err;
+  EXPECT_NE(i.err.find(": inertia: the exact solver's run has no roller inertia"), std::string::npos) << i.err;
+  EXPECT_FALSE(fs::exists(dir_ / "u"));
+  EXPECT_FALSE(fs::exists(dir_ / "i"));
 }
 
 // ---- contact on profiles ---------------------------------------------------------------------------

@@ -15,9 +15,11 @@
 
 #include "lib/elastic.h"
 #include "lib/grid.h"
+#include "lib/history.h"
 #include "lib/normal/halfspace.h"
 #include "lib/normal/hertz.h"
 #include "lib/numeric.h"
+#include "lib/patch.h"
 #include "tests/log_capture.h"
 
 namespace contact {
@@ -340,6 +342,138 @@ TEST(ExactRolling, StartFromRestBuildsUpAsContactDoes) {
   EXPECT_LT(last / steady.fields.Fx_N, 1.0);
 }
 
+// Reference: the general step at dq = dx is the one-cell step (theta = 1 takes the previous field of
+// cell i + 1 exactly; V = dx/dt): the same tractions to the solver's tolerance.
+TEST(ExactRolling, RollByOneCellIsTheOneCellStep) {
+  const ElasticPair pair = paper_steel();
+  const double G = combined_shear_modulus_Pa(pair), nu = combined_poisson(pair), mu = 0.3, V = 2.0;
+  const ContactPatch p = paper_patch(16);
+  const Creepages c{1e-3, 3e-4, 1.0};
+  ExactOptions tight;
+  tight.tol = 1e-12;
+  tight.stick_tol = 1e-12;
+  ExactSolution one, roll;
+  for (int k = 0; k < 5; ++k) {  // five steps from rest, each from its own chain's previous step
+    one = solve_exact_rolling_step(p, G, nu, c, mu, V, k == 0 ? nullptr : &one, tight);
+    roll = solve_exact_roll(p, G, nu, c, mu, p.grid.dx_m, p.grid.dx_m / V, k == 0 ? nullptr : &roll, tight);
+    ASSERT_TRUE(one.status.converged() && roll.status.converged());
+  }
+  const double scale = mu * p.p0_Pa;
+  EXPECT_LT((roll.fields.tau_x_Pa - one.fields.tau_x_Pa).abs().maxCoeff(), 1e-9 * scale);
+  EXPECT_LT((roll.fields.tau_y_Pa - one.fields.tau_y_Pa).abs().maxCoeff(), 1e-9 * scale);
+  EXPECT_NEAR(roll.fields.power_W, one.fields.power_W, 1e-8 * one.fields.power_W);
+  EXPECT_NEAR(roll.fields.creep_work_W, one.fields.creep_work_W, 1e-8 * std::abs(one.fields.creep_work_W));
+}
+
+// Reference: a standing contact (V = 0, dq = 0) has no rigid slip: the previous displacement held,
+// every cell sticks and keeps its traction.
+TEST(ExactRolling, StandingContactKeepsItsTractions) {
+  const ElasticPair pair = paper_steel();
+  const double G = combined_shear_modulus_Pa(pair), nu = combined_poisson(pair), mu = 0.3;
+  const ContactPatch p = paper_patch(16);
+  ExactOptions tight;
+  tight.tol = 1e-12;
+  tight.stick_tol = 1e-12;
+  ExactSolution s = solve_exact_steady(p, G, nu, {1e-3, 0, 0}, mu, 1.0, tight);
+  ASSERT_TRUE(s.status.converged());
+  const ExactSolution held = solve_exact_roll(p, G, nu, {1e-3, 0, 0}, mu, 0.0, 1e-5, &s, tight);
+  ASSERT_TRUE(held.status.converged()) << held.status.message;
+  const double scale = mu * p.p0_Pa;
+  EXPECT_LT((held.fields.tau_x_Pa - s.fields.tau_x_Pa).abs().maxCoeff(), 1e-9 * scale);
+  EXPECT_LT(held.fields.slip_x_m_per_s.abs().maxCoeff(), 1e-9 * 1e-3 * p.grid.dx_m / 1e-5);
+  EXPECT_NEAR(held.fields.creep_work_W, 0, 1e-300);
+}
+
+// the start-up from rest over q = 2a in steps of dq (a whole number of them), Fx/Fx_ss at its end
+double startup_ratio(int n, double dq_over_dx) {
+  const ElasticPair pair = paper_steel();
+  const double G = combined_shear_modulus_Pa(pair), nu = combined_poisson(pair), mu = 0.3, V = 1.0;
+  const ContactPatch p = paper_patch(n);
+  const ExactSolution steady = solve_exact_steady(p, G, nu, {1e-3, 0, 0}, mu, V);
+  const double dq = dq_over_dx * p.grid.dx_m;
+  const int steps = static_cast<int>(std::lround(n / dq_over_dx));  // 2a = n dx
+  ExactSolution s;
+  for (int k = 0; k < steps; ++k) {
+    s = solve_exact_roll(p, G, nu, {1e-3, 0, 0}, mu, dq, dq / V, k == 0 ? nullptr : &s);
+    EXPECT_TRUE(s.status.converged()) << s.status.message;
+  }
+  return s.fields.Fx_N / steady.fields.Fx_N;
+}
+
+// Reference: the rolling step of dq = dx (Kalker's discretisation, checked against CONTACT above).
+// Steps of dq = dx/2 interpolate the carried displacement linearly (first order), so their start-up
+// converges to the dq = dx one as the grid is refined: the difference of Fx/Fx_ss after rolling 2a
+// falls at first order over the grids 8, 16, 32.
+TEST(ExactRolling, HalfCellStepsConvergeToTheOneCellSteps) {
+  std::vector<double> diff;
+  for (const int n : {8, 16, 32}) {
+    const double one = startup_ratio(n, 1.0), half = startup_ratio(n, 0.5);
+    diff.push_back(std::abs(half - one));
+  }
+  // measured: 0.50565 / 0.49801, 0.51107 / 0.50699, 0.51656 / 0.51448 (dq = dx / dx/2), differences
+  // 7.6e-3, 4.1e-3, 2.1e-3: ratios 1.87, 1.96
+  constexpr double kFirstOrderRatio = 1.6;
+  EXPECT_GT(diff[0] / diff[1], kFirstOrderRatio);
+  EXPECT_GT(diff[1] / diff[2], kFirstOrderRatio);
+  EXPECT_LT(diff[2], 0.005);
+}
+
+// Reference: Coulomb's bound |tau| <= mu p at every cell of the contact of the step's end, while
+// the load falls and rises (the contact shrinks and grows on the fixed grid of the largest load) and
+// the speed ramps up from rest (steps of dq < dx within the longest step dt_s); the run from rest
+// with constant inputs and the rolling steps by hand give the same forces.
+TEST(ExactTransient, HistoriesOfLoadAndSpeedKeepCoulombsBound) {
+  TransientCase c;
+  c.bodies = {{20e-3, 500e-3}, {25e-3, kFlat}};
+  c.materials = paper_steel();
+  c.mu = 0.3;
+  const HertzContact h = solve_hertz(c.bodies, c.materials, kPaperLoad_N);
+  const double dx = 2 * h.a_m / 16, V = 1.0;
+  c.inputs.speed_m_per_s = ramp_history(0, 0, 4 * dx / V, V);  // from rest: dq < dx at first
+  c.inputs.xi = constant_history(1e-3);
+  c.inputs.eta = constant_history(2e-4);
+  c.inputs.normal_load_N = {{0, 10 * dx / V, 16 * dx / V, 24 * dx / V}, {kPaperLoad_N, kPaperLoad_N, 900, 1200}};
+  c.settings.grid = {16, 16};
+  c.settings.t_end_s = 30 * dx / V;
+  c.settings.dt_s = dx / V;  // the longest step
+  for (int k = 1; k <= 30; ++k) c.settings.snapshot_times_s.push_back(k * dx / V);
+  std::vector<double> cfl;
+  const TransientResult r =
+      run_exact_transient(c, [&](const TransientRecord& rec, const Eigen::ArrayXd&) { cfl.push_back(rec.cfl); });
+  ASSERT_EQ(cfl.size(), 30u);  // steps of the longest dt_s: less than dx rolled during the ramp
+  EXPECT_NEAR(cfl[0], 0.125, 1e-9);
+  EXPECT_NEAR(cfl[3], 0.875, 1e-9);
+  EXPECT_NEAR(cfl[4], 1, 1e-9);
+  ASSERT_GE(r.snapshots.size(), 30u);
+  int partial = 0;
+  for (const Snapshot& s : r.snapshots) {
+    const Eigen::ArrayXXd t = (s.tau_x_Pa.square() + s.tau_y_Pa.square()).sqrt();
+    EXPECT_TRUE((t <= c.mu * s.pressure_Pa * (1 + 1e-9) + 1e-9 * c.mu * 1e9).all()) << "t " << s.t_s;
+    partial += (s.pressure_Pa > 0).count() < (r.snapshots.front().pressure_Pa > 0).count();
+  }
+  EXPECT_GT(partial, 3);  // the contact shrank for a while
+  EXPECT_NEAR(r.q_end_m, integral(c.inputs.speed_m_per_s, 0, c.settings.t_end_s), 1e-12 * r.q_end_m);
+
+  // constant inputs: the run is the chain of one-cell steps
+  TransientCase k = c;
+  k.inputs.speed_m_per_s = constant_history(V);
+  k.inputs.normal_load_N = constant_history(kPaperLoad_N);
+  k.settings.dt_s = 0;
+  k.settings.t_end_s = 6 * dx / V;
+  k.settings.snapshot_times_s.clear();
+  std::vector<double> Fx;
+  run_exact_transient(k, [&](const TransientRecord& rec, const Eigen::ArrayXd&) { Fx.push_back(rec.Fx_N); });
+  ASSERT_EQ(Fx.size(), 6u);
+  const ContactPatch p = hertz_patch(h, make_grid(h.a_m, h.b_m, {16, 16}));
+  const ElasticPair pair = paper_steel();
+  ExactSolution s;
+  for (int n = 0; n < 6; ++n) {
+    s = solve_exact_rolling_step(p, combined_shear_modulus_Pa(pair), combined_poisson(pair), {1e-3, 2e-4, 0}, c.mu,
+                                 V, n == 0 ? nullptr : &s);
+    EXPECT_NEAR(Fx[n], s.fields.Fx_N, 1e-6 * std::abs(s.fields.Fx_N)) << n;
+  }
+}
+
 // ---- shift
 
 // Reference: Cattaneo-Mindlin (Johnson 1985, ch. 7), a sphere on a flat loaded tangentially from
@@ -386,6 +520,72 @@ TEST(ExactShift, CattaneoMindlinAtZeroPoisson) {
   EXPECT_LT(worst_in, 0.01 * mu * p.p0_Pa) << worst_in / (mu * p.p0_Pa) << " (all cells: " << worst / (mu * p.p0_Pa)
                                            << " at r/a " << worst_r << ")";
   EXPECT_LT(s.fields.tau_y_Pa.abs().maxCoeff(), 1e-9 * mu * p.p0_Pa);
+}
+
+// ---- plane strain
+
+// Reference: Carter's closed form (Johnson 1985, ch. 8; docs/exact-theory.md §6), two-dimensional
+// steady rolling of quasi-identical cylinders with the pressure p0 sqrt(1 - x^2/a^2): the stick zone
+// of half-length a' = a (1 - xi/xi_c), xi_c = 2 (1 - nu) mu p0/G, at the leading edge (centre
+// d = a - a'), the traction tau_x = -mu p0 [sqrt(1 - x^2/a^2) - (a'/a) sqrt(1 - (x - d)^2/a'^2)] and
+// Fx = -mu Fn (1 - (a'/a)^2) per unit width. Compared as cell means (the closed form integrated over
+// each cell), on one strip of n cells.
+struct CarterError {
+  double force = 0;     // |Fx/Fx_carter - 1|
+  double traction = 0;  // max over cells |tau - tau_carter| / (mu p0)
+  double away = 0;      // the same over the cells more than kStickEndZone a from the stick zone's ends
+};
+// the closed form's slope is infinite at both ends of the stick zone (x = a and x = a - 2 a'): the
+// first-order scheme's error there falls as sqrt(h) over a zone that shrinks with h, and at first
+// order beyond a fixed distance from them
+constexpr double kStickEndZone = 0.05;
+CarterError carter_error(int n, double xi_over_critical) {
+  const double E = 210e9, nu = 0.28, G = E / (2 * (1 + nu)), mu = 0.3, p0 = 1e9, a = 0.25e-3;
+  ContactPatch p;
+  p.grid = make_grid(a, 1e-3, {n, 1});
+  p.half_length_m = Eigen::ArrayXd::Constant(1, a);
+  p.strip_peak_Pa = Eigen::ArrayXd::Constant(1, p0);
+  fill_strip_pressures(p);
+  const double xi_c = 2 * (1 - nu) * mu * p0 / G, xi = xi_over_critical * xi_c;
+  ExactOptions o;
+  o.plane_strain = true;
+  const ExactSolution s = solve_exact_steady(p, G, nu, {xi, 0, 0}, mu, 1.0, o);
+  EXPECT_TRUE(s.status.converged()) << s.status.message;
+  const double a1 = a * (1 - xi_over_critical), d = a - a1, width = p.grid.dy_m;
+  const double Fn = kPi * a * p0 / 2, Fx = -mu * Fn * (1 - (a1 / a) * (a1 / a));
+  CarterError e;
+  e.force = std::abs(s.fields.Fx_N / width / Fx - 1);
+  const double dx = p.grid.dx_m;
+  for (int i = 0; i < n; ++i) {
+    const double x0 = p.grid.x_m(i) - dx / 2, x1 = p.grid.x_m(i) + dx / 2;
+    const double full = a * (semi_ellipse_integral(x1 / a) - semi_ellipse_integral(x0 / a));
+    const double stick = a1 * (semi_ellipse_integral((x1 - d) / a1) - semi_ellipse_integral((x0 - d) / a1));
+    const double tau = -mu * p0 * (full - (a1 / a) * stick) / dx;
+    const double err = std::abs(s.fields.tau_x_Pa(i, 0) - tau) / (mu * p0);
+    e.traction = std::max(e.traction, err);
+    if (std::abs(p.grid.x_m(i) - (d - a1)) > kStickEndZone * a && p.grid.x_m(i) < a - kStickEndZone * a)
+      e.away = std::max(e.away, err);
+  }
+  EXPECT_LT(s.fields.tau_y_Pa.abs().maxCoeff(), 1e-9 * mu * p0);
+  return e;
+}
+
+// Measured (docs/exact-theory.md §6), at xi/xi_c = 0.5 on 100, 200, 400, 800, 6400 cells: Fx 3.6e-3,
+// 1.8e-3, 9.0e-4, 4.5e-4, 5.6e-5 (first order); the traction beyond 0.05 a from the stick zone's ends
+// 6.5e-3, 3.0e-3, 1.5e-3, 7.7e-4, 9.7e-5 of mu p0 (first order); over all cells 2.2e-2, 1.5e-2,
+// 1.1e-2, 7.6e-3, 2.7e-3 (as sqrt(h): at the ends).
+TEST(ExactPlaneStrain, CartersClosedForm) {
+  constexpr double kCarterTol = 0.005;  // the target: Fx and the traction within 0.5 %
+  constexpr int n = 400;
+  for (const double r : {0.25, 0.5, 0.75}) {
+    const CarterError e = carter_error(n, r);
+    EXPECT_LT(e.force, kCarterTol) << "xi/xi_c " << r;
+    EXPECT_LT(e.away, kCarterTol) << "xi/xi_c " << r;
+  }
+  // at the stick zone's ends the error falls as sqrt(h): by 2 from 100 to 400 cells
+  const double coarse = carter_error(100, 0.5).traction, fine = carter_error(400, 0.5).traction;
+  EXPECT_GT(coarse / fine, 1.8);
+  EXPECT_LT(coarse / fine, 2.2);
 }
 
 TEST(ExactSteady, RejectsBadInput) {

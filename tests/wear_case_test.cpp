@@ -1,6 +1,7 @@
 // The wear section of a case (wear/wear_case.h): read with the contact case in one pass; every
 // error names the file, the line and column, and the key path. The texts number their lines on the right.
 #include "wear/wear_case.h"
+#include "wear/wear_loop.h"
 
 #include <gtest/gtest.h>
 
@@ -159,6 +160,22 @@ TEST_F(WearCaseReader, ArchardWithoutFrictionNamesFrictionMuAndTheLaw) {
   std::string energy = kContact + "wear:\n  body1: { law: energy, k_E_m3_per_J: 1.0e-13 }\n  revolutions: 1.0e9\n";
   energy.replace(energy.find("mu: 0.3"), 7, "mu: 0");
   EXPECT_EQ(error_of(energy), "");
+}
+
+// A wear run refuses the exact theory (solver.tangential: exact runs in 'contact' and 'transient'; the
+// wear loop's solvers are the simplified theory's), at the key's line: it would otherwise have run
+// the consistent scheme under the exact one's name.
+TEST_F(WearCaseReader, WearRunRefusesTheExactTheoryAtItsKey) {
+  std::string text = kContact + "wear:\n  body1: { law: energy, k_E_m3_per_J: 1.0e-13 }\n  revolutions: 1.0e9\n";
+  text.replace(text.find("solver: { nx"), 12, "solver: { tangential: exact, nx");
+  const WearCase c = read_wear_case(write(text));
+  try {
+    make_wear_model(c);
+    FAIL() << "a wear model with the exact theory";
+  } catch (const contact::CaseError& e) {
+    EXPECT_EQ(std::string(e.what()).rfind(path() + ":10:23: solver.tangential: the exact theory runs in", 0), 0u)
+        << e.what();
+  }
 }
 
 // wear.stepping.method's names come from one table (lib/io/enum_names.h): the reader's message lists them,

@@ -119,6 +119,9 @@ WearModel make_wear_model(const WearCase& c) {
   m.normal_load_N = k.load.normal_load_N.value.front();
   m.mu = k.friction.mu;
   m.scheme = contact::parse_tangential_scheme(k.solver.tangential);
+  if (m.scheme == contact::TangentialScheme::Exact)  // the wear loop's solvers are the simplified theory's
+    throw contact::CaseError(contact::where(k, "solver.tangential") + "solver.tangential: the exact theory runs in "
+                             "'contact' and 'transient'; a wear run takes consistent or classic");
   if (k.transient) {
     m.transient = contact::transient_case_of(k);
     m.transient->settings.skip_steady = true;

@@ -365,6 +365,10 @@ void validate(const ContactCase& c) {
                           " is not; use normal: auto, semi-hertz or halfspace");
   }
 
+  // Kalker's exact theory (lib/tangential/exact.h) solves with friction only
+  if (parse_tangential_scheme(c.solver.tangential) == TangentialScheme::Exact && !(c.friction.mu > 0))
+    throw CaseError(where(c, "friction.mu") + "friction.mu, solver.tangential: the exact solver needs mu > 0");
+
   // the run: snapshots within it, a time step for the fixed-step schemes
   if (c.transient) {
     const TransientSection& t = *c.transient;

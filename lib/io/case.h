@@ -74,7 +74,7 @@ struct ProfilesSection {
 };
 struct SolverSection {
   std::string normal = "auto";            // auto | hertz | semi-hertz | halfspace
-  std::string tangential = "consistent";  // consistent | classic
+  std::string tangential = "consistent";  // consistent | classic | exact (lib/tangential/exact.h)
   int nx = 80, ny = 80;
 };
 struct TransientSection {  // the 'transient' command's run (lib/tangential/satran.h)

@@ -44,7 +44,9 @@
 // D A tau = -w; a slip cell's traction is -g e + tau_t t (t the normal to e) and its equation is the
 // linearisation of tau = -g s/|s|,
 //   (|s|/g) tau_t + t.(w + D A tau) = 0,
-// which stays regular as |s| -> 0, where it asks for no slip across e. Newton converges in 3 to 5
+// which stays regular as |s| -> 0, where it asks for no slip across e. The march preconditioner
+// inverts a slip row's local part with its own term: tau_t = (z + t.(B tau_(i+1)))/(t.B t + |s|/g);
+// the rolling step's diagonal one likewise (t.B t + |s|/g). Newton converges in 3 to 5
 // iterations on the paper's contact from 20 to 160 cells a side (residual 0.5, 0.3, 0.1, 2e-5, 1e-11
 // at 80 x 80). Each linear solve goes to max(stick_tol, residual / 100): inexact Newton.
 //
@@ -58,6 +60,9 @@
 // converge at 0.985 per iteration (residual 2e-3 after 200 at 80 x 80): hence Newton.
 #include "lib/tangential/exact.h"
 #include "lib/numeric.h"
+#include "lib/history.h"
+#include "lib/io/errors.h"
+#include "lib/normal/hertz.h"
 
 #include <fftw3.h>
 #include <spdlog/fmt/fmt.h>
@@ -69,11 +74,23 @@
 #include <complex>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 namespace contact {
+
+TangentialInfluence line_load_influence(double x_m, double dx_m, double G_Pa, double nu) {
+  // integral of ln|t| over [x - c, x + c]: t ln|t| - t between the ends (0 ln 0 = 0)
+  const auto f = [](double t) { return t != 0 ? t * std::log(std::abs(t)) - t : 0.0; };
+  const double c = dx_m / 2, L = f(x_m + c) - f(x_m - c);
+  TangentialInfluence a;
+  a.xx = -2 * (1 - nu) / (kPi * G_Pa) * L;
+  a.yy = -2 / (kPi * G_Pa) * L;
+  a.xy = 0;
+  return a;
+}
 
 namespace {
 
@@ -124,7 +141,7 @@ struct TangentialOperator {
   fftw_plan rf[2] = {nullptr, nullptr}, cf[2] = {nullptr, nullptr};
   fftw_plan cb[2] = {nullptr, nullptr}, rb[2] = {nullptr, nullptr};
 
-  TangentialOperator(int nx_ext, int ny_, double dx, double dy, double G, double nu)
+  TangentialOperator(int nx_ext, int ny_, double dx, double dy, double G, double nu, bool plane_strain)
       : nxe(nx_ext), ny(ny_), mx(2 * nx_ext), my(2 * ny_), nk(nx_ext + 1),
         rows_x(fftw_alloc<double>(static_cast<std::size_t>(mx) * ny_)),
         rows_y(fftw_alloc<double>(static_cast<std::size_t>(mx) * ny_)),
@@ -158,7 +175,8 @@ struct TangentialOperator {
     // the first quadrant, then by parity: xx, yy even in both offsets, xy odd in both
     for (int l = 0; l < ny; ++l) {
       for (int k = 0; k < nxe; ++k) {
-        const TangentialInfluence a = cerruti_rectangle_influence(k * dx, l * dy, dx, dy, G, nu);
+        const TangentialInfluence a = plane_strain ? line_load_influence(k * dx, dx, G, nu)
+                                                   : cerruti_rectangle_influence(k * dx, l * dy, dx, dy, G, nu);
         for (const int sl : {1, -1}) {
           if (sl < 0 && l == 0) continue;
           const std::size_t n = static_cast<std::size_t>(sl > 0 ? l : my - l);
@@ -278,9 +296,13 @@ namespace {
 ExactSolution solve_exact(const ContactPatch& patch, double G_Pa, double nu, const Creepages& creepages, double mu,
                           double speed_m_per_s, const ExactOptions& opt, const Eigen::ArrayXXd* prev_ux,
                           const Eigen::ArrayXXd* prev_uy, const Eigen::ArrayXXd* start_tx,
-                          const Eigen::ArrayXXd* start_ty, int prev_offset = 1) {
+                          const Eigen::ArrayXXd* start_ty, int prev_offset = 1, double creep_scale = 1.0,
+                          const char* mode_name = nullptr) {
   const bool transient = prev_ux != nullptr;
-  const char* const mode = !transient ? "exact steady" : prev_offset == 1 ? "exact rolling step" : "exact shift";
+  const char* const mode = mode_name                 ? mode_name
+                           : !transient             ? "exact steady"
+                           : prev_offset == 1       ? "exact rolling step"
+                                                    : "exact shift";
   const Grid& grid = patch.grid;
   const int nx = grid.nx, ny = grid.ny;
   if (nx < 1 || ny < 1 || !(grid.dx_m > 0) || !(grid.dy_m > 0) || grid.x_m.size() != nx || grid.y_m.size() != ny)
@@ -304,9 +326,13 @@ ExactSolution solve_exact(const ContactPatch& patch, double G_Pa, double nu, con
 
   const int nxe = nx + 1;  // one row ahead of the leading edge
   const double dx = grid.dx_m, dy = grid.dy_m;
-  TangentialOperator A(nxe, ny, dx, dy, G_Pa, nu);
-  const TangentialInfluence A0 = cerruti_rectangle_influence(0, 0, dx, dy, G_Pa, nu);
-  const TangentialInfluence A1 = cerruti_rectangle_influence(dx, 0, dx, dy, G_Pa, nu);
+  if (opt.plane_strain && ny != 1)
+    throw std::invalid_argument(fmt::format("{}: plane strain takes one strip (ny = 1), got {}", mode, ny));
+  TangentialOperator A(nxe, ny, dx, dy, G_Pa, nu, opt.plane_strain);
+  const TangentialInfluence A0 = opt.plane_strain ? line_load_influence(0, dx, G_Pa, nu)
+                                                  : cerruti_rectangle_influence(0, 0, dx, dy, G_Pa, nu);
+  const TangentialInfluence A1 = opt.plane_strain ? line_load_influence(dx, dx, G_Pa, nu)
+                                                  : cerruti_rectangle_influence(dx, 0, dx, dy, G_Pa, nu);
   // steady: u_(i+1) is A tau too; a rolling step: it is the previous step's, known
   const double upstream = transient ? 0.0 : 1.0;
   const double bx = (A0.xx - upstream * A1.xx) / dx, by = (A0.yy - upstream * A1.yy) / dx;
@@ -327,8 +353,8 @@ ExactSolution solve_exact(const ContactPatch& patch, double G_Pa, double nu, con
       if (!(patch.pressure_Pa(i, j) > 0)) continue;
       cells.push_back(i + nxe * j);
       g(i, j) = mu * patch.pressure_Pa(i, j);
-      wx(i, j) = xi_j - creepages.phi_per_m * grid.y_m(j);
-      wy(i, j) = creepages.eta + creepages.phi_per_m * grid.x_m(i);
+      wx(i, j) = creep_scale * (xi_j - creepages.phi_per_m * grid.y_m(j));
+      wy(i, j) = creep_scale * (creepages.eta + creepages.phi_per_m * grid.x_m(i));
       if (transient) {  // the previous step's displacement one cell upstream, known
         wex(i, j) = wx(i, j) - (*prev_ux)(i + prev_offset, j) / dx;
         wey(i, j) = wy(i, j) - (*prev_uy)(i + prev_offset, j) / dx;
@@ -389,15 +415,29 @@ ExactSolution solve_exact(const ContactPatch& patch, double G_Pa, double nu, con
   // run of contact cells and divided by the own coefficient (the inverse of the local part of D A,
   // b (I - S)), then taken along t on the slip cells
   auto precondition = [&](const Eigen::VectorXd& z, Eigen::VectorXd& x) {
+    if (transient) {  // the diagonal of the rows, the slip rows' own term |s|/g included
+      for (int c = 0; c < nc; ++c) {
+        const int o = offset[c];
+        if (slip[c]) {
+          x(o) = z(o) / (ey[c] * ey[c] * bx + ex[c] * ex[c] * by + sabs[c] / Gb[cells[c]]);
+        } else {
+          x(o) = z(o) / bx;
+          x(o + 1) = z(o + 1) / by;
+        }
+      }
+      return;
+    }
     double ax = 0, ay = 0;
     for (int c = nc - 1; c >= 0; --c) {
       const int q = cells[c], o = offset[c];
       const bool upstream_in = !transient && c + 1 < nc && cells[c + 1] == q + 1;
       if (!upstream_in) ax = ay = 0;
-      if (slip[c]) {
-        ax += -ey[c] * z(o) / bx;
-        ay += ex[c] * z(o) / by;
-        x(o) = -ey[c] * ax + ex[c] * ay;
+      if (slip[c]) {  // the row t.(B (tau_i - tau_(i+1))) + (|s|/g) tau_t = z, tau_i = tau_t t
+        const double tb = ey[c] * ey[c] * bx + ex[c] * ex[c] * by + sabs[c] / Gb[q];
+        const double tt = (z(o) + (-ey[c] * bx * ax + ex[c] * by * ay)) / tb;
+        x(o) = tt;
+        ax = -ey[c] * tt;
+        ay = ex[c] * tt;
       } else {
         ax += z(o) / bx;
         ay += z(o + 1) / by;
@@ -625,6 +665,15 @@ ExactSolution solve_exact(const ContactPatch& patch, double G_Pa, double nu, con
         }
       newton_step(std::max(opt.stick_tol, 1e-2 * residual));
     }
+    // the iterate obeys the bound to the tolerance only (a slip cell's Newton traction is
+    // -g e + tau_t t, |tau| = g sqrt(1 + (tau_t/g)^2)): onto the bound, a change within the tolerance
+    for (const int q : cells) {
+      const double t = std::hypot(TX[q], TY[q]);
+      if (t > Gb[q]) {
+        TX[q] *= Gb[q] / t;
+        TY[q] *= Gb[q] / t;
+      }
+    }
     A.apply(tx, ty, ux, uy);
   }
   out.active_set_iterations = outer;
@@ -666,7 +715,7 @@ ExactSolution solve_exact(const ContactPatch& patch, double G_Pa, double nu, con
   s.stick_fraction = stick / nc;
   double xi_Fx = creepages.xi * s.Fx_N;
   if (patch.strip_xi_offset.size() == ny) xi_Fx += (patch.strip_xi_offset * s.strip_force_x_N_per_m).sum() * dy;
-  s.creep_work_W = V * (xi_Fx + creepages.eta * s.Fy_N + creepages.phi_per_m * s.Mz_N_m);
+  s.creep_work_W = creep_scale * V * (xi_Fx + creepages.eta * s.Fy_N + creepages.phi_per_m * s.Mz_N_m);
   out.u_x_m = ux;
   out.u_y_m = uy;
 
@@ -708,6 +757,199 @@ ExactSolution solve_exact_shift(const ContactPatch& patch, double G_Pa, double n
   }
   return solve_exact(patch, G_Pa, nu, c, mu, V, opt, &previous->u_x_m, &previous->u_y_m, &previous->fields.tau_x_Pa,
                      &previous->fields.tau_y_Pa, 0);
+}
+
+
+ExactSolution solve_exact_roll(const ContactPatch& patch, double G_Pa, double nu, const Creepages& creepages,
+                               double mu, double dq_m, double dt_s, const ExactSolution* previous,
+                               const ExactOptions& opt) {
+  const double dx = patch.grid.dx_m;
+  if (!(dt_s > 0) || !std::isfinite(dt_s))
+    throw std::invalid_argument(fmt::format("exact roll: dt must be positive and finite, got {} s", dt_s));
+  if (!(dq_m >= 0) || !(dq_m <= dx * (1 + 1e-12)))
+    throw std::invalid_argument(fmt::format("exact roll: the rolled distance must be in [0, dx = {} m], got {} m", dx,
+                                            dq_m));
+  const int nx = patch.grid.nx, ny = patch.grid.ny;
+  // the previous displacement difference where the material now at x_i was: at x_i + dq, linear
+  // between the cells i and i + 1 (theta = dq/dx; theta = 1 is the one-cell step, exactly)
+  const double theta = std::min(dq_m / dx, 1.0);
+  Eigen::ArrayXXd px = Eigen::ArrayXXd::Zero(nx + 1, ny), py = px;
+  if (previous) {
+    const Eigen::ArrayXXd& ux = previous->u_x_m;
+    const Eigen::ArrayXXd& uy = previous->u_y_m;
+    if (ux.rows() != nx + 1 || ux.cols() != ny || uy.rows() != nx + 1 || uy.cols() != ny)
+      throw std::invalid_argument(fmt::format("exact roll: the previous displacement must be {} x {}", nx + 1, ny));
+    px.topRows(nx) = (1 - theta) * ux.topRows(nx) + theta * ux.bottomRows(nx);
+    py.topRows(nx) = (1 - theta) * uy.topRows(nx) + theta * uy.bottomRows(nx);
+    px.row(nx) = ux.row(nx);
+    py.row(nx) = uy.row(nx);
+  }
+  // the rolling step's equations per dx (V = dx/dt): rigid slip w dq/dx, the previous field not moved
+  // again (prev_offset 0), slip velocities S/dt, creep work V_rolling (xi Fx + eta Fy + phi Mz)
+  const Eigen::ArrayXXd* tx = previous ? &previous->fields.tau_x_Pa : nullptr;
+  const Eigen::ArrayXXd* ty = previous ? &previous->fields.tau_y_Pa : nullptr;
+  return solve_exact(patch, G_Pa, nu, creepages, mu, dx / dt_s, opt, &px, &py, tx, ty, 0, theta,
+                     "exact rolling step");
+}
+
+namespace {
+
+// no cell in contact: no traction, no displacement, every output zero on the grid
+ExactSolution no_contact(const Grid& g) {
+  ExactSolution e;
+  TangentialSolution& s = e.fields;
+  s.tau_x_Pa = s.tau_y_Pa = s.slip_x_m_per_s = s.slip_y_m_per_s = s.power_W_per_m2 = Eigen::ArrayXXd::Zero(g.nx, g.ny);
+  s.state = Eigen::ArrayXXi::Zero(g.nx, g.ny);
+  s.strip_power_W_per_m = s.strip_creep_power_W_per_m = s.strip_trailing_W_per_m = s.strip_force_x_N_per_m =
+      s.strip_force_y_N_per_m = Eigen::ArrayXd::Zero(g.ny);
+  e.u_x_m = e.u_y_m = Eigen::ArrayXXd::Zero(g.nx + 1, g.ny);
+  e.status.kind = SolveStatus::Kind::Converged;
+  e.status.message = "no contact";
+  return e;
+}
+
+// the contact at load F on the run's grid (as Satran's run puts it: a given patch, or Hertz's
+// ellipse on the grid of the largest load; none at F = 0)
+ContactPatch exact_contact_at(const TransientCase& c, const Grid& grid, double F) {
+  if (c.patch) return *c.patch;
+  ContactPatch p;
+  if (F > 0) {
+    const HertzContact h = solve_hertz(c.bodies, c.materials, F);
+    if ((grid.y_m.abs() < h.b_m).any()) return hertz_patch(h, grid);
+  }
+  p.grid = grid;
+  p.half_length_m = Eigen::ArrayXd::Zero(grid.ny);
+  p.strip_peak_Pa = Eigen::ArrayXd::Zero(grid.ny);
+  fill_strip_pressures(p);
+  return p;
+}
+
+}  // namespace
+
+ExactOptions exact_run_options() {
+  ExactOptions o;
+  o.tol = 1e-6;
+  o.stick_tol = 1e-8;
+  return o;
+}
+
+TransientResult run_exact_transient(const TransientCase& c, const StepObserver& observe, const ExactOptions& opt) {
+  const TransientSettings& set = c.settings;
+  check_history(c.inputs.speed_m_per_s, "speed_m_per_s");
+  check_history(c.inputs.xi, "xi");
+  check_history(c.inputs.eta, "eta");
+  check_history(c.inputs.phi_per_m, "phi_per_m");
+  check_history(c.inputs.normal_load_N, "normal_load_N");
+  if (min_value(c.inputs.speed_m_per_s) < 0) throw SettingError("", "speed_m_per_s", "must be >= 0");
+  if (min_value(c.inputs.normal_load_N) < 0) throw SettingError("", "normal_load_N", "must be >= 0");
+  if (!(max_value(c.inputs.normal_load_N) > 0)) throw SettingError("", "normal_load_N", "never positive");
+  if (!(set.t_end_s > 0) || !std::isfinite(set.t_end_s)) throw SettingError("", "t_end_s", "must be positive");
+  if (!(set.dt_s >= 0) || !std::isfinite(set.dt_s)) throw SettingError("", "dt_s", "must be >= 0");
+  if (c.inertia) throw SettingError("", "inertia", "the exact solver's run has no roller inertia (Satran's has)");
+  if (set.scheme != TransientScheme::Shift)
+    throw SettingError("", "scheme", "the exact solver rolls by steps of dq <= dx (the shift scheme's steps); "
+                                     "use scheme: shift");
+  if (c.patch && !(is_constant(c.inputs.normal_load_N) && c.inputs.normal_load_N.value[0] == c.patch->normal_load_N))
+    throw SettingError("", "normal_load_N", "a run on a given contact patch needs the constant load of the patch, " +
+                                                std::to_string(c.patch->normal_load_N) + " N");
+  const double G = combined_shear_modulus_Pa(c.materials), nu = combined_poisson(c.materials);
+
+  TransientResult res;
+  if (c.patch) {
+    res.grid = c.patch->grid;
+  } else {
+    const HertzContact largest = solve_hertz(c.bodies, c.materials, max_value(c.inputs.normal_load_N));
+    res.grid = make_grid(largest.a_m, largest.b_m, set.grid);
+  }
+  const Grid& g = res.grid;
+  const double dx = g.dx_m;
+  res.strip_energy_J_per_m = Eigen::ArrayXd::Zero(g.ny);
+  res.final_state = rest_state(g);  // Satran's node state: not the exact solver's (left at rest)
+
+  std::vector<double> snaps = set.snapshot_times_s;
+  std::sort(snaps.begin(), snaps.end());
+  std::size_t next_snap = 0;
+  double t = 0, q = 0, F_patch = std::numeric_limits<double>::quiet_NaN();
+  ContactPatch patch;
+  std::optional<ExactSolution> prev;  // the previous step's solution (none: at rest)
+  const double longest = set.dt_s > 0 ? set.dt_s : std::numeric_limits<double>::infinity();
+  int step = 0;
+  bool has_whole_step = false;  // res.end holds a whole step's record
+  while (t < set.t_end_s * (1 - 1e-12)) {
+    const double left = set.t_end_s - t;
+    // a step rolls dx, or less when the longest step or the end comes first (at V = 0: no rolling)
+    const double t_roll = time_to_accumulate(c.inputs.speed_m_per_s, t, dx);
+    const double dt = std::min({t_roll - t, longest, left});
+    const double dq = dt == t_roll - t ? dx : std::min(dx, integral(c.inputs.speed_m_per_s, t, t + dt));
+    if (!(dt > 0)) break;
+    // the last step, cut short by t_end_s rather than by the longest step or by rolling: flagged, and not
+    // the run's end values (as in Satran's runs)
+    const bool shortened = dt == left && dt < std::min(t_roll - t, longest) * (1 - 1e-9);
+    const double tm = t + dt / 2;
+    const Creepages cr{value_at(c.inputs.xi, tm), value_at(c.inputs.eta, tm), value_at(c.inputs.phi_per_m, tm)};
+    const double F = value_at(c.inputs.normal_load_N, t + dt);  // the contact at the step's end
+    if (!(F == F_patch)) {
+      patch = exact_contact_at(c, g, F);
+      F_patch = F;
+    }
+    ExactSolution s;
+    if ((patch.pressure_Pa > 0).any()) {
+      s = solve_exact_roll(patch, G, nu, cr, c.mu, dq, dt, prev ? &*prev : nullptr, opt);
+      if (!s.status.converged())
+        throw std::runtime_error(fmt::format("exact transient: step {} (t {:.6g} s) not converged: {}", step + 1,
+                                             t + dt, s.status.message));
+    } else {
+      s = no_contact(g);
+    }
+    const TangentialSolution& f = s.fields;
+    TransientRecord rec;
+    rec.step = ++step;
+    rec.t_s = t + dt;  // the tractions of the step's end (backward Euler in time)
+    rec.q_m = q + dq;
+    rec.dt_s = dt;
+    rec.speed_m_per_s = value_at(c.inputs.speed_m_per_s, tm);
+    rec.xi = cr.xi;
+    rec.eta = cr.eta;
+    rec.phi_per_m = cr.phi_per_m;
+    rec.normal_load_N = F;
+    rec.Fx_N = f.Fx_N;
+    rec.Fy_N = f.Fy_N;
+    rec.Mz_N_m = f.Mz_N_m;
+    rec.power_W = f.power_W;
+    rec.stick_fraction = f.stick_fraction;
+    // the half-space stores elastic energy outside the contact too: no discrete balance is defined
+    rec.balance_residual_W = std::numeric_limits<double>::quiet_NaN();
+    rec.cfl = dq / dx;
+    rec.scheme = dq == 0 ? StepScheme::Standstill : StepScheme::Shift;  // the exact theory's step, interpolated if dq < dx
+    rec.shortened = shortened;
+    if (!shortened || !has_whole_step) {
+      res.end = rec;
+      has_whole_step = !shortened;
+    }
+    t += dt;
+    q += dq;
+    res.strip_energy_J_per_m += f.strip_power_W_per_m * dt;
+    res.dissipated_J += f.power_W * dt;
+    if (observe) observe(rec, f.strip_power_W_per_m);
+    while (next_snap < snaps.size() && snaps[next_snap] <= t * (1 + 1e-12)) {
+      Snapshot sn;
+      sn.t_s = t;
+      sn.pressure_Pa = patch.pressure_Pa;
+      sn.tau_x_Pa = f.tau_x_Pa;
+      sn.tau_y_Pa = f.tau_y_Pa;
+      sn.slip_x_m_per_s = f.slip_x_m_per_s;
+      sn.slip_y_m_per_s = f.slip_y_m_per_s;
+      res.snapshots.push_back(std::move(sn));
+      ++next_snap;
+    }
+    prev = std::move(s);
+  }
+  res.steps = step;
+  res.t_end_s = t;
+  res.q_end_m = q;
+  spdlog::debug("exact transient: {} steps to t {:.6e} s, q {:.6e} m, dissipated {:.6e} J", step, t, q,
+                res.dissipated_J);
+  return res;
 }
 
 }  // namespace contact

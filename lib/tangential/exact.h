@@ -28,6 +28,7 @@
 
 #include "lib/patch.h"
 #include "lib/solve_status.h"
+#include "lib/tangential/satran.h"
 #include "lib/tangential/tangential.h"
 
 namespace contact {
@@ -43,12 +44,21 @@ struct TangentialInfluence {
 TangentialInfluence cerruti_rectangle_influence(double x_m, double y_m, double dx_m, double dy_m, double G_Pa,
                                                 double nu);
 
+// The same in plane strain (two-dimensional: the cell a strip dx wide along x, infinitely long in y,
+// docs/exact-theory.md §6): line loads on the half-plane of both bodies,
+//   xx: -2 (1 - nu)/(pi G) I(x),  yy: -2/(pi G) I(x) (antiplane),  xy: 0,
+//   I(x) = integral of ln|t| over [x - dx/2, x + dx/2]   (lengths in metres: the constant of the
+// two-dimensional displacement, which rolling differences out, is the one of that unit).
+TangentialInfluence line_load_influence(double x_m, double dx_m, double G_Pa, double nu);
+
 struct ExactOptions {
   double tol = 1e-9;              // on the fixed-point residual above
   int max_iterations = 200;       // active-set iterations (each one GMRES solve on the stick cells)
   int max_stick_iterations = 20000;  // GMRES iterations (FFT products) over the whole solve
   double stick_tol = 1e-11;       // GMRES: relative residual of the all-stick solve (the linear theory);
                                   // later solves go to max(stick_tol, residual / 100)
+  bool plane_strain = false;      // two-dimensional (Carter's problem): one strip (ny = 1) of infinite
+                                  // width with line_load_influence; forces are those of the strip's dy
 };
 
 struct ExactSolution {
@@ -77,10 +87,39 @@ ExactSolution solve_exact_steady(const ContactPatch& patch, double G_Pa, double 
 // Each step is a problem with the symmetric positive definite A (no transport inside the step);
 // the same method solves it with a diagonal preconditioner, the Newton iteration starting from the
 // previous step's tractions (a warm start; the patch and grid must be the previous step's).
-// Steady rolling is its fixed point. Not yet: dq other than dx (interpolation), V = 0.
+// Steady rolling is its fixed point. solve_exact_roll below is the general step (dq <= dx).
 ExactSolution solve_exact_rolling_step(const ContactPatch& patch, double G_Pa, double nu, const Creepages& creepages,
                                        double mu, double speed_m_per_s, const ExactSolution* previous,
                                        const ExactOptions& opt = {});
+
+// One step of transient rolling over the rolled distance dq_m in [0, dx] taking dt_s > 0. The
+// material now at cell i was at x_i + dq at the previous step: the previous displacement difference
+// there is interpolated linearly between cells i and i + 1 (theta = dq/dx), and the slip over the step
+//   S_i = w_i dq + u_i - u_prev(x_i + dq),   u = A tau,
+// obeys Coulomb's law; the slip velocities reported are S/dt, the creep work (dq/dt)(xi Fx + eta Fy +
+// phi Mz). dq = dx is solve_exact_rolling_step at V = dx/dt (the same numbers: theta = 1 takes cell
+// i + 1 exactly); dq = 0 (V = 0) is a standing contact: no rigid slip, the previous field held, only
+// a change of the load or the bound moves the tractions. Linear interpolation is first order: the
+// step converges to the dq = dx one as the grid is refined (docs/exact-theory.md).
+ExactSolution solve_exact_roll(const ContactPatch& patch, double G_Pa, double nu, const Creepages& creepages,
+                               double mu, double dq_m, double dt_s, const ExactSolution* previous,
+                               const ExactOptions& opt = {});
+
+// The 'transient' run of a case with the exact theory (solver.tangential: exact): the steps of
+// Satran's shift scheme (dq = dx, shortened to the longest step dt_s or to land on t_end_s, the
+// creepages and speed at mid-step, the contact at the step's end), each one solve_exact_roll from
+// the previous step's solution. The grid is the one of the largest load (or c.patch's) and stays:
+// a changing load changes the cells in contact on it and their bound, the carried displacement is
+// on the same cells, so nothing is re-mapped. Records hold the step's end values; the balance
+// residual is nan (the half-space stores elastic energy outside the contact, no discrete balance
+// is defined). No inertia, scheme shift only (SettingError otherwise, as run_transient's);
+// an unconverged step throws std::runtime_error with its status. final_state is left at rest.
+// Its steps' tolerance: tol 1e-6 on the fixed-point residual, the linear solves to 1e-8 (the
+// rolling step's forces are within 1e-8 of the step solved to 1e-12 already at tol 1e-4,
+// docs/exact-theory.md §5; the steady default 1e-9 would cost 2.5x the time per step).
+ExactOptions exact_run_options();
+TransientResult run_exact_transient(const TransientCase& c, const StepObserver& observe = {},
+                                    const ExactOptions& opt = exact_run_options());
 
 // Shift (no rolling): the bodies' rigid shift (shift_x_m, shift_y_m) of body 1 over body 2 during
 // a time step dt_s, from the previous state (previous == nullptr: from rest). Per cell the slip

@@ -78,6 +78,7 @@ std::string to_string(TangentialScheme scheme) {
   switch (scheme) {
     case TangentialScheme::Classic: return "classic";
     case TangentialScheme::Consistent: return "consistent";
+    case TangentialScheme::Exact: return "exact";
   }
   return "unknown";
 }
@@ -85,7 +86,8 @@ std::string to_string(TangentialScheme scheme) {
 TangentialScheme parse_tangential_scheme(const std::string& name) {
   if (name == "consistent") return TangentialScheme::Consistent;
   if (name == "classic") return TangentialScheme::Classic;
-  throw std::invalid_argument("unknown tangential scheme '" + name + "' (valid: consistent, classic)");
+  if (name == "exact") return TangentialScheme::Exact;
+  throw std::invalid_argument("unknown tangential scheme '" + name + "' (valid: consistent, classic, exact)");
 }
 
 }  // namespace contact

@@ -46,7 +46,10 @@ TangentialProblem make_tangential_problem(const ContactPatch& patch, const Elast
 //               line is integrated exactly and its crossing with the semi-elliptic traction bound is
 //               located exactly; the dissipated power is -integral(tau . s) of that reconstruction,
 //               so the discrete energy balance of docs/physics.md §4 holds to rounding, strip by strip.
-enum class TangentialScheme { Classic, Consistent };
+//   Exact:      not a scheme of the simplified theory: Kalker's exact theory on the half-space
+//               (lib/tangential/exact.h), which the commands call in its place; solve_steady and
+//               satran_step do not take it.
+enum class TangentialScheme { Classic, Consistent, Exact };
 
 std::string to_string(TangentialScheme scheme);
 

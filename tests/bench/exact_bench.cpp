@@ -87,7 +87,7 @@ void BM_ExactRollingStep(benchmark::State& state) {
   state.counters["converged"] = s.status.converged() && ref.status.converged() ? 1 : 0;
 }
 
-BENCHMARK(BM_ExactRollingStep)->Args({80, 4})->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_ExactRollingStep)->Args({80, 2})->Args({80, 3})->Args({80, 4})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_ExactSteady)->Args({40, 6})->Args({80, 4})->Args({80, 6})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_ExactSteadyFullStick)->Args({80, 6})->Unit(benchmark::kMillisecond);
 
