@@ -93,7 +93,7 @@ Eigen::ArrayXd node_depth_per_cycle(const WearModel& m, int body, const WearLaw&
   duty.stretches = d.stretches;
   const Eigen::ArrayXd strips = depth_per_duty_cycle(law, duty);
   const contact::Profile& p = profile_of(m, body);
-  return smooth_conserving(strips_to_nodes(strips, strip_y0_m, dy_m, p.y_m), p.y_m, m.smoothing_wavelength_m);
+  return smooth_conserving(strips_to_nodes(strips, strip_y0_m, dy_m, p.y_m), body == 1 ? m.smoothing1 : m.smoothing2);
 }
 
 bool needs_fields(const std::optional<WearLaw>& law) {
@@ -139,7 +139,14 @@ WearModel make_wear_model(const WearCase& c) {
   // e = the depth the energy would wear spread evenly over the reference body's width
   m.energy_scale = (k_E > 0 ? k_E : kNominalEnergyCoefficient_m3_per_J) / (2 * kPi * m.reference_radius_m * width);
   m.smoothing_wavelength_m = c.wear.smoothing_wavelength_m;
+  if (m.law1) m.smoothing1 = smoothing_kernel(m.profiles.body1.y_m, m.smoothing_wavelength_m);
+  if (m.law2) m.smoothing2 = smoothing_kernel(m.profiles.body2.y_m, m.smoothing_wavelength_m);
   m.limits = c.wear.limits;
+  // the pressure fields on the grid: read by the transient duty cycle (Satran), the per-cell laws and the
+  // consistent march; not by the steady pure-xi closed form (solve_steady's skip) with the strip laws
+  const bool closed_form = !m.transient && m.scheme == contact::TangentialScheme::Consistent &&
+                           m.creepages.eta == 0 && m.creepages.phi_per_m == 0;
+  m.normal_options.pressure_fields = !closed_form || needs_fields(m.law1) || needs_fields(m.law2);
   return m;
 }
 
