@@ -235,11 +235,28 @@ double edge_limit_value_m(const contact::Profiles& worn, const contact::SemiHert
   const double lo = std::max(p1.y_m(0), p2.y_m(0));
   const double hi = std::min(p1.y_m(p1.y_m.size() - 1), p2.y_m(p2.y_m.size() - 1));
   const auto gap = [&](double y) { return contact::profile_z(p1, y) + contact::profile_z(p2, y); };
-  // the gap is linear between the nodes of either profile: its minimum over the overlap is at one of them
+  // the gap is linear between the nodes of either profile: its minimum over the overlap is at one of them.
+  // The nodes come in increasing y, so each profile is interpolated with a cursor instead of a search:
+  // the same interval and arithmetic as contact::profile_z, so the same numbers
+  struct Cursor {
+    const contact::Profile& p;
+    Eigen::Index hi = 1;
+    double z(double y) {  // y increasing from call to call, within the profile's extent
+      const Eigen::Index n = p.y_m.size();
+      while (hi < n - 1 && p.y_m(hi) <= y) ++hi;
+      const Eigen::Index lo = hi - 1;
+      const double t = (y - p.y_m(lo)) / (p.y_m(hi) - p.y_m(lo));
+      return (1 - t) * p.z_m(lo) + t * p.z_m(hi);
+    }
+  };
   double gap_min = std::min(gap(lo), gap(hi));
-  for (const contact::Profile* p : {&p1, &p2})
-    for (Eigen::Index i = 0; i < p->y_m.size(); ++i)
-      if (p->y_m(i) > lo && p->y_m(i) < hi) gap_min = std::min(gap_min, gap(p->y_m(i)));
+  for (const contact::Profile* p : {&p1, &p2}) {
+    Cursor c1{p1}, c2{p2};
+    for (Eigen::Index i = 0; i < p->y_m.size(); ++i) {
+      const double y = p->y_m(i);
+      if (y > lo && y < hi) gap_min = std::min(gap_min, c1.z(y) + c2.z(y));
+    }
+  }
   const double bound_m = normal.epsilon * normal.approach_m;  // contact where gap - gap_min < eps delta
   return bound_m - (std::min(gap(lo), gap(hi)) - gap_min);
 }
