@@ -162,9 +162,11 @@ contact::Profiles worn_profiles(const WearModel& m, const Eigen::VectorXd& state
   return p;
 }
 
-NormalState normal_state(const WearModel& m, const Eigen::VectorXd& state, WearCache& cache) {
-  const contact::Profiles profiles = worn_profiles(m, state);
-  const std::uint64_t key = contact::profile_hash(profiles);
+namespace {
+
+// normal_state on the state's worn profiles and their hash, when the caller has them already
+NormalState normal_state_on(const WearModel& m, const contact::Profiles& profiles, std::uint64_t key,
+                            const Eigen::VectorXd& state, WearCache& cache) {
   if (cache.reuse && cache.normal_valid && cache.normal_key == key) return cache.normal;
   // a body worn deeper than it is wide (a cached profile passed): no profile can be (contact::check_profile),
   // the life ends
@@ -230,6 +232,8 @@ NormalState normal_state(const WearModel& m, const Eigen::VectorXd& state, WearC
   return n;
 }
 
+}  // namespace
+
 double edge_limit_value_m(const contact::Profiles& worn, const contact::SemiHertzResult& normal) {
   const contact::Profile &p1 = worn.body1, &p2 = worn.body2;
   const double lo = std::max(p1.y_m(0), p2.y_m(0));
@@ -261,9 +265,12 @@ double edge_limit_value_m(const contact::Profiles& worn, const contact::SemiHert
   return bound_m - (std::min(gap(lo), gap(hi)) - gap_min);
 }
 
-NormalState solved_normal_state(const WearModel& m, const Eigen::VectorXd& state, WearCache& cache) {
+namespace {
+
+NormalState solved_normal_state_on(const WearModel& m, const contact::Profiles& worn, std::uint64_t key,
+                                   const Eigen::VectorXd& state, WearCache& cache) {
   const long solves = cache.counters.normal_solves;
-  const NormalState n = normal_state(m, state, cache);
+  const NormalState n = normal_state_on(m, worn, key, state, cache);
   if (cache.counters.normal_solves == solves) return n;  // from the cache: reported when it was solved
   if (n.normal.reaches_edge && !m.limits.edge && !cache.edge_reported) {
     cache.edge_reported = true;
@@ -271,6 +278,18 @@ NormalState solved_normal_state(const WearModel& m, const Eigen::VectorXd& state
                  "and wear.limits.edge is off: the contact is cut there from now on");
   }
   return n;
+}
+
+}  // namespace
+
+NormalState normal_state(const WearModel& m, const Eigen::VectorXd& state, WearCache& cache) {
+  const contact::Profiles profiles = worn_profiles(m, state);
+  return normal_state_on(m, profiles, contact::profile_hash(profiles), state, cache);
+}
+
+NormalState solved_normal_state(const WearModel& m, const Eigen::VectorXd& state, WearCache& cache) {
+  const contact::Profiles profiles = worn_profiles(m, state);
+  return solved_normal_state_on(m, profiles, contact::profile_hash(profiles), state, cache);
 }
 
 WearRate wear_rate(const WearModel& m, const Eigen::VectorXd& state, WearCache& cache) {
@@ -281,8 +300,8 @@ WearRate wear_rate(const WearModel& m, const Eigen::VectorXd& state, WearCache& 
     for (const auto& [k, rate] : cache.rates)
       if (k == key) return rate;
 
-  // normal problem on the current worn geometry
-  const NormalState n = solved_normal_state(m, state, cache);
+  // normal problem on the current worn geometry (the profiles and their hash from above)
+  const NormalState n = solved_normal_state_on(m, worn, key, state, cache);
   const contact::ContactPatch& patch = n.normal.patch;
 
   // tangential problem over the duty cycle: dissipated energy per unit width
