@@ -212,6 +212,18 @@ TEST(ProfileUpdateSmooth, AreaIsConservedOnNonUniformNodes) {
   }
 }
 
+TEST(ProfileUpdateSmooth, KernelBuiltOnceGivesTheSameNumbers) {
+  // the wear loop builds the kernel once per run (the nodes never move) and applies it to every depth:
+  // the result is smooth_conserving's on the nodes, bit for bit, for every depth in turn
+  const Eigen::ArrayXd y = random_nodes(301, -0.01, 0.02, 13);
+  const SmoothingKernel kernel = smoothing_kernel(y, kLc);
+  for (unsigned seed : {14u, 15u, 16u}) {
+    const Eigen::ArrayXd d = random_values(301, 0, 1e-6, seed);
+    EXPECT_TRUE((smooth_conserving(d, kernel) == smooth_conserving(d, y, kLc)).all()) << "seed " << seed;
+  }
+  EXPECT_THROW(smooth_conserving(Eigen::ArrayXd::Zero(300), kernel), std::invalid_argument);
+}
+
 TEST(ProfileUpdateSmooth, ZeroCutoffIsTheIdentity) {
   // by definition: lc = 0 returns the input, bit for bit
   const Eigen::ArrayXd y = random_nodes(101, -0.01, 0.02, 9);

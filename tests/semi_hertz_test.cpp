@@ -92,6 +92,22 @@ INSTANTIATE_TEST_SUITE_P(SemiHertzCrownsAndLoads, SemiHertzConstantCurvature,
                                   std::to_string(static_cast<int>(std::get<1>(param.param))) + "N";
                          });
 
+// SemiHertzOptions::pressure_fields off: the strips, the ellipse and the approach are the same to the bit
+// (the fields are filled from the strips after everything else), the fields are left empty
+TEST(SemiHertz, WithoutPressureFieldsTheStripsAreTheSame) {
+  SemiHertzOptions without;
+  without.pressure_fields = false;
+  const SemiHertzResult full = solve_semi_hertz(crowned_on_flat(0.3), kRx1, kRx2, steel(), 1500, {40, 40});
+  const SemiHertzResult bare = solve_semi_hertz(crowned_on_flat(0.3), kRx1, kRx2, steel(), 1500, {40, 40}, without);
+  EXPECT_TRUE((bare.patch.half_length_m == full.patch.half_length_m).all());
+  EXPECT_TRUE((bare.patch.strip_peak_Pa == full.patch.strip_peak_Pa).all());
+  EXPECT_EQ(bare.patch.p0_Pa, full.patch.p0_Pa);
+  EXPECT_EQ(bare.approach_m, full.approach_m);
+  EXPECT_EQ(bare.patch.pressure_Pa.size(), 0);
+  EXPECT_EQ(bare.patch.edge_pressure_Pa.size(), 0);
+  EXPECT_EQ(full.patch.pressure_Pa.size(), 40 * 40);
+}
+
 // docs/physics.md §2: the paper's case, a = 0.230290 mm, b = 2.610098 mm, p0 = 1191.517 MPa, delta = 9.1991 um
 TEST(SemiHertz, PaperCaseMatchesReferenceValues) {
   const SemiHertzResult r = solve_semi_hertz(crowned_on_flat(0.5), kRx1, kRx2, steel(), 1500, {80, 80});

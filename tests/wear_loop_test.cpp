@@ -96,6 +96,29 @@ TEST(WearLoop, WornVolumeEqualsCoefficientTimesEnergyAtEveryStep) {
   EXPECT_LT(worst, 1e-12) << "over " << steps << " steps";
 }
 
+// The pressure fields on the grid are left out where the duty cycle reads only the strips (steady,
+// consistent, pure xi, Archard per strip: the closed form); the rate on a worn (semi-Hertzian) crown is
+// the same to the bit as with the fields filled. With lateral creepage the march reads them: kept.
+TEST(WearLoop, PressureFieldsOnlyWhereTheDutyCycleReadsThem) {
+  const WearCase c = paper_wear();
+  const WearModel skip = make_wear_model(c);
+  EXPECT_FALSE(skip.normal_options.pressure_fields);
+  WearModel full = skip;
+  full.normal_options.pressure_fields = true;
+  WearCache a, b;
+  Eigen::VectorXd state = initial_state(skip);
+  state.head(skip.n1) = 4e6 * wear_rate(skip, state, a).dstate_dN.head(skip.n1);  // a worn crown
+  const WearRate r_skip = wear_rate(skip, state, a), r_full = wear_rate(full, state, b);
+  EXPECT_EQ(r_skip.contact.normal_solver, contact::NormalSolverKind::SemiHertz);
+  EXPECT_TRUE(r_skip.dstate_dN == r_full.dstate_dN);
+  EXPECT_EQ(r_skip.contact.power_W, r_full.contact.power_W);
+  EXPECT_EQ(r_skip.contact.edge_limit_m, r_full.contact.edge_limit_m);
+
+  WearCase lateral = c;
+  lateral.contact.kinematics.eta = contact::constant_history(1e-4);
+  EXPECT_TRUE(make_wear_model(lateral).normal_options.pressure_fields);
+}
+
 // Pure rolling (no creepage, no spin) with the Heathcote slip off: no slip, no dissipation, no wear,
 // exactly; with the Heathcote slip on, the crown's varying rolling radius slips and wears.
 TEST(WearLoop, PureRollingWearsNothingWithoutHeathcoteSlip) {

@@ -118,25 +118,27 @@ Eigen::ArrayXd strips_to_nodes(const Eigen::ArrayXd& strip_depth_m, double first
   return area_m2 / widths(y);
 }
 
-Eigen::ArrayXd smooth_conserving(const Eigen::ArrayXd& depth_m, const Eigen::ArrayXd& node_y_m,
-                                 double cutoff_wavelength_m) {
+SmoothingKernel smoothing_kernel(const Eigen::ArrayXd& node_y_m, double cutoff_wavelength_m) {
   const double lc = cutoff_wavelength_m;
   if (!(lc >= 0) || !std::isfinite(lc))
     throw std::invalid_argument("smooth_conserving: cutoff_wavelength_m must be >= 0 and finite, got " + number(lc));
   check_nodes("smooth_conserving", node_y_m);
-  check_same_size("smooth_conserving", depth_m, node_y_m);
-  if (!depth_m.allFinite()) throw std::invalid_argument("smooth_conserving: depth_m is not finite");
-  if (lc == 0) return depth_m;
+  SmoothingKernel k;
+  k.cutoff_wavelength_m = lc;
+  k.w = widths(node_y_m);
+  if (lc == 0) return k;
 
   const int n = static_cast<int>(node_y_m.size());
   const Eigen::ArrayXd& y = node_y_m;
-  const Eigen::ArrayXd w = widths(y);
   const double alpha = std::sqrt(std::log(2.0) / kPi);
   const double c = kPi / (alpha * lc * alpha * lc);  // s(x) ~ exp(-c x^2)
   const double s_lc = std::exp(-c * lc * lc);         // exp(-pi^2 / ln 2) = 6.5e-7
 
   // kernel rows: node i reaches the nodes first[i] .. first[i] + count[i] - 1 within lc (sliding window)
-  std::vector<int> first(n), count(n), offset(n + 1);
+  std::vector<int>&first = k.first, &count = k.count, &offset = k.offset;
+  first.resize(n);
+  count.resize(n);
+  offset.resize(n + 1);
   offset[0] = 0;
   for (int i = 0, lo = 0, hi = 0; i < n; ++i) {
     while (y(i) - y(lo) > lc) ++lo;
@@ -149,16 +151,31 @@ Eigen::ArrayXd smooth_conserving(const Eigen::ArrayXd& depth_m, const Eigen::Arr
 
   // s(y_k - y_i), each pair once (the window test is the same both ways): row i holds s at
   // offset[i] + k - first[i]
-  std::vector<double> s(static_cast<std::size_t>(offset[n]));
+  std::vector<double>& s = k.s;
+  s.assign(static_cast<std::size_t>(offset[n]), 0.0);
   for (int i = 0; i < n; ++i) {
     s[offset[i] + i - first[i]] = 1 - s_lc;
-    for (int k = i + 1; k < first[i] + count[i]; ++k) {
-      const double x = y(k) - y(i);
-      const double s_ik = std::max(std::exp(-c * x * x) - s_lc, 0.0);
-      s[offset[i] + k - first[i]] = s_ik;
-      s[offset[k] + i - first[k]] = s_ik;
+    for (int m = i + 1; m < first[i] + count[i]; ++m) {
+      const double x = y(m) - y(i);
+      const double s_im = std::max(std::exp(-c * x * x) - s_lc, 0.0);
+      s[offset[i] + m - first[i]] = s_im;
+      s[offset[m] + i - first[m]] = s_im;
     }
   }
+  return k;
+}
+
+Eigen::ArrayXd smooth_conserving(const Eigen::ArrayXd& depth_m, const SmoothingKernel& kernel) {
+  if (depth_m.size() != kernel.w.size())
+    throw std::invalid_argument("smooth_conserving: depth_m has " + std::to_string(depth_m.size()) +
+                                " values, the kernel's nodes " + std::to_string(kernel.w.size()));
+  if (!depth_m.allFinite()) throw std::invalid_argument("smooth_conserving: depth_m is not finite");
+  if (kernel.cutoff_wavelength_m == 0) return depth_m;
+
+  const int n = static_cast<int>(depth_m.size());
+  const Eigen::ArrayXd& w = kernel.w;
+  const std::vector<int>&first = kernel.first, &count = kernel.count, &offset = kernel.offset;
+  const std::vector<double>& s = kernel.s;
 
   // what each node hands out per unit weight: m_i / Z_i, normalised over the nodes that exist
   Eigen::ArrayXd q(n);
@@ -169,6 +186,13 @@ Eigen::ArrayXd smooth_conserving(const Eigen::ArrayXd& depth_m, const Eigen::Arr
   Eigen::ArrayXd smoothed(n);
   for (int k = 0; k < n; ++k) smoothed(k) = symmetric_dot(&s[offset[k]], &q(first[k]), count[k]);
   return smoothed;
+}
+
+Eigen::ArrayXd smooth_conserving(const Eigen::ArrayXd& depth_m, const Eigen::ArrayXd& node_y_m,
+                                 double cutoff_wavelength_m) {
+  const SmoothingKernel kernel = smoothing_kernel(node_y_m, cutoff_wavelength_m);
+  check_same_size("smooth_conserving", depth_m, node_y_m);
+  return smooth_conserving(depth_m, kernel);
 }
 
 }  // namespace wear

@@ -44,6 +44,8 @@
 
 #include <Eigen/Core>
 
+#include <vector>
+
 namespace wear {
 
 // w_i: the control-volume width of each node of a piecewise-linear profile (m), y strictly
@@ -75,5 +77,20 @@ Eigen::ArrayXd strips_to_nodes(const Eigen::ArrayXd& strip_depth_m, double first
 // non-finite depth, or node_y_m as node_widths_m.
 Eigen::ArrayXd smooth_conserving(const Eigen::ArrayXd& depth_m, const Eigen::ArrayXd& node_y_m,
                                  double cutoff_wavelength_m);
+
+// The filter's kernel on a set of nodes: what smooth_conserving computes from node_y_m and the cut-off
+// alone (the windows, the truncated Gaussian of every pair within lc, the widths w_i), so that a run
+// whose nodes never move builds it once. Throws as smooth_conserving for the nodes and the cut-off.
+struct SmoothingKernel {
+  double cutoff_wavelength_m = 0;
+  Eigen::ArrayXd w;                     // the nodes' widths
+  std::vector<int> first, count, offset;  // row i: nodes first[i] .. first[i] + count[i] - 1, at s[offset[i]]
+  std::vector<double> s;                // s(y_k - y_i) - s(lc), each row's values
+};
+SmoothingKernel smoothing_kernel(const Eigen::ArrayXd& node_y_m, double cutoff_wavelength_m);
+
+// smooth_conserving with the kernel of its nodes: the same numbers to the bit. Throws
+// std::invalid_argument for a depth of another size or non-finite.
+Eigen::ArrayXd smooth_conserving(const Eigen::ArrayXd& depth_m, const SmoothingKernel& kernel);
 
 }  // namespace wear

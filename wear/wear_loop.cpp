@@ -93,7 +93,7 @@ Eigen::ArrayXd node_depth_per_cycle(const WearModel& m, int body, const WearLaw&
   duty.stretches = d.stretches;
   const Eigen::ArrayXd strips = depth_per_duty_cycle(law, duty);
   const contact::Profile& p = profile_of(m, body);
-  return smooth_conserving(strips_to_nodes(strips, strip_y0_m, dy_m, p.y_m), p.y_m, m.smoothing_wavelength_m);
+  return smooth_conserving(strips_to_nodes(strips, strip_y0_m, dy_m, p.y_m), body == 1 ? m.smoothing1 : m.smoothing2);
 }
 
 bool needs_fields(const std::optional<WearLaw>& law) {
@@ -142,7 +142,14 @@ WearModel make_wear_model(const WearCase& c) {
   // e = the depth the energy would wear spread evenly over the reference body's width
   m.energy_scale = (k_E > 0 ? k_E : kNominalEnergyCoefficient_m3_per_J) / (2 * kPi * m.reference_radius_m * width);
   m.smoothing_wavelength_m = c.wear.smoothing_wavelength_m;
+  if (m.law1) m.smoothing1 = smoothing_kernel(m.profiles.body1.y_m, m.smoothing_wavelength_m);
+  if (m.law2) m.smoothing2 = smoothing_kernel(m.profiles.body2.y_m, m.smoothing_wavelength_m);
   m.limits = c.wear.limits;
+  // the pressure fields on the grid: read by the transient duty cycle (Satran), the per-cell laws and the
+  // consistent march; not by the steady pure-xi closed form (solve_steady's skip) with the strip laws
+  const bool closed_form = !m.transient && m.scheme == contact::TangentialScheme::Consistent &&
+                           m.creepages.eta == 0 && m.creepages.phi_per_m == 0;
+  m.normal_options.pressure_fields = !closed_form || needs_fields(m.law1) || needs_fields(m.law2);
   return m;
 }
 
@@ -158,9 +165,11 @@ contact::Profiles worn_profiles(const WearModel& m, const Eigen::VectorXd& state
   return p;
 }
 
-NormalState normal_state(const WearModel& m, const Eigen::VectorXd& state, WearCache& cache) {
-  const contact::Profiles profiles = worn_profiles(m, state);
-  const std::uint64_t key = contact::profile_hash(profiles);
+namespace {
+
+// normal_state on the state's worn profiles and their hash, when the caller has them already
+NormalState normal_state_on(const WearModel& m, const contact::Profiles& profiles, std::uint64_t key,
+                            const Eigen::VectorXd& state, WearCache& cache) {
   if (cache.reuse && cache.normal_valid && cache.normal_key == key) return cache.normal;
   // a body worn deeper than it is wide (a cached profile passed): no profile can be (contact::check_profile),
   // the life ends
@@ -226,23 +235,45 @@ NormalState normal_state(const WearModel& m, const Eigen::VectorXd& state, WearC
   return n;
 }
 
+}  // namespace
+
 double edge_limit_value_m(const contact::Profiles& worn, const contact::SemiHertzResult& normal) {
   const contact::Profile &p1 = worn.body1, &p2 = worn.body2;
   const double lo = std::max(p1.y_m(0), p2.y_m(0));
   const double hi = std::min(p1.y_m(p1.y_m.size() - 1), p2.y_m(p2.y_m.size() - 1));
   const auto gap = [&](double y) { return contact::profile_z(p1, y) + contact::profile_z(p2, y); };
-  // the gap is linear between the nodes of either profile: its minimum over the overlap is at one of them
+  // the gap is linear between the nodes of either profile: its minimum over the overlap is at one of them.
+  // The nodes come in increasing y, so each profile is interpolated with a cursor instead of a search:
+  // the same interval and arithmetic as contact::profile_z, so the same numbers
+  struct Cursor {
+    const contact::Profile& p;
+    Eigen::Index hi = 1;
+    double z(double y) {  // y increasing from call to call, within the profile's extent
+      const Eigen::Index n = p.y_m.size();
+      while (hi < n - 1 && p.y_m(hi) <= y) ++hi;
+      const Eigen::Index lo = hi - 1;
+      const double t = (y - p.y_m(lo)) / (p.y_m(hi) - p.y_m(lo));
+      return (1 - t) * p.z_m(lo) + t * p.z_m(hi);
+    }
+  };
   double gap_min = std::min(gap(lo), gap(hi));
-  for (const contact::Profile* p : {&p1, &p2})
-    for (Eigen::Index i = 0; i < p->y_m.size(); ++i)
-      if (p->y_m(i) > lo && p->y_m(i) < hi) gap_min = std::min(gap_min, gap(p->y_m(i)));
+  for (const contact::Profile* p : {&p1, &p2}) {
+    Cursor c1{p1}, c2{p2};
+    for (Eigen::Index i = 0; i < p->y_m.size(); ++i) {
+      const double y = p->y_m(i);
+      if (y > lo && y < hi) gap_min = std::min(gap_min, c1.z(y) + c2.z(y));
+    }
+  }
   const double bound_m = normal.epsilon * normal.approach_m;  // contact where gap - gap_min < eps delta
   return bound_m - (std::min(gap(lo), gap(hi)) - gap_min);
 }
 
-NormalState solved_normal_state(const WearModel& m, const Eigen::VectorXd& state, WearCache& cache) {
+namespace {
+
+NormalState solved_normal_state_on(const WearModel& m, const contact::Profiles& worn, std::uint64_t key,
+                                   const Eigen::VectorXd& state, WearCache& cache) {
   const long solves = cache.counters.normal_solves;
-  const NormalState n = normal_state(m, state, cache);
+  const NormalState n = normal_state_on(m, worn, key, state, cache);
   if (cache.counters.normal_solves == solves) return n;  // from the cache: reported when it was solved
   if (n.normal.reaches_edge && !m.limits.edge && !cache.edge_reported) {
     cache.edge_reported = true;
@@ -250,6 +281,18 @@ NormalState solved_normal_state(const WearModel& m, const Eigen::VectorXd& state
                  "and wear.limits.edge is off: the contact is cut there from now on");
   }
   return n;
+}
+
+}  // namespace
+
+NormalState normal_state(const WearModel& m, const Eigen::VectorXd& state, WearCache& cache) {
+  const contact::Profiles profiles = worn_profiles(m, state);
+  return normal_state_on(m, profiles, contact::profile_hash(profiles), state, cache);
+}
+
+NormalState solved_normal_state(const WearModel& m, const Eigen::VectorXd& state, WearCache& cache) {
+  const contact::Profiles profiles = worn_profiles(m, state);
+  return solved_normal_state_on(m, profiles, contact::profile_hash(profiles), state, cache);
 }
 
 WearRate wear_rate(const WearModel& m, const Eigen::VectorXd& state, WearCache& cache) {
@@ -260,8 +303,8 @@ WearRate wear_rate(const WearModel& m, const Eigen::VectorXd& state, WearCache& 
     for (const auto& [k, rate] : cache.rates)
       if (k == key) return rate;
 
-  // normal problem on the current worn geometry
-  const NormalState n = solved_normal_state(m, state, cache);
+  // normal problem on the current worn geometry (the profiles and their hash from above)
+  const NormalState n = solved_normal_state_on(m, worn, key, state, cache);
   const contact::ContactPatch& patch = n.normal.patch;
 
   // tangential problem over the duty cycle: dissipated energy per unit width

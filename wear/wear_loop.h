@@ -31,6 +31,7 @@
 #include "lib/normal/semi_hertz.h"
 #include "lib/tangential/tangential.h"
 #include "wear/integrator.h"
+#include "wear/profile_update.h"
 #include "wear/wear_case.h"
 #include "wear/wear_law.h"
 
@@ -57,6 +58,8 @@ struct WearModel {
   double reference_radius_m = 0;   // Rx of the first body that wears: life counted in its revolutions
   double energy_scale = 0;         // e = E energy_scale (m/J)
   double smoothing_wavelength_m = 0;
+  // the smoothing filter's kernel on each wearing body's nodes (which never move): built once for the run
+  SmoothingKernel smoothing1, smoothing2;
   WearLimits limits;
   int n1 = 0, n2 = 0;              // nodes of each body in the state (0: the body does not wear)
 

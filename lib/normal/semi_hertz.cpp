@@ -797,7 +797,7 @@ SemiHertzResult solve_semi_hertz(const Profiles& profiles, double Rx1_m, double 
   row_load_N *= scale;
   for (int j = 0; j < g.ny; ++j)
     if (patch.half_length_m(j) > 0) patch.strip_peak_Pa(j) = row_load_N(j) / (kPi / 2 * patch.half_length_m(j) * g.dy_m);
-  fill_strip_pressures(patch);
+  if (options.pressure_fields) fill_strip_pressures(patch);
   fill_equivalent_ellipse(gap, ev, patch);
   patch.p0_Pa = ev.p0 * scale;  // the peak of the field the strips carry (F, not F(delta))
   patch.normal_load_N = F;

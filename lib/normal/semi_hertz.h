@@ -60,6 +60,8 @@ struct NoStripCentreError : std::invalid_argument {
 
 struct SemiHertzOptions {
   bool heathcote_slip = true;     // fill patch.strip_xi_offset; false leaves it empty (no offset)
+  bool pressure_fields = true;    // fill the patch's pressure fields on the grid (fill_strip_pressures);
+                                  // false leaves them empty, for a caller that reads only the strips
   int quadrature_cells = 64;      // lateral cells of the Boussinesq integral (docs/semi-hertz.md)
   double load_rtol = 1e-6;        // the root find stops at |F(delta)/F - 1| <= load_rtol
   int max_iterations = 60;        // evaluations of F(delta)

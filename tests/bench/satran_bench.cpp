@@ -1,12 +1,20 @@
 // Satran on the paper's start-up run: 80 x 80 grid, 200 steps (docs/physics.md §3; the paper reports
-// 42 s for it), beside a plain loop of the classic upwind update at CFL = 1 kept here as the
-// baseline the product is compared against (docs/benchmarks.md):
+// 42 s for it), beside three loops of the classic upwind update at CFL = 1 as baselines
+// (docs/benchmarks.md):
 //   tau*_i = tau_{i+1} - (xi/L1 - phi y/L3, eta/L2 + phi x_i/L3) dx,  clipped to mu p(x_i),
 //   s_i = V L (tau_i - tau*_i) / dx,  P = -sum tau . s dx dy,  F = sum tau dx dy,
 // on the cell edges of each strip, from rest, with the forces and the power summed every step.
+//   BM_BareXiLoop: the practical limit for the pure-xi run: contiguous strips, the bound g = mu p
+//     precomputed, every node of every strip updated and clamped (no test for the contact), then the
+//     arrays swapped;
+//   BM_BareXiEtaPhiLoop: the same with two traction components, the spin term and the two-component clamp;
+//   BM_BaselineClassicUpwindLoop: the older baseline (Eigen arrays, per-node pressure lookups, a test
+//     for the contact at every node), about 5x the bare loop: not a limit anyone would aim at.
+// Ratios are reported against the bare loops (docs/benchmarks.md).
 #include <benchmark/benchmark.h>
 
 #include <Eigen/Core>
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -61,7 +69,26 @@ BENCHMARK(BM_SatranShift)
     ->Args({20, 1, 3})
     ->Unit(benchmark::kMillisecond);
 
-// the baseline: plain classic upwind at CFL 1, node by node
+// xi, eta, phi with the speed varying: a ramp from kSpeed/2 to kSpeed over the run, which rolls the
+// same 200 dx (docs/physics.md §3), every skip as shipped
+void BM_SatranShiftVaryingSpeed(benchmark::State& st) {
+  TransientCase c = paper_startup(80, true);
+  const double T = c.settings.t_end_s * kSpeed / (0.75 * kSpeed);  // mean speed 0.75 kSpeed
+  c.inputs.speed_m_per_s = ramp_history(0.0, 0.5 * kSpeed, T, kSpeed);
+  c.settings.t_end_s = T;
+  double sink = 0;
+  int steps = 0;
+  for (auto _ : st) {
+    const TransientResult r = run_transient(c);
+    sink += r.dissipated_J;
+    steps = r.steps;
+  }
+  benchmark::DoNotOptimize(sink);
+  st.counters["steps"] = steps;
+}
+BENCHMARK(BM_SatranShiftVaryingSpeed)->Unit(benchmark::kMillisecond);
+
+// the older baseline: plain classic upwind at CFL 1, node by node
 void BM_BaselineClassicUpwindLoop(benchmark::State& st) {
   const int n = static_cast<int>(st.range(0));
   const bool all = st.range(1) != 0;
@@ -103,6 +130,117 @@ void BM_BaselineClassicUpwindLoop(benchmark::State& st) {
   }
   benchmark::DoNotOptimize(sink);
 }
+// the bare loops: tau_new[i] = clamp(tau[i] + (tau[i-1] - tau[i]) - V dt xi/L1, -g[i], g[i]) at CFL 1
+// (V dt = dx), node 0 of each strip the leading edge (tau = 0 entering); per strip the force sum tau dx
+// and the dissipated power -sum tau V L (tau - tau*) are summed every step, then the arrays swapped
+struct BareSetup {
+  int nx = 0, ny = 0;
+  double dx = 0, dy = 0, VL = 0;
+  double ax0 = 0, by = 0, cy = 0, phi_L3 = 0;  // xi/L1, eta/L2, phi/L3 (per m of rolling)
+  std::vector<double> g, x, y;                 // g: (nx+1) x ny bound mu p, node k of strip j at k + j (nx+1)
+};
+
+BareSetup bare_setup(bool all) {
+  const TransientCase c = paper_startup(80, all);
+  const ContactPatch p = solve_normal_hertz(c.bodies, c.materials, 1500, c.settings.grid);
+  const Creepages cr{1e-3, all ? 5e-4 : 0.0, all ? 0.5 : 0.0};
+  const TangentialProblem pb = make_tangential_problem(p, c.materials, cr, c.mu, kSpeed);
+  const Grid& gr = p.grid;
+  BareSetup b;
+  b.nx = gr.nx;
+  b.ny = gr.ny;
+  b.dx = gr.dx_m;
+  b.dy = gr.dy_m;
+  b.VL = kSpeed * pb.L_m_per_Pa;
+  b.ax0 = cr.xi / pb.flex.L1_m_per_Pa;
+  b.by = cr.eta / pb.flex.L2_m_per_Pa;
+  b.phi_L3 = cr.phi_per_m / pb.flex.L3_m_per_Pa;
+  b.g.assign(static_cast<size_t>(b.nx + 1) * b.ny, 0.0);
+  b.x.resize(b.nx + 1);
+  b.y.resize(b.ny);
+  for (int k = 0; k <= b.nx; ++k) b.x[k] = gr.x_edge(b.nx - k);  // node k = edge nx - k: leading first
+  for (int j = 0; j < b.ny; ++j) {
+    b.y[j] = gr.y_m(j);
+    for (int k = 1; k <= b.nx; ++k) b.g[k + j * (b.nx + 1)] = c.mu * p.edge_pressure_Pa(b.nx - k, j);
+  }
+  return b;
+}
+
+void BM_BareXiLoop(benchmark::State& st) {
+  const BareSetup b = bare_setup(false);
+  const int n1 = b.nx + 1;
+  std::vector<double> tau(b.g.size()), tau_new(b.g.size()), F(b.ny), P(b.ny);
+  const double shift = b.dx * b.ax0;  // V dt xi/L1 with V dt = dx
+  double sink = 0;
+  for (auto _ : st) {
+    std::fill(tau.begin(), tau.end(), 0.0);
+    std::fill(tau_new.begin(), tau_new.end(), 0.0);
+    for (int step = 0; step < kSteps; ++step) {
+      for (int j = 0; j < b.ny; ++j) {
+        const double* t = tau.data() + j * n1;
+        const double* g = b.g.data() + j * n1;
+        double* tn = tau_new.data() + j * n1;
+        double f = 0, pw = 0;
+        for (int i = 1; i < n1; ++i) {
+          const double pred = t[i] + (t[i - 1] - t[i]) - shift;
+          const double v = std::min(std::max(pred, -g[i]), g[i]);
+          tn[i] = v;
+          f += v;
+          pw -= v * (v - pred);
+        }
+        F[j] = f * b.dx * b.dy;
+        P[j] = pw * b.VL * b.dy;
+      }
+      std::swap(tau, tau_new);
+      sink += F[b.ny / 2] + P[b.ny / 2];
+    }
+  }
+  benchmark::DoNotOptimize(sink);
+}
+BENCHMARK(BM_BareXiLoop)->Unit(benchmark::kMillisecond);
+
+void BM_BareXiEtaPhiLoop(benchmark::State& st) {
+  const BareSetup b = bare_setup(true);
+  const int n1 = b.nx + 1;
+  std::vector<double> tx(b.g.size()), ty(b.g.size()), txn(b.g.size()), tyn(b.g.size()), Fx(b.ny), Fy(b.ny),
+      P(b.ny);
+  double sink = 0;
+  for (auto _ : st) {
+    for (auto* v : {&tx, &ty, &txn, &tyn}) std::fill(v->begin(), v->end(), 0.0);
+    for (int step = 0; step < kSteps; ++step) {
+      for (int j = 0; j < b.ny; ++j) {
+        const double* ox = tx.data() + j * n1;
+        const double* oy = ty.data() + j * n1;
+        const double* g = b.g.data() + j * n1;
+        double* nxp = txn.data() + j * n1;
+        double* nyp = tyn.data() + j * n1;
+        const double sx = b.dx * (b.ax0 - b.phi_L3 * b.y[j]);  // V dt (xi/L1 - phi y/L3)
+        double fx = 0, fy = 0, pw = 0;
+        for (int i = 1; i < n1; ++i) {
+          const double px = ox[i] + (ox[i - 1] - ox[i]) - sx;
+          const double py = oy[i] + (oy[i - 1] - oy[i]) - b.dx * (b.by + b.phi_L3 * b.x[i]);
+          const double nrm = std::sqrt(px * px + py * py);
+          const double scale = nrm > g[i] ? g[i] / nrm : 1.0;
+          const double vx = px * scale, vy = py * scale;
+          nxp[i] = vx;
+          nyp[i] = vy;
+          fx += vx;
+          fy += vy;
+          pw -= vx * (vx - px) + vy * (vy - py);
+        }
+        Fx[j] = fx * b.dx * b.dy;
+        Fy[j] = fy * b.dx * b.dy;
+        P[j] = pw * b.VL * b.dy;
+      }
+      std::swap(tx, txn);
+      std::swap(ty, tyn);
+      sink += Fx[b.ny / 2] + Fy[b.ny / 2] + P[b.ny / 2];
+    }
+  }
+  benchmark::DoNotOptimize(sink);
+}
+BENCHMARK(BM_BareXiEtaPhiLoop)->Unit(benchmark::kMillisecond);
+
 BENCHMARK(BM_BaselineClassicUpwindLoop)->Args({80, 0})->Args({80, 1})->Args({20, 1})->Unit(benchmark::kMillisecond);
 
 }  // namespace
