@@ -835,16 +835,7 @@ ExactOptions exact_run_options() {
 
 TransientResult run_exact_transient(const TransientCase& c, const StepObserver& observe, const ExactOptions& opt) {
   const TransientSettings& set = c.settings;
-  check_history(c.inputs.speed_m_per_s, "speed_m_per_s");
-  check_history(c.inputs.xi, "xi");
-  check_history(c.inputs.eta, "eta");
-  check_history(c.inputs.phi_per_m, "phi_per_m");
-  check_history(c.inputs.normal_load_N, "normal_load_N");
-  if (min_value(c.inputs.speed_m_per_s) < 0) throw SettingError("", "speed_m_per_s", "must be >= 0");
-  if (min_value(c.inputs.normal_load_N) < 0) throw SettingError("", "normal_load_N", "must be >= 0");
-  if (!(max_value(c.inputs.normal_load_N) > 0)) throw SettingError("", "normal_load_N", "never positive");
-  if (!(set.t_end_s > 0) || !std::isfinite(set.t_end_s)) throw SettingError("", "t_end_s", "must be positive");
-  if (!(set.dt_s >= 0) || !std::isfinite(set.dt_s)) throw SettingError("", "dt_s", "must be >= 0");
+  check_transient_inputs(c);
   if (c.inertia) throw SettingError("", "inertia", "the exact solver's run has no roller inertia (Satran's has)");
   if (set.scheme != TransientScheme::Shift)
     throw SettingError("", "scheme", "the exact solver rolls by steps of dq <= dx (the shift scheme's steps); "

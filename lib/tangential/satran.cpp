@@ -660,9 +660,7 @@ StepResult satran_step(const ContactPatch& patch, const TangentialProblem& probl
 
 namespace contact {
 
-namespace {
-
-void check_run(const TransientCase& c) {
+void check_transient_inputs(const TransientCase& c) {
   const TransientSettings& s = c.settings;
   check_history(c.inputs.speed_m_per_s, "speed_m_per_s");
   check_history(c.inputs.xi, "xi");
@@ -674,6 +672,13 @@ void check_run(const TransientCase& c) {
   if (!(max_value(c.inputs.normal_load_N) > 0)) throw SettingError("", "normal_load_N", "never positive");
   if (!(s.t_end_s > 0) || !std::isfinite(s.t_end_s)) throw SettingError("", "t_end_s", "must be positive");
   if (!(s.dt_s >= 0) || !std::isfinite(s.dt_s)) throw SettingError("", "dt_s", "must be >= 0");
+}
+
+namespace {
+
+void check_run(const TransientCase& c) {
+  const TransientSettings& s = c.settings;
+  check_transient_inputs(c);
   if (s.scheme != TransientScheme::Shift && !(s.dt_s > 0))
     throw SettingError("", "dt_s", "the " + to_string(s.scheme) + " scheme needs a time step");
   if (c.patch && !(is_constant(c.inputs.normal_load_N) && c.inputs.normal_load_N.value[0] == c.patch->normal_load_N))

@@ -224,6 +224,10 @@ struct TransientResult {
 using StepObserver = std::function<void(const TransientRecord&, const Eigen::ArrayXd& strip_power_W_per_m)>;
 
 // throws std::invalid_argument for bad settings (naming the largest allowed dt for a CFL breach)
+// the inputs every transient run needs, whatever solver steps it: finite histories, speed and load >= 0,
+// a load that is positive somewhere, t_end_s > 0, dt_s >= 0 (throws SettingError naming the key)
+void check_transient_inputs(const TransientCase& c);
+
 TransientResult run_transient(const TransientCase& c, const StepObserver& observe = {});
 
 }  // namespace contact
