@@ -635,15 +635,8 @@ StepResult satran_step(const ContactPatch& patch, const TangentialProblem& probl
     E_start += e.E_start;
     E_end += e.E_end;
   }
-  ROLLWEAR_ASSERT(hold, [&] {
-    for (int j = 0; j < g.ny; ++j)
-      if (patch.half_length_m(j) > 0 && !strip_totals_hold(patch, problem.mu, j, energies[j], load_held, 0))
-        return strip_invariant_text(patch, problem.mu, j, energies[j], load_held, 0);
-    return std::string();
-  }());
-  const PatchTotals totals = patch_totals(patch, energies);
-  ROLLWEAR_ASSERT(patch_totals_finite(totals), fmt::format("totals not finite: Fx {} Fy {} Mz {} dissipated {}",
-                                                          totals.Fx_N, totals.Fy_N, totals.Mz_N_m, totals.dissipated));
+  const PatchTotals totals =
+      checked_patch_totals(patch, problem.mu, energies, hold, load_held, [](int) { return 0.0; });
   r.Fx_N = totals.Fx_N;
   r.Fy_N = totals.Fy_N;
   r.Mz_N_m = totals.Mz_N_m;

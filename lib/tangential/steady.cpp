@@ -604,16 +604,8 @@ TangentialSolution solve_steady(const ContactPatch& patch, const TangentialProbl
     s.strip_force_x_N_per_m(j) = st.Fx;
     s.strip_force_y_N_per_m(j) = st.Fy;
   }
-  ROLLWEAR_ASSERT(hold, [&] {
-    for (int j = 0; j < g.ny; ++j)
-      if (patch.half_length_m(j) > 0 && !strip_totals_hold(patch, problem.mu, j, totals[j], true, energy_scale(j)))
-        return strip_invariant_text(patch, problem.mu, j, totals[j], true, energy_scale(j));
-    return std::string();
-  }());
   // classic counts dx per cell centre in contact
-  const PatchTotals t = patch_totals(patch, totals);
-  ROLLWEAR_ASSERT(patch_totals_finite(t), fmt::format("totals not finite: Fx {} Fy {} Mz {} dissipated {}",
-                                                          t.Fx_N, t.Fy_N, t.Mz_N_m, t.dissipated));
+  const PatchTotals t = checked_patch_totals(patch, problem.mu, totals, hold, true, energy_scale);
   s.Fx_N = t.Fx_N;
   s.Fy_N = t.Fy_N;
   s.Mz_N_m = t.Mz_N_m;

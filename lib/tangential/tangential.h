@@ -152,4 +152,22 @@ inline bool patch_totals_finite(const PatchTotals& t) {
   return std::isfinite(t.Fx_N + t.Fy_N + t.Mz_N_m + t.dissipated + t.stick_fraction);
 }
 
+// The patch's totals once the solver has tested its strips as it went (hold: strip_totals_hold was true for
+// every strip in contact): asserts that, naming the first broken strip, and the totals finite, once per
+// solve or step. energy_scale(j) is the strip's dissipation scale (0: not checked).
+template <class Strip, class EnergyScale>
+PatchTotals checked_patch_totals(const ContactPatch& patch, double mu, const std::vector<Strip>& strips, bool hold,
+                                 bool bounded, EnergyScale energy_scale) {
+  ROLLWEAR_ASSERT(hold, [&] {
+    for (int j = 0; j < patch.grid.ny; ++j)
+      if (patch.half_length_m(j) > 0 && !strip_totals_hold(patch, mu, j, strips[j], bounded, energy_scale(j)))
+        return strip_invariant_text(patch, mu, j, strips[j], bounded, energy_scale(j));
+    return std::string();
+  }());
+  const PatchTotals t = patch_totals(patch, strips);
+  ROLLWEAR_ASSERT(patch_totals_finite(t), fmt::format("totals not finite: Fx {} Fy {} Mz {} dissipated {}", t.Fx_N,
+                                                      t.Fy_N, t.Mz_N_m, t.dissipated));
+  return t;
+}
+
 }  // namespace contact
