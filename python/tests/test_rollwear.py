@@ -191,3 +191,20 @@ def test_messages_go_to_python_logging(source, caplog):
     with caplog.at_level(logging.DEBUG, logger="rollwear"):
         rollwear.contact(str(source / "cases" / "paper.yaml"), fields=False)
     assert any(r.name == "rollwear" and "read from" in r.getMessage() for r in caplog.records)
+
+
+def test_ctrl_c_stops_a_wear_life(source, tmp_path):
+    # paper-wear in fixed steps of 1e4 revolutions: 1e6 steps to its budget, minutes if not interrupted
+    text = (source / "cases" / "paper-wear.yaml").read_text().replace(
+        "stepping: { method: adaptive, rtol: 1.0e-3, atol_m: 1.0e-9 }",
+        "stepping: { method: fixed-revolutions, step_revolutions: 1.0e4, max_steps: 10000000 }")
+    assert "fixed-revolutions" in text
+    case = tmp_path / "long-wear.yaml"
+    case.write_text(text)
+    timer = threading.Timer(0.3, lambda: os.kill(os.getpid(), signal.SIGINT))
+    start = time.monotonic()
+    timer.start()
+    with pytest.raises(KeyboardInterrupt):
+        rollwear.run(case)
+    assert time.monotonic() - start < 3
+    timer.join()
