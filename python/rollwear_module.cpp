@@ -560,6 +560,14 @@ PYBIND11_MODULE(_rollwear, m) {
           return run_result({c, is_text, base_dir});
         },
         py::arg("case"), py::arg("is_text"), py::arg("base_dir"));
+  // the translator's test (python/tests): throws the C++ error named, as the engine would
+  m.def("_throw_for_test", [](const std::string& kind) {
+    if (kind == "case") throw contact::CaseError("f.yaml:3:5: friction.mu: bad", contact::InputLocation{"f.yaml", 3, 5, "friction.mu"});
+    if (kind == "solver") throw contact::SolverError("exact steady solve: not converged");
+    if (kind == "normal") throw contact::NormalSolveError("semi-hertz: no approach carries the load");
+    if (kind == "invalid_argument") throw std::invalid_argument("inside a solver");
+    if (kind == "runtime_error") throw std::runtime_error("out/x is in use by another rollwear run");
+  });
   m.def("sweep", &sweep_run, py::arg("path"), py::arg("output_directory"), py::arg("threads"), py::arg("shard_k"),
         py::arg("shard_n"));
 }

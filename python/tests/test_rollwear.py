@@ -172,6 +172,19 @@ def test_a_bad_value_in_a_dict_names_its_key():
     assert e.value.key == "wear"
 
 
+@pytest.mark.parametrize("kind, exception", [("case", rollwear.InputError), ("solver", rollwear.SolverError),
+                                             ("normal", rollwear.SolverError),
+                                             ("invalid_argument", rollwear.SolverError),
+                                             ("runtime_error", rollwear.Error)])
+def test_each_cpp_error_type_is_its_exception(kind, exception):
+    # by the C++ type (lib/io/errors.h), as the program's exit status: 2 for CaseError, 1 for the others
+    with pytest.raises(exception) as e:
+        rollwear._rollwear._throw_for_test(kind)
+    assert type(e.value) is exception
+    if kind == "case":
+        assert (e.value.file, e.value.line, e.value.column, e.value.key) == ("f.yaml", 3, 5, "friction.mu")
+
+
 def test_ctrl_c_interrupts_a_long_call_with_the_gil_released():
     # 5 m rolled in shift steps of 5.6 um on 80 x 80 cells, a creepage ramp all along (no steady stretch to
     # skip): about 12 s if not interrupted (idle machine). The timer thread sending SIGINT runs only if the
