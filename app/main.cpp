@@ -36,6 +36,7 @@
 #include "lib/tangential/satran.h"
 #include "lib/tangential/steady.h"
 #include "lib/tangential/tangential.h"
+#include "app/commands.h"
 #include "app/plot.h"
 #include "app/sweep_command.h"
 #include "cam/cam_case.h"
@@ -287,28 +288,13 @@ ContactPatch in_profile_coordinates(const NormalSolution& normal) {
 
 int run_contact(const ContactOptions& opt) {
   const ContactCase c = read_contact_case(opt.case_path);
-  validate_steady(c);  // constants only, no inertia
-  const TangentialScheme scheme = parse_tangential_scheme(c.solver.tangential);
-
-  // normal problem, then the steady tangential problem on its patch
-  const NormalSolution normal = solve_normal_of(c);
-  const ContactPatch& patch = normal.patch;
-  const TangentialProblem problem =
-      make_tangential_problem(patch, materials_of(c), creepages_of(c), c.friction.mu, speed_of(c));
   const bool fields = c.output.fields && !opt.no_fields;
-  SteadyOptions steady_options;
-  steady_options.fields = fields;  // not asked for: not computed either
-  TangentialSolution solution;
-  if (scheme == TangentialScheme::Exact) {  // Kalker's exact theory on the half-space (lib/tangential/exact.h)
-    const ElasticPair pair = materials_of(c);
-    const ExactSolution e = solve_exact_steady(patch, combined_shear_modulus_Pa(pair), combined_poisson(pair),
-                                               creepages_of(c), c.friction.mu, speed_of(c));
-    if (!e.status.converged()) throw SolverError("exact steady solve: " + e.status.message);
-    spdlog::info("exact steady solve: {}", e.status.message);
-    solution = e.fields;
-  } else {
-    solution = solve_steady(patch, problem, scheme, steady_options);
-  }
+  const ContactRun run = solve_contact_case(c, fields);  // app/commands.h
+  const NormalSolution& normal = run.normal;
+  const ContactPatch& patch = normal.patch;
+  const TangentialProblem& problem = run.problem;
+  const TangentialSolution& solution = run.solution;
+  const TangentialScheme scheme = run.scheme;
 
   // every output computed before anything is written
   const std::filesystem::path dir = output_directory(opt.output_directory, c);
@@ -536,15 +522,7 @@ int run_transient_command(const TransientOptions& opt) {
                     fmt::format("step {}, t {:.4e} / {:.4e} s", r.step, log.t_s, t.settings.t_end_s));
   };
 
-  TransientResult res;
-  try {
-    res = parse_tangential_scheme(c.solver.tangential) == TangentialScheme::Exact ? run_exact_transient(t, observe)
-                                                                                  : run_transient(t, observe);
-  } catch (const SettingError& e) {  // the settings refused: the key (data) and its line
-    throw transient_error(c, e);
-  } catch (const std::invalid_argument& e) {  // inside the solver, on settings that passed: its failure
-    throw SolverError(std::string("transient: ") + e.what());
-  }
+  const TransientResult res = run_transient_case(c, t, observe);  // app/commands.h
   progress.clear();
   if (!timeseries) throw std::logic_error("transient: the run took no step");
   if (res.grid.ny != y_m.size() || (res.grid.y_m != y_m).any())

@@ -12,6 +12,7 @@ ROLLWEAR_DEB_PACKAGES=(
   gnuplot-nox                    # rollwear plot
   libgtest-dev libbenchmark-dev  # tests; benchmarks (tests/bench)
   clang libclang-rt-14-dev       # the YAML fuzzer (scripts/fuzz: clang's libFuzzer)
+  pybind11-dev python3-dev python3-numpy python3-pytest python3-matplotlib  # the Python bindings (python/)
 )
 
 rollwear_deps() {

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <regex>
+
 #include "lib/numeric.h"
 #include "tests/temp_dir.h"
 #include <spdlog/fmt/fmt.h>
@@ -148,6 +150,54 @@ TEST_F(CaseReader, UnknownKeyReportsKeyAndLine) {
   EXPECT_EQ(error_of(kMinimalCase + "wear: { law: archard }\n"),  // 6
             path() + ":6:1: wear: unknown key (valid: bodies, friction, inertia, kinematics, load, name, output, "
                       "profiles, solver, transient)");
+}
+
+// The place of an error is data too (CaseError::location), for callers that must not read the message (the
+// Python bindings' InputError): the same file, line, column and key path the message names.
+TEST_F(CaseReader, ErrorCarriesItsPlaceAsData) {
+  const auto expect = [&](const std::string& text, int line, int column, const std::string& key) {
+    try {
+      read_contact_case(write(text));
+      ADD_FAILURE() << "no error for " << text;
+    } catch (const CaseError& e) {
+      const InputLocation& l = e.location;
+      EXPECT_EQ(l.file, path());
+      EXPECT_EQ(l.line, line) << e.what();
+      EXPECT_EQ(l.column, column) << e.what();
+      EXPECT_EQ(l.key, key) << e.what();
+      EXPECT_EQ(std::string(e.what()).rfind(fmt::format("{}:{}:{}: ", l.file, l.line, l.column), 0), 0u) << e.what();
+    }
+  };
+  expect(kMinimalCase + "frction: { mu: 0.3 }\n", 6, 1, "frction");  // an unknown key, at the key
+  std::string bad_value = kMinimalCase;
+  bad_value.replace(bad_value.find("mu: 0.3"), 7, "mu: -1");
+  expect(bad_value, 5, 17, "friction.mu");  // a value refused, at the value
+  std::string missing = kMinimalCase;
+  missing.erase(missing.rfind(", nu: 0.28"), 10);
+  expect(missing, 3, 10, "bodies.body2.nu");  // a key missing, at its mapping
+  expect(kMinimalCase.substr(0, kMinimalCase.find("load:")) + "friction: { mu: 0.3 }\n", 1, 1, "load");  // a section
+}
+
+// A document's text reads as the file with that text does; profile files are relative to the folder given
+TEST_F(CaseReader, TextReadsAsTheFile) {
+  const std::string text = std::regex_replace(kMinimalCase, std::regex("  body1: .*\n  body2: .*\n"),
+                                              "  body1: { Rx_m: 0.020, E_Pa: 210.0e9, nu: 0.28 }\n"
+                                              "  body2: { Rx_m: 0.025, E_Pa: 210.0e9, nu: 0.28 }\n") +
+                           "profiles: { body1: { file: flat_worn_R500_w20_band1p5.csv }, body2: { flat: { width_m: 0.03 } } }\n";
+  const fs::path profiles = fs::path(ROLLWEAR_SOURCE_DIR) / "profiles";
+  const ContactCase t = read_contact_case_text(text, "<text>", profiles);
+  EXPECT_EQ(t.path, "<text>");
+  const ContactCase f = read_contact_case(write(std::regex_replace(text, std::regex("file: "), "file: " + profiles.string() + "/")));
+  EXPECT_TRUE((t.profiles->profiles.body1.z_m == f.profiles->profiles.body1.z_m).all());
+  EXPECT_EQ(t.friction.mu, f.friction.mu);
+  try {
+    read_contact_case_text(text + "frction: 1\n", "<text>", profiles);
+    ADD_FAILURE() << "no error";
+  } catch (const CaseError& e) {
+    EXPECT_EQ(e.location.file, "<text>");
+    EXPECT_EQ(e.location.line, 7);
+    EXPECT_EQ(e.location.key, "frction");
+  }
 }
 
 TEST_F(CaseReader, MissingKeyReportsKey) {

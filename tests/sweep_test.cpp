@@ -354,6 +354,29 @@ TEST_F(SweepFile, ThreadsShardsAndResumeGiveTheWholeSweepsTable) {
   EXPECT_EQ(read_text(dir_ / "whole" / "results.csv"), table);
 }
 
+// SweepRunOptions::cancelled (the Python bindings' Ctrl-C): asked true, no new case starts, the running one
+// finishes and is kept, no table is written, and the sweep resumes from there.
+TEST_F(SweepFile, CancelledSweepStopsAfterTheRunningCaseAndResumes) {
+  const Sweep s = read_sweep(sweep_file("axes:\n  - { key: load.normal_load_N, linear: { from: 1000, to: 2400, count: 8 } }\n").string());
+  SweepRunOptions o;
+  o.output_directory = dir_ / "out";
+  o.threads = 1;
+  int asked = 0;
+  o.cancelled = [&] { return ++asked > 0; };
+  EXPECT_THROW(run_sweep(s, o), SweepCancelled);
+  EXPECT_GE(asked, 1);
+  EXPECT_FALSE(fs::exists(o.output_directory / "results.csv"));
+  long finished = 0;
+  for (long i = 0; i < 8; ++i) finished += fs::exists(o.output_directory / case_folder_name(i) / "row.csv") ? 1 : 0;
+  EXPECT_GE(finished, 1);
+  EXPECT_LT(finished, 8);  // asked when the first case ends: the thread has started the second at most
+  o.cancelled = {};
+  const SweepRunSummary r = run_sweep(s, o);
+  EXPECT_EQ(r.resumed, finished);
+  EXPECT_EQ(r.failed, 0);
+  EXPECT_TRUE(fs::exists(o.output_directory / "results.csv"));
+}
+
 TEST_F(SweepFile, BadAxisIsExitTwoBeforeAnyCaseRuns) {
   const fs::path sweep = sweep_file("axes:\n  - { key: friction.mu, values: [0.3, 20] }\n");
   const Process p = rollwear("sweep " + q(sweep) + " -o " + q(dir_ / "out") + " -q", dir_);
@@ -365,7 +388,7 @@ TEST_F(SweepFile, BadAxisIsExitTwoBeforeAnyCaseRuns) {
 TEST_F(SweepFile, SlurmArrayScriptShardsMergeToTheWholeTable) {
   // scripts/sweep-slurm.sh as Slurm runs it: each task with its array variables (an array 0-2, so the
   // script's K counts from SLURM_ARRAY_TASK_MIN), then --merge of the shard folders
-  const fs::path sweep = sweep_file("axes:\n  - { key: load.normal_load_N, values: [1000, 1500, 2000, 2500] }\n");
+  const fs::path sweep = sweep_file("axes:\n  - { key: load.normal_load_N, linear: { from: 1000, to: 2400, count: 8 } }\n");
   const Process whole = rollwear("sweep " + q(sweep) + " -o " + q(dir_ / "whole") + " -q --log-level warn", dir_);
   ASSERT_EQ(whole.exit_code, 0) << whole.err;
   for (int task = 0; task < 3; ++task) {

@@ -697,6 +697,7 @@ SweepRunSummary run_sweep(const Sweep& s, const SweepRunOptions& o) {
   std::vector<std::thread> pool;
   running = pending.empty() ? 0 : static_cast<std::size_t>(threads);
   for (int t = 0; t < threads && !pending.empty(); ++t) pool.emplace_back(work);
+  bool cancelled = false;
   {
     std::unique_lock<std::mutex> lock(mutex);
     double last_report_s = 0;
@@ -707,10 +708,15 @@ SweepRunSummary run_sweep(const Sweep& s, const SweepRunOptions& o) {
         o.progress(done, failed, summary.cases, elapsed_s);
         last_report_s = elapsed_s;
       }
+      if (!cancelled && o.cancelled && o.cancelled()) {
+        cancelled = true;
+        next = pending.size();  // no new case starts; the running ones finish (and are kept for a resume)
+      }
     }
   }
   for (std::thread& t : pool) t.join();
   if (error) std::rethrow_exception(error);
+  if (cancelled) throw SweepCancelled(fmt::format("sweep {}: cancelled after {} of {} cases", s.path, done, summary.cases));
   summary.failed = 0;
   std::string table = results_header(varied_keys(s));
   for (const auto& [i, row] : rows) {

@@ -31,6 +31,7 @@
 #include <filesystem>
 #include <functional>
 #include <limits>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -141,6 +142,14 @@ struct SweepRunOptions {
   // called from the thread that runs run_sweep, at most every `progress_interval_s`, and at the end
   std::function<void(long done, long failed, long total, double elapsed_s)> progress;
   double progress_interval_s = 1.0;
+  // asked from the same thread at the same moments (every progress_interval_s): true stops the sweep. No
+  // new case starts, the running ones finish (their rows kept for a resume), and run_sweep throws
+  // SweepCancelled without writing results.csv. The Python bindings check for Ctrl-C here.
+  std::function<bool()> cancelled;
+};
+// run_sweep stopped by SweepRunOptions::cancelled
+struct SweepCancelled : std::runtime_error {
+  using std::runtime_error::runtime_error;
 };
 struct SweepRunSummary {
   long cases = 0;    // this shard's

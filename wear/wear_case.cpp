@@ -115,10 +115,14 @@ void read_wear(YamlMap& m, WearSection& w) {
 
 }  // namespace
 
-WearCase read_wear_case(const std::string& path) {
+namespace {
+
+// the wear case of a reader of the contact case (a file's or a text's), `path` naming it
+template <class ReadContact>
+WearCase read_wear_case_with(const std::string& path, ReadContact read_contact) {
   WearCase c;
   bool has_wear = false;
-  c.contact = contact::read_contact_case(path, [&](YamlMap& m) {
+  c.contact = read_contact([&](YamlMap& m) {
     m.optional_section("wear", [&](YamlMap& s) {
       has_wear = true;
       read_wear(s, c.wear);
@@ -126,9 +130,22 @@ WearCase read_wear_case(const std::string& path) {
   });
   if (!has_wear)
     throw CaseError(path + ": wear: the run command needs a wear: section (the bodies that wear, their law "
-                    "and the revolutions), e.g. cases/paper-wear.yaml");
+                    "and the revolutions), e.g. cases/paper-wear.yaml",
+                    contact::InputLocation{path, 0, 0, "wear"});
   validate(c);
   return c;
+}
+
+}  // namespace
+
+WearCase read_wear_case(const std::string& path) {
+  return read_wear_case_with(path, [&](const contact::ExtraSections& extra) { return contact::read_contact_case(path, extra); });
+}
+
+WearCase read_wear_case_text(const std::string& text, const std::string& label, const std::filesystem::path& base_dir) {
+  return read_wear_case_with(label, [&](const contact::ExtraSections& extra) {
+    return contact::read_contact_case_text(text, label, base_dir, extra);
+  });
 }
 
 void validate(const WearCase& c) {

@@ -22,6 +22,7 @@
 // hardness_Pa, density_kg_per_m3, kth: {...}, usfd: {...}.
 #pragma once
 
+#include <filesystem>
 #include <optional>
 #include <string>
 #include <vector>
@@ -66,6 +67,8 @@ struct WearCase {
 // without profiles: (the worn body needs a lateral profile), a law the duty cycle cannot feed, or a
 // worn body with a flat rolling radius (no revolutions)
 WearCase read_wear_case(const std::string& path);
+// the same from a document's text (lib/io/case.h read_contact_case_text: label, profiles relative to base_dir)
+WearCase read_wear_case_text(const std::string& text, const std::string& label, const std::filesystem::path& base_dir);
 
 // cross-key checks (read_wear_case runs them)
 void validate(const WearCase& c);

@@ -307,16 +307,18 @@ void check_curvature(const ContactCase& c, const char* axis, const char* symbol,
 
 }  // namespace
 
-ContactCase read_contact_case(const std::string& path, const ExtraSections& extra) {
+namespace {
+
+// the case of a parsed document named `path`; profile files relative to base_dir
+ContactCase read_contact_document(const YAML::Node& doc, const std::string& path, const std::filesystem::path& base_dir,
+                                  const ExtraSections& extra) {
   ContactCase c;
   c.path = path;
   c.name = std::filesystem::path(path).stem().string();
-  read_yaml_file(path, &c.locations, [&](YamlMap& m) {
+  read_yaml_document(doc, path, &c.locations, [&](YamlMap& m) {
     m.optional("name", c.name, case_name);
     // the profiles first: with them the bodies take no Ry_m
-    m.optional_section("profiles", [&](YamlMap& s) {
-      read_profiles(s, c.profiles.emplace(), std::filesystem::path(path).parent_path());
-    });
+    m.optional_section("profiles", [&](YamlMap& s) { read_profiles(s, c.profiles.emplace(), base_dir); });
     m.section("bodies", [&](YamlMap& s) {
       s.section("body1", [&](YamlMap& b) { read_body(b, c.bodies.body1, c.profiles.has_value()); });
       s.section("body2", [&](YamlMap& b) { read_body(b, c.bodies.body2, c.profiles.has_value()); });
@@ -339,6 +341,17 @@ ContactCase read_contact_case(const std::string& path, const ExtraSections& extr
   validate(c);
   spdlog::debug("case '{}' read from {}", c.name, path);
   return c;
+}
+
+}  // namespace
+
+ContactCase read_contact_case(const std::string& path, const ExtraSections& extra) {
+  return read_contact_document(load_yaml_file(path), path, std::filesystem::path(path).parent_path(), extra);
+}
+
+ContactCase read_contact_case_text(const std::string& text, const std::string& label,
+                                   const std::filesystem::path& base_dir, const ExtraSections& extra) {
+  return read_contact_document(parse_yaml_text(text, label), label, base_dir, extra);
 }
 
 void validate(const ContactCase& c) {

@@ -16,6 +16,7 @@
 //                path_speed_m_per_s: 1.0 }    # then kinematics.speed_m_per_s and xi follow from the spin
 #pragma once
 
+#include <filesystem>
 #include <functional>
 #include <map>
 #include <optional>
@@ -119,6 +120,10 @@ using ExtraSections = std::function<void(YamlMap& top_level)>;
 
 // reads and validates; throws CaseError (file, line, key) on any problem
 ContactCase read_contact_case(const std::string& path, const ExtraSections& extra = {});
+// the same from a document's text (the Python bindings' case given as a dict): `label` stands for the file
+// in the messages and the default name (its stem), profile files are relative to base_dir
+ContactCase read_contact_case_text(const std::string& text, const std::string& label,
+                                   const std::filesystem::path& base_dir, const ExtraSections& extra = {});
 
 // "FILE:LINE:COL: " of the key if it was read from the file, else of its closest enclosing section
 // that was, else "FILE: " (nothing for a case built in code): the prefix of a cross-key message

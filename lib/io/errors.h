@@ -9,6 +9,7 @@
 #include <exception>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace contact {
 
@@ -16,9 +17,21 @@ constexpr int kExitSuccess = 0;
 constexpr int kExitFailure = 1;
 constexpr int kExitBadInput = 2;
 
-// bad input: "FILE:LINE:COL: key.path: what"
+// Where bad input was found, as data (the message says it too): the file, the 1-based line and column
+// (0 when not known) and the key path ("friction.mu"; "" when not one key). A reader that knows the
+// place fills it; a cross-key check that only has the message's "FILE:LINE:COL: " prefix leaves it empty.
+struct InputLocation {
+  std::string file;
+  int line = 0, column = 0;
+  std::string key;
+};
+
+// bad input: "FILE:LINE:COL: key.path: what"; `location` the same place as data (the Python bindings'
+// InputError attributes read it, never the message)
 struct CaseError : std::runtime_error {
   using std::runtime_error::runtime_error;
+  CaseError(const std::string& message, InputLocation where) : std::runtime_error(message), location(std::move(where)) {}
+  InputLocation location;
 };
 
 // a solver (or the program) failed on input that passed validation: exit 1 with its cause

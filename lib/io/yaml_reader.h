@@ -39,20 +39,31 @@ inline std::string yaml_location(const std::string& file, const YAML::Mark& mark
   return fmt::format("{}:{}:{}", file, mark.line + 1, mark.column + 1);
 }
 
+// the same place as data (errors.h InputLocation), for CaseError
+inline InputLocation yaml_input_location(const std::string& file, const YAML::Mark& mark, const std::string& key) {
+  if (mark.is_null()) return {file, 1, 1, key};
+  return {file, mark.line + 1, mark.column + 1, key};
+}
+
+// a document's text parsed, `file` naming it in the messages; CaseError "FILE:LINE:COL: YAML syntax error: ..."
+inline YAML::Node parse_yaml_text(const std::string& text, const std::string& file) {
+  try {
+    return YAML::Load(text);
+  } catch (const YAML::Exception& e) {
+    throw CaseError(yaml_location(file, e.mark) + ": YAML syntax error: " + e.msg, yaml_input_location(file, e.mark, ""));
+  }
+}
+
 // the whole file parsed; CaseError "FILE: cannot read: reason" or "FILE:LINE:COL: YAML syntax error: ..."
 inline YAML::Node load_yaml_file(const std::string& file) {
   const std::unique_ptr<std::FILE, int (*)(std::FILE*)> f(std::fopen(file.c_str(), "rb"), &std::fclose);
-  if (!f) throw CaseError(file + ": cannot read: " + std::strerror(errno));
+  if (!f) throw CaseError(file + ": cannot read: " + std::strerror(errno), InputLocation{file, 0, 0, ""});
   std::string text;
   char buffer[1 << 16];
   std::size_t n = 0;
   while ((n = std::fread(buffer, 1, sizeof buffer, f.get())) > 0) text.append(buffer, n);
-  if (std::ferror(f.get())) throw CaseError(file + ": cannot read: " + std::strerror(errno));
-  try {
-    return YAML::Load(text);
-  } catch (const YAML::Exception& e) {
-    throw CaseError(yaml_location(file, e.mark) + ": YAML syntax error: " + e.msg);
-  }
+  if (std::ferror(f.get())) throw CaseError(file + ": cannot read: " + std::strerror(errno), InputLocation{file, 0, 0, ""});
+  return parse_yaml_text(text, file);
 }
 
 // how a node reads in a message: 'text' for a scalar (cut, errors.h clipped), else its kind
@@ -163,7 +174,9 @@ class YamlValue {
   const std::string& path() const { return path_; }
   std::string location() const { return yaml_location(file_, node_.Mark()); }
 
-  [[noreturn]] void fail(const std::string& what) const { throw CaseError(location() + ": " + path_ + ": " + what); }
+  [[noreturn]] void fail(const std::string& what) const {
+    throw CaseError(location() + ": " + path_ + ": " + what, yaml_input_location(file_, node_.Mark(), path_));
+  }
 
   // the node read as a T and checked; `label` names the part of a larger value in the messages
   // ("row 3: t_s must be finite, got .nan")
@@ -210,11 +223,13 @@ class YamlMap {
       const std::string key = it->first.IsScalar() ? it->first.Scalar() : std::string();
       if (!it->first.IsScalar())
         throw CaseError(yaml_location(file_, it->first.Mark()) + ": " + key_path("?") +
-                        ": a key must be a plain name, got " + yaml_describe(it->first));
+                        ": a key must be a plain name, got " + yaml_describe(it->first),
+                        yaml_input_location(file_, it->first.Mark(), key_path("?")));
       const auto [first, inserted] = seen.emplace(key, it->first.Mark());
       if (!inserted)
         throw CaseError(yaml_location(file_, it->first.Mark()) + ": " + key_path(key) +
-                        ": duplicate key (first at line " + std::to_string(first->second.line + 1) + ")");
+                        ": duplicate key (first at line " + std::to_string(first->second.line + 1) + ")",
+                        yaml_input_location(file_, it->first.Mark(), key_path(key)));
       entries_.push_back({key, it->first, it->second});
     }
   }
@@ -247,12 +262,14 @@ class YamlMap {
   // an error at the key's value (at this mapping when the key is absent)
   [[noreturn]] void fail(const std::string& key, const std::string& what) const {
     const Entry* e = find(key);
-    const std::string where = e ? yaml_location(file_, e->value.Mark()) : location();
-    throw CaseError(where + ": " + key_path(key) + ": " + what);
+    const YAML::Mark mark = e ? e->value.Mark() : node_.Mark();
+    throw CaseError(yaml_location(file_, mark) + ": " + key_path(key) + ": " + what,
+                    yaml_input_location(file_, mark, key_path(key)));
   }
   // an error about this mapping as a whole
   [[noreturn]] void fail_here(const std::string& what) const {
-    throw CaseError(location() + ": " + (path_.empty() ? "" : path_ + ": ") + what);
+    throw CaseError(location() + ": " + (path_.empty() ? "" : path_ + ": ") + what,
+                    yaml_input_location(file_, node_.Mark(), path_));
   }
 
   // every key present must have been asked for; an unknown key is named with the closest valid one
@@ -332,11 +349,12 @@ class YamlMap {
     for (const Entry& e : entries_)
       if (!asked_.count(e.key) && is_typo_of(e.key, key))
         unknown_key(e, "did you mean '" + key + "'?", key_path(key) + ": " + what);
-    throw CaseError(location() + ": " + key_path(key) + ": " + what);
+    throw CaseError(location() + ": " + key_path(key) + ": " + what, yaml_input_location(file_, node_.Mark(), key_path(key)));
   }
   [[noreturn]] void unknown_key(const Entry& e, const std::string& suggestion, const std::string& note) const {
     throw CaseError(yaml_location(file_, e.key_node.Mark()) + ": " + key_path(clipped(e.key)) + ": unknown key" +
-                    (suggestion.empty() ? "" : ", " + suggestion) + " (" + note + ")");
+                        (suggestion.empty() ? "" : ", " + suggestion) + " (" + note + ")",
+                    yaml_input_location(file_, e.key_node.Mark(), key_path(e.key)));
   }
 
   YAML::Node node_;
@@ -354,16 +372,21 @@ void YamlValue::mapping(ReadBody read_body) const {
   m.check_all_read();
 }
 
-// the document of a file as a mapping, read by read_body(YamlMap&); its keys left over are errors
+// a parsed document as a mapping, `file` naming it, read by read_body(YamlMap&); its keys left over are errors
 template <class ReadBody>
-void read_yaml_file(const std::string& file, KeyLocations* locations, ReadBody read_body) {
-  const YAML::Node doc = load_yaml_file(file);
+void read_yaml_document(const YAML::Node& doc, const std::string& file, KeyLocations* locations, ReadBody read_body) {
   if (!doc.IsMap())
-    throw CaseError(yaml_location(file, doc.Mark()) + ": expected a mapping of sections, got " +
-                    yaml_describe(doc));
+    throw CaseError(yaml_location(file, doc.Mark()) + ": expected a mapping of sections, got " + yaml_describe(doc),
+                    yaml_input_location(file, doc.Mark(), ""));
   YamlMap root(doc, file, "", locations);
   read_body(root);
   root.check_all_read();
+}
+
+// the document of a file as a mapping, read by read_body(YamlMap&); its keys left over are errors
+template <class ReadBody>
+void read_yaml_file(const std::string& file, KeyLocations* locations, ReadBody read_body) {
+  read_yaml_document(load_yaml_file(file), file, locations, read_body);
 }
 
 }  // namespace contact

@@ -1,0 +1,31 @@
+// The work of `rollwear contact` and `rollwear transient` on a case that is read, without the files and
+// the printing: shared by the command line (app/main.cpp) and the Python bindings (python/).
+#pragma once
+
+#include "lib/io/case.h"
+#include "lib/normal/normal.h"
+#include "lib/tangential/satran.h"
+#include "lib/tangential/tangential.h"
+
+namespace contact {
+
+// one steady contact: the normal problem, then the tangential problem on its patch
+struct ContactRun {
+  NormalSolution normal;
+  TangentialProblem problem;
+  TangentialSolution solution;
+  TangentialScheme scheme = TangentialScheme::Consistent;
+};
+
+// validate_steady, the normal solve (solve_normal_of), then solve_steady with the case's scheme, or Kalker's
+// exact theory for solver.tangential exact (SolverError when it does not converge). `fields`: the per-cell
+// fields computed (else left empty). Throws CaseError for bad input, SolverError or NormalSolveError for a
+// solver's failure.
+ContactRun solve_contact_case(const ContactCase& c, bool fields);
+
+// The transient run of t (transient_case_of(c)): Satran, or Kalker's exact theory for solver.tangential
+// exact. Settings the run refuses are a CaseError at the key's line (transient_error); any other
+// std::invalid_argument from inside the solver, on settings that passed, is its failure (SolverError).
+TransientResult run_transient_case(const ContactCase& c, const TransientCase& t, const StepObserver& observe);
+
+}  // namespace contact

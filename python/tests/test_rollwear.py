@@ -1,0 +1,223 @@
+# The bindings against the command line: the same case gives the same numbers to the bit (both run the same
+# library code on the same inputs, and the CSV files hold every number in the shortest text that reads back
+# exactly), plus closed forms of Hertz's contact; errors as the typed exceptions; Ctrl-C; logging.
+import csv
+import logging
+import math
+import os
+import signal
+import threading
+import time
+
+import numpy as np
+import pytest
+
+import rollwear
+
+# Hertz's peak pressure p0 = 3 F / (2 pi a b) (docs/physics.md §2) holds to rounding
+HERTZ_RTOL = 1e-12
+# the mean cell pressures integrate each strip's semi-ellipse exactly; over y the strips are a midpoint rule on
+# 80 strips, whose error on the semi-ellipsoid is of order (1/80)^1.5 ~ 1.4e-3
+LOAD_QUADRATURE_RTOL = 2e-3
+
+
+def read_csv(path):
+    with open(path, newline="") as f:
+        rows = [r for r in csv.reader(f) if r and not r[0].startswith("#")]
+    header, body = rows[0], rows[1:]
+    return {name: [r[i] for r in body] for i, name in enumerate(header)}
+
+
+def numbers(column):
+    return np.array([float(v) for v in column])
+
+
+PAPER = {  # cases/paper.yaml as a dict
+    "name": "paper",
+    "bodies": {
+        "body1": {"Rx_m": 0.020, "Ry_m": 0.500, "E_Pa": 210.0e9, "nu": 0.28},
+        "body2": {"Rx_m": 0.025, "Ry_m": math.inf, "E_Pa": 210.0e9, "nu": 0.28},
+    },
+    "load": {"normal_load_N": 1500},
+    "kinematics": {"speed_m_per_s": 1.0, "xi": 1.0e-3, "eta": 0, "phi_per_m": 0},
+    "friction": {"mu": 0.3},
+    "solver": {"tangential": "consistent", "nx": 80, "ny": 80},
+}
+
+
+def test_contact_equals_the_command_line(source, cli, tmp_path, monkeypatch):
+    monkeypatch.chdir(source)
+    # without fields, as --no-fields (with the fields the steady march sums Fx in another order: 1 ulp apart)
+    r = rollwear.contact("cases/paper.yaml", fields=False)  # the path as written in the issue and the README
+    p = cli("contact", "cases/paper.yaml", "-o", tmp_path, "--no-fields")
+    assert p.returncode == 0, p.stderr
+    summary = read_csv(tmp_path / "summary.csv")
+    for key in ("a_m", "b_m", "p0_Pa", "approach_m", "C11", "C22", "C23", "C33", "L_m_per_Pa", "Fx_N", "Fy_N",
+                "Mz_N_m", "power_W", "creep_work_W", "stick_fraction"):
+        assert r["summary"][key] == float(summary[key][0]), key
+    assert r["summary"]["scheme"] == summary["scheme"][0]
+    strips = read_csv(tmp_path / "strips.csv")
+    assert r["strips"].keys() == strips.keys()
+    for key, column in strips.items():
+        np.testing.assert_array_equal(r["strips"][key], numbers(column), err_msg=key)
+    assert r["summary"]["normal_solver"] == "hertz"
+
+
+def test_contact_fields_equal_the_command_lines_and_are_hertz(source, cli, tmp_path):
+    r = rollwear.contact(str(source / "cases" / "paper.yaml"))
+    s, f = r["summary"], r["fields"]
+    p = cli("contact", "cases/paper.yaml", "-o", tmp_path)
+    assert p.returncode == 0, p.stderr
+    fields = read_csv(tmp_path / "fields.csv")  # strip by strip: j outer, i inner
+    for key in ("pressure_Pa", "tau_x_Pa", "tau_y_Pa", "slip_x_m_per_s", "slip_y_m_per_s", "power_W_per_m2", "state"):
+        np.testing.assert_array_equal(f[key].ravel(order="F"), numbers(fields[key]), err_msg=key)
+    assert s["Fx_N"] == float(read_csv(tmp_path / "summary.csv")["Fx_N"][0])
+    F = s["normal_load_N"]
+    assert s["p0_Pa"] == pytest.approx(3 * F / (2 * math.pi * s["a_m"] * s["b_m"]), rel=HERTZ_RTOL)
+    assert f["pressure_Pa"].shape == (s["nx"], s["ny"]) == (80, 80)
+    dx, dy = np.diff(f["x_m"][:2])[0], np.diff(f["y_m"][:2])[0]
+    assert f["pressure_Pa"].sum() * dx * dy == pytest.approx(F, rel=LOAD_QUADRATURE_RTOL)
+    assert set(np.unique(f["state"])) <= {0, 1, 2}
+    # the dissipated power per area integrates to the total, and to the strips' powers
+    assert f["power_W_per_m2"].sum() * dx * dy == pytest.approx(s["power_W"], rel=1e-12)
+    assert r["strips"]["power_W_per_m"].sum() * dy == pytest.approx(s["power_W"], rel=1e-12)
+
+
+def test_a_dict_is_the_same_case(source):
+    from_file = rollwear.contact(str(source / "cases" / "paper.yaml"), fields=False)
+    from_dict = rollwear.contact(PAPER, fields=False)
+    assert from_dict["summary"] == from_file["summary"]
+    assert "fields" not in from_dict
+
+
+def test_transient_equals_the_command_line(cli, tmp_path):
+    case = dict(PAPER, name="startup", solver={"nx": 20, "ny": 20},
+                kinematics={"speed_m_per_s": {"ramp": [0.0, 0.0, 1.0e-4, 1.8]}, "xi": 0.001},
+                transient={"scheme": "shift", "t_end_s": 2.0e-4, "snapshots_s": [1.0e-4]})
+    (tmp_path / "startup.yaml").write_text(rollwear.case_yaml(case))
+    p = cli("transient", tmp_path / "startup.yaml", "-o", tmp_path / "out", "-q")
+    assert p.returncode == 0, p.stderr
+    r = rollwear.transient(case)
+    ts = read_csv(tmp_path / "out" / "timeseries.csv")
+    for key, column in ts.items():
+        if key == "step_scheme":
+            assert r["timeseries"][key] == column
+        else:
+            np.testing.assert_array_equal(r["timeseries"][key], numbers(column), err_msg=key)
+    energy = read_csv(tmp_path / "out" / "strip_energy.csv")
+    np.testing.assert_array_equal(r["strips"]["energy_J_per_m"], numbers(energy["energy_J_per_m"]))
+    power = read_csv(tmp_path / "out" / "strip_power.csv")
+    np.testing.assert_array_equal(r["strips"]["power_W_per_m"].ravel(), numbers(power["power_W_per_m"]))
+    snap = read_csv(tmp_path / "out" / "snapshot_1.csv")  # strip by strip: j outer, i inner
+    np.testing.assert_array_equal(r["snapshots"][0]["tau_x_Pa"].ravel(order="F"), numbers(snap["tau_x_Pa"]))
+    summary = read_csv(tmp_path / "out" / "summary.csv")
+    assert r["summary"]["dissipated_J"] == float(summary["dissipated_J"][0])
+
+
+def test_run_equals_the_command_line(source, cli, tmp_path):
+    case = source / "cases" / "paper-wear.yaml"
+    p = cli("run", case, "-o", tmp_path, "-q")
+    assert p.returncode == 0, p.stderr
+    r = rollwear.run(case)
+    rows = read_csv(tmp_path / "summary.csv")
+    for key, column in rows.items():
+        np.testing.assert_array_equal(r["steps"][key], numbers(column), err_msg=key)
+    report = dict(line.split(": ", 1) for line in (tmp_path / "report.txt").read_text().splitlines() if ": " in line)
+    assert r["summary"]["ended_by"] == report["ended_by"] == "edge"
+    assert r["summary"]["revolutions"] == float(report["revolutions"])
+    body1 = r["profiles"]["body1"]
+    last = sorted((tmp_path / "snapshots").glob("snapshot_*_body1.csv"))[-1]
+    worn = read_csv(last)
+    np.testing.assert_array_equal(body1["depth_m"][-1], numbers(worn["depth_m"]))
+    np.testing.assert_array_equal(body1["y_m"], numbers(worn["y_m"]))
+    assert body1["revolutions"][-1] == r["summary"]["revolutions"]
+    assert body1["depth_m"].shape == (len(body1["revolutions"]), len(body1["y_m"]))
+
+
+def test_sweep_runs_its_cases(source, tmp_path):
+    sweep = tmp_path / "two.yaml"
+    sweep.write_text(f"base: {source / 'cases' / 'paper-wear.yaml'}\n"
+                     "axes:\n  - { key: friction.mu, values: [0.3, 0.4] }\n")
+    s = rollwear.sweep(sweep, output_dir=tmp_path / "out", threads=2)
+    res = s["results"]
+    np.testing.assert_array_equal(res["index"], [0, 1])
+    np.testing.assert_array_equal(res["friction.mu"], [0.3, 0.4])
+    assert res["status"] == ["ok", "ok"]
+    # case 0 is the base case itself (mu 0.3): the same life as rollwear.run's, to the bit
+    alone = rollwear.run(source / "cases" / "paper-wear.yaml")
+    assert res["life_revolutions"][0] == alone["summary"]["revolutions"]
+    assert res["max_depth_m"][0] == alone["summary"]["max_depth_m"]
+    assert os.path.exists(os.path.join(s["directory"], "case_0001", "report.txt"))
+
+
+def test_a_bad_key_is_an_input_error_with_its_place(source, cli, tmp_path):
+    text = (source / "cases" / "paper.yaml").read_text().replace("friction:", "frction:")
+    line = 1 + text.splitlines().index(next(l for l in text.splitlines() if l.startswith("frction:")))
+    case = tmp_path / "typo.yaml"
+    case.write_text(text)
+    with pytest.raises(rollwear.InputError) as e:
+        rollwear.contact(case)
+    assert (e.value.file, e.value.line, e.value.column, e.value.key) == (str(case), line, 1, "frction")
+    assert isinstance(e.value, ValueError) and isinstance(e.value, rollwear.Error)
+    assert cli("contact", case, "-o", tmp_path / "out").returncode == 2  # the CLI's bad input
+
+
+def test_a_bad_value_in_a_dict_names_its_key():
+    with pytest.raises(rollwear.InputError) as e:
+        rollwear.contact(dict(PAPER, friction={"mu": -1}))
+    assert e.value.file == "<dict>" and e.value.key == "friction.mu"
+    assert rollwear.case_yaml(dict(PAPER, friction={"mu": -1})).splitlines()[e.value.line - 1].startswith("friction:")
+    with pytest.raises(rollwear.InputError) as e:
+        rollwear.run(PAPER)  # no wear: section
+    assert e.value.key == "wear"
+
+
+@pytest.mark.parametrize("kind, exception", [("case", rollwear.InputError), ("solver", rollwear.SolverError),
+                                             ("normal", rollwear.SolverError),
+                                             ("invalid_argument", rollwear.SolverError),
+                                             ("runtime_error", rollwear.Error)])
+def test_each_cpp_error_type_is_its_exception(kind, exception):
+    # by the C++ type (lib/io/errors.h), as the program's exit status: 2 for CaseError, 1 for the others
+    with pytest.raises(exception) as e:
+        rollwear._rollwear._throw_for_test(kind)
+    assert type(e.value) is exception
+    if kind == "case":
+        assert (e.value.file, e.value.line, e.value.column, e.value.key) == ("f.yaml", 3, 5, "friction.mu")
+
+
+def test_ctrl_c_interrupts_a_long_call_with_the_gil_released():
+    # 5 m rolled in shift steps of 5.6 um on 80 x 80 cells, a creepage ramp all along (no steady stretch to
+    # skip): about 12 s if not interrupted (idle machine). The timer thread sending SIGINT runs only if the
+    # call released the GIL.
+    case = dict(PAPER, transient={"t_end_s": 5.0},
+                kinematics={"speed_m_per_s": 1.0, "xi": {"ramp": [0.0, 0.0, 5.0, 1.0e-3]}})
+    timer = threading.Timer(0.3, lambda: os.kill(os.getpid(), signal.SIGINT))
+    start = time.monotonic()
+    timer.start()
+    with pytest.raises(KeyboardInterrupt):
+        rollwear.transient(case, fields=False)
+    assert time.monotonic() - start < 3
+    timer.join()
+
+
+def test_messages_go_to_python_logging(source, caplog):
+    with caplog.at_level(logging.DEBUG, logger="rollwear"):
+        rollwear.contact(str(source / "cases" / "paper.yaml"), fields=False)
+    assert any(r.name == "rollwear" and "read from" in r.getMessage() for r in caplog.records)
+
+
+def test_ctrl_c_stops_a_wear_life(source, tmp_path):
+    # paper-wear in fixed steps of 1e4 revolutions: 1e6 steps to its budget, minutes if not interrupted
+    text = (source / "cases" / "paper-wear.yaml").read_text().replace(
+        "stepping: { method: adaptive, rtol: 1.0e-3, atol_m: 1.0e-9 }",
+        "stepping: { method: fixed-revolutions, step_revolutions: 1.0e4, max_steps: 10000000 }")
+    assert "fixed-revolutions" in text
+    case = tmp_path / "long-wear.yaml"
+    case.write_text(text)
+    timer = threading.Timer(0.3, lambda: os.kill(os.getpid(), signal.SIGINT))
+    start = time.monotonic()
+    timer.start()
+    with pytest.raises(KeyboardInterrupt):
+        rollwear.run(case)
+    assert time.monotonic() - start < 3
+    timer.join()
