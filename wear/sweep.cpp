@@ -519,7 +519,9 @@ CaseOutcome run_case(const std::string& yaml_text, long index, const std::vector
   contact::write_file_atomic(case_path, yaml_text);
   try {
     const WearCase c = read_wear_case(case_path.string());
-    const WearModel m = make_wear_model(c);
+    WearModel model = make_wear_model(c);
+    model.collective_threads = 1;  // the sweep's threads run cases: a collective's conditions run on the case's
+    const WearModel& m = model;
     const double hours_per_rev = hours_per_revolution(m);
     WearCache cache;
     LifeStart start;

@@ -44,6 +44,11 @@ std::string law_text(const WearLaw& law) {
 }  // namespace
 
 double hours_per_revolution(const WearModel& m) {
+  if (!m.conditions.empty()) {  // a collective: each condition's hours for its share of the revolutions
+    double hours = 0;
+    for (std::size_t k = 0; k < m.conditions.size(); ++k) hours += m.weights[k] * hours_per_revolution(m.conditions[k]);
+    return hours;
+  }
   double V = m.speed_m_per_s;
   if (m.transient) {
     const double T = m.transient->settings.t_end_s;
