@@ -438,4 +438,21 @@ TEST_F(SweepFile, GridElasticityOfArchardsCoefficientIsMinusOne) {
   EXPECT_NE(line.find("central"), std::string::npos) << summary;
 }
 
+// Kaplan-Meier by hand (summary.txt's B10 and B50, the plot's curve): lives 1, 2 (censored), 3, 4:
+// F(1) = 1/4; at 3, two at risk: S = 3/4 x 1/2, F = 5/8; at 4, one at risk: F = 1. A censoring tied
+// with a failure is after it (it was at risk then).
+TEST(SweepSummary, KaplanMeierByHand) {
+  const std::vector<KaplanMeierStep> km = kaplan_meier({{3, false}, {2, true}, {4, false}, {1, false}});
+  ASSERT_EQ(km.size(), 3u);
+  EXPECT_EQ(km[0].life, 1);
+  EXPECT_EQ(km[0].failed_fraction, 0.25);
+  EXPECT_EQ(km[1].life, 3);
+  EXPECT_EQ(km[1].failed_fraction, 0.625);
+  EXPECT_EQ(km[2].life, 4);
+  EXPECT_EQ(km[2].failed_fraction, 1);
+  const std::vector<KaplanMeierStep> tie = kaplan_meier({{1, true}, {1, false}});
+  ASSERT_EQ(tie.size(), 1u);
+  EXPECT_EQ(tie[0].failed_fraction, 0.5);
+}
+
 }  // namespace
