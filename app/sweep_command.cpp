@@ -20,6 +20,9 @@
 #include "lib/io/errors.h"
 #include "wear/sweep.h"
 #include "wear/sweep_summary.h"
+#ifdef ROLLWEAR_WITH_MPI
+#include "app/sweep_mpi.h"
+#endif
 
 namespace {
 
@@ -148,6 +151,21 @@ int run_sweep_command(const SweepOptions& opt) {
                        : !s.output_directory.empty() ? std::filesystem::path(s.output_directory)
                                                      : std::filesystem::path("out") / std::filesystem::path(opt.sweep_path).stem();
   o.threads = opt.threads > 0 ? opt.threads : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+#ifdef ROLLWEAR_WITH_MPI
+  // under mpirun: rank 0 runs the sweep and deals its cases to the other ranks (app/sweep_mpi.h)
+  struct MpiFinish {
+    bool on = false;
+    ~MpiFinish() {
+      if (on) rollwear_mpi::finish();
+    }
+  } mpi;
+  mpi.on = rollwear_mpi::start();
+  if (mpi.on && rollwear_mpi::rank() > 0) {
+    rollwear_mpi::serve(s, o.output_directory);
+    return 0;
+  }
+  if (mpi.on) o.dispatch = rollwear_mpi::dispatch();
+#endif
   const bool terminal = ::isatty(STDERR_FILENO) == 1;
   o.progress_interval_s = terminal ? 0.5 : 5.0;
   bool drawn = false;

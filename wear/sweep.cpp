@@ -694,8 +694,24 @@ SweepRunSummary run_sweep(const Sweep& s, const SweepRunOptions& o) {
     --running;
     changed.notify_all();
   };
-  const int threads = std::max(1, std::min<int>(o.threads, static_cast<int>(pending.size())));
   const auto t0 = std::chrono::steady_clock::now();
+  if (o.dispatch && !pending.empty()) {  // elsewhere (MPI ranks): each row as it comes
+    double last_report_s = 0;
+    o.dispatch(pending, [&](const std::string& row) {
+      rows[row_index(row)] = row;
+      ++done;
+      if (row_status(row, nkeys) != CaseStatus::Ok) ++failed;
+      const double elapsed_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      if (o.progress && (elapsed_s - last_report_s >= o.progress_interval_s || done == summary.cases)) {
+        o.progress(done, failed, summary.cases, elapsed_s);
+        last_report_s = elapsed_s;
+      }
+    });
+    pending.clear();
+    if (static_cast<long>(rows.size()) != summary.cases)
+      throw std::runtime_error(fmt::format("sweep: {} of {} cases came back from the ranks", rows.size(), summary.cases));
+  }
+  const int threads = std::max(1, std::min<int>(o.threads, static_cast<int>(pending.size())));
   std::vector<std::thread> pool;
   running = pending.empty() ? 0 : static_cast<std::size_t>(threads);
   for (int t = 0; t < threads && !pending.empty(); ++t) pool.emplace_back(work);

@@ -32,6 +32,7 @@
 #include <functional>
 #include <limits>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <yaml-cpp/yaml.h>
@@ -141,6 +142,12 @@ struct SweepRunOptions {
   // called from the thread that runs run_sweep, at most every `progress_interval_s`, and at the end
   std::function<void(long done, long failed, long total, double elapsed_s)> progress;
   double progress_interval_s = 1.0;
+  // When set, the pending cases run elsewhere instead of on `threads` threads (rollwear sweep under MPI,
+  // app/sweep_mpi.h): called once with every pending case (index, case text), it calls finished(row) with
+  // each case's results row, in any order, from the calling thread, and returns when every case has one.
+  std::function<void(const std::vector<std::pair<long, std::string>>& pending,
+                     const std::function<void(const std::string& row)>& finished)>
+      dispatch;
 };
 struct SweepRunSummary {
   long cases = 0;    // this shard's
