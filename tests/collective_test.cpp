@@ -14,6 +14,7 @@
 #include "lib/io/errors.h"
 #include "tests/log_capture.h"
 #include "tests/temp_dir.h"
+#include "wear/sweep.h"
 #include "wear/wear_loop.h"
 
 namespace wear {
@@ -117,6 +118,22 @@ wear:
   const double expected = 1 / (0.75 / LA + 0.25 / LB);
   EXPECT_NEAR(c.N / expected, 1, kHarmonicTolerance) << "LA " << LA << " LB " << LB << " collective " << c.N;
   EXPECT_GT(LA / LB, 1.5);  // the conditions differ: the test sees the weights
+}
+
+// A collective case in a sweep (run_case: its conditions on the case's one thread) ends where the life of
+// the same case ends on 2 threads, to the bit.
+TEST_F(Collective, SweepCaseIsTheSameLife) {
+  const std::string collective =
+      "  collective:\n    - { weight: 0.8 }\n    - { weight: 0.2, load: { normal_load_N: 2200 }, kinematics: { xi: 2.0e-3 } }\n";
+  std::string text = paper_wear_with(collective);
+  text.replace(text.find("max_depth_m: 1.0e-4"), 19, "max_depth_m: 2.0e-5");
+  const fs::path path = write("c.yaml", text);
+  const CaseOutcome row = run_case(text, 0, {}, dir_ / "case_0000");
+  ASSERT_EQ(row.status, CaseStatus::Ok) << row.message;
+  const LifeResult life = life_of(read_wear_case(path.string()), 2);
+  EXPECT_EQ(row.ended_by, life.ended_by);
+  EXPECT_EQ(row.life_revolutions, life.N);  // to the bit
+  EXPECT_EQ(row.max_depth_m, max_depth_m(make_wear_model(read_wear_case(path.string())), life.state));
 }
 
 // The conditions' rates evaluated on 1 or 2 threads give the same life to the bit (each condition has its
