@@ -186,8 +186,9 @@ int run_sweep_command(const SweepOptions& opt) {
   // process's memory map lock). Kept up to 256 MiB per arena, the sweep's system time is 0.1 s.
   mallopt(M_TRIM_THRESHOLD, 256 * 1024 * 1024);
   const FolderLock lock(o.output_directory);
-  spdlog::info("sweep {}: {} cases, shard {}/{}, {} threads, into {}", opt.sweep_path, wear::case_count(s), o.shard_k,
-               o.shard_n, o.threads, o.output_directory.string());
+  spdlog::info("sweep {}: {} cases, shard {}/{}, {}, into {}", opt.sweep_path, wear::case_count(s), o.shard_k, o.shard_n,
+               o.dispatch ? std::string("dealt to the other MPI ranks") : std::to_string(o.threads) + " threads",
+               o.output_directory.string());
   std::string again = "rollwear sweep " + opt.sweep_path + " -o " + o.output_directory.string();
   if (o.shard_n > 1) again += " --shard " + opt.shard;
   say_on_signal("\nrollwear: interrupted; the finished cases are kept, and the sweep continues with: " + again + "\n");
