@@ -846,7 +846,8 @@ int main(int argc, char** argv) {
   std::string plot_dir;
   CLI::App* plot_cmd = app.add_subcommand("plot", "PNG plots of a wear run's output folder (gnuplot): the worn "
                                                   "profiles at every snapshot, depth and peak pressure against "
-                                                  "revolutions, written to OUTPUT_DIR/plots/");
+                                                  "revolutions, written to OUTPUT_DIR/plots/; of a sweep's folder: the life "
+                                                  "against each varied key and its distribution (docs/sweeps.md)");
   plot_cmd->add_option("output_dir", plot_dir, "The folder a 'rollwear run' wrote, e.g. out/paper-wear")->required();
 
   try {

@@ -9,6 +9,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
@@ -19,6 +20,7 @@
 #include <iterator>
 #include <limits>
 #include <map>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <system_error>
@@ -30,6 +32,8 @@
 #include "lib/io/csv.h"
 #include "lib/io/csv_reader.h"
 #include "lib/io/errors.h"
+#include "wear/sweep_summary.h"
+#include "wear/wear_loop.h"
 
 extern char** environ;
 
@@ -477,36 +481,15 @@ std::string run_gnuplot(const fs::path& script) {
   throw std::runtime_error(fmt::format("gnuplot failed ({}): {}", how, said.empty() ? "no message" : said));
 }
 
-// the pictures: the script, gnuplot, then every PNG into place; returns the PNGs written
-std::vector<fs::path> draw(const RunOutput& run, const fs::path& plots, std::ostream& err) {
-  struct Picture {
-    fs::path path, temporary;
-  };
-  std::vector<Picture> pictures;
-  const auto picture = [&](const std::string& leaf) {
-    const fs::path path = plots / leaf;
-    pictures.push_back({path, temporary_for(path)});
-    return pictures.back().temporary;
-  };
+// a picture: where it goes, and the temporary name gnuplot draws it to
+struct Picture {
+  fs::path path, temporary;
+};
 
-  // the data, then one figure after another
-  const auto [divisor, revolutions_text] = revolutions_axis(run.revolutions);
-  std::string script = "# rollwear plot: " + run.case_name + "\n" + terminal_script() + summary_block(run, divisor);
-  script += history_figure(run, picture("depth.png"), run.case_name + ": maximum wear depth", revolutions_text,
-                           "maximum wear depth (µm)", 2, "max depth", "#c0392b");
-  script += history_figure(run, picture("pressure.png"), run.case_name + ": peak contact pressure", revolutions_text,
-                           "peak pressure p0 (MPa)", 3, "peak pressure p0", "#1f4e9c");
-  for (std::size_t b = 0; b < run.bodies.size(); ++b) {
-    const BodySnapshots& body = run.bodies[b];
-    std::vector<std::string> blocks;
-    for (std::size_t k = 0; k < body.snapshots.size(); ++k) {
-      blocks.push_back(fmt::format("$body{}_snapshot{}", b, k));
-      script += snapshot_block(blocks.back(), body.snapshots[k]);
-    }
-    script += profile_figure(run.case_name, body, blocks, picture("profile_" + body.body + ".png"));
-    script += depth_profile_figure(run.case_name, body, blocks, picture("depth_profile_" + body.body + ".png"));
-  }
-
+// the script run by gnuplot once, then every picture renamed into place; returns the PNGs written. Any
+// failure removes the script and every temporary picture (a torn PNG is never in place).
+std::vector<fs::path> render(const std::string& script, const std::vector<Picture>& pictures, const fs::path& plots,
+                             std::ostream& err) {
   // gnuplot draws every picture to its temporary name; any failure removes them all
   Temporaries temporaries;
   for (const Picture& p : pictures) temporaries.add(p.temporary);
@@ -534,6 +517,299 @@ std::vector<fs::path> draw(const RunOutput& run, const fs::path& plots, std::ost
   return written;
 }
 
+// the pictures: the script, gnuplot, then every PNG into place; returns the PNGs written
+std::vector<fs::path> draw(const RunOutput& run, const fs::path& plots, std::ostream& err) {
+  std::vector<Picture> pictures;
+  const auto picture = [&](const std::string& leaf) {
+    const fs::path path = plots / leaf;
+    pictures.push_back({path, temporary_for(path)});
+    return pictures.back().temporary;
+  };
+
+  // the data, then one figure after another
+  const auto [divisor, revolutions_text] = revolutions_axis(run.revolutions);
+  std::string script = "# rollwear plot: " + run.case_name + "\n" + terminal_script() + summary_block(run, divisor);
+  script += history_figure(run, picture("depth.png"), run.case_name + ": maximum wear depth", revolutions_text,
+                           "maximum wear depth (µm)", 2, "max depth", "#c0392b");
+  script += history_figure(run, picture("pressure.png"), run.case_name + ": peak contact pressure", revolutions_text,
+                           "peak pressure p0 (MPa)", 3, "peak pressure p0", "#1f4e9c");
+  for (std::size_t b = 0; b < run.bodies.size(); ++b) {
+    const BodySnapshots& body = run.bodies[b];
+    std::vector<std::string> blocks;
+    for (std::size_t k = 0; k < body.snapshots.size(); ++k) {
+      blocks.push_back(fmt::format("$body{}_snapshot{}", b, k));
+      script += snapshot_block(blocks.back(), body.snapshots[k]);
+    }
+    script += profile_figure(run.case_name, body, blocks, picture("profile_" + body.body + ".png"));
+    script += depth_profile_figure(run.case_name, body, blocks, picture("depth_profile_" + body.body + ".png"));
+  }
+
+  return render(script, pictures, plots, err);
+}
+
+
+// ---- a sweep's output folder (rollwear sweep, docs/sweeps.md) -----------------------------------------
+
+struct SweepCase {
+  std::vector<double> inputs;
+  double life = 0;
+  bool censored = false;  // the life reached the budget (wear.revolutions, max_steps): it lasts at least that
+};
+
+struct SweepOutput {
+  std::string name;                 // the folder's name
+  std::string sampling = "product"; // product | zip | monte-carlo | latin-hypercube (sweep.txt)
+  std::vector<std::string> keys;    // the varied keys, in the table's order
+  std::vector<double> base;         // each key's value in the base case (sweep.txt's axis lines), NaN if none
+  std::vector<SweepCase> cases;     // the cases with status ok
+  long left_out = 0;                // cases whose status is not ok
+};
+
+bool is_sweep_folder(const fs::path& dir) { return fs::exists(dir / "results.csv") && fs::exists(dir / "sweep.txt"); }
+
+bool is_random(const SweepOutput& s) { return s.sampling == "monte-carlo" || s.sampling == "latin-hypercube"; }
+
+SweepOutput read_sweep_output(const fs::path& dir) {
+  SweepOutput o;
+  const fs::path normal = fs::absolute(dir).lexically_normal();
+  o.name = (normal.has_filename() ? normal.filename() : normal.parent_path().filename()).string();
+  std::map<std::string, double> base;
+  std::ifstream info(dir / "sweep.txt");
+  for (std::string line; std::getline(info, line);) {
+    std::istringstream l(line);
+    std::string word, key, size, value;
+    l >> word;
+    if (word == "sampling") l >> o.sampling;
+    if (word == "axis" && l >> key >> size >> value) {
+      double v = std::numeric_limits<double>::quiet_NaN();
+      parse_number(value, v);
+      base[key] = v;
+    }
+  }
+  const Table t = read_table(dir / "results.csv");
+  static const std::vector<std::string> kTail = {"life_revolutions", "ended_by", "max_depth_m", "worn_volume_m3",
+                                                 "status", "message"};
+  const std::size_t n = t.header.size();
+  if (n < kTail.size() + 2 || t.header.front() != "index" || !std::equal(kTail.begin(), kTail.end(), t.header.end() - 6))
+    throw bad_input(fmt::format("{}: not a sweep's results table (index, the varied keys, life_revolutions, ended_by, "
+                                "max_depth_m, worn_volume_m3, status, message)",
+                                where(t.path, t.header_line)));
+  o.keys.assign(t.header.begin() + 1, t.header.end() - 6);
+  for (const std::string& k : o.keys) o.base.push_back(base.count(k) ? base[k] : std::numeric_limits<double>::quiet_NaN());
+  for (std::size_t r = 0; r < t.rows.size(); ++r) {
+    const std::vector<std::string>& row = t.rows[r];
+    if (row[n - 2] != "ok") {
+      ++o.left_out;
+      continue;
+    }
+    SweepCase c;
+    const auto number = [&](std::size_t col) {
+      double v = 0;
+      if (!parse_number(row[col], v))
+        throw bad_input(fmt::format("{}: malformed row: column {} is '{}', not a finite number",
+                                    where(t.path, t.row_lines[r]), t.header[col], contact::clipped(row[col])));
+      return v;
+    };
+    for (std::size_t k = 0; k < o.keys.size(); ++k) c.inputs.push_back(number(1 + k));
+    c.life = number(n - 6);
+    try {
+      const wear::LifeEnd end = wear::parse_life_end(row[n - 5]);
+      c.censored = end == wear::LifeEnd::Revolutions || end == wear::LifeEnd::MaxSteps;
+    } catch (const std::invalid_argument& e) {
+      throw bad_input(fmt::format("{}: malformed row: ended_by: {}", where(t.path, t.row_lines[r]), e.what()));
+    }
+    o.cases.push_back(std::move(c));
+  }
+  if (o.cases.empty())
+    throw bad_input(fmt::format("{}: no case with status ok to plot ({} left out)", (dir / "results.csv").string(),
+                                o.left_out));
+  return o;
+}
+
+// "friction.mu" -> "friction_mu": a file name
+std::string file_stem(const std::string& key) {
+  std::string f;
+  for (const char ch : key) f += std::isalnum(static_cast<unsigned char>(ch)) || ch == '-' ? ch : '_';
+  return f;
+}
+
+bool all_positive(const std::vector<double>& v) {
+  return std::all_of(v.begin(), v.end(), [](double x) { return x > 0; });
+}
+
+// a log axis where every value is positive and they span a decade or more
+bool log_axis(const std::vector<double>& v) {
+  if (v.empty() || !all_positive(v)) return false;
+  const auto [lo, hi] = std::minmax_element(v.begin(), v.end());
+  return *hi >= 10 * *lo;
+}
+
+std::string count_note(const SweepOutput& s) {
+  return fmt::format("{} cases{}", s.cases.size(),
+                     s.left_out > 0 ? fmt::format(", {} not ok left out", s.left_out) : std::string());
+}
+
+// every ok case as a row: the inputs, the life (scaled), 1 if censored
+std::string sweep_block(const SweepOutput& s, double divisor) {
+  std::string out = "$sweep << EOD\n";
+  for (const SweepCase& c : s.cases) {
+    for (const double v : c.inputs) {
+      put(out, v);
+      out += ' ';
+    }
+    put(out, c.life / divisor);
+    out += c.censored ? " 1\n" : " 0\n";
+  }
+  return out + "EOD\n";
+}
+
+// the cases of a product grid through the base point along axis a: the other axes at the grid value
+// nearest the base case's (the axis' middle value when the base case does not give the key), as
+// summary.txt's elasticities take them; sorted by the axis' value
+std::vector<const SweepCase*> base_slice(const SweepOutput& s, std::size_t a) {
+  std::vector<double> held(s.keys.size());
+  for (std::size_t k = 0; k < s.keys.size(); ++k) {
+    std::vector<double> values;
+    for (const SweepCase& c : s.cases) values.push_back(c.inputs[k]);
+    std::sort(values.begin(), values.end());
+    values.erase(std::unique(values.begin(), values.end()), values.end());
+    held[k] = values[values.size() / 2];
+    if (!std::isnan(s.base[k]))
+      for (const double v : values)
+        if (std::fabs(v - s.base[k]) < std::fabs(held[k] - s.base[k])) held[k] = v;
+  }
+  std::vector<const SweepCase*> slice;
+  for (const SweepCase& c : s.cases) {
+    bool on = true;
+    for (std::size_t k = 0; k < s.keys.size(); ++k)
+      if (k != a && c.inputs[k] != held[k]) on = false;
+    if (on) slice.push_back(&c);
+  }
+  std::sort(slice.begin(), slice.end(), [a](const SweepCase* x, const SweepCase* y) { return x->inputs[a] < y->inputs[a]; });
+  return slice;
+}
+
+// the life against axis (or input) a: every case, the censored marked, and on a product grid of more
+// than one axis the line through the base point
+std::string life_figure(const SweepOutput& s, std::size_t a, double divisor, const std::string& life_label,
+                        const fs::path& output) {
+  std::vector<double> x, lives;
+  for (const SweepCase& c : s.cases) x.push_back(c.inputs[a]), lives.push_back(c.life);
+  const std::size_t column = a + 1, life_column = s.keys.size() + 1, censored_column = s.keys.size() + 2;
+  const bool any_censored = std::any_of(s.cases.begin(), s.cases.end(), [](const SweepCase& c) { return c.censored; });
+  std::string plot = fmt::format("$sweep using {0}:(${2} == 0 ? ${1} : NaN) with points pt 7 ps 1.1 lc rgb '#7f8c9a' "
+                                 "title 'every case'",
+                                 column, life_column, censored_column);
+  if (any_censored)
+    plot += fmt::format(", \\\n     $sweep using {0}:(${2} == 1 ? ${1} : NaN) with points pt 9 ps 1.6 lc rgb '#e9a03b' "
+                        "title 'reached the budget (a lower bound)'",
+                        column, life_column, censored_column);
+  std::string slice_block;
+  if (s.sampling == "product" && s.keys.size() > 1) {
+    slice_block = fmt::format("$slice{} << EOD\n", a);
+    for (const SweepCase* c : base_slice(s, a)) {
+      put(slice_block, c->inputs[a]);
+      slice_block += ' ';
+      put(slice_block, c->life / divisor);
+      slice_block += '\n';
+    }
+    slice_block += "EOD\n";
+    plot += fmt::format(", \\\n     $slice{} using 1:2 with linespoints lw 2 pt 7 ps 1.2 lc rgb '#c0392b' title "
+                        "'the other keys at the base case'",
+                        a);
+  }
+  return slice_block + figure_start(output, fmt::format("{}: life against {} ({})", s.name, s.keys[a], count_note(s))) +
+         fmt::format("set xlabel {}\nset ylabel {}\n", quote(s.keys[a]), quote(life_label)) +
+         (log_axis(x) ? "set logscale x\nset format x '%g'\n" : "") + (all_positive(lives) ? "set logscale y\n" : "") +
+         "set offsets graph 0.03, graph 0.03, 0, 0\n"
+         "set key inside left top box opaque\n"
+         "plot " + plot + "\n" + kFigureEnd;
+}
+
+// the life's empirical distribution (every ok life as if it had ended, i/n) and the Kaplan-Meier estimate
+// (a life at the budget right-censored), the censored lives marked on it, B10 and B50 as dashed lines
+std::string distribution_figure(const SweepOutput& s, double divisor, const std::string& life_label,
+                                const fs::path& output) {
+  std::vector<std::pair<double, bool>> lives;
+  std::vector<double> sorted;
+  for (const SweepCase& c : s.cases) lives.emplace_back(c.life, c.censored), sorted.push_back(c.life);
+  std::sort(sorted.begin(), sorted.end());
+  const std::vector<wear::KaplanMeierStep> km = wear::kaplan_meier(lives);
+  std::string out = "$empirical << EOD\n";
+  for (std::size_t i = 0; i < sorted.size(); ++i) {
+    put(out, sorted[i] / divisor);
+    out += ' ';
+    put(out, static_cast<double>(i + 1) / static_cast<double>(sorted.size()));
+    out += '\n';
+  }
+  out += "EOD\n$km << EOD\n";
+  for (const wear::KaplanMeierStep& k : km) {  // a vertical jump at each failure
+    const double before = &k == &km.front() ? 0.0 : (&k - 1)->failed_fraction;
+    for (const double f : {before, k.failed_fraction}) {
+      put(out, k.life / divisor);
+      out += ' ';
+      put(out, f);
+      out += '\n';
+    }
+  }
+  if (!km.empty() && sorted.back() > km.back().life) {  // held to the longest life
+    put(out, sorted.back() / divisor);
+    out += ' ';
+    put(out, km.back().failed_fraction);
+    out += '\n';
+  }
+  out += "EOD\n$censored << EOD\n";
+  long censored = 0;
+  for (const auto& [life, is_censored] : lives) {
+    if (!is_censored) continue;
+    ++censored;
+    double f = 0;
+    for (const wear::KaplanMeierStep& k : km)
+      if (k.life <= life) f = k.failed_fraction;
+    put(out, life / divisor);
+    out += ' ';
+    put(out, f);
+    out += '\n';
+  }
+  out += "EOD\n";
+  std::string plot = "$empirical using 1:2 with steps lw 1.5 lc rgb '#7f8c9a' title 'empirical, every life as if ended (i/n)', \\\n"
+                     "     $empirical using 1:2 with points pt 7 ps 0.8 lc rgb '#7f8c9a' notitle";
+  if (!km.empty()) plot += ", \\\n     $km using 1:2 with lines lw 2.5 lc rgb '#c0392b' title 'Kaplan-Meier (budget lives censored)'";
+  if (censored > 0)
+    plot += fmt::format(", \\\n     $censored using 1:2 with points pt 2 ps 1.8 lw 2 lc rgb '#e9a03b' title 'censored ({})'",
+                        censored);
+  return out + figure_start(output, fmt::format("{}: distribution of the life ({})", s.name, count_note(s))) +
+         fmt::format("set xlabel {}\n", quote(life_label)) +
+         "set ylabel 'fraction of lives ended by N'\n"
+         "set yrange [0:1]\n" +
+         (all_positive(sorted) ? "set logscale x\n" : "") +
+         "set offsets graph 0.03, graph 0.03, 0, 0\n"
+         "set arrow from graph 0, first 0.1 to graph 1, first 0.1 nohead dt 2 lc rgb '#1f4e9c'\n"
+         "set arrow from graph 0, first 0.5 to graph 1, first 0.5 nohead dt 2 lc rgb '#1f4e9c'\n"
+         "set label 'B10' at graph 0.01, first 0.125 tc rgb '#1f4e9c'\n"
+         "set label 'B50' at graph 0.01, first 0.525 tc rgb '#1f4e9c'\n"
+         "set key inside left top\n"
+         "plot " + plot + "\n" + kFigureEnd;
+}
+
+// a sweep's pictures: the life against each varied key, and for random sampling the life's distribution
+std::vector<fs::path> draw_sweep(const SweepOutput& s, const fs::path& plots, std::ostream& err) {
+  std::vector<Picture> pictures;
+  const auto picture = [&](const std::string& leaf) {
+    const fs::path path = plots / leaf;
+    pictures.push_back({path, temporary_for(path)});
+    return pictures.back().temporary;
+  };
+  std::vector<double> lives;
+  for (const SweepCase& c : s.cases) lives.push_back(c.life);
+  const auto [divisor, revolutions_text] = revolutions_axis(lives);
+  const std::string life_label = "life, " + revolutions_text;
+  std::string script = "# rollwear plot: the sweep " + s.name + "\n" + terminal_script() + sweep_block(s, divisor);
+  for (std::size_t a = 0; a < s.keys.size(); ++a)
+    script += life_figure(s, a, divisor, life_label, picture("life_vs_" + file_stem(s.keys[a]) + ".png"));
+  if (is_random(s)) script += distribution_figure(s, divisor, life_label, picture("life_distribution.png"));
+  return render(script, pictures, plots, err);
+}
 }  // namespace
 
 int plot_command(const std::string& output_dir, std::ostream& out, std::ostream& err) {
@@ -546,6 +822,11 @@ int plot_command(const std::string& output_dir, std::ostream& out, std::ostream&
   };
   try {
     const fs::path dir = output_dir;
+    if (is_sweep_folder(dir)) {  // rollwear sweep's folder: results.csv and sweep.txt
+      for (const fs::path& p : draw_sweep(read_sweep_output(dir), dir / "plots", err)) out << p.string() << '\n';
+      out.flush();
+      return 0;
+    }
     const RunOutput run = read_run_output(dir);
     for (const fs::path& p : draw(run, dir / "plots", err)) out << p.string() << '\n';
     out.flush();

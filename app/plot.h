@@ -10,6 +10,13 @@
 //   profile_BODY.png          per worn body: the profile at each snapshot over the original, z (mm,
 //                             axis pointing down into the material) against y (mm)
 //   depth_profile_BODY.png    per worn body: the wear depth (µm, axis pointing down) against y (mm)
+// A sweep's output folder (rollwear sweep: results.csv and sweep.txt, docs/sweeps.md) instead gets
+//   life_vs_KEY.png           the life (log) against each varied key (dots every case with status ok, the
+//                             lives at the budget marked as lower bounds; on a product grid of more than one
+//                             axis, a line through the base case's values of the other keys)
+//   life_distribution.png     random sampling only: the lives' empirical distribution (i/n) and the
+//                             Kaplan-Meier estimate with the budget's lives censored, B10 and B50 marked
+// Cases whose status is not ok are left out (and counted in the titles).
 // gnuplot runs once on a temporary script (plots/plot.gp.tmp.<pid>); every PNG is drawn to
 // PNG + ".tmp.<pid>" and renamed only when gnuplot has succeeded, so a failure leaves no torn PNG and
 // no temporary file.

@@ -20,6 +20,9 @@
 #include "lib/io/errors.h"
 #include "wear/sweep.h"
 #include "wear/sweep_summary.h"
+#ifdef ROLLWEAR_WITH_MPI
+#include "app/sweep_mpi.h"
+#endif
 
 namespace {
 
@@ -148,6 +151,21 @@ int run_sweep_command(const SweepOptions& opt) {
                        : !s.output_directory.empty() ? std::filesystem::path(s.output_directory)
                                                      : std::filesystem::path("out") / std::filesystem::path(opt.sweep_path).stem();
   o.threads = opt.threads > 0 ? opt.threads : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+#ifdef ROLLWEAR_WITH_MPI
+  // under mpirun: rank 0 runs the sweep and deals its cases to the other ranks (app/sweep_mpi.h)
+  struct MpiFinish {
+    bool on = false;
+    ~MpiFinish() {
+      if (on) rollwear_mpi::finish();
+    }
+  } mpi;
+  mpi.on = rollwear_mpi::start();
+  if (mpi.on && rollwear_mpi::rank() > 0) {
+    rollwear_mpi::serve(s, o.output_directory);
+    return 0;
+  }
+  if (mpi.on) o.dispatch = rollwear_mpi::dispatch();
+#endif
   const bool terminal = ::isatty(STDERR_FILENO) == 1;
   o.progress_interval_s = terminal ? 0.5 : 5.0;
   bool drawn = false;
@@ -168,8 +186,9 @@ int run_sweep_command(const SweepOptions& opt) {
   // process's memory map lock). Kept up to 256 MiB per arena, the sweep's system time is 0.1 s.
   mallopt(M_TRIM_THRESHOLD, 256 * 1024 * 1024);
   const FolderLock lock(o.output_directory);
-  spdlog::info("sweep {}: {} cases, shard {}/{}, {} threads, into {}", opt.sweep_path, wear::case_count(s), o.shard_k,
-               o.shard_n, o.threads, o.output_directory.string());
+  spdlog::info("sweep {}: {} cases, shard {}/{}, {}, into {}", opt.sweep_path, wear::case_count(s), o.shard_k, o.shard_n,
+               o.dispatch ? std::string("dealt to the other MPI ranks") : std::to_string(o.threads) + " threads",
+               o.output_directory.string());
   std::string again = "rollwear sweep " + opt.sweep_path + " -o " + o.output_directory.string();
   if (o.shard_n > 1) again += " --shard " + opt.shard;
   say_on_signal("\nrollwear: interrupted; the finished cases are kept, and the sweep continues with: " + again + "\n");

@@ -319,4 +319,95 @@ TEST_F(PlotGnuplot, FailureShowsItsMessageAndKeepsTheOldPictures) {
   EXPECT_EQ(read_text(run / "plots" / "profile_body1.png"), old_profile);
 }
 
+// ---- a sweep's output folder (rollwear sweep: results.csv, sweep.txt) ----
+
+std::string fmt_row(int i, double input, double life, const std::string& ended_by) {
+  std::ostringstream r;
+  r.precision(17);
+  r << i << ',' << input << ',' << life << ',' << ended_by << ",1e-4,2e-7,ok,\n";
+  return r.str();
+}
+
+// a product grid of 3 x 2 cases over friction.mu and load.normal_load_N: one failed (its message quoted,
+// with a comma), one that reached the budget (censored)
+void write_grid_sweep(const fs::path& dir) {
+  write_text(dir / "sweep.txt", "fingerprint 0123456789abcdef\ncases 6\nshard 1/1\nsampling product\nseed 0\n"
+                                "axis friction.mu 3 0.3\naxis load.normal_load_N 2 1500\n");
+  write_text(dir / "results.csv",
+             "index,friction.mu,load.normal_load_N,life_revolutions,ended_by,max_depth_m,worn_volume_m3,status,message\n"
+             "0,0.2,1000,2.5e8,max_depth,1e-4,2e-7,ok,max_depth reached at N 2.5e8\n"
+             "1,0.2,2000,1.1e8,edge,8e-5,1.9e-7,ok,edge reached\n"
+             "2,0.3,1000,3.4e8,max_depth,1e-4,2e-7,ok,\n"
+             "3,0.3,2000,,failed,,,failed,\"ended at N 1e6, the last accepted step: the normal problem did not converge\"\n"
+             "4,0.4,1000,1e10,revolutions,6e-5,1e-7,ok,the life budget reached\n"
+             "5,0.4,2000,1.9e8,edge,9e-5,1.8e-7,ok,edge reached\n");
+}
+
+// a Latin hypercube of 8 cases over one input, two of them censored at the budget
+void write_random_sweep(const fs::path& dir) {
+  write_text(dir / "sweep.txt", "fingerprint 0123456789abcdef\ncases 8\nshard 1/1\nsampling latin-hypercube\nseed 7\n");
+  std::string t = "index,wear.body1.archard_k,life_revolutions,ended_by,max_depth_m,worn_volume_m3,status,message\n";
+  const double lives[] = {3e7, 5e7, 8e7, 1e8, 1.3e8, 2e8, 1e9, 1e9};
+  for (int i = 0; i < 8; ++i)
+    t += fmt_row(i, 1e-4 / (1 + i), lives[i], i >= 6 ? "revolutions" : "max_depth");
+  write_text(dir / "results.csv", t);
+}
+
+TEST_F(PlotCommand, SweepGridDrawsTheLifeAgainstEveryAxis) {
+  const fs::path sweep = dir_ / "sweep-grid";
+  write_grid_sweep(sweep);
+  const Result r = plot(sweep);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.err, "");
+  const std::vector<std::string> pictures = {"life_vs_friction_mu.png", "life_vs_load_normal_load_N.png"};
+  EXPECT_EQ(files_under(sweep / "plots"), pictures);  // a grid: no distribution
+  for (const std::string& name : pictures) {
+    EXPECT_TRUE(is_png(sweep / "plots" / name));
+    EXPECT_NE(r.out.find((sweep / "plots" / name).string() + "\n"), std::string::npos) << r.out;
+  }
+  EXPECT_FALSE(has_temporary(sweep));
+}
+
+TEST_F(PlotCommand, RandomSweepDrawsTheLifesDistributionWithKaplanMeier) {
+  const fs::path sweep = dir_ / "mc";
+  write_random_sweep(sweep);
+  const Result r = plot(sweep);
+  ASSERT_EQ(r.status, 0) << r.err;
+  const std::vector<std::string> pictures = {"life_distribution.png", "life_vs_wear_body1_archard_k.png"};
+  EXPECT_EQ(files_under(sweep / "plots"), pictures);
+  for (const std::string& name : pictures) EXPECT_TRUE(is_png(sweep / "plots" / name));
+  EXPECT_FALSE(has_temporary(sweep));
+}
+
+TEST_F(PlotInput, SweepTableRowThatIsNoNumberNamesFileAndLine) {
+  const fs::path sweep = dir_ / "bad";
+  write_grid_sweep(sweep);
+  std::string table = read_text(sweep / "results.csv");
+  table.replace(table.find("3.4e8"), 5, "lots");
+  write_text(sweep / "results.csv", table);
+  const Result r = plot(sweep);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_TRUE(is_one_error_line(r.err));
+  EXPECT_NE(r.err.find((sweep / "results.csv").string() + " line 4: malformed row: column life_revolutions is 'lots'"),
+            std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(sweep / "plots"));
+}
+
+TEST_F(PlotGnuplot, SweepFailureKeepsTheOldPictures) {
+  const fs::path sweep = dir_ / "sweep-grid";
+  write_grid_sweep(sweep);
+  ASSERT_EQ(plot(sweep).status, 0);
+  const std::string old = read_text(sweep / "plots" / "life_vs_friction_mu.png");
+  write_failing_gnuplot(dir_);
+  Result r;
+  {
+    const PathGuard path(dir_);
+    r = plot(sweep);
+  }
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.err.find("the pen broke"), std::string::npos) << r.err;
+  EXPECT_FALSE(has_temporary(sweep));
+  EXPECT_EQ(read_text(sweep / "plots" / "life_vs_friction_mu.png"), old);
+}
+
 }  // namespace

@@ -461,4 +461,72 @@ TEST_F(SweepFile, GridElasticityOfArchardsCoefficientIsMinusOne) {
   EXPECT_NE(line.find("central"), std::string::npos) << summary;
 }
 
+// Kaplan-Meier by hand (summary.txt's B10 and B50, the plot's curve): lives 1, 2 (censored), 3, 4:
+// F(1) = 1/4; at 3, two at risk: S = 3/4 x 1/2, F = 5/8; at 4, one at risk: F = 1. A censoring tied
+// with a failure is after it (it was at risk then).
+TEST(SweepSummary, KaplanMeierByHand) {
+  const std::vector<KaplanMeierStep> km = kaplan_meier({{3, false}, {2, true}, {4, false}, {1, false}});
+  ASSERT_EQ(km.size(), 3u);
+  EXPECT_EQ(km[0].life, 1);
+  EXPECT_EQ(km[0].failed_fraction, 0.25);
+  EXPECT_EQ(km[1].life, 3);
+  EXPECT_EQ(km[1].failed_fraction, 0.625);
+  EXPECT_EQ(km[2].life, 4);
+  EXPECT_EQ(km[2].failed_fraction, 1);
+  const std::vector<KaplanMeierStep> tie = kaplan_meier({{1, true}, {1, false}});
+  ASSERT_EQ(tie.size(), 1u);
+  EXPECT_EQ(tie[0].failed_fraction, 0.5);
+}
+
+// A case that fails while running (not at input): a concave roller whose deepest point lies 50 nm short of
+// its width, on a crowned path that keeps the contact there (the geometry of
+// WearLoop.BodyWornThroughEndsTheLife, here read from a profile file). Without a depth limit its first
+// 50 nm of wear wear it through: the wear loop ends the life at its last accepted step, LifeFailure
+// WornThrough. The sweep records that row (status failed, its message) and runs the next case on the same
+// thread; the exit status is 0 and summary.txt counts the failure apart. (Run as `rollwear sweep`, the way
+// a user meets it.)
+TEST_F(SweepFile, CaseThatFailsWhileRunningIsARowAndTheSweepGoesOn) {
+  constexpr double kWidth_m = 0.020, kGrooveRadius_m = 1.0, kMargin_m = 5e-8;
+  std::ostringstream profile;
+  profile.precision(17);
+  profile << "y_m,z_m\n";
+  for (int i = 0; i <= 400; ++i) {
+    const double y = -kWidth_m / 2 + kWidth_m * i / 400;
+    profile << y << ',' << (kWidth_m - kMargin_m) - y * y / (2 * kGrooveRadius_m) << '\n';
+  }
+  write_text(dir_ / "profiles" / "concave.csv", profile.str());
+  std::string base = read_text(dir_ / "base.yaml");
+  base = std::regex_replace(base, std::regex("body1: \\{ crowned: \\{ Ry_m: 0.500, width_m: 0.020 \\} \\}"),
+                            "body1: { file: profiles/concave.csv }");
+  base = std::regex_replace(base, std::regex("body2: \\{ flat: \\{ width_m: 0.030 \\} \\}"),
+                            "body2: { crowned: { Ry_m: 0.25, width_m: 0.030 } }");
+  base = std::regex_replace(base, std::regex("normal: auto"), "normal: semi-hertz");
+  base = std::regex_replace(base, std::regex("limits: \\{ max_depth_m: 2.0e-5, edge: true \\}"),
+                            "limits: { max_depth_m: 2.0e-8, edge: false }");
+  // steps of at most 5 nm of depth: no trial step wears through before the 20 and 30 nm limits
+  base = std::regex_replace(base, std::regex("stepping: \\{[^}]*\\}"), "stepping: { method: fixed-depth, max_depth_step_m: 5.0e-9 }");
+  ASSERT_NE(base.find("fixed-depth"), std::string::npos);
+  ASSERT_NE(base.find("concave.csv"), std::string::npos);
+  ASSERT_NE(base.find("max_depth_m: 2.0e-8"), std::string::npos);
+  write_text(dir_ / "base.yaml", base);
+  // case 1 has no depth limit (0): it wears through; cases 0 and 2 stop at 20 and 30 nm
+  const fs::path sweep = sweep_file("axes:\n  - { key: wear.limits.max_depth_m, values: [2.0e-8, 0, 3.0e-8] }\n");
+  const Process r = rollwear("sweep " + q(sweep) + " -o " + q(dir_ / "out") + " -j 1 -q", dir_);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  std::istringstream table(read_text(dir_ / "out" / "results.csv"));
+  std::vector<std::string> rows;
+  for (std::string line; std::getline(table, line);) rows.push_back(line);
+  ASSERT_EQ(rows.size(), 4u) << read_text(dir_ / "out" / "results.csv");
+  EXPECT_EQ(row_status(rows[1], 1), CaseStatus::Ok) << rows[1];
+  EXPECT_EQ(row_status(rows[2], 1), CaseStatus::Failed) << rows[2];
+  EXPECT_EQ(row_status(rows[3], 1), CaseStatus::Ok) << rows[3];  // run after the failure, on the same thread
+  EXPECT_NE(rows[2].find(",failed,"), std::string::npos) << rows[2];  // ended_by
+  EXPECT_NE(rows[2].find("the last accepted step"), std::string::npos) << rows[2];
+  EXPECT_NE(rows[2].find("body 1 is worn through"), std::string::npos) << rows[2];
+  EXPECT_TRUE(fs::exists(dir_ / "out" / "case_0001" / "report.txt"));  // its outputs up to the failure
+  EXPECT_EQ(read_text(dir_ / "out" / "case_0001" / "row.csv"), rows[2] + "\n");
+  EXPECT_NE(read_text(dir_ / "out" / "summary.txt").find("2 ok, 1 not ok"), std::string::npos)
+      << read_text(dir_ / "out" / "summary.txt");
+}
+
 }  // namespace

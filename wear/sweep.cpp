@@ -519,7 +519,9 @@ CaseOutcome run_case(const std::string& yaml_text, long index, const std::vector
   contact::write_file_atomic(case_path, yaml_text);
   try {
     const WearCase c = read_wear_case(case_path.string());
-    const WearModel m = make_wear_model(c);
+    WearModel model = make_wear_model(c);
+    model.collective_threads = 1;  // the sweep's threads run cases: a collective's conditions run on the case's
+    const WearModel& m = model;
     const double hours_per_rev = hours_per_revolution(m);
     WearCache cache;
     LifeStart start;
@@ -692,8 +694,24 @@ SweepRunSummary run_sweep(const Sweep& s, const SweepRunOptions& o) {
     --running;
     changed.notify_all();
   };
-  const int threads = std::max(1, std::min<int>(o.threads, static_cast<int>(pending.size())));
   const auto t0 = std::chrono::steady_clock::now();
+  if (o.dispatch && !pending.empty()) {  // elsewhere (MPI ranks): each row as it comes
+    double last_report_s = 0;
+    o.dispatch(pending, [&](const std::string& row) {
+      rows[row_index(row)] = row;
+      ++done;
+      if (row_status(row, nkeys) != CaseStatus::Ok) ++failed;
+      const double elapsed_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      if (o.progress && (elapsed_s - last_report_s >= o.progress_interval_s || done == summary.cases)) {
+        o.progress(done, failed, summary.cases, elapsed_s);
+        last_report_s = elapsed_s;
+      }
+    });
+    pending.clear();
+    if (static_cast<long>(rows.size()) != summary.cases)
+      throw std::runtime_error(fmt::format("sweep: {} of {} cases came back from the ranks", rows.size(), summary.cases));
+  }
+  const int threads = std::max(1, std::min<int>(o.threads, static_cast<int>(pending.size())));
   std::vector<std::thread> pool;
   running = pending.empty() ? 0 : static_cast<std::size_t>(threads);
   for (int t = 0; t < threads && !pending.empty(); ++t) pool.emplace_back(work);

@@ -33,6 +33,7 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <yaml-cpp/yaml.h>
@@ -146,6 +147,12 @@ struct SweepRunOptions {
   // new case starts, the running ones finish (their rows kept for a resume), and run_sweep throws
   // SweepCancelled without writing results.csv. The Python bindings check for Ctrl-C here.
   std::function<bool()> cancelled;
+  // When set, the pending cases run elsewhere instead of on `threads` threads (rollwear sweep under MPI,
+  // app/sweep_mpi.h): called once with every pending case (index, case text), it calls finished(row) with
+  // each case's results row, in any order, from the calling thread, and returns when every case has one.
+  std::function<void(const std::vector<std::pair<long, std::string>>& pending,
+                     const std::function<void(const std::string& row)>& finished)>
+      dispatch;
 };
 // run_sweep stopped by SweepRunOptions::cancelled
 struct SweepCancelled : std::runtime_error {

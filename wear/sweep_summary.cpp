@@ -6,6 +6,7 @@
 #include <map>
 #include <sstream>
 #include <stdexcept>
+#include <utility>
 
 #include <spdlog/fmt/fmt.h>
 
@@ -52,24 +53,31 @@ double to_double(const std::string& t) {
 
 // Kaplan-Meier: the smallest life at which the estimated fraction failed reaches p; +inf when it never does
 double km_quantile(std::vector<std::pair<double, bool>> lives, double p) {  // (life, censored)
-  std::sort(lives.begin(), lives.end(), [](const auto& a, const auto& b) {
-    return a.first < b.first || (a.first == b.first && !a.second && b.second);  // failures before censoring at a tie
-  });
-  double survival = 1;
-  std::size_t at_risk = lives.size();
-  for (const auto& [t, censored] : lives) {
-    if (!censored) {
-      survival *= 1 - 1.0 / static_cast<double>(at_risk);
-      if (1 - survival >= p - 1e-12) return t;
-    }
-    --at_risk;
-  }
+  for (const KaplanMeierStep& s : kaplan_meier(std::move(lives)))
+    if (s.failed_fraction >= p - 1e-12) return s.life;
   return std::numeric_limits<double>::infinity();
 }
 
 std::string life_text(double v) { return std::isinf(v) ? "beyond the budget (censored)" : fmt::format("{:.4g}", v); }
 
 }  // namespace
+
+std::vector<KaplanMeierStep> kaplan_meier(std::vector<std::pair<double, bool>> lives) {
+  std::sort(lives.begin(), lives.end(), [](const auto& a, const auto& b) {
+    return a.first < b.first || (a.first == b.first && !a.second && b.second);  // failures before censoring at a tie
+  });
+  std::vector<KaplanMeierStep> steps;
+  double survival = 1;
+  std::size_t at_risk = lives.size();
+  for (const auto& [t, censored] : lives) {
+    if (!censored) {
+      survival *= 1 - 1.0 / static_cast<double>(at_risk);
+      steps.push_back({t, 1 - survival});
+    }
+    --at_risk;
+  }
+  return steps;
+}
 
 std::string sweep_summary(const std::string& results_csv, const std::string& sweep_txt) {
   // sweep.txt

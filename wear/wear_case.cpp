@@ -1,6 +1,7 @@
 #include "wear/wear_case.h"
 
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <tuple>
@@ -11,6 +12,7 @@
 #include "lib/io/number.h"
 #include "lib/io/yaml_reader.h"
 #include "lib/normal/profile.h"
+#include "wear/collective.h"
 
 namespace wear {
 
@@ -83,7 +85,7 @@ void read_stepping(YamlMap& m, WearStepping& s) {
   s.max_steps = static_cast<long>(max_steps);
 }
 
-void read_wear(YamlMap& m, WearSection& w) {
+void read_wear(YamlMap& m, WearSection& w, std::optional<YamlValue>& collective) {
   m.optional_section("body1", [&](YamlMap& s) { read_law(s, w.body1.emplace()); });
   m.optional_section("body2", [&](YamlMap& s) { read_law(s, w.body2.emplace()); });
   if (!w.body1 && !w.body2)
@@ -111,6 +113,8 @@ void read_wear(YamlMap& m, WearSection& w) {
     }
   });
   m.optional("checkpoint_interval_s", w.checkpoint_interval_s, contact::nonnegative_finite);
+  // read once the case's own sections are (each condition starts from them): read_wear_case
+  m.optional_value("collective", [&](const YamlValue& v) { collective.emplace(v); });
 }
 
 }  // namespace
@@ -122,12 +126,14 @@ template <class ReadContact>
 WearCase read_wear_case_with(const std::string& path, ReadContact read_contact) {
   WearCase c;
   bool has_wear = false;
+  std::optional<YamlValue> collective;
   c.contact = read_contact([&](YamlMap& m) {
     m.optional_section("wear", [&](YamlMap& s) {
       has_wear = true;
-      read_wear(s, c.wear);
+      read_wear(s, c.wear, collective);
     });
   });
+  if (collective) c.wear.collective = read_collective(*collective, c.contact);
   if (!has_wear)
     throw CaseError(path + ": wear: the run command needs a wear: section (the bodies that wear, their law "
                     "and the revolutions), e.g. cases/paper-wear.yaml",
@@ -194,6 +200,7 @@ void validate(const WearCase& c) {
   if (contact::enum_from_name(kSteppingMethods, w.stepping.method) == Method::FixedStep &&
       !(w.stepping.step_revolutions > 0))
     throw CaseError(where(k, "wear.stepping") + "wear.stepping.step_revolutions: fixed-revolutions needs a step > 0");
+  if (!w.collective.empty()) validate_collective(c);
 }
 
 void check_profile_resolves_contact(const WearCase& c, int body, double node_spacing_m, double contact_width_m,

@@ -17,6 +17,9 @@
 //     smoothing_wavelength_m: 5.0e-4    # cut-off of the volume-conserving Gaussian filter; 0 = none
 //     snapshots_revolutions: [1.0e7, 3.0e7]   # worn profiles written there (and at the start and end)
 //     checkpoint_interval_s: 10      # wall time between checkpoints (the last step is always saved)
+//     collective:                    # optional: running conditions and their shares (wear/collective.h)
+//       - { weight: 0.7 }                                            # the case's own condition
+//       - { weight: 0.3, load: { normal_load_N: 2500 }, kinematics: { xi: 2.0e-3 } }
 //
 // Each body's law takes the keys of wear::WearLaw (wear_law.h): law, k_E_m3_per_J, archard_k,
 // hardness_Pa, density_kg_per_m3, kth: {...}, usfd: {...}.
@@ -48,6 +51,14 @@ struct WearStepping {
   long max_steps = 100000;          // accepted steps in the whole run
 };
 
+// One running condition of a load collective (wear/collective.h): the case with the condition's load,
+// kinematics, friction and transient keys in place of the case's, and its share of the revolutions.
+struct WearCondition {
+  double weight = 0;             // > 0; the weights of a collective sum to 1
+  contact::ContactCase contact;  // the case as this condition runs it
+  std::string location;          // FILE:LINE:COL of the condition's entry
+};
+
 struct WearSection {
   std::optional<WearLaw> body1, body2;  // the bodies that wear; at least one
   double revolutions = 0;               // required: the life budget
@@ -56,6 +67,7 @@ struct WearSection {
   double smoothing_wavelength_m = 5e-4;
   std::vector<double> snapshots_revolutions;  // increasing, in (0, revolutions]
   double checkpoint_interval_s = 10;
+  std::vector<WearCondition> collective;  // empty: the case's own running condition alone
 };
 
 struct WearCase {

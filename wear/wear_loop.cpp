@@ -17,6 +17,7 @@
 #include "lib/io/enum_names.h"
 #include "lib/numeric.h"
 #include "lib/tangential/steady.h"
+#include "wear/collective.h"
 #include "wear/profile_update.h"
 
 namespace wear {
@@ -105,6 +106,7 @@ bool needs_fields(const std::optional<WearLaw>& law) {
 }  // namespace
 
 WearModel make_wear_model(const WearCase& c) {
+  if (!c.wear.collective.empty()) return make_collective_model(c);
   validate(c);
   const contact::ContactCase& k = c.contact;
   WearModel m;
@@ -297,6 +299,7 @@ NormalState solved_normal_state(const WearModel& m, const Eigen::VectorXd& state
 
 WearRate wear_rate(const WearModel& m, const Eigen::VectorXd& state, WearCache& cache) {
   ++cache.counters.rate_evaluations;
+  if (!m.conditions.empty()) return collective_rate(m, state, cache);
   const contact::Profiles worn = worn_profiles(m, state);
   const std::uint64_t key = contact::profile_hash(worn);
   if (cache.reuse)
@@ -379,6 +382,16 @@ constexpr contact::EnumTable<LifeFailure, 5> kLifeFailureWords = {
 // would put a strip's wear on one node and the next solve could not see the worn shape. Throws
 // contact::CaseError at the profile's key, naming what the user can set (wear_case.h).
 constexpr int kMinNodesAcrossContact = 4;
+// each running condition's model and cache (a collective's, or the model's own), their solves counted
+template <class F>
+void for_each_condition(const WearModel& m, WearCache& cache, F f) {
+  if (m.conditions.empty()) return f(m, cache);
+  prepare_condition_caches(m, cache);
+  const std::vector<LifeCounters> before = condition_counters(cache);
+  for (std::size_t k = 0; k < m.conditions.size(); ++k) f(m.conditions[k], cache.conditions[k]);
+  add_condition_solves(cache, before);
+}
+
 void check_profile_resolves_contact(const WearCase& c, const WearModel& m, const NormalState& n) {
   const double width = n.normal.contact_y_max_m - n.normal.contact_y_min_m;
   for (int body : {1, 2}) {
@@ -411,9 +424,18 @@ Eigen::VectorXd limit_values(const WearModel& m, const Eigen::VectorXd& h, WearC
   Eigen::VectorXd g = Eigen::VectorXd::Constant(kLimits, -1.0);
   if (m.limits.max_depth_m > 0) g(kDepth) = max_depth_m(m, h) - m.limits.max_depth_m;
   if (m.limits.max_pressure_Pa <= 0 && !m.limits.edge) return g;
-  const NormalState n = solved_normal_state(m, h, cache);
-  if (m.limits.max_pressure_Pa > 0) g(kPressure) = n.normal.patch.p0_Pa - m.limits.max_pressure_Pa;
-  if (m.limits.edge) g(kEdge) = edge_limit_value_m(worn_profiles(m, h), n.normal);
+  // a collective's: the highest peak pressure and the widest contact of its running conditions
+  bool first = true;
+  for_each_condition(m, cache, [&](const WearModel& mk, WearCache& ck) {
+    const NormalState n = solved_normal_state(mk, h, ck);
+    const double pressure = n.normal.patch.p0_Pa - m.limits.max_pressure_Pa;
+    if (m.limits.max_pressure_Pa > 0) g(kPressure) = first ? pressure : std::max(g(kPressure), pressure);
+    if (m.limits.edge) {
+      const double edge = edge_limit_value_m(worn_profiles(mk, h), n.normal);
+      g(kEdge) = first ? edge : std::max(g(kEdge), edge);
+    }
+    first = false;
+  });
   return g;
 }
 
@@ -603,7 +625,9 @@ LifeResult run_life(const WearModel& m, const WearCase& c, const LifeStart& star
   life.counters = start.counters;
 
   // the worn body's profile must resolve the contact: its nodes carry the wear
-  check_profile_resolves_contact(c, m, solved_normal_state(m, life.state, cache));
+  for_each_condition(m, cache, [&](const WearModel& mk, WearCache& ck) {
+    check_profile_resolves_contact(c, mk, solved_normal_state(mk, life.state, ck));
+  });
   if (const std::optional<LifeEnding> reached = limit_reached_at_start(run, life)) return end_life(run, life, *reached);
 
   // wear through each snapshot revolution, then to the budget: a limit, or a failure, ends the life

@@ -62,6 +62,11 @@ struct WearModel {
   SmoothingKernel smoothing1, smoothing2;
   WearLimits limits;
   int n1 = 0, n2 = 0;              // nodes of each body in the state (0: the body does not wear)
+  // a load collective (wear/collective.h): each running condition's model and its share of the revolutions;
+  // empty for the case's one running condition
+  std::vector<WearModel> conditions;
+  std::vector<double> weights;
+  int collective_threads = 0;      // threads evaluating the conditions' rates; 0 = one per condition up to the cores
 
   int state_size() const { return n1 + n2 + 1; }
   int energy_index() const { return n1 + n2; }
@@ -125,6 +130,7 @@ struct WearCache {
   std::vector<std::pair<std::uint64_t, WearRate>> rates;  // the last few
   LifeCounters counters;  // only the solve and evaluation counts are kept here
   bool edge_reported = false;  // the contact at the edge of a life without the edge limit: warned once
+  std::vector<WearCache> conditions;  // a load collective's: one per running condition (its solves added above)
 };
 
 // Thrown by normal_state where the worn geometry ends the life: run_life ends it at its last accepted

@@ -44,6 +44,11 @@ std::string law_text(const WearLaw& law) {
 }  // namespace
 
 double hours_per_revolution(const WearModel& m) {
+  if (!m.conditions.empty()) {  // a collective: each condition's hours for its share of the revolutions
+    double hours = 0;
+    for (std::size_t k = 0; k < m.conditions.size(); ++k) hours += m.weights[k] * hours_per_revolution(m.conditions[k]);
+    return hours;
+  }
   double V = m.speed_m_per_s;
   if (m.transient) {
     const double T = m.transient->settings.t_end_s;
@@ -56,6 +61,13 @@ std::string wear_summary_header(const WearModel& m) {
   std::string s = fmt::format("# case: {}\n", m.name);
   if (m.law1) s += fmt::format("# body1 wears: {}\n", law_text(*m.law1));
   if (m.law2) s += fmt::format("# body2 wears: {}\n", law_text(*m.law2));
+  if (!m.conditions.empty()) {  // a load collective (wear/collective.h)
+    std::string weights;
+    for (const double w : m.weights) weights += (weights.empty() ? "" : ", ") + round_trip(w);
+    s += fmt::format("# collective: {} running conditions, weights {}; a_m to power_W are the condition's with the "
+                     "highest p0\n",
+                     m.conditions.size(), weights);
+  }
   s += fmt::format("# revolutions of body{} (R {} m); one row per accepted step, step 0 unworn\n", m.law1 ? 1 : 2,
                    round_trip(m.reference_radius_m));
   s += "step,revolutions,hours,max_depth_m,worn_volume_m3,dissipated_J,a_m,b_m,p0_Pa,Fx_N,power_W,"

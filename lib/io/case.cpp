@@ -581,4 +581,13 @@ CaseError transient_error(const ContactCase& c, const SettingError& e) {
   return CaseError((c.path.empty() ? std::string() : c.path + ": ") + "transient: " + e.what());
 }
 
+void read_running_condition(YamlMap& m, ContactCase& c) {
+  m.optional_section("load", [&](YamlMap& s) {
+    s.optional_value("normal_load_N", [&](const YamlValue& v) { c.load.normal_load_N = read_load(v); });
+  });
+  m.optional_section("kinematics", [&](YamlMap& s) { read_kinematics(s, c.kinematics); });
+  m.optional_section("friction", [&](YamlMap& s) { s.optional("mu", c.friction.mu, in_closed(0, 10)); });
+  m.optional_section("transient", [&](YamlMap& s) { read_transient(s, c.transient.emplace()); });
+}
+
 }  // namespace contact

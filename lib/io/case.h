@@ -125,6 +125,11 @@ ContactCase read_contact_case(const std::string& path, const ExtraSections& extr
 ContactCase read_contact_case_text(const std::string& text, const std::string& label,
                                    const std::filesystem::path& base_dir, const ExtraSections& extra = {});
 
+// A running condition over a copy of a case (wear/collective.h): the sections load, kinematics, friction and
+// transient of the mapping, each optional; a key given replaces the case's (a history as a whole, the
+// transient section as a whole), the others stay. Checked as the case's own keys are.
+void read_running_condition(YamlMap& m, ContactCase& c);
+
 // "FILE:LINE:COL: " of the key if it was read from the file, else of its closest enclosing section
 // that was, else "FILE: " (nothing for a case built in code): the prefix of a cross-key message
 std::string where(const ContactCase& c, std::string key);
