@@ -91,6 +91,11 @@ TransientRevolution transient_revolution(const CamModel& m, const Revolution& r,
     b_max = std::max(b_max, hertz[i].b_m);
   }
   TransientRevolution out;
+  for (const contact::HertzContact& h : hertz) {
+    out.a_m.push_back(h.a_m);
+    out.b_m.push_back(h.b_m);
+    out.p0_Pa.push_back(h.p0_Pa);
+  }
   out.grid = contact::make_grid(a_max, b_max, s.grid);
   const contact::Grid& g = out.grid;
   std::vector<AngleContact> contacts(n);

@@ -47,6 +47,7 @@ struct TransientEnergy {
 struct TransientRevolution {
   RevolutionDissipation dissipation;  // one per row, strips on the common grid
   contact::Grid grid;
+  std::vector<double> a_m, b_m, p0_Pa;  // each row's contact (Hertz under the motion's F_n)
   std::vector<double> unsteadiness;   // epsilon_i
   std::vector<char> skipped;          // 1: the row took the steady solution
   int skipped_rows = 0;
