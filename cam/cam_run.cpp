@@ -78,12 +78,15 @@ std::string cam_summary(const CamRun& run) {
                        run.full.transient_steps + run.full.warmup_steps, run.cpu_full_s, 100 * run.skip.step_saving,
                        run.skip.max_power_error, run.skip.energy_error);
   out += fmt::format("energy per revolution: shaft {:.6g} J = guide {:.6g} + bearing {:.6g} + creep (rigid slip) "
-                     "{:.6g} + spring and mass {:.3g} + roller spin {:.3g} + rounding {:.3g}\n",
-                     e.shaft_J, e.guide_J, e.bearing_J, e.creep_rigid_J, e.train_J, e.roller_J, e.residual_J);
-  out += fmt::format("contact: dissipated {:.6g} J = creep work {:.6g} J (rigid {:.6g}, Heathcote {:.6g}) - elastic "
-                     "{:.3g} J + {:.3g}\n",
-                     e.dissipated_J, e.creep_work_J, e.creep_rigid_J, e.heathcote_J, e.elastic_J,
-                     e.tangential_residual_J);
+                     "{:.6g} + Heathcote (roller's radii) {:.6g} + spring and mass {:.3g} + roller spin {:.3g} + "
+                     "rounding {:.3g}\n",
+                     e.shaft_J, e.guide_J, e.bearing_J, e.creep_rigid_J, e.heathcote_roller_J, e.train_J, e.roller_J,
+                     e.residual_J);
+  out += fmt::format("contact: dissipated {:.6g} J = creep work {:.6g} J - elastic {:.3g} J + {:.3g}; creep work = "
+                     "steady law's {:.6g} (= rigid + Heathcote (roller) + contact frame's rotation {:.3g}) + "
+                     "transient's {:.3g}\n",
+                     e.dissipated_J, e.creep_work_J, e.elastic_J, e.tangential_residual_J, e.creep_steady_J, e.frame_J,
+                     e.transient_J);
   return out;
 }
 

@@ -26,16 +26,21 @@ RevolutionEnergy revolution_energy(const CamModel& m, const Revolution& r, const
     e.guide_J += m.train.guide_mu * std::abs(L.guide_reaction_N) * std::abs(s1) * w * dt;
     e.bearing_J += bearing_torque_N_m(m.train, a.omega_r_rad_per_s) * a.omega_r_rad_per_s * dt;
     e.creep_rigid_J += -a.tangential_N * a.slip_speed_m_per_s * dt;
-    e.roller_J += (m.geometry.roller_radius_m * a.tangential_N - bearing_torque_N_m(m.train, a.omega_r_rad_per_s)) *
+    e.heathcote_roller_J += a.depth_moment_N_m * a.omega_r_rad_per_s * dt;
+    e.creep_steady_J += a.creep_power_W * dt;
+    e.roller_J += (m.geometry.roller_radius_m * a.tangential_N - a.depth_moment_N_m -
+                   bearing_torque_N_m(m.train, a.omega_r_rad_per_s)) *
                   a.omega_r_rad_per_s * dt;
     e.kinematic_J += J * row.kin.roller_alpha_rad_per_s2 * row.kin.roller_omega_rad_per_s * dt;
   }
-  e.residual_J = e.shaft_J - (e.train_J + e.guide_J + e.bearing_J + e.creep_rigid_J + e.roller_J);
+  e.residual_J =
+      e.shaft_J - (e.train_J + e.guide_J + e.bearing_J + e.creep_rigid_J + e.heathcote_roller_J + e.roller_J);
+  e.frame_J = e.creep_steady_J - (e.creep_rigid_J + e.heathcote_roller_J);
   if (transient) {
     const TransientEnergy& t = transient->energy;
     e.dissipated_J = t.dissipated_J;
     e.creep_work_J = t.creep_work_J;
-    e.heathcote_J = t.creep_work_J - e.creep_rigid_J;
+    e.transient_J = t.creep_work_J - e.creep_steady_J;
     e.elastic_J = t.elastic_change_J + t.trailing_J + t.transport_J;
     e.tangential_residual_J = t.dissipated_J - (t.creep_work_J - e.elastic_J);
   }

@@ -6,17 +6,22 @@
 //   guide           sum mu_g |Q| |s'| omega dt
 //   bearing         sum T_b(omega_r) omega_r dt
 //   creep (rigid)   sum -F_t w dt: the creep force's work against the roller's rigid slip w at the reference line
-//   roller          sum (R_r F_t - T_b) omega_r dt: the roller's spin energy over the revolution, 0 for the exact
-//                   periodic motion; what the steps sum it to is the integrator's error (BDF2 on the slip's spin,
-//                   cam/roller_dynamics.h: second order in the angle step), the rectangle rule on the kinematic
-//                   spin's energy sum J alpha_kin omega_r,kin dt (kinematic_J) among it
+//   Heathcote (roller)  sum M_z omega_r dt: the crowned roller's strips act below its rolling radius
+//                   (cam/roller_dynamics.h), so their slip over the flat track works too
+//   roller          sum (R_r F_t - M_z - T_b) omega_r dt: the roller's spin energy over the revolution, 0 for the
+//                   exact periodic motion; what the steps sum it to is the integrator's error (BDF2, second
+//                   order in the angle step), the rectangle rule on the kinematic spin's energy
+//                   sum J alpha_kin omega_r,kin dt (kinematic_J) among it
 // Per step T omega = (F_n cos phi + F_t sin phi) s' omega + R_r F_t omega_r,kin (no loss at a rolling contact,
 // docs/cam-follower.md §3) and omega_r,kin = omega_r - w/R_r, so, to rounding,
-//   shaft = train + guide + bearing + creep (rigid) + roller + residual.
-// The balance's content is that train and roller are 0 to the integrator's tolerance. The tangential solve's own balance (Satran, cam/revolution_transient.h):
-//   dissipated (the integral of P dt) = creep work - elastic terms,
-// its creep work the rigid slip's plus Heathcote's (the crowned roller's rolling radius across the contact,
-// docs/physics.md §2.4), which the spin's torque R_r F_t at the nominal radius does not carry (reported apart).
+//   shaft = train + guide + bearing + creep (rigid) + Heathcote (roller) + roller + residual;
+// the balance's content is that train and roller are 0 to the integrator's tolerance.
+// The contact's own work: the steady law's creep work (the one the spin used) sum -V sum_j (xi + offset_j) F_j dy dt,
+// Heathcote's offsets (docs/physics.md §2.4) with the roller's spin relative to the contact, V/R_r; the roller's
+// term above has its spin in the fixed frame, |omega_r| = V/R_r + (omega |P'| kappa_p - omega): the two agree on the
+// dwells, and differ by the contact frame's rotation elsewhere (frame_J = steady creep - rigid - Heathcote (roller)).
+// Satran's balance (cam/revolution_transient.h): dissipated (the integral of P dt) = creep work - elastic terms,
+// its creep work the steady law's plus the transient's departure from it (transient_J).
 #pragma once
 
 #include "cam/revolution.h"
@@ -27,13 +32,16 @@ namespace cam {
 
 struct RevolutionEnergy {
   double shaft_J = 0, train_J = 0, guide_J = 0, bearing_J = 0, creep_rigid_J = 0;
-  double roller_J = 0;      // sum (R_r F_t - T_b) omega_r dt: the roller's spin energy over the revolution
+  double heathcote_roller_J = 0;  // sum M_z omega_r dt
+  double roller_J = 0;      // sum (R_r F_t - M_z - T_b) omega_r dt: the roller's spin energy over the revolution
   double kinematic_J = 0;   // sum J alpha_kin omega_r,kin dt: 0 but for the rectangle rule on the kinematic spin
-  double residual_J = 0;    // shaft - (train + guide + bearing + creep_rigid + roller)
+  double residual_J = 0;    // shaft - (train + guide + bearing + creep_rigid + heathcote_roller + roller)
+  double creep_steady_J = 0;  // the steady law's creep work, Heathcote's offsets included
+  double frame_J = 0;         // creep_steady - (creep_rigid + heathcote_roller): the contact frame's rotation
   // the tangential solve's (transient revolution), when given
   double dissipated_J = 0;      // the integral of P dt
   double creep_work_J = 0;      // the rigid slip's work in the tangential solve, Heathcote's included
-  double heathcote_J = 0;       // creep_work - creep_rigid
+  double transient_J = 0;       // creep_work - creep_steady: the transient's departure from the steady law
   double elastic_J = 0;         // elastic change + trailing + transport (the springs' terms of the step balance)
   double tangential_residual_J = 0;  // dissipated - (creep_work - elastic)
 };

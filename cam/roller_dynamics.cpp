@@ -65,7 +65,8 @@ PeriodicMotion periodic_motion(const CamModel& m, const Revolution& r, const Rol
       ++e.evaluations;
       const double xi = creepage_of(Rr * delta, Vc);
       const double rate = bdf2 ? (1.5 * delta - 2 * delta0 + 0.5 * delta1) / dt : (delta - delta0) / dt;
-      return J * rate - Rr * steady_creep_force_N(c, xi) + bearing_torque_N_m(t, wk + delta) + J * alpha;
+      const CreepForce cf = creep_force(c, xi);
+      return J * rate - (Rr * cf.force_N - cf.depth_moment_N_m) + bearing_torque_N_m(t, wk + delta) + J * alpha;
     };
     // delta's domain: |xi| <= kMaxCreepage, i.e. w in [-2 Vc/3 ... ] scaled: xi = w/(Vc - w/2)
     const double w_hi = kMaxCreepage * Vc / (1 + kMaxCreepage / 2), w_lo = -kMaxCreepage * Vc / (1 - kMaxCreepage / 2);
@@ -156,6 +157,8 @@ PeriodicMotion periodic_motion(const CamModel& m, const Revolution& r, const Rol
     a.slip_speed_m_per_s = e.w;
     a.speed_m_per_s = e.V;
     a.tangential_N = sol.Fx_N;
+    a.depth_moment_N_m = creep_force(contacts[i], e.xi).depth_moment_N_m;
+    a.creep_power_W = -sol.creep_work_W;
     a.normal_N = contacts[i].normal.patch.normal_load_N;
     a.stick_fraction = sol.stick_fraction;
     a.regime = std::abs(e.xi) >= saturation_creepage(contacts[i]) ? RollerRegime::Sliding : RollerRegime::Rolling;

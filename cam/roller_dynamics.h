@@ -1,10 +1,12 @@
 // The roller's spin over the revolution (docs/cam-follower.md §7): driven only by the creep force against
 // its inertia and its bearing,
-//   J d omega_r/dt = R_r F_t(xi) - T_b(omega_r),   T_b = T_0 sign(omega_r) + c_b omega_r,
+//   J d omega_r/dt = R_r F_t(xi) - M_z(xi) - T_b(omega_r),   T_b = T_0 sign(omega_r) + c_b omega_r,
 // F_t(xi) the steady creep law of each angle's contact (cam/creep_law.h: nonlinear, saturating towards
-// mu F_n), xi = w/V its creepage, w = R_r (omega_r - omega_r,kin) the slip over the cam and V = V_cam - w/2.
+// mu F_n), xi = w/V its creepage, w = R_r (omega_r - omega_r,kin) the slip over the cam and V = V_cam - w/2;
+// M_z = sum_j F_j (z1(y_j) - z1(y0)) dy the crowned roller's strips acting below its rolling radius
+// (cam/creep_law.h CreepForce; with Heathcote slip, else 0).
 // Written for delta = omega_r - omega_r,kin (omega_r,kin, alpha_kin of cam/kinematics.h exact at every row),
-//   J d delta/dt = R_r F_t(xi(delta)) - T_b(omega_r,kin + delta) - J alpha_kin,
+//   J d delta/dt = R_r F_t(xi(delta)) - M_z - T_b(omega_r,kin + delta) - J alpha_kin,
 // and integrated from row to row by the second-order backward differentiation formula (BDF2, stable on stiff
 // problems: the law's rate R_r^2 G a b C11/(J V) is some 1e6 1/s against steps of 1e-4 s; backward Euler for
 // the very first step, and as an option), each step's end solved for delta by find_root_bracketed on the

@@ -35,6 +35,8 @@ RollerMotion quasi_static_motion(const CamModel& m, const Revolution& r, const C
     a.omega_r_rad_per_s = row.kin.roller_omega_rad_per_s + a.slip_speed_m_per_s / Rr;
     const contact::TangentialSolution sol = steady_creep(c, a.xi, a.speed_m_per_s);
     a.tangential_N = sol.Fx_N;
+    a.depth_moment_N_m = creep_force(c, a.xi).depth_moment_N_m;
+    a.creep_power_W = -sol.creep_work_W;
     a.normal_N = row.loads.normal_N;
     a.stick_fraction = sol.stick_fraction;
     a.regime = RollerRegime::Rolling;

@@ -21,6 +21,8 @@ struct RollerAngle {
   double slip_speed_m_per_s = 0;      // w_x
   double speed_m_per_s = 0;           // V = V_cam - w_x/2, the mean of the two surfaces' speeds (docs/physics.md §1)
   double tangential_N = 0;            // F_t on the roller along t, from the steady law at xi
+  double depth_moment_N_m = 0;        // the strips' radii: the creep torque on the roller is R_r F_t - this
+  double creep_power_W = 0;           // the steady solution's creep work rate -V sum_j (xi + offset_j) F_j dy
   double normal_N = 0;                // F_n with that F_t
   double stick_fraction = 0;          // of the steady solution at xi
   RollerRegime regime = RollerRegime::Rolling;

@@ -47,7 +47,7 @@ RollerDynamicsSettings coarse() {
 }
 
 // The shipped roller at 600 rpm rolls all round. Where it rolls the creep force is the one rolling needs,
-// F_req = (J alpha_kin + T_b)/R_r, plus the lag's own inertia J d delta/dt / R_r (delta = omega_r - omega_r,kin,
+// F_req = (J alpha_kin + T_b + M_z)/R_r (M_z the strips' depth moment, cam/roller_dynamics.h), plus the lag's own inertia J d delta/dt / R_r (delta = omega_r - omega_r,kin,
 // the slip's spin, which changes as the force does), plus the bearing's drag on that spin, c_b delta/R_r. Both
 // are estimated from the quasi-static motion (cam/roller_motion.h, the law inverted for F_req at each angle,
 // no dynamics): the periodic revolution's force stays within 1.5 times the estimate of F_req (the estimate's
@@ -82,7 +82,8 @@ TEST(CamRollerDynamics, RollingRollerHasTheSteadyLawsCreepageForTheForceRollingN
     // and the bearing's drag on the slip's own spin, c_b delta/R_r (the need is taken at omega_r,kin)
     const double drag_N = m.train.bearing_drag_N_m_s * std::abs(delta(i)) / m.geometry.roller_radius_m;
     const RollerAngle& a = p.motion.angles[i];
-    const double F_req = r.rows[i].loads.required_tangential_N;
+    // the crowned roller's strips act below its rolling radius: the creep torque is R_r F_t - M_z
+    const double F_req = r.rows[i].loads.required_tangential_N + a.depth_moment_N_m / m.geometry.roller_radius_m;
     EXPECT_NEAR(a.tangential_N, F_req, 1.5 * lag_N + kink_N + 1.1 * drag_N + 1e-9 * m.mu * a.normal_N) << i;
     EXPECT_EQ(a.regime, RollerRegime::Rolling);
     worst = std::max(worst, std::abs(a.tangential_N - F_req) / (m.mu * a.normal_N));

@@ -23,11 +23,11 @@ using contact::kPi;
 constexpr double kDeg = kPi / 180;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-CamModel model(double inertia_kg_m2, double omega_rad_per_s) {
+CamModel model(double inertia_kg_m2, double omega_rad_per_s, double lift_m = 0.01) {
   CamModel m;
   m.geometry = {0.04, 0.013, 0};
   DwellRiseDwellReturn d;
-  d.lift_m = 0.01;
+  d.lift_m = lift_m;
   d.rise_rad = 100 * kDeg;
   d.dwell_high_rad = 40 * kDeg;
   d.return_law = SegmentLaw::Polynomial345;
@@ -60,15 +60,17 @@ void check(const CamModel& m, bool sliding) {
   ts.grid = {20, 20};
   const TransientRevolution t = transient_revolution(m, r, p.motion, ts);
   const RevolutionEnergy e = revolution_energy(m, r, p, &t);
-  std::printf("shaft %.6e J = guide %.6e + bearing %.6e + creep (rigid) %.6e + train %.3e + roller %.3e "
-              "(kinematic %.3e) + residual %.3e; tangential: dissipated %.6e = creep %.6e (Heathcote %.6e) - elastic "
-              "%.3e + %.3e\n", e.shaft_J, e.guide_J, e.bearing_J, e.creep_rigid_J, e.train_J, e.roller_J,
-              e.kinematic_J, e.residual_J, e.dissipated_J, e.creep_work_J, e.heathcote_J, e.elastic_J,
-              e.tangential_residual_J);
+  std::printf("shaft %.6e J = guide %.6e + bearing %.6e + creep (rigid) %.6e + Heathcote (roller) %.6e + train %.3e + "
+              "roller %.3e (kinematic %.3e) + residual %.3e; tangential: dissipated %.6e = creep %.6e - elastic %.3e + "
+              "%.3e; creep = steady %.6e (frame %.3e) + transient %.3e\n",
+              e.shaft_J, e.guide_J, e.bearing_J, e.creep_rigid_J, e.heathcote_roller_J, e.train_J, e.roller_J,
+              e.kinematic_J, e.residual_J, e.dissipated_J, e.creep_work_J, e.elastic_J, e.tangential_residual_J,
+              e.creep_steady_J, e.frame_J, e.transient_J);
   EXPECT_NEAR(e.residual_J, 0, 1e-12 * e.shaft_J);  // the per-step identity: rounding
   EXPECT_NEAR(e.train_J, 0, kIntegratorRtol * e.shaft_J);
   EXPECT_NEAR(e.roller_J, 0, kIntegratorRtol * e.shaft_J);
-  EXPECT_NEAR(e.shaft_J, e.guide_J + e.bearing_J + e.creep_rigid_J, 2 * kIntegratorRtol * e.shaft_J);
+  EXPECT_NEAR(e.shaft_J, e.guide_J + e.bearing_J + e.creep_rigid_J + e.heathcote_roller_J,
+              2 * kIntegratorRtol * e.shaft_J);
   EXPECT_GT(e.guide_J, 0);
   EXPECT_GT(e.bearing_J, 0);
   EXPECT_GT(e.dissipated_J, 0);
@@ -81,5 +83,25 @@ void check(const CamModel& m, bool sliding) {
 TEST(CamEnergy, RollingRollerShaftWorkIsGuideBearingAndCreepLosses) { check(model(3.8e-6, 62.83), false); }
 
 TEST(CamEnergy, SlidingRollerShaftWorkIsGuideBearingAndCreepLosses) { check(model(1e-4, 60), true); }
+
+// A cam that is nearly its base circle (a lift of 1 um): the contact frame hardly turns (alpha_dot = omega (1 -
+// |P'| kappa_p) ~ 0), so the roller's Heathcote term is the contact's: the shaft's work is the guide's, the
+// bearing's and the steady law's whole creep work, Heathcote's slip included (docs/physics.md §2.4), to the
+// integrator's tolerance; the contact frame's term is 0 to 1e-4 of the creep work
+TEST(CamEnergy, OnANearlyCircularCamShaftWorkIncludesHeathcotesSlipWork) {
+  const CamModel m = model(3.8e-6, 62.83, 1e-6);
+  const Revolution r = run_revolution(m);
+  RollerDynamicsSettings ds;
+  ds.law.grid = {20, 20};
+  const PeriodicMotion p = periodic_motion(m, r, ds);
+  ASSERT_TRUE(p.converged);
+  const RevolutionEnergy e = revolution_energy(m, r, p);
+  std::printf("shaft %.9e = guide %.9e + bearing %.9e + steady creep %.6e (rigid %.6e, Heathcote %.6e); frame %.3e, "
+              "roller %.3e, train %.3e\n", e.shaft_J, e.guide_J, e.bearing_J, e.creep_steady_J, e.creep_rigid_J,
+              e.heathcote_roller_J, e.frame_J, e.roller_J, e.train_J);
+  EXPECT_GT(e.heathcote_roller_J, 0.5 * e.creep_steady_J);  // the roller's drag is small: Heathcote's slip dominates
+  EXPECT_NEAR(e.frame_J, 0, 1e-4 * e.creep_steady_J);  // the frame turns at ~ s''/R_p: some 1e-5 here
+  EXPECT_NEAR(e.shaft_J, e.guide_J + e.bearing_J + e.creep_steady_J, 1e-3 * e.creep_steady_J);
+}
 
 }  // namespace
