@@ -11,7 +11,7 @@
 // problems: the law's rate R_r^2 G a b C11/(J V) is some 1e6 1/s against steps of 1e-4 s; backward Euler for
 // the very first step, and as an option), each step's end solved for delta by find_root_bracketed on the
 // contact of that row. While the friction can give what rolling needs the roller follows the kinematic spin with
-// F_t = (J alpha_kin + T_b)/R_r + J d delta/dt, the last term the lag's own inertia; beyond, F_t saturates and
+// F_t = (J alpha_kin + T_b + M_z)/R_r + J d delta/dt, the last term the lag's own inertia; beyond, F_t saturates and
 // the roller slides until it grips again. The revolution is repeated, each from the previous one's end,
 // until omega_r(2 pi) = omega_r(0) within the tolerance: the periodic revolution. Each revolution's contacts
 // carry the normal load of the previous one's F_t (the axial balance, cam_loads_with_tangential).

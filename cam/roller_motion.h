@@ -2,7 +2,8 @@
 // omega_r, its creepage xi over the cam, the creep force F_t and the normal load F_n that goes with it.
 //   quasi_static_motion: the roller follows its required force at every angle (F_t = (J alpha_kin +
 //     T_b)/R_r of cam/loads.h), xi from the steady creep law (cam/creep_law.h) inverted for that force;
-//     a row whose force the law cannot give (the roller slides) is refused.
+//     a row whose force the law cannot give (the roller slides) is refused. It leaves out the strips' depth
+//     moment M_z of cam/roller_dynamics.h (some 1e-4 of the torque): a reference, not the motion.
 //   periodic_motion (cam/roller_dynamics.h): the spin integrated through the revolution.
 // F_n comes from the follower's axial balance with the motion's F_t (cam_loads_with_tangential), and the
 // contact of each angle from that F_n.
