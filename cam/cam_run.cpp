@@ -40,6 +40,8 @@ CamRun run_cam(const CamModel& m, const CamSolverSettings& s) {
     run.loads.push_back(cam_loads_with_tangential(m.train, m.geometry, run.revolution.rows[i].kin, m.omega_rad_per_s,
                                                   a.tangential_N));
     run.loads.back().regime = a.regime;
+    run.loads.back().shaft_torque_N_m = shaft_torque_N_m(run.loads.back(), run.revolution.rows[i].kin,
+                                                         a.track_depth_moment_N_m);
   }
   TransientRevolutionSettings ts;
   ts.grid = {s.nx, s.ny};
@@ -78,12 +80,12 @@ std::string cam_summary(const CamRun& run) {
                        run.full.transient_steps + run.full.warmup_steps, run.cpu_full_s, 100 * run.skip.step_saving,
                        run.skip.max_power_error, run.skip.energy_error);
   out += fmt::format("energy per revolution: shaft {:.6g} J = guide {:.6g} + bearing {:.6g} + creep (rigid slip) "
-                     "{:.6g} + Heathcote (roller's radii) {:.6g} + spring and mass {:.3g} + roller spin {:.3g} + "
-                     "rounding {:.3g}\n",
-                     e.shaft_J, e.guide_J, e.bearing_J, e.creep_rigid_J, e.heathcote_roller_J, e.train_J, e.roller_J,
-                     e.residual_J);
+                     "{:.6g} + Heathcote (roller's radii) {:.6g} + Heathcote (track's) {:.3g} + spring and mass {:.3g} + "
+                     "roller spin {:.3g} + rounding {:.3g}\n",
+                     e.shaft_J, e.guide_J, e.bearing_J, e.creep_rigid_J, e.heathcote_roller_J, e.heathcote_track_J,
+                     e.train_J, e.roller_J, e.residual_J);
   out += fmt::format("contact: dissipated {:.6g} J = creep work {:.6g} J - elastic {:.3g} J + {:.3g}; creep work = "
-                     "steady law's {:.6g} (= rigid + Heathcote (roller) + contact frame's rotation {:.3g}) + "
+                     "steady law's {:.6g} (= rigid + Heathcote + contact frame's rotation {:.3g}) + "
                      "transient's {:.3g}\n",
                      e.dissipated_J, e.creep_work_J, e.elastic_J, e.tangential_residual_J, e.creep_steady_J, e.frame_J,
                      e.transient_J);

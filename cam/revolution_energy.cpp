@@ -21,7 +21,9 @@ RevolutionEnergy revolution_energy(const CamModel& m, const Revolution& r, const
     const RollerAngle& a = p.motion.angles[i];
     const CamLoads L = cam_loads_with_tangential(m.train, m.geometry, row.kin, w, a.tangential_N);
     const double s1 = row.kin.lift.ds_m_per_rad;
-    e.shaft_J += L.shaft_torque_N_m * w * dt;
+    const double T = shaft_torque_N_m(L, row.kin, a.track_depth_moment_N_m);
+    e.shaft_J += T * w * dt;
+    e.heathcote_track_J += (T - L.shaft_torque_N_m) * w * dt;
     e.train_J += L.axial_N * s1 * w * dt;
     e.guide_J += m.train.guide_mu * std::abs(L.guide_reaction_N) * std::abs(s1) * w * dt;
     e.bearing_J += bearing_torque_N_m(m.train, a.omega_r_rad_per_s) * a.omega_r_rad_per_s * dt;
@@ -34,8 +36,9 @@ RevolutionEnergy revolution_energy(const CamModel& m, const Revolution& r, const
     e.kinematic_J += J * row.kin.roller_alpha_rad_per_s2 * row.kin.roller_omega_rad_per_s * dt;
   }
   e.residual_J =
-      e.shaft_J - (e.train_J + e.guide_J + e.bearing_J + e.creep_rigid_J + e.heathcote_roller_J + e.roller_J);
-  e.frame_J = e.creep_steady_J - (e.creep_rigid_J + e.heathcote_roller_J);
+      e.shaft_J - (e.train_J + e.guide_J + e.bearing_J + e.creep_rigid_J + e.heathcote_roller_J +
+                   e.heathcote_track_J + e.roller_J);
+  e.frame_J = e.creep_steady_J - (e.creep_rigid_J + e.heathcote_roller_J + e.heathcote_track_J);
   if (transient) {
     const TransientEnergy& t = transient->energy;
     e.dissipated_J = t.dissipated_J;

@@ -58,7 +58,10 @@ AngleContact contact_from_hertz(const RollerAndTrack& bodies, const contact::Pro
         contact::heathcote_xi_offset(profiles, Rr, cam_radius_m(k), f.y0 + grid.y_m, f.y0);
   c.problem = contact::make_tangential_problem(c.normal.patch, bodies.pair, {}, mu, 0);
   c.G_Pa = contact::combined_shear_modulus_Pa(bodies.pair);
-  if (heathcote_slip) c.roller_depth_m = roller_depth_m(profiles, f.y0, grid);
+  if (heathcote_slip) {
+    c.roller_depth_m = roller_depth_m(profiles, f.y0, grid);
+    c.track_depth_m = track_depth_m(profiles, f.y0, grid);
+  }
   return c;
 }
 

@@ -157,7 +157,9 @@ PeriodicMotion periodic_motion(const CamModel& m, const Revolution& r, const Rol
     a.slip_speed_m_per_s = e.w;
     a.speed_m_per_s = e.V;
     a.tangential_N = sol.Fx_N;
-    a.depth_moment_N_m = creep_force(contacts[i], e.xi).depth_moment_N_m;
+    const CreepForce cf = creep_force(contacts[i], e.xi);
+    a.depth_moment_N_m = cf.depth_moment_N_m;
+    a.track_depth_moment_N_m = cf.track_depth_moment_N_m;
     a.creep_power_W = -sol.creep_work_W;
     a.normal_N = contacts[i].normal.patch.normal_load_N;
     a.stick_fraction = sol.stick_fraction;

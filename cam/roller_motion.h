@@ -23,6 +23,7 @@ struct RollerAngle {
   double speed_m_per_s = 0;           // V = V_cam - w_x/2, the mean of the two surfaces' speeds (docs/physics.md §1)
   double tangential_N = 0;            // F_t on the roller along t, from the steady law at xi
   double depth_moment_N_m = 0;        // the strips' radii: the creep torque on the roller is R_r F_t - this
+  double track_depth_moment_N_m = 0;  // the same on the cam's side (a crowned track): see shaft_torque_N_m
   double creep_power_W = 0;           // the steady solution's creep work rate -V sum_j (xi + offset_j) F_j dy
   double normal_N = 0;                // F_n with that F_t
   double stick_fraction = 0;          // of the steady solution at xi
@@ -37,6 +38,10 @@ struct RollerMotion {
 // throws std::invalid_argument naming the first sliding row's angle (the roller's dynamics decides there),
 // contact::NormalSolveError from a normal solve
 RollerMotion quasi_static_motion(const CamModel& m, const Revolution& r, const CreepLawSettings& s = {});
+
+// the shaft's torque with the strips of a crowned track acting below the cam's surface: the loads' torque
+// (C x F) plus, for strip forces F_j along t at C - dz2_j n, sum_j (-dz2_j n x F_j t)_z = -(n x t)_z M2
+double shaft_torque_N_m(const CamLoads& loads, const CamKinematics& k, double track_depth_moment_N_m);
 
 // the cam's surface speed and the roller's through the contact for slip w_x: V_cam and V_cam - w_x
 inline double roller_surface_speed_m_per_s(double cam_speed_m_per_s, double slip_speed_m_per_s) {

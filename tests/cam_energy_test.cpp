@@ -88,20 +88,29 @@ TEST(CamEnergy, SlidingRollerShaftWorkIsGuideBearingAndCreepLosses) { check(mode
 // |P'| kappa_p) ~ 0), so the roller's Heathcote term is the contact's: the shaft's work is the guide's, the
 // bearing's and the steady law's whole creep work, Heathcote's slip included (docs/physics.md §2.4), to the
 // integrator's tolerance; the contact frame's term is 0 to 1e-4 of the creep work
+// (a flat track, then one crowned with 0.3 m: its strips act below the cam's surface, in the shaft's torque)
 TEST(CamEnergy, OnANearlyCircularCamShaftWorkIncludesHeathcotesSlipWork) {
-  const CamModel m = model(3.8e-6, 62.83, 1e-6);
-  const Revolution r = run_revolution(m);
-  RollerDynamicsSettings ds;
-  ds.law.grid = {20, 20};
-  const PeriodicMotion p = periodic_motion(m, r, ds);
-  ASSERT_TRUE(p.converged);
-  const RevolutionEnergy e = revolution_energy(m, r, p);
-  std::printf("shaft %.9e = guide %.9e + bearing %.9e + steady creep %.6e (rigid %.6e, Heathcote %.6e); frame %.3e, "
-              "roller %.3e, train %.3e\n", e.shaft_J, e.guide_J, e.bearing_J, e.creep_steady_J, e.creep_rigid_J,
-              e.heathcote_roller_J, e.frame_J, e.roller_J, e.train_J);
-  EXPECT_GT(e.heathcote_roller_J, 0.5 * e.creep_steady_J);  // the roller's drag is small: Heathcote's slip dominates
-  EXPECT_NEAR(e.frame_J, 0, 1e-4 * e.creep_steady_J);  // the frame turns at ~ s''/R_p: some 1e-5 here
-  EXPECT_NEAR(e.shaft_J, e.guide_J + e.bearing_J + e.creep_steady_J, 1e-3 * e.creep_steady_J);
+  for (const double track_crown_m : {kInf, 0.3}) {
+    CamModel m = model(3.8e-6, 62.83, 1e-6);
+    m.bodies.track_crown_radius_m = track_crown_m;
+    const Revolution r = run_revolution(m);
+    RollerDynamicsSettings ds;
+    ds.law.grid = {20, 20};
+    const PeriodicMotion p = periodic_motion(m, r, ds);
+    ASSERT_TRUE(p.converged);
+    const RevolutionEnergy e = revolution_energy(m, r, p);
+    std::printf("shaft %.9e = guide %.9e + bearing %.9e + steady creep %.6e (rigid %.6e, Heathcote roller %.6e, track "
+                "%.6e); frame %.3e, roller %.3e, train %.3e\n", e.shaft_J, e.guide_J, e.bearing_J, e.creep_steady_J,
+                e.creep_rigid_J, e.heathcote_roller_J, e.heathcote_track_J, e.frame_J, e.roller_J, e.train_J);
+    EXPECT_GT(e.heathcote_roller_J, 0.5 * e.creep_steady_J);  // the roller's drag is small: Heathcote's slip dominates
+    if (std::isinf(track_crown_m)) {
+      EXPECT_EQ(e.heathcote_track_J, 0);
+    } else {
+      EXPECT_GT(std::abs(e.heathcote_track_J), 0.1 * e.creep_steady_J);
+    }
+    EXPECT_NEAR(e.frame_J, 0, 1e-4 * e.creep_steady_J);  // the frame turns at ~ s''/R_p: some 1e-5 here
+    EXPECT_NEAR(e.shaft_J, e.guide_J + e.bearing_J + e.creep_steady_J, 1e-3 * e.creep_steady_J);
+  }
 }
 
 }  // namespace
