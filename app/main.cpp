@@ -33,6 +33,7 @@
 #include "lib/io/errors.h"
 #include "lib/normal/hertz.h"
 #include "lib/tangential/exact.h"
+#include "lib/tangential/relaxed.h"
 #include "lib/tangential/satran.h"
 #include "lib/tangential/steady.h"
 #include "lib/tangential/tangential.h"
@@ -306,6 +307,8 @@ int run_contact(const ContactOptions& opt) {
     if (!e.status.converged()) throw SolverError("exact steady solve: " + e.status.message);
     spdlog::info("exact steady solve: {}", e.status.message);
     solution = e.fields;
+  } else if (scheme == TangentialScheme::Relaxed) {  // matched to the exact theory (lib/tangential/relaxed.h)
+    solution = solve_relaxed_steady(patch, materials_of(c), creepages_of(c), c.friction.mu, speed_of(c), fields);
   } else {
     solution = solve_steady(patch, problem, scheme, steady_options);
   }
@@ -447,7 +450,9 @@ void print_transient_summary(const ContactCase& c, const TransientCase& t, const
   fmt::print("case {} ({}), {} x {} grid, {} scheme{}\n", c.name, c.path, res.grid.nx, res.grid.ny,
              to_string(t.settings.scheme),
              t.inertia ? ", roller inertia"
-             : parse_tangential_scheme(c.solver.tangential) == TangentialScheme::Exact ? ", exact theory" : "");
+             : parse_tangential_scheme(c.solver.tangential) == TangentialScheme::Exact   ? ", exact theory"
+             : parse_tangential_scheme(c.solver.tangential) == TangentialScheme::Relaxed ? ", relaxed model"
+                                                                                           : "");
   fmt::print("  steps           {}", res.steps);
   if (res.fallback_steps > 0)
     fmt::print(", {} of them upwind at CFL < 1 (the fallback: less accurate than shift)", res.fallback_steps);
@@ -538,8 +543,10 @@ int run_transient_command(const TransientOptions& opt) {
 
   TransientResult res;
   try {
-    res = parse_tangential_scheme(c.solver.tangential) == TangentialScheme::Exact ? run_exact_transient(t, observe)
-                                                                                  : run_transient(t, observe);
+    const TangentialScheme scheme = parse_tangential_scheme(c.solver.tangential);
+    res = scheme == TangentialScheme::Exact     ? run_exact_transient(t, observe)
+          : scheme == TangentialScheme::Relaxed ? run_relaxed_transient(t, observe)
+                                                : run_transient(t, observe);
   } catch (const SettingError& e) {  // the settings refused: the key (data) and its line
     throw transient_error(c, e);
   } catch (const std::invalid_argument& e) {  // inside the solver, on settings that passed: its failure

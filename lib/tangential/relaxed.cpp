@@ -47,15 +47,21 @@ double factor(const double (&g)[T::kNab][T::kNe], double ab, double e) {
   return (1 - w) * over_e(g[i], e) + w * over_e(g[i + 1], e);
 }
 
-// the creepages the simplified theory is solved at
-Creepages corrected(const ContactPatch& patch, const ElasticPair& pair, const Creepages& c, double mu) {
+// the saturation level e = G a b |(C11 xi, C22 eta, C23 sqrt(ab) phi)| / (3 mu N) (-1: no contact or no friction)
+double saturation_level(const ContactPatch& patch, const ElasticPair& pair, const Creepages& c, double mu) {
   const double a = patch.a_m, b = patch.b_m, N = patch.normal_load_N;
-  if (!(a > 0 && b > 0 && N > 0 && mu > 0)) return c;
+  if (!(a > 0 && b > 0 && N > 0 && mu > 0)) return -1;
   const KalkerCoefficients C = kalker_coefficients(a, b, combined_poisson(pair));
   const double G = combined_shear_modulus_Pa(pair), scale = G * a * b / (3 * mu * N);
   const double ex = scale * C.C11 * std::abs(c.xi), ey = scale * C.C22 * std::abs(c.eta),
                ep = scale * std::sqrt(a * b) * C.C23 * std::abs(c.phi_per_m);
-  const double e = std::sqrt(ex * ex + ey * ey + ep * ep), ab = a / b;
+  return std::sqrt(ex * ex + ey * ey + ep * ep);
+}
+
+// the creepages the simplified theory is solved at
+Creepages corrected(const ContactPatch& patch, const ElasticPair& pair, const Creepages& c, double mu) {
+  const double e = saturation_level(patch, pair, c, mu), ab = patch.a_m / patch.b_m;
+  if (e < 0) return c;
   return {c.xi * factor(T::kGx, ab, e), c.eta * factor(T::kGy, ab, e), c.phi_per_m * factor(T::kGphi, ab, e)};
 }
 
@@ -103,6 +109,14 @@ TangentialSolution relaxed_step(const ContactPatch& patch, const ElasticPair& pa
     if (state.sigma_m.xi > 0) sigma.xi = state.sigma_m.xi;
     if (state.sigma_m.eta > 0) sigma.eta = state.sigma_m.eta;
     if (state.sigma_m.phi_per_m > 0) sigma.phi_per_m = state.sigma_m.phi_per_m;
+    const double e = saturation_level(patch, pair, state.effective, mu);
+    const double p = state.exponent >= 0 ? state.exponent : over_ab(T::kExponent, patch.a_m / patch.b_m);
+    // the smallest share of sigma kept as the contact saturates (full sliding: the steady state at once)
+    constexpr double kMinShare = 1e-6;
+    const double share = std::max(kMinShare, std::pow(1 - std::clamp(e, 0.0, 1.0), p));
+    sigma.xi *= share;
+    sigma.eta *= share;
+    sigma.phi_per_m *= share;
     auto relax = [dq_m](double& eff, double target, double s) { eff = target + (eff - target) * std::exp(-dq_m / s); };
     relax(state.effective.xi, c.xi, sigma.xi);
     relax(state.effective.eta, c.eta, sigma.eta);

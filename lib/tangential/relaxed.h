@@ -4,8 +4,11 @@
 //   - transient: the exact theory's start-up is a relaxation over about 2.7a (the half-space couples
 //     the whole contact; the springs only the material that entered it, so they build up over 2a).
 //     The model carries effective creepages that relax towards the imposed ones over the rolled
-//     distance q,  d c_eff/dq = (c - c_eff) / sigma,  sigma_k = s_k(a/b) a  per creepage (xi, eta, phi),
-//     and each step is the steady model at c_eff (quasi-steady: the springs' own 2a memory is not used);
+//     distance q,  d c_eff/dq = (c - c_eff) / sigma,  per creepage (xi, eta, phi)
+//       sigma_k = s_k(a/b) a (1 - min(e_eff, 1))^p(a/b),
+//     e_eff the saturation level of c_eff (below): the relaxation length shrinks with the slope of the
+//     force-creepage curve as the contact saturates (the contact's tangential stiffness stays), and
+//     each step is the steady model at c_eff (quasi-steady: the springs' own 2a memory is not used);
 //   - steady forces: the simplified theory's force at a creepage is that of the exact theory at a
 //     slightly different one: each creepage is scaled by a factor g_k(a/b, e) of the saturation level
 //     e = G a b C |c| / (3 mu N) before the steady solve;
@@ -26,12 +29,13 @@ namespace contact {
 // the effective creepages of a transient run (not the imposed ones)
 struct RelaxedState {
   Creepages effective;
-  Creepages sigma_m;  // relaxation lengths in place of the table's where > 0 (for the fit, scripts/fit-relaxed)
+  Creepages sigma_m;     // relaxation lengths in place of the table's where > 0 (for the fit, scripts/fit-relaxed)
+  double exponent = -1;  // the exponent p in place of the table's if >= 0 (for the fit)
 };
 
 inline RelaxedState relaxed_rest() { return {}; }
 // the steady state at the creepages c (the effective creepages are the imposed ones)
-inline RelaxedState relaxed_steady_state(const Creepages& c) { return {c, {}}; }
+inline RelaxedState relaxed_steady_state(const Creepages& c) { return {c, {}, -1}; }
 
 // the relaxation lengths (m) of xi, eta and phi on a contact of semi-axes a_m (along rolling), b_m
 Creepages relaxation_lengths_m(double a_m, double b_m);
@@ -42,7 +46,7 @@ TangentialSolution solve_relaxed_steady(const ContactPatch& patch, const Elastic
                                         double mu, double speed_m_per_s, bool fields = true);
 
 // One step rolling dq_m >= 0 with the imposed creepages c (the step's mean): the effective creepages
-// relax, c_eff <- c + (c_eff - c) exp(-dq / sigma), then the steady model at c_eff. Its power is the
+// relax, c_eff <- c + (c_eff - c) exp(-dq / sigma) (sigma at the step's start), then the steady model at c_eff. Its power is the
 // steady model's at c_eff (-V c_eff . F); creep_work_W is that of the imposed creepages.
 TangentialSolution relaxed_step(const ContactPatch& patch, const ElasticPair& pair, const Creepages& creepages,
                                 double mu, double speed_m_per_s, double dq_m, RelaxedState& state,

@@ -187,11 +187,11 @@ void fit_factors(double ab, int n) {
         return force_of(solve_steady(p, make_tangential_problem(p, kPair, cm, kMu, kV), TangentialScheme::Consistent, o),
                         dir) - target;
       };
-      // the factor in [0.5, 2] whose force is nearest the exact one (the force of spin is not monotonic in
+      // the factor in [0.5, 4] whose force is nearest the exact one (the force of spin is not monotonic in
       // phi: a scan, not a root), ties to the factor nearest 1
       double m = 1, best = std::abs(f(1));
       bool hit = best <= 2e-3 * std::abs(target);
-      for (double t = 0.5; t <= 2.0 + 1e-9; t += 0.002) {
+      for (double t = 0.5; t <= 4.0 + 1e-9; t += 0.002) {
         const double d = std::abs(f(t));
         if (d <= 2e-3 * std::abs(target)) {  // a root: the one nearest 1
           if (!hit || std::abs(t - 1) < std::abs(m - 1)) m = t, best = d;
@@ -206,14 +206,17 @@ void fit_factors(double ab, int n) {
     }
 }
 
-// "Z dir ab sigma/a maxerr": the relaxation length of direction dir that fits the exact start-up from rest at
-// 50 % and 90 % of saturation best (largest |F_model - F_exact| / |F_exact,ss| over q <= 12a, both levels)
+// "Z dir ab sigma/a p maxerr unconverged": the relaxation length sigma0 and exponent p (sigma = sigma0 (1 - e_eff)^p)
+// of direction dir that fit the exact start-up from rest at 50 % and 90 % of saturation best: the largest
+// |F_model/F_model,ss - F_exact/F_exact,ss| over q <= 8a, both levels (the shapes: the steady forces are the
+// creepage factors' business)
 void fit_sigma(double ab, int n, int dir) {
   const ContactPatch p = ellipse_patch(ab, n);
   const double G = combined_shear_modulus_Pa(kPair), nu = combined_poisson(kPair), dx = p.grid.dx_m, a = p.a_m;
-  const int steps = static_cast<int>(std::lround(12 * a / dx));
+  const int steps = static_cast<int>(std::lround(8 * a / dx));
   std::vector<std::vector<double>> ex;
   std::vector<Creepages> cs;
+  int unconverged = 0;
   for (double k : {0.5, 0.9}) {
     const double w[3] = {dir == 0 ? 1.0 : 0, dir == 1 ? 1.0 : 0, dir == 2 ? 1.0 : 0};
     const Creepages c = level(p, k, w[0], w[1], w[2]);
@@ -222,29 +225,32 @@ void fit_sigma(double ab, int n, int dir) {
     ExactSolution prev;
     for (int s = 1; s <= steps; ++s) {
       ExactSolution e = solve_exact_rolling_step(p, G, nu, c, kMu, kV, s == 1 ? nullptr : &prev, exact_run_options());
+      unconverged += !e.status.converged();
       f.push_back(force_of(e.fields, dir));
       prev = std::move(e);
     }
-    f.push_back(force_of(solve_exact_steady(p, G, nu, c, kMu, kV).fields, dir));  // the steady force last
+    const ExactSolution ss = solve_exact_steady(p, G, nu, c, kMu, kV);
+    unconverged += !ss.status.converged();
+    f.push_back(force_of(ss.fields, dir));  // the steady force last
     ex.push_back(f);
   }
-  double best = 0, best_err = 1e300;
-  for (double sig = 1.0; sig <= 4.0 + 1e-9; sig += 0.02) {
-    double err = 0;
-    for (std::size_t l = 0; l < cs.size(); ++l) {
-      RelaxedState st = relaxed_rest();
-      (dir == 0 ? st.sigma_m.xi : dir == 1 ? st.sigma_m.eta : st.sigma_m.phi_per_m) = sig * a;
-      for (int s = 1; s <= steps; ++s) {
-        const TangentialSolution r = relaxed_step(p, kPair, cs[l], kMu, kV, dx, st, false);
-        err = std::max(err, std::abs(force_of(r, dir) - ex[l][s - 1]) / std::abs(ex[l].back()));
+  double best_s = 0, best_p = 0, best_err = 1e300;
+  for (double pw = 0; pw <= 3.0 + 1e-9; pw += 0.25)
+    for (double sig = 0.3; sig <= 5.0 + 1e-9; sig += 0.05) {
+      double err = 0;
+      for (std::size_t l = 0; l < cs.size(); ++l) {
+        const double ss = force_of(solve_relaxed_steady(p, kPair, cs[l], kMu, kV, false), dir);
+        RelaxedState st = relaxed_rest();
+        (dir == 0 ? st.sigma_m.xi : dir == 1 ? st.sigma_m.eta : st.sigma_m.phi_per_m) = sig * a;
+        st.exponent = pw;
+        for (int s = 1; s <= steps; ++s) {
+          const TangentialSolution r = relaxed_step(p, kPair, cs[l], kMu, kV, dx, st, false);
+          err = std::max(err, std::abs(force_of(r, dir) / ss - ex[l][s - 1] / ex[l].back()));
+        }
       }
+      if (err < best_err) best_err = err, best_s = sig, best_p = pw;
     }
-    if (err < best_err) {
-      best_err = err;
-      best = sig;
-    }
-  }
-  std::printf("Z %d %g %.3f %.5f\n", dir, ab, best, best_err);
+  std::printf("Z %d %g %.3f %.3f %.5f %d\n", dir, ab, best_s, best_p, best_err, unconverged);
 }
 
 }  // namespace
