@@ -74,17 +74,20 @@ TangentialSolution steady_at(const ContactPatch& patch, const ElasticPair& pair,
                              const Creepages& work_at, double mu, double V, bool fields) {
   SteadyOptions o;
   o.fields = fields;
+  const Creepages solved = corrected(patch, pair, c, mu);
   TangentialSolution s =
-      solve_steady(patch, make_tangential_problem(patch, pair, corrected(patch, pair, c, mu), mu, V), 
-                   TangentialScheme::Consistent, o);
-  const double target = -creep_work_W(s, c, V);  // what the exact theory dissipates at steady state
+      solve_steady(patch, make_tangential_problem(patch, pair, solved, mu, V), TangentialScheme::Consistent, o);
+  // the work of the strips' Heathcote offsets (xi_j - xi, docs/physics.md §2.4), which the solver's creep work
+  // holds beside that of the uniform creepages
+  const double offsets_W = s.creep_work_W - creep_work_W(s, solved, V);
+  const double target = -(creep_work_W(s, c, V) + offsets_W);  // what the exact theory dissipates at steady state
   if (s.power_W > 0 && target >= 0) {
     const double k = target / s.power_W;
     s.strip_power_W_per_m *= k;
     if (fields) s.power_W_per_m2 *= k;
     s.power_W = target;
   }
-  s.creep_work_W = creep_work_W(s, work_at, V);
+  s.creep_work_W = creep_work_W(s, work_at, V) + offsets_W;
   return s;
 }
 

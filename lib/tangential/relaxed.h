@@ -14,7 +14,8 @@
 //     e = G a b C |c| / (3 mu N) before the steady solve;
 //   - power: the exact theory's steady frictional power is the creep forces' work -V (xi Fx + eta Fy + phi Mz)
 //     (docs/physics.md §4); the bed of springs with three flexibilities is not (1.5-2.2x with mixes).
-//     The model keeps the strips' distribution of the simplified theory's power and scales it to that work.
+//     The model keeps the strips' distribution of the simplified theory's power and scales it to that work
+//     (with the work of the strips' Heathcote offsets, docs/physics.md §2.4, where the patch has them).
 // The factors s_k and g_k: lib/tangential/relaxed_table.h, fitted to the exact solver by
 // scripts/fit-relaxed (fit error in docs/accuracy-vs-exact.md).
 #pragma once
