@@ -9,6 +9,7 @@
 //   fast_model_report step AB N DIR     from steady at 50 % to 90 % of saturation in DIR (xi, eta, phi)
 //   fast_model_report fit AB N          the creepage factors of the relaxed model (lines "G", scripts/fit-relaxed)
 //   fast_model_report fitsigma AB N DIR its relaxation length in DIR (line "Z", scripts/fit-relaxed)
+// FAST_MODEL_CASES=xi50,mix50 (say) in the environment: only those steady cases.
 // Lines: "S solver ab n label xi eta phi Fx Fy Mz P W ms" (W = -creep work), "J solver ab n label P_j...",
 // "T solver ab n label q/a Fx Fy Mz P ms".
 #include <chrono>
@@ -271,7 +272,9 @@ int main(int argc, char** argv) {
     const std::string dir = argv[4];
     fit_sigma(ab, n, dir == "xi" ? 0 : dir == "eta" ? 1 : 2);
   } else if (what == "steady") {
+    const char* only = std::getenv("FAST_MODEL_CASES");  // a comma-separated list of labels: only those
     for (const Labelled& l : steady_cases(p)) {
+      if (only && ("," + std::string(only) + ",").find("," + l.label + ",") == std::string::npos) continue;
       auto t0 = std::chrono::steady_clock::now();
       if (with_exact()) {
         const ExactSolution e = solve_exact_steady(p, G, nu, l.c, kMu, kV);
