@@ -7,6 +7,7 @@
 
 #include "lib/io/errors.h"
 #include "lib/tangential/exact.h"
+#include "lib/tangential/relaxed.h"
 #include "lib/tangential/steady.h"
 
 namespace contact {
@@ -29,6 +30,8 @@ ContactRun solve_contact_case(const ContactCase& c, bool fields) {
     if (!e.status.converged()) throw SolverError("exact steady solve: " + e.status.message);
     spdlog::info("exact steady solve: {}", e.status.message);
     r.solution = e.fields;
+  } else if (r.scheme == TangentialScheme::Relaxed) {  // matched to the exact theory (lib/tangential/relaxed.h)
+    r.solution = solve_relaxed_steady(patch, materials_of(c), creepages_of(c), c.friction.mu, speed_of(c), fields);
   } else {
     r.solution = solve_steady(patch, r.problem, r.scheme, steady_options);
   }
@@ -37,8 +40,10 @@ ContactRun solve_contact_case(const ContactCase& c, bool fields) {
 
 TransientResult run_transient_case(const ContactCase& c, const TransientCase& t, const StepObserver& observe) {
   try {
-    return parse_tangential_scheme(c.solver.tangential) == TangentialScheme::Exact ? run_exact_transient(t, observe)
-                                                                                   : run_transient(t, observe);
+    const TangentialScheme scheme = parse_tangential_scheme(c.solver.tangential);
+    return scheme == TangentialScheme::Exact     ? run_exact_transient(t, observe)
+           : scheme == TangentialScheme::Relaxed ? run_relaxed_transient(t, observe)
+                                                 : run_transient(t, observe);
   } catch (const SettingError& e) {  // the settings refused: the key (data) and its line
     throw transient_error(c, e);
   } catch (const std::invalid_argument& e) {  // inside the solver, on settings that passed: its failure

@@ -33,6 +33,7 @@
 #include "lib/io/errors.h"
 #include "lib/normal/hertz.h"
 #include "lib/tangential/exact.h"
+#include "lib/tangential/relaxed.h"
 #include "lib/tangential/satran.h"
 #include "lib/tangential/steady.h"
 #include "lib/tangential/tangential.h"
@@ -434,7 +435,9 @@ void print_transient_summary(const ContactCase& c, const TransientCase& t, const
   fmt::print("case {} ({}), {} x {} grid, {} scheme{}\n", c.name, c.path, res.grid.nx, res.grid.ny,
              to_string(t.settings.scheme),
              t.inertia ? ", roller inertia"
-             : parse_tangential_scheme(c.solver.tangential) == TangentialScheme::Exact ? ", exact theory" : "");
+             : parse_tangential_scheme(c.solver.tangential) == TangentialScheme::Exact   ? ", exact theory"
+             : parse_tangential_scheme(c.solver.tangential) == TangentialScheme::Relaxed ? ", relaxed model"
+                                                                                           : "");
   fmt::print("  steps           {}", res.steps);
   if (res.fallback_steps > 0)
     fmt::print(", {} of them upwind at CFL < 1 (the fallback: less accurate than shift)", res.fallback_steps);

@@ -16,6 +16,7 @@
 #include "lib/io/case.h"
 #include "lib/io/enum_names.h"
 #include "lib/numeric.h"
+#include "lib/tangential/relaxed.h"
 #include "lib/tangential/steady.h"
 #include "wear/collective.h"
 #include "wear/profile_update.h"
@@ -59,7 +60,10 @@ DutyCycleEnergy duty_cycle_energy(const WearModel& m, const contact::ContactPatc
         contact::make_tangential_problem(patch, m.materials, m.creepages, m.mu, m.speed_m_per_s);
     contact::SteadyOptions options;
     options.fields = need_fields;
-    const contact::TangentialSolution s = contact::solve_steady(patch, problem, m.scheme, options);
+    const contact::TangentialSolution s =
+        m.scheme == contact::TangentialScheme::Relaxed
+            ? contact::solve_relaxed_steady(patch, m.materials, m.creepages, m.mu, m.speed_m_per_s, need_fields)
+            : contact::solve_steady(patch, problem, m.scheme, options);
     d.rolled_m = 2 * kPi * m.reference_radius_m;
     d.duration_s = d.rolled_m / m.speed_m_per_s;
     d.strip_energy_J_per_m = s.strip_power_W_per_m * d.duration_s;
@@ -72,8 +76,10 @@ DutyCycleEnergy duty_cycle_energy(const WearModel& m, const contact::ContactPatc
   contact::TransientCase t = *m.transient;
   t.patch = patch;
   double last_Fx = 0;
-  const contact::TransientResult r =
-      contact::run_transient(t, [&](const contact::TransientRecord& rec, const Eigen::ArrayXd&) { last_Fx = rec.Fx_N; });
+  const auto observe = [&](const contact::TransientRecord& rec, const Eigen::ArrayXd&) { last_Fx = rec.Fx_N; };
+  const contact::TransientResult r = m.scheme == contact::TangentialScheme::Relaxed
+                                         ? contact::run_relaxed_transient(t, observe)
+                                         : contact::run_transient(t, observe);
   d.strip_energy_J_per_m = r.strip_energy_J_per_m;
   d.rolled_m = r.q_end_m;
   d.duration_s = r.t_end_s;

@@ -79,6 +79,7 @@ std::string to_string(TangentialScheme scheme) {
     case TangentialScheme::Classic: return "classic";
     case TangentialScheme::Consistent: return "consistent";
     case TangentialScheme::Exact: return "exact";
+    case TangentialScheme::Relaxed: return "relaxed";
   }
   return "unknown";
 }
@@ -87,7 +88,8 @@ TangentialScheme parse_tangential_scheme(const std::string& name) {
   if (name == "consistent") return TangentialScheme::Consistent;
   if (name == "classic") return TangentialScheme::Classic;
   if (name == "exact") return TangentialScheme::Exact;
-  throw std::invalid_argument("unknown tangential scheme '" + name + "' (valid: consistent, classic, exact)");
+  if (name == "relaxed") return TangentialScheme::Relaxed;
+  throw std::invalid_argument("unknown tangential scheme '" + name + "' (valid: consistent, classic, exact, relaxed)");
 }
 
 }  // namespace contact

@@ -49,7 +49,10 @@ TangentialProblem make_tangential_problem(const ContactPatch& patch, const Elast
 //   Exact:      not a scheme of the simplified theory: Kalker's exact theory on the half-space
 //               (lib/tangential/exact.h), which the commands call in its place; solve_steady and
 //               satran_step do not take it.
-enum class TangentialScheme { Classic, Consistent, Exact };
+//   Relaxed:    the consistent scheme wrapped to match the exact theory (lib/tangential/relaxed.h: creepages
+//               relaxed over the rolled distance, calibrated creepage factors, power scaled to the creep
+//               forces' work); the commands call it in solve_steady's place, which does not take it.
+enum class TangentialScheme { Classic, Consistent, Exact, Relaxed };
 
 std::string to_string(TangentialScheme scheme);
 

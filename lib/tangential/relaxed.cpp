@@ -1,0 +1,262 @@
+// The relaxed model (equations at the top of relaxed.h).
+#include "lib/tangential/relaxed.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include "lib/io/errors.h"
+#include "lib/normal/hertz.h"
+#include "lib/tangential/kalker.h"
+#include "lib/tangential/relaxed_table.h"
+#include "lib/tangential/steady.h"
+
+namespace contact {
+
+namespace {
+
+namespace T = relaxed_table;
+
+// linear interpolation in log(a/b) between the table's rows, clamped at its ends: (row, weight of row + 1)
+std::pair<int, double> ab_bracket(double ab) {
+  if (T::kNab == 1 || !(ab > T::kAb[0])) return {0, 0.0};
+  if (ab >= T::kAb[T::kNab - 1]) return {T::kNab - 2, 1.0};
+  int i = 0;
+  while (ab > T::kAb[i + 1]) ++i;
+  return {i, std::log(ab / T::kAb[i]) / std::log(T::kAb[i + 1] / T::kAb[i])};
+}
+
+double over_ab(const double (&v)[T::kNab], double ab) {
+  const auto [i, w] = ab_bracket(ab);
+  return T::kNab == 1 ? v[0] : (1 - w) * v[i] + w * v[i + 1];
+}
+
+double over_e(const double (&v)[T::kNe], double e) {
+  if (T::kNe == 1 || !(e > T::kE[0])) return v[0];
+  if (e >= T::kE[T::kNe - 1]) return v[T::kNe - 1];
+  int k = 0;
+  while (e > T::kE[k + 1]) ++k;
+  const double w = (e - T::kE[k]) / (T::kE[k + 1] - T::kE[k]);
+  return (1 - w) * v[k] + w * v[k + 1];
+}
+
+double factor(const double (&g)[T::kNab][T::kNe], double ab, double e) {
+  const auto [i, w] = ab_bracket(ab);
+  if (T::kNab == 1) return over_e(g[0], e);
+  return (1 - w) * over_e(g[i], e) + w * over_e(g[i + 1], e);
+}
+
+// the saturation level e = G a b |(C11 xi, C22 eta, C23 sqrt(ab) phi)| / (3 mu N) (-1: no contact or no friction)
+double saturation_level(const ContactPatch& patch, const ElasticPair& pair, const Creepages& c, double mu) {
+  const double a = patch.a_m, b = patch.b_m, N = patch.normal_load_N;
+  if (!(a > 0 && b > 0 && N > 0 && mu > 0)) return -1;
+  const KalkerCoefficients C = kalker_coefficients(a, b, combined_poisson(pair));
+  const double G = combined_shear_modulus_Pa(pair), scale = G * a * b / (3 * mu * N);
+  const double ex = scale * C.C11 * std::abs(c.xi), ey = scale * C.C22 * std::abs(c.eta),
+               ep = scale * std::sqrt(a * b) * C.C23 * std::abs(c.phi_per_m);
+  return std::sqrt(ex * ex + ey * ey + ep * ep);
+}
+
+// the creepages the simplified theory is solved at
+Creepages corrected(const ContactPatch& patch, const ElasticPair& pair, const Creepages& c, double mu) {
+  const double e = saturation_level(patch, pair, c, mu), ab = patch.a_m / patch.b_m;
+  if (e < 0) return c;
+  return {c.xi * factor(T::kGx, ab, e), c.eta * factor(T::kGy, ab, e), c.phi_per_m * factor(T::kGphi, ab, e)};
+}
+
+double creep_work_W(const TangentialSolution& s, const Creepages& c, double V) {
+  return V * (c.xi * s.Fx_N + c.eta * s.Fy_N + c.phi_per_m * s.Mz_N_m);
+}
+
+// the steady model at the creepages c, its power scaled to the creep forces' work at `work_at`
+TangentialSolution steady_at(const ContactPatch& patch, const ElasticPair& pair, const Creepages& c,
+                             const Creepages& work_at, double mu, double V, bool fields) {
+  SteadyOptions o;
+  o.fields = fields;
+  const Creepages solved = corrected(patch, pair, c, mu);
+  TangentialSolution s =
+      solve_steady(patch, make_tangential_problem(patch, pair, solved, mu, V), TangentialScheme::Consistent, o);
+  // the work of the strips' Heathcote offsets (xi_j - xi, docs/physics.md §2.4), which the solver's creep work
+  // holds beside that of the uniform creepages
+  const double offsets_W = s.creep_work_W - creep_work_W(s, solved, V);
+  const double target = -(creep_work_W(s, c, V) + offsets_W);  // what the exact theory dissipates at steady state
+  if (s.power_W > 0 && target >= 0) {
+    const double k = target / s.power_W;
+    s.strip_power_W_per_m *= k;
+    if (fields) s.power_W_per_m2 *= k;
+    s.power_W = target;
+  }
+  s.creep_work_W = creep_work_W(s, work_at, V) + offsets_W;
+  return s;
+}
+
+}  // namespace
+
+Creepages relaxation_lengths_m(double a_m, double b_m) {
+  const double ab = a_m / b_m;
+  return {over_ab(T::kSigmaX, ab) * a_m, over_ab(T::kSigmaY, ab) * a_m, over_ab(T::kSigmaPhi, ab) * a_m};
+}
+
+TangentialSolution solve_relaxed_steady(const ContactPatch& patch, const ElasticPair& pair, const Creepages& creepages,
+                                        double mu, double speed_m_per_s, bool fields) {
+  return steady_at(patch, pair, creepages, creepages, mu, speed_m_per_s, fields);
+}
+
+TangentialSolution relaxed_step(const ContactPatch& patch, const ElasticPair& pair, const Creepages& c, double mu,
+                                double speed_m_per_s, double dq_m, RelaxedState& state, bool fields) {
+  if (!(dq_m >= 0) || !std::isfinite(dq_m))
+    throw std::invalid_argument("relaxed step: rolled distance must be >= 0 and finite");
+  if (patch.a_m > 0 && patch.b_m > 0) {
+    Creepages sigma = relaxation_lengths_m(patch.a_m, patch.b_m);
+    if (state.sigma_m.xi > 0) sigma.xi = state.sigma_m.xi;
+    if (state.sigma_m.eta > 0) sigma.eta = state.sigma_m.eta;
+    if (state.sigma_m.phi_per_m > 0) sigma.phi_per_m = state.sigma_m.phi_per_m;
+    const double e = saturation_level(patch, pair, state.effective, mu);
+    const double p = state.exponent >= 0 ? state.exponent : over_ab(T::kExponent, patch.a_m / patch.b_m);
+    // the smallest share of sigma kept as the contact saturates (full sliding: the steady state at once)
+    constexpr double kMinShare = 1e-6;
+    const double share = std::max(kMinShare, std::pow(1 - std::clamp(e, 0.0, 1.0), p));
+    sigma.xi *= share;
+    sigma.eta *= share;
+    sigma.phi_per_m *= share;
+    auto relax = [dq_m](double& eff, double target, double s) { eff = target + (eff - target) * std::exp(-dq_m / s); };
+    relax(state.effective.xi, c.xi, sigma.xi);
+    relax(state.effective.eta, c.eta, sigma.eta);
+    relax(state.effective.phi_per_m, c.phi_per_m, sigma.phi_per_m);
+  }
+  return steady_at(patch, pair, state.effective, c, mu, speed_m_per_s, fields);
+}
+
+namespace {
+
+TangentialSolution no_contact_fields(const Grid& g) {
+  TangentialSolution s;
+  s.tau_x_Pa = s.tau_y_Pa = s.slip_x_m_per_s = s.slip_y_m_per_s = s.power_W_per_m2 = Eigen::ArrayXXd::Zero(g.nx, g.ny);
+  s.state = Eigen::ArrayXXi::Zero(g.nx, g.ny);
+  s.strip_power_W_per_m = s.strip_creep_power_W_per_m = s.strip_trailing_W_per_m = s.strip_force_x_N_per_m =
+      s.strip_force_y_N_per_m = Eigen::ArrayXd::Zero(g.ny);
+  return s;
+}
+
+// the contact at load F on the run's grid (as Satran's run puts it: a given patch, or Hertz's ellipse on
+// the grid of the largest load; none at F = 0)
+ContactPatch contact_at(const TransientCase& c, const Grid& grid, double F, bool& in_contact) {
+  in_contact = false;
+  if (c.patch) {
+    in_contact = true;
+    return *c.patch;
+  }
+  if (F > 0) {
+    const HertzContact h = solve_hertz(c.bodies, c.materials, F);
+    if ((grid.y_m.abs() < h.b_m).any()) {
+      in_contact = true;
+      return hertz_patch(h, grid);
+    }
+  }
+  return {};
+}
+
+}  // namespace
+
+TransientResult run_relaxed_transient(const TransientCase& c, const StepObserver& observe) {
+  const TransientSettings& set = c.settings;
+  check_transient_inputs(c);
+  if (c.inertia) throw SettingError("", "inertia", "the relaxed model's run has no roller inertia (Satran's has)");
+  if (set.scheme != TransientScheme::Shift)
+    throw SettingError("", "scheme", "the relaxed model rolls by the shift scheme's steps; use scheme: shift");
+  if (c.patch && !(is_constant(c.inputs.normal_load_N) && c.inputs.normal_load_N.value[0] == c.patch->normal_load_N))
+    throw SettingError("", "normal_load_N", "a run on a given contact patch needs the constant load of the patch, " +
+                                                std::to_string(c.patch->normal_load_N) + " N");
+  TransientResult res;
+  if (c.patch) {
+    res.grid = c.patch->grid;
+  } else {
+    const HertzContact largest = solve_hertz(c.bodies, c.materials, max_value(c.inputs.normal_load_N));
+    res.grid = make_grid(largest.a_m, largest.b_m, set.grid);
+  }
+  const Grid& g = res.grid;
+  const double dx = g.dx_m;
+  res.strip_energy_J_per_m = Eigen::ArrayXd::Zero(g.ny);
+  res.final_state = rest_state(g);  // Satran's node state: not the model's (left at rest)
+
+  std::vector<double> snaps = set.snapshot_times_s;
+  std::sort(snaps.begin(), snaps.end());
+  std::size_t next_snap = 0;
+  double t = 0, q = 0, F_patch = std::numeric_limits<double>::quiet_NaN();
+  ContactPatch patch;
+  bool in_contact = false;
+  RelaxedState state = relaxed_rest();
+  const double longest = set.dt_s > 0 ? set.dt_s : std::numeric_limits<double>::infinity();
+  int step = 0;
+  bool has_whole_step = false;
+  while (t < set.t_end_s * (1 - 1e-12)) {
+    const double left = set.t_end_s - t;
+    const double t_roll = time_to_accumulate(c.inputs.speed_m_per_s, t, dx);
+    const double dt = std::min({t_roll - t, longest, left});
+    const double dq = dt == t_roll - t ? dx : std::min(dx, integral(c.inputs.speed_m_per_s, t, t + dt));
+    if (!(dt > 0)) break;
+    const bool shortened = dt == left && dt < std::min(t_roll - t, longest) * (1 - 1e-9);
+    const double tm = t + dt / 2;
+    const Creepages cr{value_at(c.inputs.xi, tm), value_at(c.inputs.eta, tm), value_at(c.inputs.phi_per_m, tm)};
+    const double V = value_at(c.inputs.speed_m_per_s, tm);
+    const double F = value_at(c.inputs.normal_load_N, t + dt);
+    if (!(F == F_patch)) {
+      patch = contact_at(c, g, F, in_contact);
+      F_patch = F;
+    }
+    const bool fields = next_snap < snaps.size();
+    TangentialSolution f;
+    if (in_contact) {
+      f = relaxed_step(patch, c.materials, cr, c.mu, V, dq, state, fields);
+    } else {
+      f = no_contact_fields(g);
+      state = relaxed_rest();  // out of contact: nothing is held
+    }
+    TransientRecord rec;
+    rec.step = ++step;
+    rec.t_s = t + dt;
+    rec.q_m = q + dq;
+    rec.dt_s = dt;
+    rec.speed_m_per_s = V;
+    rec.xi = cr.xi;
+    rec.eta = cr.eta;
+    rec.phi_per_m = cr.phi_per_m;
+    rec.normal_load_N = F;
+    rec.Fx_N = f.Fx_N;
+    rec.Fy_N = f.Fy_N;
+    rec.Mz_N_m = f.Mz_N_m;
+    rec.power_W = f.power_W;
+    rec.stick_fraction = f.stick_fraction;
+    rec.balance_residual_W = std::numeric_limits<double>::quiet_NaN();  // a model: no discrete balance
+    rec.cfl = dq / dx;
+    rec.scheme = dq == 0 ? StepScheme::Standstill : StepScheme::Shift;
+    rec.shortened = shortened;
+    if (!shortened || !has_whole_step) {
+      res.end = rec;
+      has_whole_step = !shortened;
+    }
+    t += dt;
+    q += dq;
+    res.strip_energy_J_per_m += f.strip_power_W_per_m * dt;
+    res.dissipated_J += f.power_W * dt;
+    if (observe) observe(rec, f.strip_power_W_per_m);
+    while (next_snap < snaps.size() && snaps[next_snap] <= t * (1 + 1e-12)) {
+      Snapshot sn;
+      sn.t_s = t;
+      sn.pressure_Pa = in_contact ? patch.pressure_Pa : Eigen::ArrayXXd::Zero(g.nx, g.ny);
+      sn.tau_x_Pa = f.tau_x_Pa;
+      sn.tau_y_Pa = f.tau_y_Pa;
+      sn.slip_x_m_per_s = f.slip_x_m_per_s;
+      sn.slip_y_m_per_s = f.slip_y_m_per_s;
+      res.snapshots.push_back(std::move(sn));
+      ++next_snap;
+    }
+  }
+  res.steps = step;
+  res.t_end_s = t;
+  res.q_end_m = q;
+  return res;
+}
+
+}  // namespace contact

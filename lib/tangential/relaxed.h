@@ -1,0 +1,62 @@
+// The relaxed model (solver.tangential: relaxed): Kalker's simplified theory (the steady solver,
+// lib/tangential/steady.h, consistent scheme) wrapped so that it reproduces Kalker's exact theory
+// (lib/tangential/exact.h) where the bed of springs does not (docs/accuracy-vs-exact.md):
+//   - transient: the exact theory's start-up is a relaxation over about 2.7a (the half-space couples
+//     the whole contact; the springs only the material that entered it, so they build up over 2a).
+//     The model carries effective creepages that relax towards the imposed ones over the rolled
+//     distance q,  d c_eff/dq = (c - c_eff) / sigma,  per creepage (xi, eta, phi)
+//       sigma_k = s_k(a/b) a (1 - min(e_eff, 1))^p(a/b),
+//     e_eff the saturation level of c_eff (below): the relaxation length shrinks with the slope of the
+//     force-creepage curve as the contact saturates (the contact's tangential stiffness stays), and
+//     each step is the steady model at c_eff (quasi-steady: the springs' own 2a memory is not used);
+//   - steady forces: the simplified theory's force at a creepage is that of the exact theory at a
+//     slightly different one: each creepage is scaled by a factor g_k(a/b, e) of the saturation level
+//     e = G a b C |c| / (3 mu N) before the steady solve;
+//   - power: the exact theory's steady frictional power is the creep forces' work -V (xi Fx + eta Fy + phi Mz)
+//     (docs/physics.md §4); the bed of springs with three flexibilities is not (1.5-2.2x with mixes).
+//     The model keeps the strips' distribution of the simplified theory's power and scales it to that work
+//     (with the work of the strips' Heathcote offsets, docs/physics.md §2.4, where the patch has them).
+// The factors s_k and g_k: lib/tangential/relaxed_table.h, fitted to the exact solver by
+// scripts/fit-relaxed (fit error in docs/accuracy-vs-exact.md).
+#pragma once
+
+#include "lib/elastic.h"
+#include "lib/patch.h"
+#include "lib/tangential/satran.h"
+#include "lib/tangential/tangential.h"
+
+namespace contact {
+
+// the effective creepages of a transient run (not the imposed ones)
+struct RelaxedState {
+  Creepages effective;
+  Creepages sigma_m;     // relaxation lengths in place of the table's where > 0 (for the fit, scripts/fit-relaxed)
+  double exponent = -1;  // the exponent p in place of the table's if >= 0 (for the fit)
+};
+
+inline RelaxedState relaxed_rest() { return {}; }
+// the steady state at the creepages c (the effective creepages are the imposed ones)
+inline RelaxedState relaxed_steady_state(const Creepages& c) { return {c, {}, -1}; }
+
+// the relaxation lengths (m) of xi, eta and phi on a contact of semi-axes a_m (along rolling), b_m
+Creepages relaxation_lengths_m(double a_m, double b_m);
+
+// the steady model: forces, fields, per-strip power (scaled to the creep forces' work), creep work.
+// Throws std::invalid_argument as make_tangential_problem.
+TangentialSolution solve_relaxed_steady(const ContactPatch& patch, const ElasticPair& pair, const Creepages& creepages,
+                                        double mu, double speed_m_per_s, bool fields = true);
+
+// One step rolling dq_m >= 0 with the imposed creepages c (the step's mean): the effective creepages
+// relax, c_eff <- c + (c_eff - c) exp(-dq / sigma) (sigma at the step's start), then the steady model at c_eff. Its power is the
+// steady model's at c_eff (-V c_eff . F); creep_work_W is that of the imposed creepages.
+TangentialSolution relaxed_step(const ContactPatch& patch, const ElasticPair& pair, const Creepages& creepages,
+                                double mu, double speed_m_per_s, double dq_m, RelaxedState& state,
+                                bool fields = false);
+
+// The 'transient' run of a case with the relaxed model: the steps of Satran's shift scheme (dq = dx,
+// shortened to the longest step dt_s or to land on t_end_s; the creepages and speed at mid-step, the
+// contact at the step's end), each one relaxed_step. Hertz contact from the bodies (or c.patch at its
+// constant load). No inertia, scheme shift only (SettingError otherwise). The balance residual is nan.
+TransientResult run_relaxed_transient(const TransientCase& c, const StepObserver& observe = {});
+
+}  // namespace contact

@@ -1,0 +1,306 @@
+// The fast tangential models against Kalker's exact theory in-house (docs/accuracy-vs-exact.md): one
+// contact (Hertz ellipse of a/b, b = 1 mm, p0 = 1 GPa, steel 210 GPa / 0.28, mu 0.3, V 1 m/s) on an
+// n x n grid, the exact solver (lib/tangential/exact.h), the simplified theory as it stands (steady
+// solver, consistent scheme; Satran's shift steps) and the relaxed model (lib/tangential/relaxed.h).
+// Built with the bench preset, not part of ctest; scripts/fast-model-compare runs it and plots.
+//   fast_model_report steady AB N       steady solves over creepages (pure xi, eta, phi, mixes, ~50 % and
+//                                       ~90 % of saturation): one line per solver and creepage
+//   fast_model_report startup AB N K    start from rest at saturation level K (0.5 or 0.9) in xi, to q = 20a
+//   fast_model_report step AB N DIR     from steady at 50 % to 90 % of saturation in DIR (xi, eta, phi)
+//   fast_model_report fit AB N          the creepage factors of the relaxed model (lines "G", scripts/fit-relaxed)
+//   fast_model_report fitsigma AB N DIR its relaxation length in DIR (line "Z", scripts/fit-relaxed)
+// FAST_MODEL_CASES=xi50,mix50 (say) in the environment: only those steady cases.
+// Lines: "S solver ab n label xi eta phi Fx Fy Mz P W ms" (W = -creep work), "J solver ab n label P_j...",
+// "T solver ab n label q/a Fx Fy Mz P ms".
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "lib/elastic.h"
+#include "lib/grid.h"
+#include "lib/normal/hertz.h"
+#include "lib/numeric.h"
+#include "lib/tangential/exact.h"
+#include "lib/tangential/relaxed.h"
+#include "lib/tangential/satran.h"
+#include "lib/tangential/steady.h"
+
+using namespace contact;
+
+namespace {
+
+const ElasticPair kPair{{210e9, 0.28}, {210e9, 0.28}};
+constexpr double kMu = 0.3, kV = 1.0;
+
+ContactPatch ellipse_patch(double ab, int n) {
+  HertzContact h;
+  h.b_m = 1e-3;
+  h.a_m = ab * h.b_m;
+  h.p0_Pa = 1e9;
+  h.normal_load_N = 2 * kPi * h.a_m * h.b_m * h.p0_Pa / 3;
+  return hertz_patch(h, make_grid(h.a_m, h.b_m, {n, n}));
+}
+
+// the creepage giving the share k of saturation in the simplified theory's closed form for a Hertz
+// contact, |F|/(mu N) = 1 - (1 - e)^3, e = G a b C |c| / (3 mu N): e = 1 - (1 - k)^(1/3)
+Creepages level(const ContactPatch& p, double k, double wx, double wy, double wphi) {
+  const KalkerCoefficients C = kalker_coefficients(p.a_m, p.b_m, combined_poisson(kPair));
+  const double G = combined_shear_modulus_Pa(kPair), a = p.a_m, b = p.b_m, N = p.normal_load_N;
+  const double e = 1 - std::cbrt(1 - k);
+  const double xi = 3 * kMu * N * e / (G * a * b * C.C11);
+  const double eta = 3 * kMu * N * e / (G * a * b * C.C22);
+  const double phi = 3 * kMu * N * e / (G * std::pow(a * b, 1.5) * C.C23);
+  return {wx * xi, wy * eta, wphi * phi};
+}
+
+// FAST_MODEL_ONLY=1 in the environment: the fast models only (the exact lines kept from an earlier run)
+bool with_exact() {
+  const char* v = std::getenv("FAST_MODEL_ONLY");
+  return !(v && std::string(v) == "1");
+}
+
+double ms_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+}
+
+void print_steady(const char* solver, double ab, int n, const std::string& label, const Creepages& c,
+                  const TangentialSolution& s, double ms) {
+  std::printf("S %s %g %d %s %.6e %.6e %.6e %.6e %.6e %.6e %.6e %.6e %.3f\n", solver, ab, n, label.c_str(), c.xi,
+              c.eta, c.phi_per_m, s.Fx_N, s.Fy_N, s.Mz_N_m, s.power_W, -s.creep_work_W, ms);
+  std::printf("J %s %g %d %s", solver, ab, n, label.c_str());
+  for (int j = 0; j < s.strip_power_W_per_m.size(); ++j) std::printf(" %.6e", s.strip_power_W_per_m(j));
+  std::printf("\n");
+}
+
+struct Labelled {
+  std::string label;
+  Creepages c;
+};
+
+std::vector<Labelled> steady_cases(const ContactPatch& p) {
+  std::vector<Labelled> v;
+  for (double k : {0.5, 0.9}) {
+    const std::string s = k == 0.5 ? "50" : "90";
+    v.push_back({"xi" + s, level(p, k, 1, 0, 0)});
+    v.push_back({"eta" + s, level(p, k, 0, 1, 0)});
+    v.push_back({"phi" + s, level(p, k, 0, 0, 1)});
+    const double r2 = 1 / std::sqrt(2.0), r3 = 1 / std::sqrt(3.0);
+    v.push_back({"xieta" + s, level(p, k, r2, r2, 0)});
+    v.push_back({"xiphi" + s, level(p, k, r2, 0, r2)});
+    v.push_back({"mix" + s, level(p, k, r3, r3, r3)});
+    v.push_back({"mixneg" + s, level(p, k, -r3, r3, -r3)});
+  }
+  return v;
+}
+
+// one step of each transient model; returns the record's forces and power
+struct Row {
+  double Fx, Fy, Mz, P;
+};
+
+// a history of creepages over the rolled distance, stepped by dq = dx with each solver
+void transient(double ab, int n, const std::string& label, const std::function<Creepages(double q)>& at,
+               double q_end, bool from_steady) {
+  const ContactPatch p = ellipse_patch(ab, n);
+  const double G = combined_shear_modulus_Pa(kPair), nu = combined_poisson(kPair), dx = p.grid.dx_m, a = p.a_m;
+  const int steps = static_cast<int>(std::lround(q_end / dx));
+  auto print = [&](const char* solver, int k, const Row& r, double ms) {
+    std::printf("T %s %g %d %s %.6f %.6e %.6e %.6e %.6e %.4f\n", solver, ab, n, label.c_str(), k * dx / a, r.Fx, r.Fy,
+                r.Mz, r.P, ms);
+  };
+  if (with_exact()) {  // exact: solve_exact_rolling_step (dq = dx), from rest or from the steady state at q = 0
+    ExactOptions o = exact_run_options();
+    ExactSolution prev;
+    bool have = false;
+    if (from_steady) {
+      prev = solve_exact_steady(p, G, nu, at(0), kMu, kV);
+      have = true;
+    }
+    for (int k = 1; k <= steps; ++k) {
+      const auto t0 = std::chrono::steady_clock::now();
+      ExactSolution s = solve_exact_rolling_step(p, G, nu, at((k - 0.5) * dx), kMu, kV, have ? &prev : nullptr, o);
+      const double ms = ms_since(t0);
+      if (!s.status.converged()) std::printf("# exact step %d not converged: %s\n", k, s.status.message.c_str());
+      print("exact", k, {s.fields.Fx_N, s.fields.Fy_N, s.fields.Mz_N_m, s.fields.power_W}, ms);
+      prev = std::move(s);
+      have = true;
+    }
+  }
+  {  // the simplified theory: Satran's shift steps (consistent), from rest or after rolling 4a at q = 0's creepage
+    TransientState st = rest_state(p.grid);
+    auto step = [&](const Creepages& c) {
+      const TangentialProblem pr = make_tangential_problem(p, kPair, c, kMu, kV);
+      StepKinematics kin{dx / kV, dx, c.xi * dx, c.eta * dx, c.phi_per_m * dx};
+      return satran_step(p, pr, kin, TransientScheme::Shift, st);
+    };
+    if (from_steady)
+      for (int k = 0; k < 2 * n + 4; ++k) step(at(0));
+    for (int k = 1; k <= steps; ++k) {
+      const auto t0 = std::chrono::steady_clock::now();
+      const StepResult r = step(at((k - 0.5) * dx));
+      print("simplified", k, {r.Fx_N, r.Fy_N, r.Mz_N_m, r.dissipated_J / (dx / kV)}, ms_since(t0));
+    }
+  }
+  {  // the relaxed model
+    RelaxedState st = relaxed_rest();
+    if (from_steady) st = relaxed_steady_state(at(0));
+    for (int k = 1; k <= steps; ++k) {
+      const auto t0 = std::chrono::steady_clock::now();
+      const TangentialSolution s = relaxed_step(p, kPair, at((k - 0.5) * dx), kMu, kV, dx, st);
+      print("relaxed", k, {s.Fx_N, s.Fy_N, s.Mz_N_m, s.power_W}, ms_since(t0));
+    }
+  }
+}
+
+// the saturation levels e = G a b C |c| / (3 mu N) the creepage factors are fitted at (scripts/fit-relaxed)
+const std::vector<double> kFitE = {0.05, 0.1, 0.2, 0.3, 0.4, 0.55, 0.7, 0.85};
+
+// the pure creepage of direction dir (0 xi, 1 eta, 2 phi) at the level e
+Creepages at_level(const ContactPatch& p, int dir, double e) {
+  const KalkerCoefficients C = kalker_coefficients(p.a_m, p.b_m, combined_poisson(kPair));
+  const double G = combined_shear_modulus_Pa(kPair), a = p.a_m, b = p.b_m, N = p.normal_load_N;
+  const double base = 3 * kMu * N * e / (G * a * b);
+  if (dir == 0) return {base / C.C11, 0, 0};
+  if (dir == 1) return {0, base / C.C22, 0};
+  return {0, 0, base / (std::sqrt(a * b) * C.C23)};
+}
+
+double force_of(const TangentialSolution& s, int dir) { return dir == 0 ? s.Fx_N : s.Fy_N; }
+
+// "G dir ab e factor F_exact F_simplified(1)": the factor m on the creepage with which the simplified
+// theory's force equals the exact theory's (Fx for xi, Fy for eta and phi)
+void fit_factors(double ab, int n) {
+  const ContactPatch p = ellipse_patch(ab, n);
+  const double G = combined_shear_modulus_Pa(kPair), nu = combined_poisson(kPair);
+  for (int dir = 0; dir < 3; ++dir)
+    for (double e : kFitE) {
+      const Creepages c = at_level(p, dir, e);
+      const ExactSolution ex = solve_exact_steady(p, G, nu, c, kMu, kV);
+      const double target = force_of(ex.fields, dir);
+      auto f = [&](double m) {
+        const Creepages cm{m * c.xi, m * c.eta, m * c.phi_per_m};
+        SteadyOptions o;
+        o.fields = false;
+        return force_of(solve_steady(p, make_tangential_problem(p, kPair, cm, kMu, kV), TangentialScheme::Consistent, o),
+                        dir) - target;
+      };
+      // the factor in [0.5, 4] whose force is nearest the exact one (the force of spin is not monotonic in
+      // phi: a scan, not a root), ties to the factor nearest 1
+      double m = 1, best = std::abs(f(1));
+      bool hit = best <= 2e-3 * std::abs(target);
+      for (double t = 0.5; t <= 4.0 + 1e-9; t += 0.002) {
+        const double d = std::abs(f(t));
+        if (d <= 2e-3 * std::abs(target)) {  // a root: the one nearest 1
+          if (!hit || std::abs(t - 1) < std::abs(m - 1)) m = t, best = d;
+          hit = true;
+        } else if (!hit && d < best) {
+          best = d;
+          m = t;
+        }
+      }
+      std::printf("G %d %g %.4f %.6f %.6e %.6e %s\n", dir, ab, e, m, target, f(1) + target,
+                  ex.status.converged() ? "" : "unconverged");
+    }
+}
+
+// "Z dir ab sigma/a p maxerr unconverged": the relaxation length sigma0 and exponent p (sigma = sigma0 (1 - e_eff)^p)
+// of direction dir that fit the exact start-up from rest at 50 % and 90 % of saturation best: the largest
+// |F_model/F_model,ss - F_exact/F_exact,ss| over q <= 8a, both levels (the shapes: the steady forces are the
+// creepage factors' business)
+void fit_sigma(double ab, int n, int dir) {
+  const ContactPatch p = ellipse_patch(ab, n);
+  const double G = combined_shear_modulus_Pa(kPair), nu = combined_poisson(kPair), dx = p.grid.dx_m, a = p.a_m;
+  const int steps = static_cast<int>(std::lround(8 * a / dx));
+  std::vector<std::vector<double>> ex;
+  std::vector<Creepages> cs;
+  int unconverged = 0;
+  for (double k : {0.5, 0.9}) {
+    const double w[3] = {dir == 0 ? 1.0 : 0, dir == 1 ? 1.0 : 0, dir == 2 ? 1.0 : 0};
+    const Creepages c = level(p, k, w[0], w[1], w[2]);
+    cs.push_back(c);
+    std::vector<double> f;
+    ExactSolution prev;
+    for (int s = 1; s <= steps; ++s) {
+      ExactSolution e = solve_exact_rolling_step(p, G, nu, c, kMu, kV, s == 1 ? nullptr : &prev, exact_run_options());
+      unconverged += !e.status.converged();
+      f.push_back(force_of(e.fields, dir));
+      prev = std::move(e);
+    }
+    const ExactSolution ss = solve_exact_steady(p, G, nu, c, kMu, kV);
+    unconverged += !ss.status.converged();
+    f.push_back(force_of(ss.fields, dir));  // the steady force last
+    ex.push_back(f);
+  }
+  double best_s = 0, best_p = 0, best_err = 1e300;
+  for (double pw = 0; pw <= 3.0 + 1e-9; pw += 0.25)
+    for (double sig = 0.3; sig <= 5.0 + 1e-9; sig += 0.05) {
+      double err = 0;
+      for (std::size_t l = 0; l < cs.size(); ++l) {
+        const double ss = force_of(solve_relaxed_steady(p, kPair, cs[l], kMu, kV, false), dir);
+        RelaxedState st = relaxed_rest();
+        (dir == 0 ? st.sigma_m.xi : dir == 1 ? st.sigma_m.eta : st.sigma_m.phi_per_m) = sig * a;
+        st.exponent = pw;
+        for (int s = 1; s <= steps; ++s) {
+          const TangentialSolution r = relaxed_step(p, kPair, cs[l], kMu, kV, dx, st, false);
+          err = std::max(err, std::abs(force_of(r, dir) / ss - ex[l][s - 1] / ex[l].back()));
+        }
+      }
+      if (err < best_err) best_err = err, best_s = sig, best_p = pw;
+    }
+  std::printf("Z %d %g %.3f %.3f %.5f %d\n", dir, ab, best_s, best_p, best_err, unconverged);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc < 4) {
+    std::fprintf(stderr, "usage: fast_model_report steady AB N | startup AB N K | step AB N xi|eta|phi\n");
+    return 2;
+  }
+  const std::string what = argv[1];
+  const double ab = std::atof(argv[2]);
+  const int n = std::atoi(argv[3]);
+  const ContactPatch p = ellipse_patch(ab, n);
+  const double G = combined_shear_modulus_Pa(kPair), nu = combined_poisson(kPair);
+  if (what == "fit") {
+    fit_factors(ab, n);
+  } else if (what == "fitsigma" && argc >= 5) {
+    const std::string dir = argv[4];
+    fit_sigma(ab, n, dir == "xi" ? 0 : dir == "eta" ? 1 : 2);
+  } else if (what == "steady") {
+    const char* only = std::getenv("FAST_MODEL_CASES");  // a comma-separated list of labels: only those
+    for (const Labelled& l : steady_cases(p)) {
+      if (only && ("," + std::string(only) + ",").find("," + l.label + ",") == std::string::npos) continue;
+      auto t0 = std::chrono::steady_clock::now();
+      if (with_exact()) {
+        const ExactSolution e = solve_exact_steady(p, G, nu, l.c, kMu, kV);
+        const double ms_e = ms_since(t0);
+        if (!e.status.converged())
+          std::printf("# exact %s not converged: %s\n", l.label.c_str(), e.status.message.c_str());
+        print_steady("exact", ab, n, l.label, l.c, e.fields, ms_e);
+      }
+      t0 = std::chrono::steady_clock::now();
+      const TangentialSolution s = solve_steady(p, make_tangential_problem(p, kPair, l.c, kMu, kV));
+      print_steady("simplified", ab, n, l.label, l.c, s, ms_since(t0));
+      t0 = std::chrono::steady_clock::now();
+      const TangentialSolution r = solve_relaxed_steady(p, kPair, l.c, kMu, kV);
+      print_steady("relaxed", ab, n, l.label, l.c, r, ms_since(t0));
+    }
+  } else if (what == "startup" && argc >= 5) {
+    const double k = std::atof(argv[4]);
+    const Creepages c = level(p, k, 1, 0, 0);
+    transient(ab, n, "startup" + std::string(k < 0.7 ? "50" : "90"), [c](double) { return c; }, 20 * p.a_m, false);
+  } else if (what == "step" && argc >= 5) {
+    const std::string dir = argv[4];
+    const double w[3] = {dir == "xi" ? 1.0 : 0, dir == "eta" ? 1.0 : 0, dir == "phi" ? 1.0 : 0};
+    const Creepages c0 = level(p, 0.5, w[0], w[1], w[2]), c1 = level(p, 0.9, w[0], w[1], w[2]);
+    transient(ab, n, "step" + dir, [c0, c1](double q) { return q <= 0 ? c0 : c1; }, 12 * p.a_m, true);
+  } else {
+    std::fprintf(stderr, "fast_model_report: unknown mode %s\n", what.c_str());
+    return 2;
+  }
+}

@@ -1,0 +1,202 @@
+// The relaxed model (lib/tangential/relaxed.h) against Kalker's exact theory. References: CONTACT's
+// results on the paper's contact (tests/data/exact/contact_reference.csv, with their provenance), the
+// in-house exact solver's start-ups over a/b (tests/data/fast_model/exact_startup.csv, with the command
+// and grid that made them), and the exact theory's steady energy balance (docs/physics.md §4).
+#include "lib/tangential/relaxed.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "lib/elastic.h"
+#include "lib/grid.h"
+#include "lib/history.h"
+#include "lib/normal/hertz.h"
+#include "lib/numeric.h"
+#include "lib/tangential/satran.h"
+#include "lib/tangential/steady.h"
+
+namespace contact {
+namespace {
+
+// rows of a CSV file of tests/data with '#' comments and a header line, as strings
+std::vector<std::vector<std::string>> read_csv(const std::string& name) {
+  const std::string path = std::string(ROLLWEAR_SOURCE_DIR) + "/tests/data/" + name;
+  std::ifstream in(path);
+  EXPECT_TRUE(in.good()) << path;
+  std::vector<std::vector<std::string>> rows;
+  std::string line;
+  bool header = true;
+  while (std::getline(in, line)) {
+    if (line.empty() || line[0] == '#') continue;
+    if (header) {
+      header = false;
+      continue;
+    }
+    std::vector<std::string> cells;
+    std::stringstream ss(line);
+    std::string cell;
+    while (std::getline(ss, cell, ',')) cells.push_back(cell);
+    rows.push_back(cells);
+  }
+  return rows;
+}
+
+std::map<std::string, double> contact_reference() {
+  std::map<std::string, double> m;
+  for (const auto& r : read_csv("exact/contact_reference.csv")) m[r.at(0) + "," + r.at(1)] = std::stod(r.at(2));
+  return m;
+}
+
+const ElasticPair kSteel{{210e9, 0.28}, {210e9, 0.28}};
+constexpr double kMu = 0.3, kV = 1.0;
+
+// the paper's contact (cases/paper.yaml): Hertz, 1500 N
+ContactPatch paper_patch(int n) {
+  const Bodies bodies{{20e-3, 500e-3}, {25e-3, kFlat}};
+  return solve_normal_hertz(bodies, kSteel, 1500, {n, n});
+}
+
+// a Hertz ellipse of a/b with b = 1 mm, p0 = 1 GPa on n x n cells (fast_model_report's contact)
+ContactPatch ellipse_patch(double ab, int n) {
+  HertzContact h;
+  h.b_m = 1e-3;
+  h.a_m = ab * h.b_m;
+  h.p0_Pa = 1e9;
+  h.normal_load_N = 2 * kPi * h.a_m * h.b_m * h.p0_Pa / 3;
+  return hertz_patch(h, make_grid(h.a_m, h.b_m, {n, n}));
+}
+
+// the targets (not loosened): the transient force within 2 % of the exact steady force at every rolled
+// distance, the steady Fx within 2 %
+constexpr double kTransientTarget = 0.02;
+constexpr double kSteadyForceTarget = 0.02;
+
+// The steady Fx of the paper's contact at xi = 1e-3 (CONTACT: -153.48 N on 80 x 80, -152.98 N on
+// 160 x 160): the relaxed model on 80 x 80 within 2 % of both; the simplified theory as it stands is
+// +4.5 % off (it fails the target: what the model fixes).
+TEST(RelaxedModel, SteadyFxOfThePapersContactWithinTwoPercentOfContact) {
+  const auto ref = contact_reference();
+  const ContactPatch p = paper_patch(80);
+  const Creepages c{1e-3, 0, 0};
+  const TangentialSolution r = solve_relaxed_steady(p, kSteel, c, kMu, kV, false);
+  SteadyOptions o;
+  o.fields = false;
+  const TangentialSolution s = solve_steady(p, make_tangential_problem(p, kSteel, c, kMu, kV), TangentialScheme::Consistent, o);
+  for (const char* grid : {"80x80", "160x160"}) {
+    const double exact = ref.at(std::string("Fx_N,") + grid);
+    EXPECT_LE(std::abs(r.Fx_N / exact - 1), kSteadyForceTarget) << grid << ": relaxed " << r.Fx_N;
+    EXPECT_GT(std::abs(s.Fx_N / exact - 1), kSteadyForceTarget) << grid << ": simplified " << s.Fx_N;
+  }
+}
+
+// The start from rest of the paper's contact, xi = 1e-3, dq = dx on 80 x 80 (CONTACT: Fx/Fx_ss = 0.1585,
+// 0.5198, 0.7727, 0.9491 at q/a = 0.5, 2, 4, 8): the relaxed model within 2 % of CONTACT's steady Fx at each;
+// Satran (the springs' build-up over 2a) is 0.4 off at q = 2a.
+TEST(RelaxedModel, StartUpOfThePapersContactWithinTwoPercentOfContact) {
+  const auto ref = contact_reference();
+  const double Fss = ref.at("Fx_N,80x80");
+  const ContactPatch p = paper_patch(80);
+  const double dx = p.grid.dx_m, a = p.a_m;
+  const Creepages c{1e-3, 0, 0};
+  RelaxedState st = relaxed_rest();
+  TransientState sat = rest_state(p.grid);
+  const TangentialProblem pr = make_tangential_problem(p, kSteel, c, kMu, kV);
+  int checked = 0;
+  for (int k = 1; k <= 320; ++k) {
+    const TangentialSolution r = relaxed_step(p, kSteel, c, kMu, kV, dx, st);
+    const StepResult s = k <= 80 ? satran_step(p, pr, {dx / kV, dx, c.xi * dx, 0, 0}, TransientScheme::Shift, sat)
+                                 : StepResult{};
+    const double q_over_a = k * dx / a;
+    for (const char* q : {"0.5", "2", "4", "8"}) {
+      if (std::abs(q_over_a - std::stod(q)) > 1e-9) continue;
+      const double exact = ref.at(std::string("Fx_over_Fx_ss_at_q_over_a_") + q + ",80x80") * Fss;
+      EXPECT_LE(std::abs(r.Fx_N - exact), kTransientTarget * std::abs(Fss)) << "q/a " << q << ": " << r.Fx_N;
+      if (k == 80) {
+        EXPECT_GT(std::abs(s.Fx_N - exact), 0.4 * std::abs(Fss)) << "Satran at q = 2a: " << s.Fx_N;
+      }
+      ++checked;
+    }
+  }
+  EXPECT_EQ(checked, 4);
+}
+
+// The exact theory's steady frictional power is the creep forces' work (docs/physics.md §4): the relaxed
+// model's is, with combined creepages too (to rounding), its strips sum to it; the simplified theory's is
+// 1.5-2.2x its own creep forces' work for such mixes.
+TEST(RelaxedModel, SteadyPowerIsTheCreepForcesWork) {
+  const ContactPatch p = paper_patch(40);
+  for (const Creepages& c : {Creepages{1e-3, 1e-3, 0.5}, Creepages{-1e-3, 2e-3, -2.0}, Creepages{2e-3, 0, 0}}) {
+    const TangentialSolution r = solve_relaxed_steady(p, kSteel, c, kMu, kV);
+    EXPECT_NEAR(r.power_W, -r.creep_work_W, 1e-12 * r.power_W);
+    EXPECT_NEAR(r.strip_power_W_per_m.sum() * p.grid.dy_m, r.power_W, 1e-9 * r.power_W);
+    EXPECT_NEAR(r.power_W_per_m2.sum() * p.grid.dx_m * p.grid.dy_m, r.power_W, 1e-9 * r.power_W);
+  }
+  const Creepages mix{1e-3, 1e-3, 0.5};
+  const TangentialSolution s = solve_steady(p, make_tangential_problem(p, kSteel, mix, kMu, kV));
+  EXPECT_GT(s.power_W / -s.creep_work_W, 1.4) << "the simplified theory's power with a mix";
+}
+
+// Steady rolling is the relaxed step's fixed point: from the steady state at c, a step at c gives the
+// steady model's forces to rounding; from rest, the effective creepage after rolling q is
+// c (1 - exp(-q/sigma)) while the contact is far from saturation (the relaxation law of relaxed.h).
+TEST(RelaxedModel, SteadyIsTheFixedPointAndTheStartRelaxes) {
+  const ContactPatch p = ellipse_patch(0.3, 20);
+  const Creepages c{2e-4, 1e-4, 0};
+  RelaxedState st = relaxed_steady_state(c);
+  const TangentialSolution step = relaxed_step(p, kSteel, c, kMu, kV, p.grid.dx_m, st);
+  const TangentialSolution steady = solve_relaxed_steady(p, kSteel, c, kMu, kV);
+  EXPECT_NEAR(step.Fx_N, steady.Fx_N, 1e-12 * std::abs(steady.Fx_N));
+  EXPECT_NEAR(step.Fy_N, steady.Fy_N, 1e-12 * std::abs(steady.Fy_N));
+  EXPECT_DOUBLE_EQ(st.effective.xi, c.xi);
+}
+
+// The in-house exact solver's start-ups from rest (pure xi at about 50 % and 90 % of saturation) over
+// a/b, tests/data/fast_model/exact_startup.csv: the relaxed model on the same 40 x 40 grid within 2 % of
+// the exact steady force at every stored rolled distance, at the a/b where the model meets the target:
+// 0.05, 0.1 and 0.3. It misses at a/b = 1 (3.0 % at 50 %, 1.9 % at 90 % on 40 x 40; 2.2 % against the exact
+// solver on 80 x 80) and a/b = 3 (6.5 % at 50 %; the exact start-up at 90 % does not converge there):
+// docs/accuracy-vs-exact.md. Those rows stay in the file, not in the test.
+TEST(RelaxedModel, StartUpsOverAspectRatiosWithinTwoPercentOfTheExactSolver) {
+  std::map<std::string, std::vector<std::pair<double, double>>> runs;  // "ab,level" -> (q/a, Fx/Fx_ss)
+  std::map<std::string, double> fss;
+  for (const auto& r : read_csv("fast_model/exact_startup.csv")) {
+    const std::string key = r.at(0) + "," + r.at(1);
+    if (r.at(2) == "ss")
+      fss[key] = std::stod(r.at(3));
+    else
+      runs[key].push_back({std::stod(r.at(2)), std::stod(r.at(3))});
+  }
+  ASSERT_FALSE(runs.empty());
+  int held = 0;
+  for (const auto& [key, points] : runs) {
+    const double ab = std::stod(key.substr(0, key.find(','))), level = std::stod(key.substr(key.find(',') + 1));
+    if (ab > 0.3 + 1e-9) continue;  // a/b where the target is met (above)
+    ++held;
+    const ContactPatch p = ellipse_patch(ab, 40);
+    // fast_model_report's creepage at the level: e = 1 - (1 - level)^(1/3)
+    const KalkerCoefficients C = kalker_coefficients(p.a_m, p.b_m, combined_poisson(kSteel));
+    const double e = 1 - std::cbrt(1 - level);
+    const Creepages c{3 * kMu * p.normal_load_N * e / (combined_shear_modulus_Pa(kSteel) * p.a_m * p.b_m * C.C11), 0, 0};
+    RelaxedState st = relaxed_rest();
+    std::size_t next = 0;
+    double worst = 0;
+    for (int k = 1; next < points.size(); ++k) {
+      const TangentialSolution r = relaxed_step(p, kSteel, c, kMu, kV, p.grid.dx_m, st, false);
+      if (std::abs(k * p.grid.dx_m / p.a_m - points[next].first) < 1e-9) {
+        worst = std::max(worst, std::abs(r.Fx_N / fss.at(key) - points[next].second));
+        ++next;
+      }
+    }
+    EXPECT_LE(worst, kTransientTarget) << "a/b " << ab << ", " << level * 100 << " % of saturation";
+  }
+  EXPECT_EQ(held, 6);  // 0.05, 0.1, 0.3 at two levels each
+}
+
+}  // namespace
+}  // namespace contact
