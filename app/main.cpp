@@ -87,7 +87,9 @@ CLI::App* add_contact_command(CLI::App& app, ContactOptions& opt, CommonOptions&
                  "fields.csv.");
   sub->footer(
       "The summary names the normal solver that ran (and why, for solver.normal: auto) and the number of\n"
-      "contact patches. strips.csv's y_m is in the profiles' lateral coordinate.\n"
+      "contact patches. strips.csv's y_m is in the profiles' lateral coordinate. With solver.tangential:\n"
+      "exact the summary names the exact solve in place of the simplified theory's C11 ... L (nan in\n"
+      "summary.csv), and a transient run's summary.csv says scheme exact.\n"
       "A contact that reaches a body's edge (the end of its profile) is a warning line in the summary; the\n"
       "outputs are written and the exit status stays 0 (if its normal solve converged; an unconverged one,\n"
       "at an edge or not, is exit 1).\n"
@@ -257,8 +259,10 @@ void remove_stale_temporaries(const std::filesystem::path& dir) {
   }
 }
 
+// exact_solve: the exact solve's status message (scheme Exact), printed in place of the simplified
+// theory's coefficients, which that solve does not use
 void print_contact_summary(const ContactCase& c, const NormalSolution& normal, const TangentialProblem& problem,
-                           const TangentialSolution& s, TangentialScheme scheme) {
+                           const TangentialSolution& s, TangentialScheme scheme, const std::string& exact_solve) {
   const ContactPatch& patch = normal.patch;
   fmt::print("case {} ({}), {} x {} grid, {} scheme\n", c.name, c.path, patch.grid.nx, patch.grid.ny,
              to_string(scheme));
@@ -270,9 +274,16 @@ void print_contact_summary(const ContactCase& c, const NormalSolution& normal, c
   fmt::print("  semi-axes       a  = {:.6f} mm, b = {:.6f} mm\n", patch.a_m * 1e3, patch.b_m * 1e3);
   fmt::print("  peak pressure   p0 = {:.3f} MPa\n", patch.p0_Pa * 1e-6);
   fmt::print("  approach        delta = {:.4f} µm\n", patch.approach_m * 1e6);
-  fmt::print("  Kalker          C11 = {:.4f}, C22 = {:.4f}, C23 = {:.4f}, C33 = {:.4f}\n", problem.C.C11,
-             problem.C.C22, problem.C.C23, problem.C.C33);
-  fmt::print("  flexibility     L  = {:.6e} m/Pa\n", problem.L_m_per_Pa);
+  if (scheme == TangentialScheme::Exact) {
+    const ElasticPair pair = materials_of(c);
+    fmt::print("  exact theory    Kalker's, on the half-space: G = {:.6g} GPa, nu = {:.4g}\n",
+               combined_shear_modulus_Pa(pair) * 1e-9, combined_poisson(pair));
+    fmt::print("  exact solve     {}\n", exact_solve);
+  } else {
+    fmt::print("  Kalker          C11 = {:.4f}, C22 = {:.4f}, C23 = {:.4f}, C33 = {:.4f}\n", problem.C.C11,
+               problem.C.C22, problem.C.C23, problem.C.C33);
+    fmt::print("  flexibility     L  = {:.6e} m/Pa\n", problem.L_m_per_Pa);
+  }
   fmt::print("  creep forces    Fx = {:.6g} N, Fy = {:.6g} N, Mz = {:.6g} N m\n", s.Fx_N, s.Fy_N, s.Mz_N_m);
   fmt::print("  dissipated      P  = {:.6g} W, creep work = {:.6g} W\n", s.power_W, s.creep_work_W);
   fmt::print("  stick fraction     {:.4f}\n", s.stick_fraction);
@@ -293,12 +304,13 @@ int run_contact(const ContactOptions& opt) {
   // normal problem, then the steady tangential problem on its patch
   const NormalSolution normal = solve_normal_of(c);
   const ContactPatch& patch = normal.patch;
-  const TangentialProblem problem =
+  TangentialProblem problem =
       make_tangential_problem(patch, materials_of(c), creepages_of(c), c.friction.mu, speed_of(c));
   const bool fields = c.output.fields && !opt.no_fields;
   SteadyOptions steady_options;
   steady_options.fields = fields;  // not asked for: not computed either
   TangentialSolution solution;
+  std::string exact_solve;
   if (scheme == TangentialScheme::Exact) {  // Kalker's exact theory on the half-space (lib/tangential/exact.h)
     const ElasticPair pair = materials_of(c);
     const ExactSolution e = solve_exact_steady(patch, combined_shear_modulus_Pa(pair), combined_poisson(pair),
@@ -306,6 +318,10 @@ int run_contact(const ContactOptions& opt) {
     if (!e.status.converged()) throw SolverError("exact steady solve: " + e.status.message);
     spdlog::info("exact steady solve: {}", e.status.message);
     solution = e.fields;
+    exact_solve = e.status.message;
+    // the simplified theory's coefficients play no part in this solve: not reported (nan in summary.csv)
+    problem.C.C11 = problem.C.C22 = problem.C.C23 = problem.C.C33 = std::numeric_limits<double>::quiet_NaN();
+    problem.L_m_per_Pa = std::numeric_limits<double>::quiet_NaN();
   } else {
     solution = solve_steady(patch, problem, scheme, steady_options);
   }
@@ -318,7 +334,7 @@ int run_contact(const ContactOptions& opt) {
   };
   if (fields) files.push_back({dir / "fields.csv", fields_csv(patch, solution)});
 
-  print_contact_summary(c, normal, problem, solution, scheme);
+  print_contact_summary(c, normal, problem, solution, scheme, exact_solve);
   const OutputLock lock(dir);
   write_files_atomic(files);
   if (!fields) std::filesystem::remove(dir / "fields.csv");  // an earlier run's: not this run's fields
@@ -537,9 +553,9 @@ int run_transient_command(const TransientOptions& opt) {
   };
 
   TransientResult res;
+  const bool exact_run = parse_tangential_scheme(c.solver.tangential) == TangentialScheme::Exact;
   try {
-    res = parse_tangential_scheme(c.solver.tangential) == TangentialScheme::Exact ? run_exact_transient(t, observe)
-                                                                                  : run_transient(t, observe);
+    res = exact_run ? run_exact_transient(t, observe) : run_transient(t, observe);
   } catch (const SettingError& e) {  // the settings refused: the key (data) and its line
     throw transient_error(c, e);
   } catch (const std::invalid_argument& e) {  // inside the solver, on settings that passed: its failure
@@ -556,7 +572,8 @@ int run_transient_command(const TransientOptions& opt) {
   std::vector<OutputFile> files = {{dir / "strip_energy.csv", strip_energy_csv(res.grid, res.strip_energy_J_per_m)}};
   for (std::size_t k = 0; k < res.snapshots.size(); ++k)
     files.push_back({dir / fmt::format("snapshot_{}.csv", k + 1), snapshot_csv(res.grid, res.snapshots[k])});
-  files.push_back({dir / "summary.csv", transient_summary_csv(c.name, t.settings.scheme, res, log.sliding_end_s)});
+  files.push_back({dir / "summary.csv", transient_summary_csv(c.name, exact_run ? "exact" : to_string(t.settings.scheme), res,
+                                                                 log.sliding_end_s)});
 
   print_transient_summary(c, t, res, log);
   write_files_atomic(files, {&*timeseries, &*strip_power});
