@@ -618,7 +618,7 @@ ExactSolution solve_exact(const ContactPatch& patch, double G_Pa, double nu, con
         const bool stick = element_solve(rx, ry, bx, by, Gb[q], sx, sy);
         state.data()[q] = stick ? 1 : 2;
         change = std::max(change, std::hypot(sx - TX[q], sy - TY[q]));
-        scale = std::max(scale, std::hypot(TX[q], TY[q]));
+        scale = std::max({scale, std::hypot(TX[q], TY[q]), std::hypot(sx, sy)});  // a zero start: the solution's
         slip[c] = !stick;
         sol_x.data()[q] = sx;
         sol_y.data()[q] = sy;
@@ -759,6 +759,127 @@ ExactSolution solve_exact_shift(const ContactPatch& patch, double G_Pa, double n
                      &previous->fields.tau_y_Pa, 0);
 }
 
+
+ExactShiftForce solve_exact_shift_force(const ContactPatch& patch, double G_Pa, double nu, double Fx_N, double Fy_N,
+                                        double mu, double dt_s, const ExactSolution* previous,
+                                        const ExactOptions& opt, double force_tol_N) {
+  if (!std::isfinite(Fx_N) || !std::isfinite(Fy_N))
+    throw std::invalid_argument("exact shift: the prescribed force is not finite");
+  if (!(G_Pa > 0) || !(mu > 0) || !std::isfinite(mu))
+    throw std::invalid_argument(fmt::format("exact shift: G and mu must be positive, got {} Pa, {}", G_Pa, mu));
+  const Grid& grid = patch.grid;
+  const double load = patch.pressure_Pa.sum() * grid.dx_m * grid.dy_m;
+  const double F_target = std::hypot(Fx_N, Fy_N), limit = mu * load;
+  if (!(F_target < limit))
+    throw std::invalid_argument(fmt::format("exact shift: the prescribed force {} N is not below mu Fn = {} N (gross "
+                                            "sliding: no unique shift)",
+                                            F_target, limit));
+  const double tol = force_tol_N > 0 ? force_tol_N : 1e-8 * limit;
+  // Mindlin's shift at gross sliding for a circle of the patch's mean radius: the scale of the bracket
+  const double a_eff = std::sqrt(std::max(patch.a_m * patch.b_m, grid.dx_m * grid.dy_m));
+  const double scale = 3 * mu * load * (2 - nu) / (8 * G_Pa * a_eff);
+
+  ExactShiftForce best;
+  double best_error = std::numeric_limits<double>::infinity();
+  std::optional<ExactSolution> last;  // the last evaluation: the next one's Newton start
+  const Eigen::ArrayXXd rest = Eigen::ArrayXXd::Zero(grid.nx + 1, grid.ny);
+  const Eigen::ArrayXXd& prev_ux = previous ? previous->u_x_m : rest;
+  const Eigen::ArrayXXd& prev_uy = previous ? previous->u_y_m : rest;
+  if (previous && (prev_ux.rows() != grid.nx + 1 || prev_ux.cols() != grid.ny))
+    throw std::invalid_argument(fmt::format("exact shift: the previous displacement must be {} x {}", grid.nx + 1,
+                                            grid.ny));
+  const double dx = grid.dx_m;
+  std::optional<SolveStatus> failed;
+  auto evaluate = [&](double sx, double sy) -> const ExactSolution& {
+    const ExactSolution* start = last ? &*last : previous;
+    ExactSolution e = solve_exact(patch, G_Pa, nu, Creepages{sx / dx, sy / dx, 0}, mu, dx / dt_s, opt, &prev_ux,
+                                  &prev_uy, start ? &start->fields.tau_x_Pa : nullptr,
+                                  start ? &start->fields.tau_y_Pa : nullptr, 0, 1.0, "exact shift");
+    ++best.shift_solves;
+    if (!e.status.converged() && !failed) failed = e.status;
+    const double err = std::hypot(e.fields.Fx_N - Fx_N, e.fields.Fy_N - Fy_N);
+    if (err < best_error) {
+      best_error = err;
+      best.solution = e;
+      best.shift_x_m = sx;
+      best.shift_y_m = sy;
+    }
+    last = std::move(e);
+    return *last;
+  };
+  // Broyden's method on T(F(shift)) = T(F_target), T(F) = (1 - (1 - |F|/(mu Fn))^(2/3)) F/|F|: by
+  // Mindlin's relation T is linear in the shift for a circle at nu = 0, T = -shift/scale, and close
+  // to linear otherwise, so that the Jacobian -I/scale starts it well; a step that does not reduce
+  // |F - F_target| is halved back towards the best shift.
+  auto T = [&](double fx, double fy, double& tx, double& ty) {
+    const double m = std::hypot(fx, fy);
+    if (m == 0) {
+      tx = ty = 0;
+      return;
+    }
+    const double h = 1 - std::cbrt(std::pow(std::max(0.0, 1 - m / limit), 2));
+    tx = h * fx / m;
+    ty = h * fy / m;
+  };
+  double Tx_t, Ty_t;
+  T(Fx_N, Fy_N, Tx_t, Ty_t);
+  // J: d T / d shift (2 x 2, row-major)
+  double J[4] = {-1 / scale, 0, 0, -1 / scale};
+  double sx = 0, sy = 0;  // from rest or from the previous state: no further shift first
+  const ExactSolution* e0 = &evaluate(sx, sy);
+  double rx, ry;
+  T(e0->fields.Fx_N, e0->fields.Fy_N, rx, ry);
+  rx -= Tx_t;
+  ry -= Ty_t;
+  constexpr int kMaxShiftSolves = 40;
+  while (!failed && best_error > tol && best.shift_solves < kMaxShiftSolves) {
+    const double det = J[0] * J[3] - J[1] * J[2];
+    if (!(std::abs(det) > 0) || !std::isfinite(det)) break;
+    double px = -(J[3] * rx - J[1] * ry) / det, py = -(-J[2] * rx + J[0] * ry) / det;
+    const double err_before = best_error;
+    const double bx0 = best.shift_x_m, by0 = best.shift_y_m;
+    const ExactSolution* e = &evaluate(sx + px, sy + py);
+    for (int h = 0; h < 6 && !failed && best_error >= err_before; ++h) {  // not better: halve the step
+      px *= 0.5;
+      py *= 0.5;
+      e = &evaluate(bx0 + px, by0 + py);
+      sx = bx0;
+      sy = by0;
+    }
+    if (failed || best_error >= err_before) break;
+    double nrx, nry;
+    T(e->fields.Fx_N, e->fields.Fy_N, nrx, nry);
+    nrx -= Tx_t;
+    nry -= Ty_t;
+    // Broyden's update J += (dr - J p) p^T / (p.p)
+    const double pp = px * px + py * py;
+    if (pp > 0) {
+      const double ux = (nrx - rx) - (J[0] * px + J[1] * py), uy = (nry - ry) - (J[2] * px + J[3] * py);
+      J[0] += ux * px / pp;
+      J[1] += ux * py / pp;
+      J[2] += uy * px / pp;
+      J[3] += uy * py / pp;
+    }
+    sx = best.shift_x_m;
+    sy = best.shift_y_m;
+    rx = nrx;
+    ry = nry;
+  }
+  SolveStatus& st = best.solution.status;
+  if (failed) {
+    st = *failed;
+    st.message = "a shift solve of the force iteration: " + failed->message;
+  } else if (best_error <= tol) {
+    st.message = fmt::format("force within {:.2g} N of the target after {} shift solves; last solve: {}", best_error,
+                             best.shift_solves, st.message);
+  } else {
+    st.kind = SolveStatus::Kind::MaxIterations;
+    st.message = fmt::format("force {:.3g} N from the target > tol {:.3g} N after {} shift solves", best_error, tol,
+                             best.shift_solves);
+    spdlog::warn("exact shift: {}", st.message);
+  }
+  return best;
+}
 
 ExactSolution solve_exact_roll(const ContactPatch& patch, double G_Pa, double nu, const Creepages& creepages,
                                double mu, double dq_m, double dt_s, const ExactSolution* previous,

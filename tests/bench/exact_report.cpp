@@ -2,7 +2,7 @@
 // (lib/tangential/exact.h): built with the bench preset (cmake --preset bench), not part of ctest.
 //   exact_report coef        C11 C22 C23 at full stick on 20..160 cells, Richardson-extrapolated
 //   exact_report c33         C33 (reported, not judged: it converges slowly)
-//   exact_report mindlin     Cattaneo-Mindlin's stick radius in the shift mode, nu = 0 and 0.28
+//   exact_report mindlin     Cattaneo-Mindlin's stick radius in the shift mode, nu = 0 and 0.28, by shift and by force
 //   exact_report sweep       steady forces, power and creep work over creepages (paper's contact, sphere)
 //   exact_report transient N the start from rest at dq = dx on N x N: Fx/Fx_ss at q/a = 0.5, 2, 4, 8
 //   exact_report paper [320] the paper's contact, xi = 1e-3: Fx, power and creep work on 20..160 (320)
@@ -81,6 +81,16 @@ int main(int argc, char** argv) {
         const double c = a * std::cbrt(1 - lr);
         const double cg = std::sqrt((s.fields.state == 1).count() * p.grid.dx_m * p.grid.dy_m / kPi);
         std::printf("mindlin nu %.2f n %d: Fx/(mu Fn) %.5f, c_grid/a %.5f, (1-Fx/muFn)^(1/3) %.5f, dev %+.2f %%, %s\n", nu, n, lr, cg / a, c / a, 100 * (cg / c - 1), s.status.message.c_str());
+        // driven by the force: Fx = -f mu Fn (the grid's Fn), the shift found
+        const double Fn_grid = p.pressure_Pa.sum() * p.grid.dx_m * p.grid.dy_m;
+        for (const double f : {0.5, 0.8}) {
+          const auto t0 = std::chrono::steady_clock::now();
+          const ExactShiftForce r = solve_exact_shift_force(p, G, combined_poisson(pair), -f * mu * Fn_grid, 0, mu, 1.0, nullptr);
+          const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+          const double cf = a * std::cbrt(1 - f);
+          const double cgf = std::sqrt((r.solution.fields.state == 1).count() * p.grid.dx_m * p.grid.dy_m / kPi);
+          std::printf("mindlin by force nu %.2f n %d f %.1f: c_grid/c - 1 %+.2f %%, shift/Mindlin's - 1 %+.3f %%, %d shift solves, %.0f ms\n", nu, n, f, 100 * (cgf / cf - 1), 100 * (r.shift_x_m / (3 * mu * 1000 * (2 - nu) / (8 * G * a) * (1 - std::pow(1 - f, 2.0 / 3.0))) - 1), r.shift_solves, ms);
+        }
       }
     }
   } else if (what == "sweep") {
