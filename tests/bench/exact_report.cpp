@@ -5,6 +5,7 @@
 //   exact_report mindlin     Cattaneo-Mindlin's stick radius in the shift mode, nu = 0 and 0.28, by shift and by force
 //   exact_report sweep       steady forces, power and creep work over creepages (paper's contact, sphere)
 //   exact_report transient N the start from rest at dq = dx on N x N: Fx/Fx_ss at q/a = 0.5, 2, 4, 8
+//   exact_report narrow      a/b = 0.02: the centre strip's Fx against Carter's over grids
 //   exact_report paper [320] the paper's contact, xi = 1e-3: Fx, power and creep work on 20..160 (320)
 #include "lib/tangential/exact.h"
 #include "lib/elastic.h"
@@ -15,6 +16,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <string>
+#include <utility>
 using namespace contact;
 ContactPatch ellipse_patch(double ab, int n) {
   HertzContact h; h.b_m = 1e-3; h.a_m = ab * h.b_m; h.p0_Pa = 1e9;
@@ -91,6 +93,30 @@ int main(int argc, char** argv) {
           const double cgf = std::sqrt((r.solution.fields.state == 1).count() * p.grid.dx_m * p.grid.dy_m / kPi);
           std::printf("mindlin by force nu %.2f n %d f %.1f: c_grid/c - 1 %+.2f %%, shift/Mindlin's - 1 %+.3f %%, %d shift solves, %.0f ms\n", nu, n, f, 100 * (cgf / cf - 1), 100 * (r.shift_x_m / (3 * mu * 1000 * (2 - nu) / (8 * G * a) * (1 - std::pow(1 - f, 2.0 / 3.0))) - 1), r.shift_solves, ms);
         }
+      }
+    }
+  } else if (what == "narrow") {
+    const double E = 210e9, nu = 0.28, G = E / (2 * (1 + nu)), mu = 0.3;
+    for (const double ab : {0.02, 0.01}) {
+      for (const auto& nn : {std::pair<int, int>{60, 21}, {120, 21}, {240, 21}, {120, 41}}) {
+        HertzContact h;
+        h.b_m = 1e-3;
+        h.a_m = ab * h.b_m;
+        h.p0_Pa = 1e9;
+        h.normal_load_N = 2 * kPi * h.a_m * h.b_m * h.p0_Pa / 3;
+        const ContactPatch q = hertz_patch(h, make_grid(h.a_m, h.b_m, {nn.first, nn.second}));
+        const int centre = nn.second / 2;
+        const double a = q.half_length_m(centre), p0 = q.strip_peak_Pa(centre), xi_c = 2 * (1 - nu) * mu * p0 / G;
+        std::printf("narrow a/b %.2f %d x %d:", ab, nn.first, nn.second);
+        for (const double r : {0.25, 0.5, 0.75}) {
+          const auto t0 = std::chrono::steady_clock::now();
+          const ExactSolution s = solve_exact_steady(q, G, nu, {r * xi_c, 0, 0}, mu, 1.0, exact_run_options());
+          const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+          const double a1 = a * (1 - r), carter = -mu * kPi * a * p0 / 2 * (1 - (a1 / a) * (a1 / a));
+          std::printf("  xi/xi_c %.2f: %+.4f (%.0f ms%s)", r, s.fields.strip_force_x_N_per_m(centre) / carter - 1, ms,
+                      s.status.converged() ? "" : ", NOT CONVERGED");
+        }
+        std::printf("\n");
       }
     }
   } else if (what == "sweep") {
