@@ -727,8 +727,64 @@ ExactSolution solve_exact(const ContactPatch& patch, double G_Pa, double nu, con
 
 }  // namespace
 
+namespace {
+
+// Plane strain from this many cells on: the steady solve starts from the solution on half the cells
+// (grid sequencing). From the clipped all-stick tractions the Newton iteration needs ever more
+// backtracking steps as the grid is refined near saturation (at xi/xi_c = 0.75: 185 iterations at
+// 800 cells, none converging within 200 at 1600 and 3200; docs/exact-theory.md §6): each full step
+// flips the traction of the cells near the stick zone's ends and the halvings towards the last
+// accepted iterate advance by 1/16 of a step. From the coarse grid's solution the sets are right but
+// for a few cells at the zone's ends.
+constexpr int kNestedPlaneStrainCells = 400;
+
+// the patch on half the cells along x (pairs of cells merged: the mean pressure of a pair)
+ContactPatch coarsened_along_x(const ContactPatch& p) {
+  ContactPatch c = p;
+  const Grid& g = p.grid;
+  c.grid = g;
+  c.grid.nx = g.nx / 2;
+  c.grid.dx_m = 2 * g.dx_m;
+  c.grid.x_m = Eigen::ArrayXd(c.grid.nx);
+  c.pressure_Pa = Eigen::ArrayXXd(c.grid.nx, g.ny);
+  for (int i = 0; i < c.grid.nx; ++i) {
+    c.grid.x_m(i) = 0.5 * (g.x_m(2 * i) + g.x_m(2 * i + 1));
+    c.pressure_Pa.row(i) = 0.5 * (p.pressure_Pa.row(2 * i) + p.pressure_Pa.row(2 * i + 1));
+  }
+  c.pressure_moment_Pa_m.resize(0, 0);
+  c.edge_pressure_Pa.resize(0, 0);
+  return c;
+}
+
+// a coarse field (nx/2 x ny) on the fine cells, linear between the coarse cell centres (constant
+// beyond the first and last)
+Eigen::ArrayXXd prolonged_along_x(const Eigen::ArrayXXd& c, int nx) {
+  Eigen::ArrayXXd f(nx, c.cols());
+  const int nc = static_cast<int>(c.rows());
+  for (int k = 0; k < nc; ++k) {
+    f.row(2 * k) = k > 0 ? (0.75 * c.row(k) + 0.25 * c.row(k - 1)).eval() : c.row(k).eval();
+    f.row(2 * k + 1) = k + 1 < nc ? (0.75 * c.row(k) + 0.25 * c.row(k + 1)).eval() : c.row(k).eval();
+  }
+  return f;
+}
+
+}  // namespace
+
 ExactSolution solve_exact_steady(const ContactPatch& patch, double G_Pa, double nu, const Creepages& creepages,
                                  double mu, double speed_m_per_s, const ExactOptions& opt) {
+  const int nx = patch.grid.nx;
+  if (opt.plane_strain && nx >= kNestedPlaneStrainCells && nx % 2 == 0 && patch.pressure_Pa.rows() == nx &&
+      patch.grid.x_m.size() == nx) {
+    const ExactSolution coarse =
+        solve_exact_steady(coarsened_along_x(patch), G_Pa, nu, creepages, mu, speed_m_per_s, opt);
+    if (coarse.status.converged()) {
+      const Eigen::ArrayXXd tx = prolonged_along_x(coarse.fields.tau_x_Pa, nx);
+      const Eigen::ArrayXXd ty = prolonged_along_x(coarse.fields.tau_y_Pa, nx);
+      ExactSolution s = solve_exact(patch, G_Pa, nu, creepages, mu, speed_m_per_s, opt, nullptr, nullptr, &tx, &ty);
+      s.status.message += fmt::format(" (from the {}-cell solution)", nx / 2);
+      return s;
+    }
+  }
   return solve_exact(patch, G_Pa, nu, creepages, mu, speed_m_per_s, opt, nullptr, nullptr, nullptr, nullptr);
 }
 

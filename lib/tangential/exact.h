@@ -59,6 +59,8 @@ struct ExactOptions {
                                   // later solves go to max(stick_tol, residual / 100)
   bool plane_strain = false;      // two-dimensional (Carter's problem): one strip (ny = 1) of infinite
                                   // width with line_load_influence; forces are those of the strip's dy
+                                  // (the steady solve from 400 cells on starts from its own solution on
+                                  // half the cells: grid sequencing, docs/exact-theory.md §6)
 };
 
 struct ExactSolution {

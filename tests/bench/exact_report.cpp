@@ -6,6 +6,7 @@
 //   exact_report sweep       steady forces, power and creep work over creepages (paper's contact, sphere)
 //   exact_report transient N the start from rest at dq = dx on N x N: Fx/Fx_ss at q/a = 0.5, 2, 4, 8
 //   exact_report narrow      a/b = 0.02: the centre strip's Fx against Carter's over grids
+//   exact_report carter N R  plane strain, N cells, xi/xi_c = R: the solve's status, Fx against Carter
 //   exact_report paper [320] the paper's contact, xi = 1e-3: Fx, power and creep work on 20..160 (320)
 #include "lib/tangential/exact.h"
 #include "lib/elastic.h"
@@ -95,6 +96,24 @@ int main(int argc, char** argv) {
         }
       }
     }
+  } else if (what == "carter" && argc >= 4) {
+    const int n = std::atoi(argv[2]);
+    const double r = std::atof(argv[3]);
+    const double E = 210e9, nu = 0.28, G = E / (2 * (1 + nu)), mu = 0.3, p0 = 1e9, a = 0.25e-3;
+    ContactPatch p;
+    p.grid = make_grid(a, 1e-3, {n, 1});
+    p.half_length_m = Eigen::ArrayXd::Constant(1, a);
+    p.strip_peak_Pa = Eigen::ArrayXd::Constant(1, p0);
+    fill_strip_pressures(p);
+    const double xi_c = 2 * (1 - nu) * mu * p0 / G;
+    ExactOptions o;
+    o.plane_strain = true;
+    const auto t0 = std::chrono::steady_clock::now();
+    const ExactSolution s = solve_exact_steady(p, G, nu, {r * xi_c, 0, 0}, mu, 1.0, o);
+    const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    const double a1 = a * (1 - r), Fx = -mu * kPi * a * p0 / 2 * (1 - (a1 / a) * (a1 / a));
+    std::printf("carter n %d xi/xi_c %.2f: Fx/Fx_carter - 1 %+.2e, %s, %.0f ms\n", n, r,
+                s.fields.Fx_N / p.grid.dy_m / Fx - 1, s.status.message.c_str(), ms);
   } else if (what == "narrow") {
     const double E = 210e9, nu = 0.28, G = E / (2 * (1 + nu)), mu = 0.3;
     for (const double ab : {0.02, 0.01}) {
