@@ -14,6 +14,8 @@
 #include "lib/normal/hertz.h"
 #include "lib/numeric.h"
 #include <chrono>
+#include <cmath>
+#include <ctime>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
@@ -164,8 +166,11 @@ int main(int argc, char** argv) {
       ContactPatch p = paper_patch(n);
       ExactSolution ss = solve_exact_steady(p, G, nu, {1e-3, 0, 0}, 0.3, 1.0);
       ExactSolution prev;
-      ExactOptions o; o.tol = 1e-6; o.stick_tol = 1e-6;
+      // the steps' tolerances: 10^-argv[3] on the fixed-point residual, 10^-argv[4] the linear solves' floor
+      const double tol = argc > 3 ? std::pow(10.0, -std::atof(argv[3])) : 1e-6;
+      ExactOptions o; o.tol = tol; o.stick_tol = argc > 4 ? std::pow(10.0, -std::atof(argv[4])) : tol;
       double total_ms = 0; int steps = 0;
+      const std::clock_t c0 = std::clock();
       std::printf("transient %dx%d (Fx_ss %.3f):", n, n, ss.fields.Fx_N);
       for (int k = 1; k <= 4 * n; ++k) {
         auto t0 = std::chrono::steady_clock::now();
@@ -175,9 +180,10 @@ int main(int argc, char** argv) {
         if (!s.status.converged()) std::printf(" [step %d not converged]", k);
         prev = s;
         const double q_over_a = 2.0 * k / n;
-        if (k == n / 4 || k == n || k == 2 * n || k == 4 * n) std::printf(" q/a %.1f: %.4f", q_over_a, s.fields.Fx_N / ss.fields.Fx_N);
+        if (k == n / 4 || k == n || k == 2 * n || k == 4 * n) std::printf(" q/a %.1f: %.6f", q_over_a, s.fields.Fx_N / ss.fields.Fx_N);
       }
-      std::printf("  (%.2f ms per step wall, tol 1e-6)\n", total_ms / steps);
+      std::printf("  (%.2f ms per step wall, %.2f ms CPU, tol %.0e, linear %.0e)\n", total_ms / steps,
+                  1e3 * static_cast<double>(std::clock() - c0) / CLOCKS_PER_SEC / steps, o.tol, o.stick_tol);
     }
   } else if (what == "paper") {
     const ElasticPair pair{{210e9, 0.28}, {210e9, 0.28}};
