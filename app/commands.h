@@ -2,6 +2,8 @@
 // the printing: shared by the command line (app/main.cpp) and the Python bindings (python/).
 #pragma once
 
+#include <string>
+
 #include "lib/io/case.h"
 #include "lib/normal/normal.h"
 #include "lib/tangential/satran.h"
@@ -15,6 +17,7 @@ struct ContactRun {
   TangentialProblem problem;
   TangentialSolution solution;
   TangentialScheme scheme = TangentialScheme::Consistent;
+  std::string exact_solve;  // scheme Exact: the exact solve's status message (problem.C and L are nan then)
 };
 
 // validate_steady, the normal solve (solve_normal_of), then solve_steady with the case's scheme, or Kalker's

@@ -90,7 +90,9 @@ CLI::App* add_contact_command(CLI::App& app, ContactOptions& opt, CommonOptions&
                  "fields.csv.");
   sub->footer(
       "The summary names the normal solver that ran (and why, for solver.normal: auto) and the number of\n"
-      "contact patches. strips.csv's y_m is in the profiles' lateral coordinate.\n"
+      "contact patches. strips.csv's y_m is in the profiles' lateral coordinate. With solver.tangential:\n"
+      "exact the summary names the exact solve in place of the simplified theory's C11 ... L (nan in\n"
+      "summary.csv), and a transient run's summary.csv says scheme exact.\n"
       "A contact that reaches a body's edge (the end of its profile) is a warning line in the summary; the\n"
       "outputs are written and the exit status stays 0 (if its normal solve converged; an unconverged one,\n"
       "at an edge or not, is exit 1).\n"
@@ -260,8 +262,10 @@ void remove_stale_temporaries(const std::filesystem::path& dir) {
   }
 }
 
+// exact_solve: the exact solve's status message (scheme Exact), printed in place of the simplified
+// theory's coefficients, which that solve does not use
 void print_contact_summary(const ContactCase& c, const NormalSolution& normal, const TangentialProblem& problem,
-                           const TangentialSolution& s, TangentialScheme scheme) {
+                           const TangentialSolution& s, TangentialScheme scheme, const std::string& exact_solve) {
   const ContactPatch& patch = normal.patch;
   fmt::print("case {} ({}), {} x {} grid, {} scheme\n", c.name, c.path, patch.grid.nx, patch.grid.ny,
              to_string(scheme));
@@ -273,9 +277,16 @@ void print_contact_summary(const ContactCase& c, const NormalSolution& normal, c
   fmt::print("  semi-axes       a  = {:.6f} mm, b = {:.6f} mm\n", patch.a_m * 1e3, patch.b_m * 1e3);
   fmt::print("  peak pressure   p0 = {:.3f} MPa\n", patch.p0_Pa * 1e-6);
   fmt::print("  approach        delta = {:.4f} µm\n", patch.approach_m * 1e6);
-  fmt::print("  Kalker          C11 = {:.4f}, C22 = {:.4f}, C23 = {:.4f}, C33 = {:.4f}\n", problem.C.C11,
-             problem.C.C22, problem.C.C23, problem.C.C33);
-  fmt::print("  flexibility     L  = {:.6e} m/Pa\n", problem.L_m_per_Pa);
+  if (scheme == TangentialScheme::Exact) {
+    const ElasticPair pair = materials_of(c);
+    fmt::print("  exact theory    Kalker's, on the half-space: G = {:.6g} GPa, nu = {:.4g}\n",
+               combined_shear_modulus_Pa(pair) * 1e-9, combined_poisson(pair));
+    fmt::print("  exact solve     {}\n", exact_solve);
+  } else {
+    fmt::print("  Kalker          C11 = {:.4f}, C22 = {:.4f}, C23 = {:.4f}, C33 = {:.4f}\n", problem.C.C11,
+               problem.C.C22, problem.C.C23, problem.C.C33);
+    fmt::print("  flexibility     L  = {:.6e} m/Pa\n", problem.L_m_per_Pa);
+  }
   fmt::print("  creep forces    Fx = {:.6g} N, Fy = {:.6g} N, Mz = {:.6g} N m\n", s.Fx_N, s.Fy_N, s.Mz_N_m);
   fmt::print("  dissipated      P  = {:.6g} W, creep work = {:.6g} W\n", s.power_W, s.creep_work_W);
   fmt::print("  stick fraction     {:.4f}\n", s.stick_fraction);
@@ -297,6 +308,7 @@ int run_contact(const ContactOptions& opt) {
   const TangentialProblem& problem = run.problem;
   const TangentialSolution& solution = run.solution;
   const TangentialScheme scheme = run.scheme;
+  const std::string& exact_solve = run.exact_solve;
 
   // every output computed before anything is written
   const std::filesystem::path dir = output_directory(opt.output_directory, c);
@@ -306,7 +318,7 @@ int run_contact(const ContactOptions& opt) {
   };
   if (fields) files.push_back({dir / "fields.csv", fields_csv(patch, solution)});
 
-  print_contact_summary(c, normal, problem, solution, scheme);
+  print_contact_summary(c, normal, problem, solution, scheme, exact_solve);
   const OutputLock lock(dir);
   write_files_atomic(files);
   if (!fields) std::filesystem::remove(dir / "fields.csv");  // an earlier run's: not this run's fields
@@ -526,6 +538,7 @@ int run_transient_command(const TransientOptions& opt) {
                     fmt::format("step {}, t {:.4e} / {:.4e} s", r.step, log.t_s, t.settings.t_end_s));
   };
 
+  const bool exact_run = parse_tangential_scheme(c.solver.tangential) == TangentialScheme::Exact;
   const TransientResult res = run_transient_case(c, t, observe);  // app/commands.h
   progress.clear();
   if (!timeseries) throw std::logic_error("transient: the run took no step");
@@ -538,7 +551,8 @@ int run_transient_command(const TransientOptions& opt) {
   std::vector<OutputFile> files = {{dir / "strip_energy.csv", strip_energy_csv(res.grid, res.strip_energy_J_per_m)}};
   for (std::size_t k = 0; k < res.snapshots.size(); ++k)
     files.push_back({dir / fmt::format("snapshot_{}.csv", k + 1), snapshot_csv(res.grid, res.snapshots[k])});
-  files.push_back({dir / "summary.csv", transient_summary_csv(c.name, t.settings.scheme, res, log.sliding_end_s)});
+  files.push_back({dir / "summary.csv", transient_summary_csv(c.name, exact_run ? "exact" : to_string(t.settings.scheme), res,
+                                                                 log.sliding_end_s)});
 
   print_transient_summary(c, t, res, log);
   write_files_atomic(files, {&*timeseries, &*strip_power});

@@ -592,11 +592,16 @@ TEST_F(CommandLine, ContactWithExactTheoryMatchesContactsForce) {
   EXPECT_EQ(r.err, "");
   EXPECT_NE(r.out.find("exact scheme"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("creep work = "), std::string::npos) << r.out;
+  // the summary names the exact solve, not the simplified theory's coefficients it does not use
+  EXPECT_EQ(r.out.find("C11 ="), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("flexibility"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("exact solve     residual"), std::string::npos) << r.out;
 
   const std::vector<std::string> summary = lines_of(read_text(out / "summary.csv"));
   ASSERT_EQ(summary.size(), 2u);
   const std::vector<std::string> row = split(summary[1]);
   EXPECT_EQ(row[16], "exact");
+  for (int k = 5; k <= 9; ++k) EXPECT_EQ(row[k], "nan") << "C11 ... L_m_per_Pa, column " << k;
   const double Fx = std::strtod(row[10].c_str(), nullptr), P = std::strtod(row[13].c_str(), nullptr);
   const double work = std::strtod(row[14].c_str(), nullptr);
   constexpr double kContactTol = 0.005;  // the target against CONTACT on the same grid
@@ -648,6 +653,8 @@ TEST_F(CommandLine, TransientWithExactTheoryBuildsUpAsContactDoes) {
       rollwear("transient " + quoted(transient_case) + " -o " + quoted(dir_ / "t") + " --log-level warn", dir_);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("exact theory"), std::string::npos) << r.out;
+  // summary.csv names the theory that ran, not only its steps' scheme (shift)
+  EXPECT_EQ(split(lines_of(read_text(dir_ / "t" / "summary.csv"))[1])[1], "exact");
   const double Fx_ss = std::strtod(split(lines_of(read_text(dir_ / "s" / "summary.csv"))[1])[10].c_str(), nullptr);
   const std::vector<std::string> series = lines_of(read_text(dir_ / "t" / "timeseries.csv"));
   ASSERT_EQ(series.size(), 84u + 1u);  // 83 steps of dx = a/10 and a last one of dx/2 (interpolated)

@@ -10,6 +10,7 @@
 #include <limits>
 #include <cstdio>
 #include <ostream>
+#include <stdexcept>
 #include <string>
 
 #include "lib/normal/hertz.h"
@@ -171,6 +172,17 @@ TEST(SteadyTangential, ClassicSchemeShowsItsKnownPowerError) {
   RecordProperty("classic_power_error", std::to_string(p_err));
   EXPECT_NEAR(fx_err, 0.014, 0.01);
   EXPECT_NEAR(p_err, -0.19, 0.05);
+}
+
+// The exact theory is not a scheme of the simplified theory: refused (a typed error), not run silently
+// as the consistent scheme (which it was before: a caller asking for Exact got FASTSIM's forces).
+TEST(SteadyTangential, RefusesTheExactTheory) {
+  const ContactPatch p = paper_patch(8, 8);
+  const TangentialProblem pb = problem(p, {1e-3, 0, 0});
+  EXPECT_THROW(solve_steady(p, pb, TangentialScheme::Exact), std::invalid_argument);
+  SteadyOptions no_fields;
+  no_fields.fields = false;
+  EXPECT_THROW(solve_steady(p, pb, TangentialScheme::Exact, no_fields), std::invalid_argument);
 }
 
 // Kalker's linear theory (mu -> infinity): Fx = -G ab C11 xi, Fy = -G ab C22 eta - G (ab)^(3/2) C23 phi.

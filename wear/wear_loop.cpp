@@ -16,6 +16,8 @@
 #include "lib/io/case.h"
 #include "lib/io/enum_names.h"
 #include "lib/numeric.h"
+#include "lib/io/errors.h"
+#include "lib/tangential/exact.h"
 #include "lib/tangential/relaxed.h"
 #include "lib/tangential/steady.h"
 #include "wear/collective.h"
@@ -60,10 +62,18 @@ DutyCycleEnergy duty_cycle_energy(const WearModel& m, const contact::ContactPatc
         contact::make_tangential_problem(patch, m.materials, m.creepages, m.mu, m.speed_m_per_s);
     contact::SteadyOptions options;
     options.fields = need_fields;
-    const contact::TangentialSolution s =
-        m.scheme == contact::TangentialScheme::Relaxed
-            ? contact::solve_relaxed_steady(patch, m.materials, m.creepages, m.mu, m.speed_m_per_s, need_fields)
-            : contact::solve_steady(patch, problem, m.scheme, options);
+    contact::TangentialSolution s;
+    if (m.scheme == contact::TangentialScheme::Exact) {  // the reference: Kalker's exact theory, steady
+      const contact::ExactSolution e =
+          contact::solve_exact_steady(patch, contact::combined_shear_modulus_Pa(m.materials),
+                                      contact::combined_poisson(m.materials), m.creepages, m.mu, m.speed_m_per_s);
+      if (!e.status.converged()) throw contact::SolverError("wear rate: exact steady solve: " + e.status.message);
+      s = e.fields;
+    } else if (m.scheme == contact::TangentialScheme::Relaxed) {  // matched to the exact theory
+      s = contact::solve_relaxed_steady(patch, m.materials, m.creepages, m.mu, m.speed_m_per_s, need_fields);
+    } else {
+      s = contact::solve_steady(patch, problem, m.scheme, options);
+    }
     d.rolled_m = 2 * kPi * m.reference_radius_m;
     d.duration_s = d.rolled_m / m.speed_m_per_s;
     d.strip_energy_J_per_m = s.strip_power_W_per_m * d.duration_s;
@@ -127,9 +137,10 @@ WearModel make_wear_model(const WearCase& c) {
   m.normal_load_N = k.load.normal_load_N.value.front();
   m.mu = k.friction.mu;
   m.scheme = contact::parse_tangential_scheme(k.solver.tangential);
-  if (m.scheme == contact::TangentialScheme::Exact)  // the wear loop's solvers are the simplified theory's
-    throw contact::CaseError(contact::where(k, "solver.tangential") + "solver.tangential: the exact theory runs in "
-                             "'contact' and 'transient'; a wear run takes consistent or classic");
+  // the exact theory for reference lives: steady duty cycles only (one exact solve per wear-rate evaluation)
+  if (m.scheme == contact::TangentialScheme::Exact && k.transient)
+    throw contact::CaseError(contact::where(k, "solver.tangential") + "solver.tangential: a wear run takes the exact "
+                             "theory with a steady duty cycle only (no transient: section); use consistent or classic");
   if (k.transient) {
     m.transient = contact::transient_case_of(k);
     m.transient->settings.skip_steady = true;

@@ -294,12 +294,17 @@ std::string snapshot_csv(const Grid& g, const Snapshot& s) {
 
 std::string transient_summary_csv(const std::string& name, TransientScheme scheme, const TransientResult& res,
                                   double sliding_end_s) {
+  return transient_summary_csv(name, to_string(scheme), res, sliding_end_s);
+}
+
+std::string transient_summary_csv(const std::string& name, const std::string& scheme, const TransientResult& res,
+                                  double sliding_end_s) {
   std::string out =
       "name,scheme,nx,ny,steps,t_end_s,q_end_m,dissipated_J,Fx_N,Fy_N,Mz_N_m,power_W,stick_fraction,"
       "omega1_rad_per_s,sliding_end_s,end_step,fallback_steps\n";
   const TransientRecord& end = res.end;
   out += csv_text(name);
-  fmt::format_to(std::back_inserter(out), ",{},{},{},{}", to_string(scheme), res.grid.nx, res.grid.ny, res.steps);
+  fmt::format_to(std::back_inserter(out), ",{},{},{},{}", csv_text(scheme), res.grid.nx, res.grid.ny, res.steps);
   for (const double v : {res.t_end_s, res.q_end_m, res.dissipated_J, end.Fx_N, end.Fy_N, end.Mz_N_m,
                          end.power_W, end.stick_fraction, end.omega1_rad_per_s, sliding_end_s}) {
     out += ',';

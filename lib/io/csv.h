@@ -67,6 +67,7 @@ std::string strips_csv(const ContactPatch& patch, const TangentialSolution& solu
 // summary.csv: a header and one row:
 //   name,a_m,b_m,p0_Pa,approach_m,C11,C22,C23,C33,L_m_per_Pa,Fx_N,Fy_N,Mz_N_m,power_W,creep_work_W,
 //   stick_fraction,scheme,nx,ny
+// (the caller sets C11 ... L_m_per_Pa to nan for a solve of the exact theory, which does not use them)
 std::string summary_csv(const std::string& name, const ContactPatch& patch, const TangentialProblem& problem,
                         const TangentialSolution& solution, TangentialScheme scheme);
 
@@ -105,6 +106,10 @@ std::string snapshot_csv(const Grid& grid, const Snapshot& s);
 // with stick_fraction > 0 (the end of gross sliding), nan if no step had stick; fallback_steps: the
 // shift run's steps that ran upwind at CFL < 1.
 std::string transient_summary_csv(const std::string& name, TransientScheme scheme, const TransientResult& result,
+                                  double sliding_end_s);
+// the same with the scheme column given: "exact" for a run of the exact theory (its steps are the
+// shift scheme's, the theory is not Satran's)
+std::string transient_summary_csv(const std::string& name, const std::string& scheme, const TransientResult& result,
                                   double sliding_end_s);
 
 // a text field quoted as RFC 4180 wants when it holds a comma, a quote or a line break

@@ -59,6 +59,8 @@ struct ExactOptions {
                                   // later solves go to max(stick_tol, residual / 100)
   bool plane_strain = false;      // two-dimensional (Carter's problem): one strip (ny = 1) of infinite
                                   // width with line_load_influence; forces are those of the strip's dy
+                                  // (the steady solve from 400 cells on starts from its own solution on
+                                  // half the cells: grid sequencing, docs/exact-theory.md §6)
 };
 
 struct ExactSolution {
@@ -128,5 +130,25 @@ TransientResult run_exact_transient(const TransientCase& c, const StepObserver& 
 // Loaded monotonically from rest this is the Cattaneo-Mindlin problem.
 ExactSolution solve_exact_shift(const ContactPatch& patch, double G_Pa, double nu, double shift_x_m, double shift_y_m,
                                 double mu, double dt_s, const ExactSolution* previous, const ExactOptions& opt = {});
+
+// Shift with a prescribed total tangential force (Fx_N, Fy_N) on body 1 instead of the rigid shift:
+// the shift that gives it, found by an outer iteration on the shift solve (each evaluation one shift
+// solve, warm-started from the last one's tractions): Broyden's method on
+// T(F) = (1 - (1 - |F|/(mu Fn))^(2/3)) F/|F|, which Mindlin's relation makes linear in the shift for
+// a circle at nu = 0 (T = -shift/scale, scale = 3 mu Fn (2 - nu)/(8 G sqrt(ab))) and close to it
+// otherwise, from the Jacobian -I/scale, a step halved back when it does not reduce |F - F_target|.
+// It finds both components when x and y are coupled (nu > 0 on an ellipse), and a shift back when
+// the target unloads from the previous state. |F_target| must be below the grid's mu sum(p dA) (at
+// it every shift beyond gross sliding gives the same force: std::invalid_argument).
+// force_tol_N (0: 1e-8 mu Fn) bounds |F - F_target|; not reached within 40 shift solves: status
+// MaxIterations with the best evaluation (and a spdlog::warn); a shift solve that fails: its status.
+struct ExactShiftForce {
+  ExactSolution solution;            // the shift solve at the shift found
+  double shift_x_m = 0, shift_y_m = 0;  // the rigid shift of body 1 over body 2 over the step
+  int shift_solves = 0;              // solve_exact_shift evaluations
+};
+ExactShiftForce solve_exact_shift_force(const ContactPatch& patch, double G_Pa, double nu, double Fx_N, double Fy_N,
+                                        double mu, double dt_s, const ExactSolution* previous,
+                                        const ExactOptions& opt = {}, double force_tol_N = 0);
 
 }  // namespace contact

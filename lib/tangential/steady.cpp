@@ -71,6 +71,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 #include <vector>
 
 namespace contact {
@@ -546,6 +547,9 @@ StripRates strip_rates(const ContactPatch& patch, const TangentialProblem& pb, i
 
 TangentialSolution solve_steady(const ContactPatch& patch, const TangentialProblem& problem,
                                 TangentialScheme scheme, const SteadyOptions& options) {
+  if (scheme == TangentialScheme::Exact)
+    throw std::invalid_argument("solve_steady: the exact theory is not a scheme of the simplified theory; "
+                                "solve_exact_steady (lib/tangential/exact.h) solves it");
   const Grid& g = patch.grid;
   TangentialSolution s;
   if (options.fields) {

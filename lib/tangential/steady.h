@@ -15,6 +15,8 @@ struct SteadyOptions {
   bool skips = true;
 };
 
+// scheme Exact is not a scheme of the simplified theory (solve_exact_steady, lib/tangential/exact.h,
+// solves it): std::invalid_argument.
 TangentialSolution solve_steady(const ContactPatch& patch, const TangentialProblem& problem,
                                 TangentialScheme scheme = TangentialScheme::Consistent,
                                 const SteadyOptions& options = {});

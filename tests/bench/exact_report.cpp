@@ -2,9 +2,11 @@
 // (lib/tangential/exact.h): built with the bench preset (cmake --preset bench), not part of ctest.
 //   exact_report coef        C11 C22 C23 at full stick on 20..160 cells, Richardson-extrapolated
 //   exact_report c33         C33 (reported, not judged: it converges slowly)
-//   exact_report mindlin     Cattaneo-Mindlin's stick radius in the shift mode, nu = 0 and 0.28
+//   exact_report mindlin     Cattaneo-Mindlin's stick radius in the shift mode, nu = 0 and 0.28, by shift and by force
 //   exact_report sweep       steady forces, power and creep work over creepages (paper's contact, sphere)
 //   exact_report transient N the start from rest at dq = dx on N x N: Fx/Fx_ss at q/a = 0.5, 2, 4, 8
+//   exact_report narrow      a/b = 0.02: the centre strip's Fx against Carter's over grids
+//   exact_report carter N R  plane strain, N cells, xi/xi_c = R: the solve's status, Fx against Carter
 //   exact_report paper [320] the paper's contact, xi = 1e-3: Fx, power and creep work on 20..160 (320)
 #include "lib/tangential/exact.h"
 #include "lib/elastic.h"
@@ -12,9 +14,12 @@
 #include "lib/normal/hertz.h"
 #include "lib/numeric.h"
 #include <chrono>
+#include <cmath>
+#include <ctime>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
+#include <utility>
 using namespace contact;
 ContactPatch ellipse_patch(double ab, int n) {
   HertzContact h; h.b_m = 1e-3; h.a_m = ab * h.b_m; h.p0_Pa = 1e9;
@@ -81,6 +86,58 @@ int main(int argc, char** argv) {
         const double c = a * std::cbrt(1 - lr);
         const double cg = std::sqrt((s.fields.state == 1).count() * p.grid.dx_m * p.grid.dy_m / kPi);
         std::printf("mindlin nu %.2f n %d: Fx/(mu Fn) %.5f, c_grid/a %.5f, (1-Fx/muFn)^(1/3) %.5f, dev %+.2f %%, %s\n", nu, n, lr, cg / a, c / a, 100 * (cg / c - 1), s.status.message.c_str());
+        // driven by the force: Fx = -f mu Fn (the grid's Fn), the shift found
+        const double Fn_grid = p.pressure_Pa.sum() * p.grid.dx_m * p.grid.dy_m;
+        for (const double f : {0.5, 0.8}) {
+          const auto t0 = std::chrono::steady_clock::now();
+          const ExactShiftForce r = solve_exact_shift_force(p, G, combined_poisson(pair), -f * mu * Fn_grid, 0, mu, 1.0, nullptr);
+          const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+          const double cf = a * std::cbrt(1 - f);
+          const double cgf = std::sqrt((r.solution.fields.state == 1).count() * p.grid.dx_m * p.grid.dy_m / kPi);
+          std::printf("mindlin by force nu %.2f n %d f %.1f: c_grid/c - 1 %+.2f %%, shift/Mindlin's - 1 %+.3f %%, %d shift solves, %.0f ms\n", nu, n, f, 100 * (cgf / cf - 1), 100 * (r.shift_x_m / (3 * mu * 1000 * (2 - nu) / (8 * G * a) * (1 - std::pow(1 - f, 2.0 / 3.0))) - 1), r.shift_solves, ms);
+        }
+      }
+    }
+  } else if (what == "carter" && argc >= 4) {
+    const int n = std::atoi(argv[2]);
+    const double r = std::atof(argv[3]);
+    const double E = 210e9, nu = 0.28, G = E / (2 * (1 + nu)), mu = 0.3, p0 = 1e9, a = 0.25e-3;
+    ContactPatch p;
+    p.grid = make_grid(a, 1e-3, {n, 1});
+    p.half_length_m = Eigen::ArrayXd::Constant(1, a);
+    p.strip_peak_Pa = Eigen::ArrayXd::Constant(1, p0);
+    fill_strip_pressures(p);
+    const double xi_c = 2 * (1 - nu) * mu * p0 / G;
+    ExactOptions o;
+    o.plane_strain = true;
+    const auto t0 = std::chrono::steady_clock::now();
+    const ExactSolution s = solve_exact_steady(p, G, nu, {r * xi_c, 0, 0}, mu, 1.0, o);
+    const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    const double a1 = a * (1 - r), Fx = -mu * kPi * a * p0 / 2 * (1 - (a1 / a) * (a1 / a));
+    std::printf("carter n %d xi/xi_c %.2f: Fx/Fx_carter - 1 %+.2e, %s, %.0f ms\n", n, r,
+                s.fields.Fx_N / p.grid.dy_m / Fx - 1, s.status.message.c_str(), ms);
+  } else if (what == "narrow") {
+    const double E = 210e9, nu = 0.28, G = E / (2 * (1 + nu)), mu = 0.3;
+    for (const double ab : {0.02, 0.01}) {
+      for (const auto& nn : {std::pair<int, int>{60, 21}, {120, 21}, {240, 21}, {120, 41}}) {
+        HertzContact h;
+        h.b_m = 1e-3;
+        h.a_m = ab * h.b_m;
+        h.p0_Pa = 1e9;
+        h.normal_load_N = 2 * kPi * h.a_m * h.b_m * h.p0_Pa / 3;
+        const ContactPatch q = hertz_patch(h, make_grid(h.a_m, h.b_m, {nn.first, nn.second}));
+        const int centre = nn.second / 2;
+        const double a = q.half_length_m(centre), p0 = q.strip_peak_Pa(centre), xi_c = 2 * (1 - nu) * mu * p0 / G;
+        std::printf("narrow a/b %.2f %d x %d:", ab, nn.first, nn.second);
+        for (const double r : {0.25, 0.5, 0.75}) {
+          const auto t0 = std::chrono::steady_clock::now();
+          const ExactSolution s = solve_exact_steady(q, G, nu, {r * xi_c, 0, 0}, mu, 1.0, exact_run_options());
+          const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+          const double a1 = a * (1 - r), carter = -mu * kPi * a * p0 / 2 * (1 - (a1 / a) * (a1 / a));
+          std::printf("  xi/xi_c %.2f: %+.4f (%.0f ms%s)", r, s.fields.strip_force_x_N_per_m(centre) / carter - 1, ms,
+                      s.status.converged() ? "" : ", NOT CONVERGED");
+        }
+        std::printf("\n");
       }
     }
   } else if (what == "sweep") {
@@ -109,8 +166,11 @@ int main(int argc, char** argv) {
       ContactPatch p = paper_patch(n);
       ExactSolution ss = solve_exact_steady(p, G, nu, {1e-3, 0, 0}, 0.3, 1.0);
       ExactSolution prev;
-      ExactOptions o; o.tol = 1e-6; o.stick_tol = 1e-6;
+      // the steps' tolerances: 10^-argv[3] on the fixed-point residual, 10^-argv[4] the linear solves' floor
+      const double tol = argc > 3 ? std::pow(10.0, -std::atof(argv[3])) : 1e-6;
+      ExactOptions o; o.tol = tol; o.stick_tol = argc > 4 ? std::pow(10.0, -std::atof(argv[4])) : tol;
       double total_ms = 0; int steps = 0;
+      const std::clock_t c0 = std::clock();
       std::printf("transient %dx%d (Fx_ss %.3f):", n, n, ss.fields.Fx_N);
       for (int k = 1; k <= 4 * n; ++k) {
         auto t0 = std::chrono::steady_clock::now();
@@ -120,9 +180,10 @@ int main(int argc, char** argv) {
         if (!s.status.converged()) std::printf(" [step %d not converged]", k);
         prev = s;
         const double q_over_a = 2.0 * k / n;
-        if (k == n / 4 || k == n || k == 2 * n || k == 4 * n) std::printf(" q/a %.1f: %.4f", q_over_a, s.fields.Fx_N / ss.fields.Fx_N);
+        if (k == n / 4 || k == n || k == 2 * n || k == 4 * n) std::printf(" q/a %.1f: %.6f", q_over_a, s.fields.Fx_N / ss.fields.Fx_N);
       }
-      std::printf("  (%.2f ms per step wall, tol 1e-6)\n", total_ms / steps);
+      std::printf("  (%.2f ms per step wall, %.2f ms CPU, tol %.0e, linear %.0e)\n", total_ms / steps,
+                  1e3 * static_cast<double>(std::clock() - c0) / CLOCKS_PER_SEC / steps, o.tol, o.stick_tol);
     }
   } else if (what == "paper") {
     const ElasticPair pair{{210e9, 0.28}, {210e9, 0.28}};
