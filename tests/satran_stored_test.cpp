@@ -16,6 +16,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "lib/normal/hertz.h"
@@ -216,6 +217,42 @@ TEST(SatranStored, LargeGridSpin) {
   expect_stored("large_grid_spin", tc, false);
   tc.inputs.eta = tc.inputs.phi_per_m = constant_history(0.0);
   expect_stored("large_grid_xi", tc, false);
+}
+
+// The strips of a large grid shared between threads give the same numbers to the bit as one thread: every
+// strip computes alone, and the sums run strip by strip in one order (docs/benchmarks.md)
+TEST(SatranThreads, SameBitsForAnyThreadCount) {
+  for (const bool spin : {true, false}) {
+    TransientCase tc = base_case(160, 1e-3, spin ? 5e-4 : 0.0, spin ? 0.5 : 0.0);
+    tc.settings.t_end_s = 2.5e-5;
+    tc.settings.snapshot_times_s = {2e-5};
+    tc.settings.threads = 1;
+    const std::vector<Column> one = columns_of(tc);
+    for (const int threads : {2, 3}) {
+      tc.settings.threads = threads;
+      const std::vector<Column> more = columns_of(tc);
+      ASSERT_EQ(one.size(), more.size());
+      for (size_t k = 0; k < one.size(); ++k) {
+        ASSERT_EQ(one[k].v.size(), more[k].v.size());
+        size_t differ = 0;
+        for (size_t i = 0; i < one[k].v.size(); ++i) differ += one[k].v[i] != more[k].v[i];
+        EXPECT_EQ(differ, 0u) << one[k].name << " with " << threads << " threads" << (spin ? " (spin)" : "");
+      }
+    }
+  }
+}
+
+// a sweep's thread runs its cases on itself alone: set_satran_threads is the thread's, and 0 restores every core
+TEST(SatranThreads, ThreadCountIsTheCallingThreads) {
+  const int all = satran_threads();
+  EXPECT_GE(all, 1);
+  set_satran_threads(1);
+  EXPECT_EQ(satran_threads(), 1);
+  int other = 0;
+  std::thread([&] { other = satran_threads(); }).join();
+  EXPECT_EQ(other, all);
+  set_satran_threads(0);
+  EXPECT_EQ(satran_threads(), all);
 }
 
 }  // namespace
