@@ -21,6 +21,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <exception>
 #include <limits>
 #include <optional>
@@ -273,6 +274,26 @@ struct ShiftScratch {
   }
 };
 
+// A strip's two end intervals go through the whole kernel at every step, and their inputs seldom change:
+// the leading one takes tau = 0 in, the trailing one a node that slips on the bound (mu p e) once the
+// material slips there. Where the rates, the geometry and the upstream node are the same to the bit, so are
+// the new node and the integrals: kept here from the step that computed them.
+struct EdgeInterval {
+  bool valid = false;
+  StripRates r;
+  IntervalGeometry geo;
+  StripNode hi, lo;
+  IntervalSums cell;
+  static bool same(const StripNode& a, const StripNode& b) {
+    return std::memcmp(&a.tx, &b.tx, 4 * sizeof(double)) == 0 && a.stick == b.stick;
+  }
+  bool holds(const StripRates& rr, const IntervalGeometry& g, const StripNode& h) const {
+    return valid && std::memcmp(&r, &rr, sizeof r) == 0 && std::memcmp(&geo, &g, sizeof geo) == 0 && same(hi, h);
+  }
+};
+static_assert(sizeof(StripRates) == 8 * sizeof(double) && sizeof(IntervalGeometry) == 5 * sizeof(double),
+              "EdgeInterval compares them as bytes: no padding");
+
 // One strip, shift. In a shift step node i's new value depends on the old node i+1 alone: the intervals
 // form no chain, and most of them stick. So the interior intervals (both ends strictly inside the strip)
 // first take the stick step in blocks: the prediction at x_lo, Kalker's test, the stick integrals (the
@@ -285,8 +306,9 @@ template <bool kFields, bool kSpin, bool kLateral>
 class ShiftStrip {
  public:
   ShiftStrip(const ContactPatch& patch, const StripRates& r, int j, double L, const StepKinematics& k,
-             ShiftScratch& scratch, TransientState& state, StepResult* fields)
-      : patch_(patch), r_(r), j_(j), L_(L), k_(k), scratch_(scratch), fields_(fields), a_(r.a_m), dx_(patch.grid.dx_m),
+             ShiftScratch& scratch, TransientState& state, StepResult* fields, EdgeInterval* edge)
+      : patch_(patch), r_(r), j_(j), L_(L), k_(k), scratch_(scratch), fields_(fields), edge_(edge), a_(r.a_m),
+        dx_(patch.grid.dx_m),
         x_(scratch.x.data()), node_(&state.node(0, j)), edge_p_(&patch.edge_pressure_Pa(0, j)) {}
 
   // the step of the strip: the trailing edge's intervals, the interior ones (the stick pass in blocks, then
@@ -346,7 +368,21 @@ class ShiftStrip {
   void whole_interval(int i) {
     const IntervalGeometry geo = geometry(i);
     if (!(geo.x_hi > geo.x_lo)) return;
-    const StripNode hi = geo.x_hi < a_ ? node_[i + 1] : StripNode{};
+    const bool leading = !(geo.x_hi < a_);
+    const StripNode hi = leading ? StripNode{} : node_[i + 1];
+    if (edge_ && (leading || !(geo.x_lo > -a_))) {  // an end interval: the last result, if its inputs are the same
+      EdgeInterval& e = edge_[leading ? 0 : 1];
+      if (!e.holds(r_, geo, hi)) {
+        e.cell = IntervalSums{};
+        e.lo = whole_kernel<kSpin>(r_, hi, geo, e.cell);
+        e.r = r_;
+        e.geo = geo;
+        e.hi = hi;
+        e.valid = true;
+      }
+      record(i, geo, hi, e.lo, e.cell);
+      return;
+    }
     IntervalSums cell;
     const StripNode lo = whole_kernel<kSpin>(r_, hi, geo, cell);
     record(i, geo, hi, lo, cell);
@@ -535,6 +571,7 @@ class ShiftStrip {
   const StepKinematics& k_;
   ShiftScratch& scratch_;
   StepResult* fields_;
+  EdgeInterval* edge_;  // the strip's leading and trailing intervals of the last step (null: not kept)
   const double a_, dx_;
   const double* x_;      // the nodes x_edge(i)
   StripNode* node_;      // node_[i] sits at x_edge(i)
@@ -546,8 +583,8 @@ class ShiftStrip {
 
 template <bool kFields, bool kSpin, bool kLateral>
 StripEnergy shift_strip(const ContactPatch& patch, const StripRates& r, int j, double L, const StepKinematics& k,
-                        ShiftScratch& scratch, TransientState& state, StepResult* fields) {
-  return ShiftStrip<kFields, kSpin, kLateral>(patch, r, j, L, k, scratch, state, fields).step();
+                        ShiftScratch& scratch, TransientState& state, StepResult* fields, EdgeInterval* edge) {
+  return ShiftStrip<kFields, kSpin, kLateral>(patch, r, j, L, k, scratch, state, fields, edge).step();
 }
 
 // one strip, upwind (lf = false) or Lax-Friedrichs (lf = true) at CFL = dq/dx, split in two:
@@ -633,6 +670,7 @@ struct SatranWorkspace::Impl {
   std::vector<ShiftScratch> scratch;             // one per thread, built for scratch[0].built_for
   std::vector<std::vector<StripNode>> old;       // the explicit schemes' copy of a strip, one per thread
   std::vector<StripEnergy> energies;             // the strips' totals of a step
+  std::vector<EdgeInterval> edges;  // each strip's leading and trailing intervals of the last shift step
   // the patch of the last step (its serial): its first mirrored strip, and that the nodes outside its contact
   // hold no traction in the states stepped on it
   bool seen = false;
@@ -750,19 +788,21 @@ StepResult satran_step(const ContactPatch& patch, const TangentialProblem& probl
   // lateral work where tau_y = 0 stays 0: no lateral creepage or spin from a state without tau_y
   const bool spin = exact_shift && has_spin(strip_rates(patch, rates_problem, 0));
   const bool lateral_free = state.lateral_free && k.slip_y_m == 0 && k.spin_rad == 0;
+  if (exact_shift) w.edges.resize(2 * static_cast<size_t>(g.ny));
   auto shift = [&](int j, ShiftScratch& scratch) {
     const StripRates rj = strip_rates(patch, rates_problem, j);
     StepResult* out = fields ? &r : nullptr;
+    EdgeInterval* edge = &w.edges[2 * static_cast<size_t>(j)];
     if (spin) {
-      return fields ? shift_strip<true, true, true>(patch, rj, j, L, k, scratch, state, out)
-                    : shift_strip<false, true, true>(patch, rj, j, L, k, scratch, state, out);
+      return fields ? shift_strip<true, true, true>(patch, rj, j, L, k, scratch, state, out, edge)
+                    : shift_strip<false, true, true>(patch, rj, j, L, k, scratch, state, out, edge);
     }
     if (lateral_free && skips.lateral) {
-      return fields ? shift_strip<true, false, false>(patch, rj, j, L, k, scratch, state, out)
-                    : shift_strip<false, false, false>(patch, rj, j, L, k, scratch, state, out);
+      return fields ? shift_strip<true, false, false>(patch, rj, j, L, k, scratch, state, out, edge)
+                    : shift_strip<false, false, false>(patch, rj, j, L, k, scratch, state, out, edge);
     }
-    return fields ? shift_strip<true, false, true>(patch, rj, j, L, k, scratch, state, out)
-                  : shift_strip<false, false, true>(patch, rj, j, L, k, scratch, state, out);
+    return fields ? shift_strip<true, false, true>(patch, rj, j, L, k, scratch, state, out, edge)
+                  : shift_strip<false, false, true>(patch, rj, j, L, k, scratch, state, out, edge);
   };
   state.lateral_free = lateral_free;  // after this step (every scheme keeps tau_y = 0 then)
   state.mirror_images = strips < g.ny;  // after this step
