@@ -13,6 +13,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -217,6 +218,33 @@ TEST(SatranStored, LargeGridSpin) {
   expect_stored("large_grid_spin", tc, false);
   tc.inputs.eta = tc.inputs.phi_per_m = constant_history(0.0);
   expect_stored("large_grid_xi", tc, false);
+}
+
+// The steady strips' skip (TransientSkips::steady_strips) changes nothing, to the bit, where the strips settle
+// and then every input the skip compares changes in turn: xi (the rates), the load (the patch and L), eta (the
+// lateral work), the speed (none: rates per rolled distance), spin; with the fallback and standstill steps
+// of a stop in between. Checked to fail when the skip ignores what it compares.
+TEST(SatranSkip, SteadyStripsChangeNothing) {
+  TransientCase tc = base_case(24, 1e-3, 0, 0);
+  tc.inputs.xi = table({0, 8e-4, 8.01e-4}, {1e-3, 1e-3, 2e-3});
+  tc.inputs.normal_load_N = table({0, 1.3e-3, 1.31e-3}, {1500, 1500, 1200});
+  tc.inputs.eta = table({0, 1.8e-3, 1.81e-3}, {0, 0, 3e-4});
+  tc.inputs.phi_per_m = table({0, 2.6e-3, 2.61e-3}, {0, 0, 0.4});
+  tc.inputs.speed_m_per_s = table({0, 2.2e-3, 2.3e-3, 2.4e-3, 3.1e-3}, {1.8, 1.8, 0, 0, 1.0});
+  tc.settings.t_end_s = 3.4e-3;
+  tc.settings.dt_s = 2e-5;
+  tc.settings.snapshot_times_s = {7e-4};
+  const std::vector<Column> with = columns_of(tc);
+  tc.settings.skips.steady_strips = false;
+  const std::vector<Column> without = columns_of(tc);
+  ASSERT_EQ(with.size(), without.size());
+  for (size_t k = 0; k < with.size(); ++k) {
+    ASSERT_EQ(with[k].v.size(), without[k].v.size()) << with[k].name;
+    size_t differ = 0;
+    for (size_t i = 0; i < with[k].v.size(); ++i)
+      differ += std::memcmp(&with[k].v[i], &without[k].v[i], sizeof(double)) != 0;
+    EXPECT_EQ(differ, 0u) << with[k].name;
+  }
 }
 
 // The strips of a large grid shared between threads give the same numbers to the bit as one thread: every

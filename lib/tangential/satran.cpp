@@ -274,10 +274,11 @@ struct ShiftScratch {
   }
 };
 
-// A strip's two end intervals go through the whole kernel at every step, and their inputs seldom change:
-// the leading one takes tau = 0 in, the trailing one a node that slips on the bound (mu p e) once the
-// material slips there. Where the rates, the geometry and the upstream node are the same to the bit, so are
-// the new node and the integrals: kept here from the step that computed them.
+// A strip's two end intervals, and the interval where stick turns to slip, go through the whole kernel at
+// every step, and their inputs seldom change: the leading one takes tau = 0 in, the trailing one a node that
+// slips on the bound (mu p e) once the material slips there, and in a steady stretch the turn to slip stays
+// in one interval with the same stick node upstream. Where the rates, the geometry and the upstream node are
+// the same to the bit, so are the new node and the integrals: kept here from the step that computed them.
 struct EdgeInterval {
   bool valid = false;
   StripRates r;
@@ -291,6 +292,29 @@ struct EdgeInterval {
     return valid && std::memcmp(&r, &rr, sizeof r) == 0 && std::memcmp(&geo, &g, sizeof geo) == 0 && same(hi, h);
   }
 };
+// a node holds the bits (tx, ty, ex, ey, stick) given: what the steady strips' skip asks of every node written
+inline bool same_bits(const StripNode& n, double tx, double ty, double ex, double ey, bool stick) {
+  const double a[4] = {n.tx, n.ty, n.ex, n.ey}, b[4] = {tx, ty, ex, ey};
+  return std::memcmp(a, b, sizeof a) == 0 && n.stick == stick;
+}
+
+// A strip whose step left every node as it was (to the bit) is steady: while its rates, the patch, L and the
+// rolled distance stay the same (to the bit), every later step leaves it as it is too, with the same totals
+struct SteadyStrip {
+  bool unchanged = false;  // the last step on this strip left its nodes as they were
+  unsigned long serial = 0;
+  int variant = -1;  // the shift step compiled: 0 pure xi without lateral work, 1 lateral, 2 spin
+  StripRates r;
+  double L = 0, dq = 0;
+  StripEnergy e;
+  bool holds(unsigned long s, int v, const StripRates& rr, double LL, double q) const {
+    return unchanged && serial == s && variant == v && std::memcmp(&r, &rr, sizeof r) == 0 &&
+           std::memcmp(&L, &LL, sizeof L) == 0 && std::memcmp(&dq, &q, sizeof dq) == 0;
+  }
+};
+
+// per strip: the leading interval, the trailing one, and the last interval where stick turned to slip
+constexpr int kKeptIntervals = 3;
 static_assert(sizeof(StripRates) == 8 * sizeof(double) && sizeof(IntervalGeometry) == 5 * sizeof(double),
               "EdgeInterval compares them as bytes: no padding");
 
@@ -306,8 +330,8 @@ template <bool kFields, bool kSpin, bool kLateral>
 class ShiftStrip {
  public:
   ShiftStrip(const ContactPatch& patch, const StripRates& r, int j, double L, const StepKinematics& k,
-             ShiftScratch& scratch, TransientState& state, StepResult* fields, EdgeInterval* edge)
-      : patch_(patch), r_(r), j_(j), L_(L), k_(k), scratch_(scratch), fields_(fields), edge_(edge), a_(r.a_m),
+             ShiftScratch& scratch, TransientState& state, StepResult* fields, EdgeInterval* edge, bool track)
+      : patch_(patch), r_(r), j_(j), L_(L), k_(k), scratch_(scratch), fields_(fields), edge_(edge), track_(track), a_(r.a_m),
         dx_(patch.grid.dx_m),
         x_(scratch.x.data()), node_(&state.node(0, j)), edge_p_(&patch.edge_pressure_Pa(0, j)) {}
 
@@ -351,6 +375,7 @@ class ShiftStrip {
     hi2_ += hi.tx * hi.tx + hi.ty * hi.ty;
     lo2_ += lo.tx * lo.tx + lo.ty * lo.ty;
     if (geo.x_lo > -a_) {
+      if (track_) same_ &= same_bits(node_[i], lo.tx, lo.ty, lo.ex, lo.ey, lo.stick);
       node_[i] = lo;
     } else {
       trail2_ = lo.tx * lo.tx + lo.ty * lo.ty;
@@ -371,21 +396,25 @@ class ShiftStrip {
     const bool leading = !(geo.x_hi < a_);
     const StripNode hi = leading ? StripNode{} : node_[i + 1];
     if (edge_ && (leading || !(geo.x_lo > -a_))) {  // an end interval: the last result, if its inputs are the same
-      EdgeInterval& e = edge_[leading ? 0 : 1];
-      if (!e.holds(r_, geo, hi)) {
-        e.cell = IntervalSums{};
-        e.lo = whole_kernel<kSpin>(r_, hi, geo, e.cell);
-        e.r = r_;
-        e.geo = geo;
-        e.hi = hi;
-        e.valid = true;
-      }
-      record(i, geo, hi, e.lo, e.cell);
+      kept_kernel(edge_[leading ? 0 : 1], i, geo, hi);
       return;
     }
     IntervalSums cell;
     const StripNode lo = whole_kernel<kSpin>(r_, hi, geo, cell);
     record(i, geo, hi, lo, cell);
+  }
+
+  // interval i through the whole kernel, or the result kept in e where its inputs are the same to the bit
+  void kept_kernel(EdgeInterval& e, int i, const IntervalGeometry& geo, const StripNode& hi) {
+    if (!e.holds(r_, geo, hi)) {
+      e.cell = IntervalSums{};
+      e.lo = whole_kernel<kSpin>(r_, hi, geo, e.cell);
+      e.r = r_;
+      e.geo = geo;
+      e.hi = hi;
+      e.valid = true;
+    }
+    record(i, geo, hi, e.lo, e.cell);
   }
 
   // The stick pass over the interior intervals first .. last, in blocks from the trailing side up; the last
@@ -403,6 +432,8 @@ class ShiftStrip {
     // the sums in registers through the pass (a node written may alias a member)
     IntervalSums strip = strip_;
     double hi2 = hi2_, lo2 = lo2_;
+    const bool track = track_;
+    bool same = true;
     const detail::BoundQuadratic bound_q = detail::bound_quadratic(r);
     int n_failed = 0;
     for (int from = first; from <= last; from += kBlock) {
@@ -462,6 +493,7 @@ class ShiftStrip {
       auto stick = [&](int q) {
         const StripNode& hi = node[b + q + 1];
         StripNode& lo = node[b + q];
+        if (track) same &= same_bits(lo, p.px(q), kLateral ? p.py(q) : 0.0, hi.ex, hi.ey, true);
         lo.tx = p.px(q);
         lo.ty = kLateral ? p.py(q) : 0.0;
         lo.ex = hi.ex;
@@ -518,6 +550,7 @@ class ShiftStrip {
     strip_ = strip;
     hi2_ = hi2;
     lo2_ = lo2;
+    same_ &= same;
     return n_failed;
   }
 
@@ -541,6 +574,10 @@ class ShiftStrip {
       const StripNode& hi = scratch.failed_hi[f];
       const IntervalGeometry geo = geometry(i);
       auto turn = [&] { return turns ? scratch.turn[f] : detail::interior_slip_turn(r, x[i + 1], x[i]); };
+      if (edge_ && (hi.stick || (kSpin && scratch.failed_between[f]))) {
+        kept_kernel(edge_[2], i, geo, hi);  // where stick turns to slip: the same in a steady stretch
+        continue;
+      }
       IntervalSums cell;
       const StripNode lo = hi.stick || (kSpin && scratch.failed_between[f]) ? whole_kernel<kSpin>(r, hi, geo, cell)
                                                                             : slip_throughout<kSpin>(r, hi, geo, turn, cell);
@@ -571,7 +608,11 @@ class ShiftStrip {
   const StepKinematics& k_;
   ShiftScratch& scratch_;
   StepResult* fields_;
-  EdgeInterval* edge_;  // the strip's leading and trailing intervals of the last step (null: not kept)
+  EdgeInterval* edge_;  // the strip's kept intervals (kKeptIntervals; null: none kept)
+ public:
+  const bool track_;   // same_ is asked for
+  bool same_ = true;   // every node written so far holds the bits it held before the step
+ private:
   const double a_, dx_;
   const double* x_;      // the nodes x_edge(i)
   StripNode* node_;      // node_[i] sits at x_edge(i)
@@ -581,10 +622,15 @@ class ShiftStrip {
   double hi2_ = 0, lo2_ = 0, trail2_ = 0;  // sums of |tau|^2 at the upstream, downstream, trailing nodes
 };
 
+// the strip's step; *same (where given): every node holds the bits it held before the step
 template <bool kFields, bool kSpin, bool kLateral>
 StripEnergy shift_strip(const ContactPatch& patch, const StripRates& r, int j, double L, const StepKinematics& k,
-                        ShiftScratch& scratch, TransientState& state, StepResult* fields, EdgeInterval* edge) {
-  return ShiftStrip<kFields, kSpin, kLateral>(patch, r, j, L, k, scratch, state, fields, edge).step();
+                        ShiftScratch& scratch, TransientState& state, StepResult* fields, EdgeInterval* edge,
+                        bool* same) {
+  ShiftStrip<kFields, kSpin, kLateral> strip(patch, r, j, L, k, scratch, state, fields, edge, same != nullptr);
+  const StripEnergy e = strip.step();
+  if (same) *same = strip.same_;
+  return e;
 }
 
 // one strip, upwind (lf = false) or Lax-Friedrichs (lf = true) at CFL = dq/dx, split in two:
@@ -670,6 +716,7 @@ struct SatranWorkspace::Impl {
   std::vector<ShiftScratch> scratch;             // one per thread, built for scratch[0].built_for
   std::vector<std::vector<StripNode>> old;       // the explicit schemes' copy of a strip, one per thread
   std::vector<StripEnergy> energies;             // the strips' totals of a step
+  std::vector<SteadyStrip> steady;  // each strip's last shift step: did it change the strip
   std::vector<EdgeInterval> edges;  // each strip's leading and trailing intervals of the last shift step
   // the patch of the last step (its serial): its first mirrored strip, and that the nodes outside its contact
   // hold no traction in the states stepped on it
@@ -788,21 +835,41 @@ StepResult satran_step(const ContactPatch& patch, const TangentialProblem& probl
   // lateral work where tau_y = 0 stays 0: no lateral creepage or spin from a state without tau_y
   const bool spin = exact_shift && has_spin(strip_rates(patch, rates_problem, 0));
   const bool lateral_free = state.lateral_free && k.slip_y_m == 0 && k.spin_rad == 0;
-  if (exact_shift) w.edges.resize(2 * static_cast<size_t>(g.ny));
-  auto shift = [&](int j, ShiftScratch& scratch) {
-    const StripRates rj = strip_rates(patch, rates_problem, j);
+  if (exact_shift) w.edges.resize(kKeptIntervals * static_cast<size_t>(g.ny));
+  auto shift_kinds = [&](int j, const StripRates& rj, ShiftScratch& scratch, bool* same) {
     StepResult* out = fields ? &r : nullptr;
-    EdgeInterval* edge = &w.edges[2 * static_cast<size_t>(j)];
+    EdgeInterval* edge = &w.edges[kKeptIntervals * static_cast<size_t>(j)];
     if (spin) {
-      return fields ? shift_strip<true, true, true>(patch, rj, j, L, k, scratch, state, out, edge)
-                    : shift_strip<false, true, true>(patch, rj, j, L, k, scratch, state, out, edge);
+      return fields ? shift_strip<true, true, true>(patch, rj, j, L, k, scratch, state, out, edge, same)
+                    : shift_strip<false, true, true>(patch, rj, j, L, k, scratch, state, out, edge, same);
     }
     if (lateral_free && skips.lateral) {
-      return fields ? shift_strip<true, false, false>(patch, rj, j, L, k, scratch, state, out, edge)
-                    : shift_strip<false, false, false>(patch, rj, j, L, k, scratch, state, out, edge);
+      return fields ? shift_strip<true, false, false>(patch, rj, j, L, k, scratch, state, out, edge, same)
+                    : shift_strip<false, false, false>(patch, rj, j, L, k, scratch, state, out, edge, same);
     }
-    return fields ? shift_strip<true, false, true>(patch, rj, j, L, k, scratch, state, out, edge)
-                  : shift_strip<false, false, true>(patch, rj, j, L, k, scratch, state, out, edge);
+    return fields ? shift_strip<true, false, true>(patch, rj, j, L, k, scratch, state, out, edge, same)
+                  : shift_strip<false, false, true>(patch, rj, j, L, k, scratch, state, out, edge, same);
+  };
+  const bool steady_skip = skips.steady_strips && !fields;
+  w.steady.resize(g.ny);
+  if (!exact_shift)  // an explicit step changes the nodes without asking
+    for (SteadyStrip& st : w.steady) st.unchanged = false;
+  const int variant = spin ? 2 : lateral_free && skips.lateral ? 0 : 1;
+  auto shift = [&](int j, ShiftScratch& scratch) {
+    const StripRates rj = strip_rates(patch, rates_problem, j);
+    SteadyStrip& st = w.steady[j];
+    if (steady_skip && st.holds(ws.patch_serial, variant, rj, L, k.dq_m)) return st.e;  // nodes as they are
+    bool unchanged = false;
+    bool* same = steady_skip ? &unchanged : nullptr;
+    const StripEnergy e = shift_kinds(j, rj, scratch, same);
+    st.unchanged = unchanged;
+    st.serial = ws.patch_serial;
+    st.variant = variant;
+    st.r = rj;
+    st.L = L;
+    st.dq = k.dq_m;
+    st.e = e;
+    return e;
   };
   state.lateral_free = lateral_free;  // after this step (every scheme keeps tau_y = 0 then)
   state.mirror_images = strips < g.ny;  // after this step
@@ -841,6 +908,7 @@ StepResult satran_step(const ContactPatch& patch, const TangentialProblem& probl
     StripEnergy& e = energies[j];
     if (j >= strips) {  // tau(x, -y) = tau(x, y); Mz = integral(x tau_y) - y Fx
       const int m = g.ny - 1 - j;
+      w.steady[j].unchanged = false;  // not stepped: its nodes are m's
       e = energies[m];
       e.Mz += (g.y_m(m) - g.y_m(j)) * e.Fx;
       if (!defer) mirror_strip(state, m, j);

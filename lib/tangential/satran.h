@@ -121,9 +121,13 @@ struct StepResult {
 //     mirror images (the same to rounding);
 //   lateral: without lateral creepage or spin, from a state without tau_y (TransientState::lateral_free),
 //     the shift step's stick pass does not compute tau_y, which stays 0 (the same to the bit).
+//   steady_strips: a strip whose last shift step left every node as it was (to the bit), stepped again with
+//     the same rates, patch, flexibility and rolled distance (to the bit), is left as it is with the last
+//     step's totals (the same to the bit); not where the fields are written.
 struct TransientSkips {
   bool mirrored = true;
   bool lateral = true;
+  bool steady_strips = true;
 };
 
 // One step on the contact `patch` with the flexibilities (L1, L2, L3, L) and friction of `problem`;
