@@ -34,7 +34,6 @@
 #include "lib/tangential/strip_march.h"
 
 #include <atomic>
-#include <chrono>
 #include <condition_variable>
 #include <cstdint>
 #include <mutex>
@@ -144,11 +143,8 @@ class StripPool {
   void serve(int worker) {
     uint32_t seen = 0;
     for (;;) {
-      // a short spin first: the next step's loop follows within microseconds
-      const auto until = std::chrono::steady_clock::now() + std::chrono::microseconds(50);
-      while (static_cast<uint32_t>(claim_.load(std::memory_order_acquire) >> 32) == seen &&
-             std::chrono::steady_clock::now() < until) {
-      }
+      // asleep until the next loop (no spinning: on a shared machine a spinning helper takes the time of
+      // the caller's own share of the cores)
       uint32_t gen;
       int chunks;
       void* body;
