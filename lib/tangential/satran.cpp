@@ -21,6 +21,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
+#include <exception>
 #include <limits>
 #include <optional>
 #include <stdexcept>
@@ -30,6 +32,12 @@
 #include "lib/io/enum_names.h"
 #include "lib/tangential/kalker.h"
 #include "lib/tangential/strip_march.h"
+
+#include <atomic>
+#include <condition_variable>
+#include <cstdint>
+#include <mutex>
+#include <thread>
 
 namespace contact {
 
@@ -67,6 +75,110 @@ TransientState rest_state(const Grid& grid) {
   s.mirror_images = true;
   s.lateral_free = true;
   return s;
+}
+
+void fill_mirrored_strips(TransientState& s) {
+  if (!s.mirror_deferred) return;
+  const int n = s.nx + 1;
+  for (int j = s.ny - s.ny / 2; j < s.ny; ++j)
+    std::copy_n(&s.nodes[static_cast<size_t>(s.ny - 1 - j) * n], n, &s.nodes[static_cast<size_t>(j) * n]);
+  s.mirror_deferred = false;
+}
+
+namespace {
+thread_local int t_satran_threads = 0;  // 0: every core
+
+// Helper threads that take chunks of a loop beside the calling thread. The caller takes chunks too and waits
+// only for those a helper has claimed, so a helper the scheduler has not woken (a shared machine) costs the
+// loop nothing: at worst it runs on the caller alone. A claim names the loop's generation, so a helper that
+// wakes late cannot take a chunk of the next loop. Which thread takes which chunk varies; what a chunk
+// computes does not.
+class StripPool {
+ public:
+  explicit StripPool(int helpers) {
+    for (int h = 1; h <= helpers; ++h) threads_.emplace_back([this, h] { serve(h); });
+  }
+  ~StripPool() {
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      stop_ = true;
+    }
+    wake_.notify_all();
+    for (std::thread& t : threads_) t.join();
+  }
+  StripPool(const StripPool&) = delete;
+  StripPool& operator=(const StripPool&) = delete;
+
+  // body(chunk, worker) for every chunk in [0, chunks); worker 0 is the caller, 1.. the helpers
+  template <class Body>
+  void run(int chunks, Body&& body) {
+    auto call = [](void* b, int chunk, int worker) { (*static_cast<Body*>(b))(chunk, worker); };
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      ++generation_;
+      body_ = &body;
+      call_ = call;
+      chunks_ = chunks;
+      finished_.store(0, std::memory_order_relaxed);
+      claim_.store(static_cast<uint64_t>(generation_) << 32, std::memory_order_release);
+    }
+    wake_.notify_all();
+    work(generation_, chunks, &body, call, 0);
+    while (finished_.load(std::memory_order_acquire) < chunks) std::this_thread::yield();
+  }
+
+ private:
+  using Call = void (*)(void*, int, int);
+  // claims and runs chunks of generation gen while there are any
+  void work(uint32_t gen, int chunks, void* body, Call call, int worker) {
+    uint64_t c = claim_.load(std::memory_order_acquire);
+    for (;;) {
+      if (static_cast<uint32_t>(c >> 32) != gen || static_cast<int>(c & 0xffffffffu) >= chunks) return;
+      if (!claim_.compare_exchange_weak(c, c + 1, std::memory_order_acq_rel)) continue;
+      call(body, static_cast<int>(c & 0xffffffffu), worker);
+      finished_.fetch_add(1, std::memory_order_acq_rel);
+      c = claim_.load(std::memory_order_acquire);
+    }
+  }
+  void serve(int worker) {
+    uint32_t seen = 0;
+    for (;;) {
+      // asleep until the next loop (no spinning: on a shared machine a spinning helper takes the time of
+      // the caller's own share of the cores)
+      uint32_t gen;
+      int chunks;
+      void* body;
+      Call call;
+      {
+        std::unique_lock<std::mutex> lock(mutex_);
+        wake_.wait(lock, [&] { return stop_ || generation_ != seen; });
+        if (stop_) return;
+        gen = seen = generation_;
+        chunks = chunks_;
+        body = body_;
+        call = call_;
+      }
+      work(gen, chunks, body, call, worker);
+    }
+  }
+
+  std::vector<std::thread> threads_;
+  std::mutex mutex_;
+  std::condition_variable wake_;
+  bool stop_ = false;
+  uint32_t generation_ = 0;  // under mutex_
+  int chunks_ = 0;
+  void* body_ = nullptr;
+  Call call_ = nullptr;
+  std::atomic<uint64_t> claim_{0};  // generation << 32 | next chunk
+  std::atomic<int> finished_{0};
+};
+}  // namespace
+
+void set_satran_threads(int threads) { t_satran_threads = std::max(0, threads); }
+
+int satran_threads() {
+  return t_satran_threads > 0 ? t_satran_threads : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
 }
 
 namespace {
@@ -118,6 +230,13 @@ using BlockMap = Eigen::Map<const Block>;  // a block of an array: the per-step 
 // what the shift step of every strip shares, and room for one strip's, set up once per step from the
 // rates r of any strip (only eta/L2 and phi/L3, the same on every strip, are used)
 struct ShiftScratch {
+  // what it was built from: the grid's nodes, and the lateral rates
+  int nx = 0;
+  double half_x_m = 0, dx_m = 0, eta_L2 = 0, phi_L3 = 0;
+  bool built_for(const Grid& g, const StripRates& r) const {
+    return nx == g.nx && half_x_m == g.half_x_m && dx_m == g.dx_m && eta_L2 == r.eta_L2_Pa_per_m &&
+           phi_L3 == r.phi_L3_Pa_per_m2;
+  }
   Eigen::ArrayXd x;  // the nodes x_edge(i), i = 0 .. nx
   // cell i whole, from x_edge(i+1) down to x_edge(i): its length t and the terms of its stick solution
   // that involve neither tau nor alpha, so that they are the same on every strip
@@ -129,7 +248,8 @@ struct ShiftScratch {
   std::vector<char> failed_between;    // spin: the interior test failed, or a slip node sticks again
   std::vector<detail::SlipTurn> turn;  // their slip turns, from a slip node
   ShiftScratch(const Grid& g, const StripRates& r)
-      : x(g.nx + 1), t(g.nx), beta_t(g.nx), gamma_t2(g.nx), t2_2(g.nx), beta_t2_2(g.nx), gamma_t3_3(g.nx),
+      : nx(g.nx), half_x_m(g.half_x_m), dx_m(g.dx_m), eta_L2(r.eta_L2_Pa_per_m), phi_L3(r.phi_L3_Pa_per_m2),
+        x(g.nx + 1), t(g.nx), beta_t(g.nx), gamma_t2(g.nx), t2_2(g.nx), beta_t2_2(g.nx), gamma_t3_3(g.nx),
         beta_t3_3(g.nx), gamma_t4_4(g.nx), bulge(g.nx), failed(g.nx), failed_hi(g.nx), failed_between(g.nx),
         turn(g.nx) {
     for (int i = 0; i <= g.nx; ++i) x(i) = g.x_edge(i);
@@ -150,6 +270,50 @@ struct ShiftScratch {
   }
 };
 
+// A strip's two end intervals, and the interval where stick turns to slip, go through the whole kernel at
+// every step, and their inputs seldom change: the leading one takes tau = 0 in, the trailing one a node that
+// slips on the bound (mu p e) once the material slips there, and in a steady stretch the turn to slip stays
+// in one interval with the same stick node upstream. Where the rates, the geometry and the upstream node are
+// the same to the bit, so are the new node and the integrals: kept here from the step that computed them.
+struct EdgeInterval {
+  bool valid = false;
+  StripRates r;
+  IntervalGeometry geo;
+  StripNode hi, lo;
+  IntervalSums cell;
+  static bool same(const StripNode& a, const StripNode& b) {
+    return std::memcmp(&a.tx, &b.tx, 4 * sizeof(double)) == 0 && a.stick == b.stick;
+  }
+  bool holds(const StripRates& rr, const IntervalGeometry& g, const StripNode& h) const {
+    return valid && std::memcmp(&r, &rr, sizeof r) == 0 && std::memcmp(&geo, &g, sizeof geo) == 0 && same(hi, h);
+  }
+};
+// a node holds the bits (tx, ty, ex, ey, stick) given: what the steady strips' skip asks of every node written
+inline bool same_bits(const StripNode& n, double tx, double ty, double ex, double ey, bool stick) {
+  const double a[4] = {n.tx, n.ty, n.ex, n.ey}, b[4] = {tx, ty, ex, ey};
+  return std::memcmp(a, b, sizeof a) == 0 && n.stick == stick;
+}
+
+// A strip whose step left every node as it was (to the bit) is steady: while its rates, the patch, L and the
+// rolled distance stay the same (to the bit), every later step leaves it as it is too, with the same totals
+struct SteadyStrip {
+  bool unchanged = false;  // the last step on this strip left its nodes as they were
+  unsigned long serial = 0;
+  int variant = -1;  // the shift step compiled: 0 pure xi without lateral work, 1 lateral, 2 spin
+  StripRates r;
+  double L = 0, dq = 0;
+  StripEnergy e;
+  bool holds(unsigned long s, int v, const StripRates& rr, double LL, double q) const {
+    return unchanged && serial == s && variant == v && std::memcmp(&r, &rr, sizeof r) == 0 &&
+           std::memcmp(&L, &LL, sizeof L) == 0 && std::memcmp(&dq, &q, sizeof dq) == 0;
+  }
+};
+
+// per strip: the leading interval, the trailing one, and the last interval where stick turned to slip
+constexpr int kKeptIntervals = 3;
+static_assert(sizeof(StripRates) == 8 * sizeof(double) && sizeof(IntervalGeometry) == 5 * sizeof(double),
+              "EdgeInterval compares them as bytes: no padding");
+
 // One strip, shift. In a shift step node i's new value depends on the old node i+1 alone: the intervals
 // form no chain, and most of them stick. So the interior intervals (both ends strictly inside the strip)
 // first take the stick step in blocks: the prediction at x_lo, Kalker's test, the stick integrals (the
@@ -162,8 +326,9 @@ template <bool kFields, bool kSpin, bool kLateral>
 class ShiftStrip {
  public:
   ShiftStrip(const ContactPatch& patch, const StripRates& r, int j, double L, const StepKinematics& k,
-             ShiftScratch& scratch, TransientState& state, StepResult* fields)
-      : patch_(patch), r_(r), j_(j), L_(L), k_(k), scratch_(scratch), fields_(fields), a_(r.a_m), dx_(patch.grid.dx_m),
+             ShiftScratch& scratch, TransientState& state, StepResult* fields, EdgeInterval* edge, bool track)
+      : patch_(patch), r_(r), j_(j), L_(L), k_(k), scratch_(scratch), fields_(fields), edge_(edge), track_(track), a_(r.a_m),
+        dx_(patch.grid.dx_m),
         x_(scratch.x.data()), node_(&state.node(0, j)), edge_p_(&patch.edge_pressure_Pa(0, j)) {}
 
   // the step of the strip: the trailing edge's intervals, the interior ones (the stick pass in blocks, then
@@ -206,6 +371,7 @@ class ShiftStrip {
     hi2_ += hi.tx * hi.tx + hi.ty * hi.ty;
     lo2_ += lo.tx * lo.tx + lo.ty * lo.ty;
     if (geo.x_lo > -a_) {
+      if (track_) same_ &= same_bits(node_[i], lo.tx, lo.ty, lo.ex, lo.ey, lo.stick);
       node_[i] = lo;
     } else {
       trail2_ = lo.tx * lo.tx + lo.ty * lo.ty;
@@ -223,10 +389,28 @@ class ShiftStrip {
   void whole_interval(int i) {
     const IntervalGeometry geo = geometry(i);
     if (!(geo.x_hi > geo.x_lo)) return;
-    const StripNode hi = geo.x_hi < a_ ? node_[i + 1] : StripNode{};
+    const bool leading = !(geo.x_hi < a_);
+    const StripNode hi = leading ? StripNode{} : node_[i + 1];
+    if (edge_ && (leading || !(geo.x_lo > -a_))) {  // an end interval: the last result, if its inputs are the same
+      kept_kernel(edge_[leading ? 0 : 1], i, geo, hi);
+      return;
+    }
     IntervalSums cell;
     const StripNode lo = whole_kernel<kSpin>(r_, hi, geo, cell);
     record(i, geo, hi, lo, cell);
+  }
+
+  // interval i through the whole kernel, or the result kept in e where its inputs are the same to the bit
+  void kept_kernel(EdgeInterval& e, int i, const IntervalGeometry& geo, const StripNode& hi) {
+    if (!e.holds(r_, geo, hi)) {
+      e.cell = IntervalSums{};
+      e.lo = whole_kernel<kSpin>(r_, hi, geo, e.cell);
+      e.r = r_;
+      e.geo = geo;
+      e.hi = hi;
+      e.valid = true;
+    }
+    record(i, geo, hi, e.lo, e.cell);
   }
 
   // The stick pass over the interior intervals first .. last, in blocks from the trailing side up; the last
@@ -244,6 +428,8 @@ class ShiftStrip {
     // the sums in registers through the pass (a node written may alias a member)
     IntervalSums strip = strip_;
     double hi2 = hi2_, lo2 = lo2_;
+    const bool track = track_;
+    bool same = true;
     const detail::BoundQuadratic bound_q = detail::bound_quadratic(r);
     int n_failed = 0;
     for (int from = first; from <= last; from += kBlock) {
@@ -303,6 +489,7 @@ class ShiftStrip {
       auto stick = [&](int q) {
         const StripNode& hi = node[b + q + 1];
         StripNode& lo = node[b + q];
+        if (track) same &= same_bits(lo, p.px(q), kLateral ? p.py(q) : 0.0, hi.ex, hi.ey, true);
         lo.tx = p.px(q);
         lo.ty = kLateral ? p.py(q) : 0.0;
         lo.ex = hi.ex;
@@ -359,6 +546,7 @@ class ShiftStrip {
     strip_ = strip;
     hi2_ = hi2;
     lo2_ = lo2;
+    same_ &= same;
     return n_failed;
   }
 
@@ -382,6 +570,10 @@ class ShiftStrip {
       const StripNode& hi = scratch.failed_hi[f];
       const IntervalGeometry geo = geometry(i);
       auto turn = [&] { return turns ? scratch.turn[f] : detail::interior_slip_turn(r, x[i + 1], x[i]); };
+      if (edge_ && (hi.stick || (kSpin && scratch.failed_between[f]))) {
+        kept_kernel(edge_[2], i, geo, hi);  // where stick turns to slip: the same in a steady stretch
+        continue;
+      }
       IntervalSums cell;
       const StripNode lo = hi.stick || (kSpin && scratch.failed_between[f]) ? whole_kernel<kSpin>(r, hi, geo, cell)
                                                                             : slip_throughout<kSpin>(r, hi, geo, turn, cell);
@@ -412,6 +604,11 @@ class ShiftStrip {
   const StepKinematics& k_;
   ShiftScratch& scratch_;
   StepResult* fields_;
+  EdgeInterval* edge_;  // the strip's kept intervals (kKeptIntervals; null: none kept)
+ public:
+  const bool track_;   // same_ is asked for
+  bool same_ = true;   // every node written so far holds the bits it held before the step
+ private:
   const double a_, dx_;
   const double* x_;      // the nodes x_edge(i)
   StripNode* node_;      // node_[i] sits at x_edge(i)
@@ -421,10 +618,15 @@ class ShiftStrip {
   double hi2_ = 0, lo2_ = 0, trail2_ = 0;  // sums of |tau|^2 at the upstream, downstream, trailing nodes
 };
 
+// the strip's step; *same (where given): every node holds the bits it held before the step
 template <bool kFields, bool kSpin, bool kLateral>
 StripEnergy shift_strip(const ContactPatch& patch, const StripRates& r, int j, double L, const StepKinematics& k,
-                        ShiftScratch& scratch, TransientState& state, StepResult* fields) {
-  return ShiftStrip<kFields, kSpin, kLateral>(patch, r, j, L, k, scratch, state, fields).step();
+                        ShiftScratch& scratch, TransientState& state, StepResult* fields, EdgeInterval* edge,
+                        bool* same) {
+  ShiftStrip<kFields, kSpin, kLateral> strip(patch, r, j, L, k, scratch, state, fields, edge, same != nullptr);
+  const StripEnergy e = strip.step();
+  if (same) *same = strip.same_;
+  return e;
 }
 
 // one strip, upwind (lf = false) or Lax-Friedrichs (lf = true) at CFL = dq/dx, split in two:
@@ -506,8 +708,34 @@ StripEnergy explicit_strip(const ContactPatch& patch, const TangentialProblem& p
 
 }  // namespace
 
+struct SatranWorkspace::Impl {
+  std::vector<ShiftScratch> scratch;             // one per thread, built for scratch[0].built_for
+  std::vector<std::vector<StripNode>> old;       // the explicit schemes' copy of a strip, one per thread
+  std::vector<StripEnergy> energies;             // the strips' totals of a step
+  std::vector<SteadyStrip> steady;  // each strip's last shift step: did it change the strip
+  std::vector<EdgeInterval> edges;  // each strip's leading and trailing intervals of the last shift step
+  // the patch of the last step (its serial): its first mirrored strip, and that the nodes outside its contact
+  // hold no traction in the states stepped on it
+  bool seen = false;
+  unsigned long serial = 0;
+  int first_mirrored = 0;
+  std::unique_ptr<StripPool> pool;  // threads - 1 helpers, made on the first step that shares its strips
+};
+
+SatranWorkspace::SatranWorkspace() : impl(std::make_unique<Impl>()) {}
+SatranWorkspace::~SatranWorkspace() = default;
+SatranWorkspace::SatranWorkspace(SatranWorkspace&&) noexcept = default;
+SatranWorkspace& SatranWorkspace::operator=(SatranWorkspace&&) noexcept = default;
+
 StepResult satran_step(const ContactPatch& patch, const TangentialProblem& problem, const StepKinematics& k,
                        TransientScheme scheme, TransientState& state, bool fields, TransientSkips skips) {
+  SatranWorkspace ws;
+  return satran_step(patch, problem, k, scheme, state, fields, skips, ws);
+}
+
+StepResult satran_step(const ContactPatch& patch, const TangentialProblem& problem, const StepKinematics& k,
+                       TransientScheme scheme, TransientState& state, bool fields, TransientSkips skips,
+                       SatranWorkspace& ws) {
   const Grid& g = patch.grid;
   if (state.nx != g.nx || state.ny != g.ny)
     throw std::invalid_argument("satran: the state's grid (" + std::to_string(state.nx) + " x " +
@@ -518,15 +746,26 @@ StepResult satran_step(const ContactPatch& patch, const TangentialProblem& probl
   if (!(cfl >= 0) || cfl > 1 + 1e-12)
     throw std::invalid_argument("satran: CFL number " + std::to_string(cfl) + " outside [0, 1] (dq " +
                                 std::to_string(k.dq_m) + " m, dx " + std::to_string(dx) + " m)");
+  SatranWorkspace::Impl& w = *ws.impl;
   StepResult r;
   r.strip_energy_J_per_m = Eigen::ArrayXd::Zero(g.ny);
   if (fields) allocate_fields(r, g);
+
+  // the patch as the last step left it (the same serial): its symmetry is known, and the nodes outside its
+  // contact hold nothing (the release below cleared them, and no step writes them)
+  const bool same_patch = w.seen && w.serial == ws.patch_serial;
+  if (!same_patch) w.first_mirrored = first_mirrored_strip(patch, 0.0);
+  // without spin, on a mirror-symmetric patch and state, strips from `strips` up are mirror images
+  const int strips = skips.mirrored && k.spin_rad == 0 && state.mirror_images ? w.first_mirrored : g.ny;
+  const bool rescale = state.L_m_per_Pa > 0 && state.L_m_per_Pa != L;
+  // the stale mirror images are read by the rescale, the release and a step that does not mirror
+  if (rescale || !same_patch || strips == g.ny) fill_mirrored_strips(state);
 
   // a new flexibility rescales tau = u/L with u carried; where that lifts tau above the bound mu p of the
   // step's contact (L smaller), the node slips back onto the bound at once, and the step starts within it
   // (stress finding "rescale": the path means of the step exceeded mu F). The energy the springs lose
   // counts with the rescale's.
-  if (state.L_m_per_Pa > 0 && state.L_m_per_Pa != L) {
+  if (rescale) {
     const double before = state.L_m_per_Pa * dx / 2 * node_energy_sum(state) * g.dy_m;
     const double scale = state.L_m_per_Pa / L;
     for (StripNode& n : state.nodes) {
@@ -557,7 +796,7 @@ StepResult satran_step(const ContactPatch& patch, const TangentialProblem& probl
   const bool load_held = !(patch.normal_load_N < state.normal_load_N);
   state.normal_load_N = patch.normal_load_N;
   // nodes outside the current contact carry no traction
-  for (int j = 0; j < g.ny; ++j) {
+  for (int j = 0; j < g.ny && !same_patch; ++j) {
     const double a = patch.half_length_m(j);
     for (int i = 0; i <= g.nx; ++i) {
       StripNode& n = state.node(i, j);
@@ -572,36 +811,92 @@ StepResult satran_step(const ContactPatch& patch, const TangentialProblem& probl
       n = StripNode{};
     }
   }
+  w.seen = true;
+  w.serial = ws.patch_serial;
 
   const bool exact_shift = scheme == TransientScheme::Shift && cfl == 1.0;
   TangentialProblem rates_problem = problem;  // creepages per rolled distance for the shift kernel
   if (exact_shift) rates_problem.creepages = {k.slip_x_m / k.dq_m, k.slip_y_m / k.dq_m, k.spin_rad / k.dq_m};
-  std::vector<StripNode> old(exact_shift ? 0 : g.nx + 1);
-  std::optional<ShiftScratch> scratch;
-  if (exact_shift) scratch.emplace(g, strip_rates(patch, rates_problem, 0));
+  // the strips on `threads` threads where the grid is large enough, each with its scratch
+  const int threads = g.nx * g.ny >= kSatranParallelCells ? std::max(1, ws.threads) : 1;
+  if (exact_shift) {
+    const StripRates r0 = strip_rates(patch, rates_problem, 0);
+    if (w.scratch.empty() || !w.scratch[0].built_for(g, r0)) w.scratch.clear();
+    while (static_cast<int>(w.scratch.size()) < threads) w.scratch.emplace_back(g, r0);
+  } else {
+    w.old.resize(std::max<size_t>(w.old.size(), threads));
+    for (std::vector<StripNode>& o : w.old) o.resize(g.nx + 1);
+  }
   // the shift step compiled with or without spin (phi/L3 is the same on every strip), and without the
   // lateral work where tau_y = 0 stays 0: no lateral creepage or spin from a state without tau_y
   const bool spin = exact_shift && has_spin(strip_rates(patch, rates_problem, 0));
   const bool lateral_free = state.lateral_free && k.slip_y_m == 0 && k.spin_rad == 0;
-  auto shift = [&](int j) {
-    const StripRates rj = strip_rates(patch, rates_problem, j);
+  if (exact_shift) w.edges.resize(kKeptIntervals * static_cast<size_t>(g.ny));
+  auto shift_kinds = [&](int j, const StripRates& rj, ShiftScratch& scratch, bool* same) {
     StepResult* out = fields ? &r : nullptr;
+    EdgeInterval* edge = &w.edges[kKeptIntervals * static_cast<size_t>(j)];
     if (spin) {
-      return fields ? shift_strip<true, true, true>(patch, rj, j, L, k, *scratch, state, out)
-                    : shift_strip<false, true, true>(patch, rj, j, L, k, *scratch, state, out);
+      return fields ? shift_strip<true, true, true>(patch, rj, j, L, k, scratch, state, out, edge, same)
+                    : shift_strip<false, true, true>(patch, rj, j, L, k, scratch, state, out, edge, same);
     }
     if (lateral_free && skips.lateral) {
-      return fields ? shift_strip<true, false, false>(patch, rj, j, L, k, *scratch, state, out)
-                    : shift_strip<false, false, false>(patch, rj, j, L, k, *scratch, state, out);
+      return fields ? shift_strip<true, false, false>(patch, rj, j, L, k, scratch, state, out, edge, same)
+                    : shift_strip<false, false, false>(patch, rj, j, L, k, scratch, state, out, edge, same);
     }
-    return fields ? shift_strip<true, false, true>(patch, rj, j, L, k, *scratch, state, out)
-                  : shift_strip<false, false, true>(patch, rj, j, L, k, *scratch, state, out);
+    return fields ? shift_strip<true, false, true>(patch, rj, j, L, k, scratch, state, out, edge, same)
+                  : shift_strip<false, false, true>(patch, rj, j, L, k, scratch, state, out, edge, same);
+  };
+  const bool steady_skip = skips.steady_strips && !fields;
+  w.steady.resize(g.ny);
+  if (!exact_shift)  // an explicit step changes the nodes without asking
+    for (SteadyStrip& st : w.steady) st.unchanged = false;
+  const int variant = spin ? 2 : lateral_free && skips.lateral ? 0 : 1;
+  auto shift = [&](int j, ShiftScratch& scratch) {
+    const StripRates rj = strip_rates(patch, rates_problem, j);
+    SteadyStrip& st = w.steady[j];
+    if (steady_skip && st.holds(ws.patch_serial, variant, rj, L, k.dq_m)) return st.e;  // nodes as they are
+    bool unchanged = false;
+    bool* same = steady_skip ? &unchanged : nullptr;
+    const StripEnergy e = shift_kinds(j, rj, scratch, same);
+    st.unchanged = unchanged;
+    st.serial = ws.patch_serial;
+    st.variant = variant;
+    st.r = rj;
+    st.L = L;
+    st.dq = k.dq_m;
+    st.e = e;
+    return e;
   };
   state.lateral_free = lateral_free;  // after this step (every scheme keeps tau_y = 0 then)
-  // without spin, on a mirror-symmetric patch and state, strips from `strips` up are mirror images
-  const int strips = skips.mirrored && k.spin_rad == 0 && state.mirror_images ? first_mirrored_strip(patch, 0.0) : g.ny;
   state.mirror_images = strips < g.ny;  // after this step
-  std::vector<StripEnergy> energies(g.ny);
+  std::vector<StripEnergy>& energies = w.energies;
+  energies.assign(g.ny, StripEnergy{});
+  // the strips below `strips`, each on its own (on any thread: each writes its own nodes, fields and totals)
+  auto step_strip = [&](int j, int thread) {
+    if (!(patch.half_length_m(j) > 0)) return;
+    energies[j] = exact_shift ? shift(j, w.scratch[thread])
+                              : explicit_strip(patch, problem, j, k, scheme == TransientScheme::LaxFriedrichs, state,
+                                               w.old[thread], fields ? &r : nullptr);
+  };
+  if (threads > 1) {
+    if (!w.pool) w.pool = std::make_unique<StripPool>(threads - 1);
+    constexpr int kChunk = 2;  // strips per claim
+    std::mutex failure_mutex;
+    std::exception_ptr failure;
+    w.pool->run((strips + kChunk - 1) / kChunk, [&](int chunk, int worker) {
+      try {
+        for (int j = chunk * kChunk; j < std::min(strips, (chunk + 1) * kChunk); ++j) step_strip(j, worker);
+      } catch (...) {
+        std::lock_guard<std::mutex> lock(failure_mutex);
+        if (!failure) failure = std::current_exception();
+      }
+    });
+    if (failure) std::rethrow_exception(failure);
+  } else {
+    for (int j = 0; j < strips; ++j) step_strip(j, 0);
+  }
+  // the mirror images and the sums, strip by strip in a fixed order (the same numbers for any thread count)
+  const bool defer = ws.defer_mirror && strips < g.ny;
   double E_start = 0, E_end = 0;  // sums of |tau|^2 over interior nodes
   bool hold = true;               // every strip's invariants (strip_totals_hold)
   for (int j = 0; j < g.ny; ++j) {
@@ -609,19 +904,16 @@ StepResult satran_step(const ContactPatch& patch, const TangentialProblem& probl
     StripEnergy& e = energies[j];
     if (j >= strips) {  // tau(x, -y) = tau(x, y); Mz = integral(x tau_y) - y Fx
       const int m = g.ny - 1 - j;
+      w.steady[j].unchanged = false;  // not stepped: its nodes are m's
       e = energies[m];
       e.Mz += (g.y_m(m) - g.y_m(j)) * e.Fx;
-      mirror_strip(state, m, j);
+      if (!defer) mirror_strip(state, m, j);
       if (fields) {
         r.tau_x_Pa.col(j) = r.tau_x_Pa.col(m);
         r.tau_y_Pa.col(j) = r.tau_y_Pa.col(m);
         r.slip_x_m_per_s.col(j) = r.slip_x_m_per_s.col(m);
         r.slip_y_m_per_s.col(j) = r.slip_y_m_per_s.col(m);
       }
-    } else {
-      e = exact_shift ? shift(j)
-                      : explicit_strip(patch, problem, j, k, scheme == TransientScheme::LaxFriedrichs, state, old,
-                                       fields ? &r : nullptr);
     }
     // finite, and within mu times the strip's load unless the load fell in this step (a falling load
     // leaves nodes above the new bound, which the step's path means carry before they slip back onto it).
@@ -635,6 +927,7 @@ StepResult satran_step(const ContactPatch& patch, const TangentialProblem& probl
     E_start += e.E_start;
     E_end += e.E_end;
   }
+  state.mirror_deferred = defer;
   const PatchTotals totals =
       checked_patch_totals(patch, problem.mu, energies, hold, load_held, [](int) { return 0.0; });
   r.Fx_N = totals.Fx_N;
@@ -721,6 +1014,7 @@ class PatchCache {
       patch_ = contact_at(c_, g_, F);
       F_ = F;
       valid_ = true;
+      ++serial_;
       if (F > 0 && !(patch_.half_length_m > 0).any() && !warned_) {
         spdlog::warn("satran: at {:.4g} N the contact (b = {:.4g} m) misses every strip centre of the run's grid "
                      "(dy = {:.4g} m, sized for the largest load): no traction while the load is that small",
@@ -730,6 +1024,8 @@ class PatchCache {
     }
     return patch_;
   }
+  // counts the patches at() has built (SatranWorkspace::patch_serial)
+  unsigned long serial() const { return serial_; }
 
  private:
   const TransientCase& c_;
@@ -738,6 +1034,7 @@ class PatchCache {
   double F_ = 0;
   bool valid_ = false;
   bool warned_ = false;  // of a load too small for the grid, once per run
+  unsigned long serial_ = 0;
 };
 
 
@@ -817,8 +1114,8 @@ struct InertiaStep {
   bool shortened = false;
 };
 
-InertiaStep inertia_step(const TransientCase& c, PatchCache& patches, const TransientState& state, double omega1,
-                         double t, double dx, bool fields) {
+InertiaStep inertia_step(const TransientCase& c, PatchCache& patches, SatranWorkspace& ws,
+                         const TransientState& state, double omega1, double t, double dx, bool fields) {
   const RollerInertia& in = *c.inertia;
   const TransientSettings& set = c.settings;
   const double longest = set.dt_s, left = set.t_end_s - t;
@@ -829,6 +1126,10 @@ InertiaStep inertia_step(const TransientCase& c, PatchCache& patches, const Tran
   InertiaStep s;
   s.F = value_at(c.inputs.normal_load_N, t + dt_guess / 2);
   const ContactPatch& patch = patches.at(s.F);
+  // every trial below steps a copy of `state`: the workspace may take its nodes outside the contact as clear
+  // only if `state` itself was stepped on this patch
+  const bool state_on_patch = ws.impl->seen && ws.impl->serial == patches.serial();
+  ws.patch_serial = patches.serial();
   // the step from the mean spin; returns the residual of the spin balance
   auto evaluate = [&](double omega_end, InertiaStep& out) {
     const double omega_mid = (omega1 + omega_end) / 2;
@@ -844,7 +1145,8 @@ InertiaStep inertia_step(const TransientCase& c, PatchCache& patches, const Tran
     const Creepages ratio{1.0, 0.0, 0.0};
     const TangentialProblem pb = make_tangential_problem(patch, c.materials, ratio, c.mu, Vm);
     out.state = state;
-    out.r = satran_step(patch, pb, kk, TransientScheme::Shift, out.state, fields, set.skips);
+    if (!state_on_patch) ws.impl->seen = false;
+    out.r = satran_step(patch, pb, kk, TransientScheme::Shift, out.state, fields, set.skips, ws);
     return in.J1_kg_m2 * (omega_end - omega1) - (-in.R1_m * out.r.Fx_N - in.T_res_N_m) * kk.dt_s;
   };
   // the bracket: the creep force is bounded by mu F
@@ -905,6 +1207,7 @@ struct RunState {
   std::vector<double> snaps;  // the snapshot times, sorted
   size_t next_snap = 0;
   bool has_whole_step = false;  // res.end holds a whole step's record
+  Eigen::ArrayXd strip_power;   // the observer's strip powers of the step
 };
 
 // the fields only on a step that reaches the next snapshot time
@@ -924,8 +1227,14 @@ void record_step(RunState& run, TransientResult& res, const TransientRecord& rec
     res.end = rec;
     run.has_whole_step = !rec.shortened;
   }
-  if (observe)
-    observe(rec, k.dt_s > 0 ? Eigen::ArrayXd(r.strip_energy_J_per_m / k.dt_s) : Eigen::ArrayXd::Zero(res.grid.ny));
+  if (observe) {
+    if (k.dt_s > 0) {
+      run.strip_power = r.strip_energy_J_per_m / k.dt_s;  // no allocation after the first step
+    } else {
+      run.strip_power.setZero(res.grid.ny);
+    }
+    observe(rec, run.strip_power);
+  }
   while (run.next_snap < run.snaps.size() && run.snaps[run.next_snap] <= run.t * (1 + 1e-12)) {
     Snapshot s;
     s.t_s = run.t;
@@ -998,6 +1307,9 @@ TransientResult run_transient(const TransientCase& c, const StepObserver& observ
   const int substeps = fixed_step_substeps(c, dx);
   const bool shift_run = set.scheme == TransientScheme::Shift || c.inertia;
 
+  SatranWorkspace ws;
+  ws.threads = set.threads > 0 ? set.threads : satran_threads();
+  ws.defer_mirror = true;  // the mirror images are filled before the state is handed out
   RunState run;
   run.tractions = rest_state(g);
   run.snaps = set.snapshot_times_s;
@@ -1011,14 +1323,15 @@ TransientResult run_transient(const TransientCase& c, const StepObserver& observ
     if (!c.inertia) {
       const PrescribedStep s = prescribed_step(c, run.t, dx, substeps);
       const ContactPatch& patch = patches.at(s.F);
+      ws.patch_serial = patches.serial();
       const TangentialProblem pb = make_tangential_problem(patch, c.materials, s.cr, c.mu, s.V);
-      r = satran_step(patch, pb, s.k, set.scheme, run.tractions, reaches_snapshot(run, s.k.dt_s), set.skips);
+      r = satran_step(patch, pb, s.k, set.scheme, run.tractions, reaches_snapshot(run, s.k.dt_s), set.skips, ws);
       k = s.k;
       F = s.F;
       rec = record_of(c, ++run.step, run.t, run.q, dx, k, r, s.V, s.F, s.cr, run.omega1);
       rec.shortened = s.shortened;
     } else {
-      InertiaStep s = inertia_step(c, patches, run.tractions, run.omega1, run.t, dx,
+      InertiaStep s = inertia_step(c, patches, ws, run.tractions, run.omega1, run.t, dx,
                                    reaches_snapshot(run, set.dt_s));
       run.tractions = std::move(s.state);
       run.omega1 = s.omega_end;
@@ -1037,6 +1350,7 @@ TransientResult run_transient(const TransientCase& c, const StepObserver& observ
   res.steps = run.step;
   res.t_end_s = run.t;
   res.q_end_m = run.q;
+  fill_mirrored_strips(run.tractions);
   res.final_state = std::move(run.tractions);
   spdlog::debug("satran ({}): {} steps to t {:.6e} s, q {:.6e} m, dissipated {:.6e} J, {} upwind fallback steps",
                 to_string(set.scheme), run.step, run.t, run.q, res.dissipated_J, res.fallback_steps);

@@ -30,6 +30,7 @@
 #pragma once
 
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -78,6 +79,10 @@ struct TransientState {
   // every node's tau_y is 0: true at rest and after a step without lateral creepage or spin from such a
   // state (TransientSkips::lateral); whoever writes the nodes otherwise clears it
   bool lateral_free = false;
+  // the strips from ny - ny/2 up are stale: they are the mirror images of the strips below them, which a run
+  // (SatranWorkspace::defer_mirror) copies only when it reads them, not at every step; fill_mirrored_strips
+  // copies them. false for every state a public function hands out.
+  bool mirror_deferred = false;
 
   StripNode& node(int i, int j) { return nodes[i + j * (nx + 1)]; }
   const StripNode& node(int i, int j) const { return nodes[i + j * (nx + 1)]; }
@@ -85,6 +90,8 @@ struct TransientState {
 
 // the unloaded state (u = 0) on a grid
 TransientState rest_state(const Grid& grid);
+// copies the deferred mirror images into their strips (TransientState::mirror_deferred); nothing otherwise
+void fill_mirrored_strips(TransientState& state);
 
 struct StepResult {
   // exact shift steps: averages over the step (path integrals of the material crossing each
@@ -114,9 +121,13 @@ struct StepResult {
 //     mirror images (the same to rounding);
 //   lateral: without lateral creepage or spin, from a state without tau_y (TransientState::lateral_free),
 //     the shift step's stick pass does not compute tau_y, which stays 0 (the same to the bit).
+//   steady_strips: a strip whose last shift step left every node as it was (to the bit), stepped again with
+//     the same rates, patch, flexibility and rolled distance (to the bit), is left as it is with the last
+//     step's totals (the same to the bit); not where the fields are written.
 struct TransientSkips {
   bool mirrored = true;
   bool lateral = true;
+  bool steady_strips = true;
 };
 
 // One step on the contact `patch` with the flexibilities (L1, L2, L3, L) and friction of `problem`;
@@ -127,6 +138,46 @@ struct TransientSkips {
 StepResult satran_step(const ContactPatch& patch, const TangentialProblem& problem, const StepKinematics& k,
                        TransientScheme scheme, TransientState& state, bool fields = false,
                        TransientSkips skips = {});
+
+// What a run keeps from one step to the next, so that a step does not redo it (the numbers are the same to
+// the bit): the shift step's scratch (rebuilt when the grid or the lateral rates change), the patch's mirror
+// symmetry and which nodes lie outside its contact (asked again when patch_serial changes), the strips'
+// totals. One per run, used by one caller at a time.
+struct SatranWorkspace {
+  SatranWorkspace();
+  ~SatranWorkspace();
+  SatranWorkspace(SatranWorkspace&&) noexcept;
+  SatranWorkspace& operator=(SatranWorkspace&&) noexcept;
+
+  // the caller's count of contact patches: bumped whenever the patch passed to satran_step is not the one of
+  // the previous step (another object, or the same one changed). Steps on the same serial take its symmetry,
+  // and that every node outside its contact holds no traction (true of every state from rest_state or from a
+  // step on that patch), from the first step on it.
+  unsigned long patch_serial = 0;
+  // the threads the step may share its strips among (1: the calling thread alone); used where the grid has
+  // at least kSatranParallelCells cells, where a second core pays for waking it
+  int threads = 1;
+  // mirrored strips left stale in the state until read (TransientState::mirror_deferred): the owner calls
+  // fill_mirrored_strips before it hands the state out
+  bool defer_mirror = false;
+
+  struct Impl;
+  std::unique_ptr<Impl> impl;
+};
+
+// a grid of fewer cells steps its strips on one thread (measured: docs/benchmarks.md)
+constexpr int kSatranParallelCells = 160 * 160;
+
+// The threads one run of Satran shares its strips among, for the runs started on the calling thread
+// (run_transient with TransientSettings::threads = 0): by default every core. A program that runs
+// one case per thread (a sweep) sets 1 on each of its threads, so that its cases do not compete for cores.
+void set_satran_threads(int threads);
+int satran_threads();
+
+// satran_step with what the run keeps in `ws` (the numbers of the step above, to the bit)
+StepResult satran_step(const ContactPatch& patch, const TangentialProblem& problem, const StepKinematics& k,
+                       TransientScheme scheme, TransientState& state, bool fields, TransientSkips skips,
+                       SatranWorkspace& ws);
 
 // ---- runs over a time history ----
 
@@ -169,6 +220,9 @@ struct TransientSettings {
   bool skip_steady = false;
   // the skips of satran_step: on by default, exact to rounding; off for their tests and benchmarks
   TransientSkips skips;
+  // threads for the strips of a large grid (SatranWorkspace::threads): 0 = satran_threads() of the calling
+  // thread; the results are the same to the bit for any count
+  int threads = 0;
 };
 
 struct TransientCase {

@@ -45,11 +45,16 @@ TransientCase paper_startup(int n, bool all_creepages) {
 }
 
 // args: n, all creepages, the skips as bits (TransientSkips): 1 the mirror images (pure xi on the paper's
-// symmetric patch steps half the strips), 2 the lateral work (pure xi: no tau_y in the stick pass)
+// symmetric patch steps half the strips), 2 the lateral work (pure xi: no tau_y in the stick pass), 4 the
+// steady strips (a strip the last step left as it was is not stepped again on the same inputs); the
+// threads (TransientSettings::threads, 1 unless given). ns_per_cell_step: the time over steps x nx x ny.
 void BM_SatranShift(benchmark::State& st) {
-  TransientCase c = paper_startup(static_cast<int>(st.range(0)), st.range(1) != 0);
+  const int n = static_cast<int>(st.range(0));
+  TransientCase c = paper_startup(n, st.range(1) != 0);
   c.settings.skips.mirrored = (st.range(2) & 1) != 0;
   c.settings.skips.lateral = (st.range(2) & 2) != 0;
+  c.settings.skips.steady_strips = (st.range(2) & 4) != 0;
+  c.settings.threads = st.range(3) > 0 ? static_cast<int>(st.range(3)) : 1;
   double sink = 0;
   int steps = 0;
   for (auto _ : st) {
@@ -59,23 +64,52 @@ void BM_SatranShift(benchmark::State& st) {
   }
   benchmark::DoNotOptimize(sink);
   st.counters["steps"] = steps;
+  st.counters["ns_per_cell_step"] =
+      benchmark::Counter(1e-9 * steps * n * n, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
 }
 BENCHMARK(BM_SatranShift)
-    ->Args({80, 0, 3})
-    ->Args({80, 0, 1})
-    ->Args({80, 0, 2})
-    ->Args({80, 0, 0})
-    ->Args({80, 1, 3})
-    ->Args({20, 1, 3})
+    ->Args({80, 0, 7, 1})
+    ->Args({80, 0, 3, 1})
+    ->Args({80, 0, 1, 1})
+    ->Args({80, 0, 2, 1})
+    ->Args({80, 0, 4, 1})
+    ->Args({80, 0, 0, 1})
+    ->Args({80, 1, 7, 1})
+    ->Args({80, 1, 3, 1})
+    ->Args({80, 1, 0, 1})
+    ->Args({20, 1, 7, 1})
+    ->Unit(benchmark::kMillisecond);
+// the cost per cell-step from start-stop-wear's grid (40 x 40) to 320 x 320, pure xi with the mirror and
+// lateral skips (the steady strips' skip off: every step computed) and with every skip off, on one thread
+BENCHMARK(BM_SatranShift)
+    ->Args({40, 0, 3, 1})
+    ->Args({320, 0, 3, 1})
+    ->Args({40, 0, 0, 1})
+    ->Args({320, 0, 0, 1})
+    ->Name("BM_SatranShiftPerCell")
+    ->Unit(benchmark::kMillisecond);
+// the strips of a large grid on one and two threads: wall time (UseRealTime), the steady strips' skip off
+BENCHMARK(BM_SatranShift)
+    ->Args({320, 1, 3, 1})
+    ->Args({320, 1, 3, 2})
+    ->Args({320, 0, 3, 1})
+    ->Args({320, 0, 3, 2})
+    ->Args({160, 1, 3, 1})
+    ->Args({160, 1, 3, 2})
+    ->Name("BM_SatranShiftThreads")
+    ->UseRealTime()
     ->Unit(benchmark::kMillisecond);
 
 // xi, eta, phi with the speed varying: a ramp from kSpeed/2 to kSpeed over the run, which rolls the
-// same 200 dx (docs/physics.md §3), every skip as shipped
+// same 200 dx (docs/physics.md §3), every skip as shipped, and without the steady strips' skip (every
+// strip stepped at every step)
 void BM_SatranShiftVaryingSpeed(benchmark::State& st) {
   TransientCase c = paper_startup(80, true);
   const double T = c.settings.t_end_s * kSpeed / (0.75 * kSpeed);  // mean speed 0.75 kSpeed
   c.inputs.speed_m_per_s = ramp_history(0.0, 0.5 * kSpeed, T, kSpeed);
   c.settings.t_end_s = T;
+  c.settings.skips.steady_strips = st.range(0) != 0;
+  c.settings.threads = 1;
   double sink = 0;
   int steps = 0;
   for (auto _ : st) {
@@ -86,7 +120,7 @@ void BM_SatranShiftVaryingSpeed(benchmark::State& st) {
   benchmark::DoNotOptimize(sink);
   st.counters["steps"] = steps;
 }
-BENCHMARK(BM_SatranShiftVaryingSpeed)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_SatranShiftVaryingSpeed)->ArgName("steady_strips")->Arg(1)->Arg(0)->Unit(benchmark::kMillisecond);
 
 // the older baseline: plain classic upwind at CFL 1, node by node
 void BM_BaselineClassicUpwindLoop(benchmark::State& st) {
