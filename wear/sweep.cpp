@@ -30,6 +30,7 @@
 #include "lib/io/number.h"
 #include "lib/io/yaml_reader.h"
 #include "lib/normal/profile.h"
+#include "lib/tangential/satran.h"
 #include "wear/wear_case.h"
 #include "wear/wear_loop.h"
 #include "wear/wear_output.h"
@@ -675,6 +676,9 @@ SweepRunSummary run_sweep(const Sweep& s, const SweepRunOptions& o) {
   std::size_t running = 0;
   std::exception_ptr error;  // a failure outside a case's own (the disk): the first one ends the sweep, exit 1
   const auto work = [&] {
+    // one thread per case while the sweep runs several at once; a case alone on a free core shares
+    // Satran's strips among the cores (lib/tangential/satran.h)
+    contact::set_satran_threads(pending.size() < static_cast<std::size_t>(o.threads) ? 0 : 1);
     try {
       for (std::size_t k = next++; k < pending.size(); k = next++) {
         const auto& [i, text] = pending[k];
