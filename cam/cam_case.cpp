@@ -153,6 +153,7 @@ CamCase read_cam_case(const std::string& path) {
       if (!(std::abs(m.geometry.offset_m) < m.geometry.base_radius_m + m.geometry.roller_radius_m))
         s.fail("offset_m", "|offset_m| must be < base_radius_m + roller.radius_m");
       s.section("lift", [&](YamlMap& l) { read_lift(l, c, table_tolerance); });
+      s.optional_section("wear", [&](YamlMap& w) { read_cam_wear(w, c.wear.emplace()); });
     });
   });
   return c;

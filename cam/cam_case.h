@@ -24,9 +24,11 @@
 //   output: { directory: out/cam-follower }
 #pragma once
 
+#include <optional>
 #include <string>
 
 #include "cam/cam_error.h"
+#include "cam/cam_wear.h"
 #include "cam/revolution.h"
 #include "lib/io/errors.h"
 #include "lib/io/key_locations.h"
@@ -38,6 +40,7 @@ struct CamCase {
   std::string name;             // name: or the file's stem
   std::string output_directory; // output.directory, or "" (out/<name>)
   CamModel model;
+  std::optional<CamWearSpec> wear;  // cam.wear: the wear and life inputs (cam/cam_wear.h), if given
   contact::KeyLocations locations;
 };
 
