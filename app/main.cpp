@@ -806,7 +806,8 @@ int run_cam_command(const CamOptions& opt) {
     throw cam::case_error_of(c, e);
   }
   const double rpm_per_rad_s = 60 / (2 * kPi);
-  fmt::print("cam {}: {:.6g} rpm\n", c.name, c.model.omega_rad_per_s * rpm_per_rad_s);
+  fmt::print("cam {}: {:.6g} rad/s ({:.6g} rpm)\n", c.name, c.model.omega_rad_per_s,
+             c.model.omega_rad_per_s * rpm_per_rad_s);
   if (std::isinf(r.jump.omega_rad_per_s))
     fmt::print("jump speed: none (the lift's acceleration is never negative)\n");
   else

@@ -17,6 +17,24 @@ using contact::YamlValue;
 namespace {
 
 std::string positive_or_inf(double v) { return v > 0 ? "" : "must be > 0 (.inf for flat)"; }
+
+// The keys are SI (docs/cam-follower.md §6): a key of the former spelling (speed_rpm, *_deg) is refused
+// with its SI key and the value converted, so that an old case is mended by copying one line.
+void refuse_old_key(YamlMap& s, const std::string& old_key, const std::string& si_key, double factor) {
+  double v = 0;
+  bool present = false;
+  s.optional_value(old_key, [&](const YamlValue& y) {
+    v = y.as<double>(contact::finite);
+    present = true;
+  });
+  if (present)
+    s.fail(old_key, fmt::format("the cam's keys are in SI units: write {}: {:.17g}", si_key, v * factor));
+}
+
+constexpr double kRadPerDeg = 1 / kDegPerRad;
+constexpr double kRadPerSPerRpm = 2 * contact::kPi / 60;
+// a table row's angle is only checked (the nodes are 2 pi i/n): to 1e-6 rad, a value written to 7 digits
+constexpr double kTableAngleTol = 1e-6;
 std::string poisson(double v) { return v >= 0 && v < 0.5 ? "" : "must be in [0, 0.5)"; }
 
 void read_lift(YamlMap& s, CamCase& c, double table_tolerance) {
@@ -24,20 +42,20 @@ void read_lift(YamlMap& s, CamCase& c, double table_tolerance) {
         std::vector<double> lift;
         std::vector<double> angle;
         int row = 0;
-        for (const YamlValue& r : v.elements("a list of [angle_deg, lift_m] rows")) {
+        for (const YamlValue& r : v.elements("a list of [angle_rad, lift_m] rows")) {
           ++row;
-          const std::vector<YamlValue> pair = r.elements("a row [angle_deg, lift_m]");
-          if (pair.size() != 2) r.fail(fmt::format("row {}: expected [angle_deg, lift_m]", row));
-          angle.push_back(pair[0].as<double>(contact::finite, fmt::format("row {}: angle_deg", row)));
+          const std::vector<YamlValue> pair = r.elements("a row [angle_rad, lift_m]");
+          if (pair.size() != 2) r.fail(fmt::format("row {}: expected [angle_rad, lift_m]", row));
+          angle.push_back(pair[0].as<double>(contact::finite, fmt::format("row {}: angle_rad", row)));
           lift.push_back(pair[1].as<double>(contact::finite, fmt::format("row {}: lift_m", row)));
         }
         const std::size_t n = lift.size();
         if (n < 8) v.fail(fmt::format("a lift table needs at least 8 rows, got {}", n));
         for (std::size_t i = 0; i < n; ++i) {
-          const double want = 360.0 * static_cast<double>(i) / static_cast<double>(n);
-          if (std::abs(angle[i] - want) > 1e-9 * 360)
-            v.fail(fmt::format("row {}: angle_deg must be {:.10g} (equal steps of 360/{} from 0, 360 excluded), got "
-                               "{:.10g}", i + 1, want, n, angle[i]));
+          const double want = 2 * contact::kPi * static_cast<double>(i) / static_cast<double>(n);
+          if (std::abs(angle[i] - want) > kTableAngleTol)
+            v.fail(fmt::format("row {}: angle_rad must be {:.10g} (equal steps of 2 pi/{} from 0, 2 pi excluded; "
+                               "to {:g} rad), got {:.10g}", i + 1, want, n, kTableAngleTol, angle[i]));
         }
         try {
           c.model.law = make_table_law(lift, table_tolerance);
@@ -59,18 +77,17 @@ void read_lift(YamlMap& s, CamCase& c, double table_tolerance) {
   s.required("rise_law", rise_law, law_name);
   s.required("return_law", return_law, law_name);
   s.required("lift_m", d.lift_m, contact::positive_finite);
-  double rise_deg = 0, dwell_deg = 0, return_deg = 0;
-  s.required("rise_deg", rise_deg, contact::positive_finite);
-  s.optional("dwell_high_deg", dwell_deg, contact::nonnegative_finite);
-  s.required("return_deg", return_deg, contact::positive_finite);
-  if (rise_deg + dwell_deg + return_deg > 360)
-    s.fail("return_deg", fmt::format("rise_deg + dwell_high_deg + return_deg = {:.6g} must be <= 360",
-                                     rise_deg + dwell_deg + return_deg));
+  for (const char* k : {"rise", "dwell_high", "return"})
+    refuse_old_key(s, std::string(k) + "_deg", std::string(k) + "_rad", kRadPerDeg);
+  s.required("rise_rad", d.rise_rad, contact::positive_finite);
+  s.optional("dwell_high_rad", d.dwell_high_rad, contact::nonnegative_finite);
+  s.required("return_rad", d.return_rad, contact::positive_finite);
+  // 2 pi within rounding: angles written to 17 digits may sum a few ulps above it
+  if (d.rise_rad + d.dwell_high_rad + d.return_rad > 2 * contact::kPi * (1 + 1e-12))
+    s.fail("return_rad", fmt::format("rise_rad + dwell_high_rad + return_rad = {:.10g} must be <= 2 pi",
+                                     d.rise_rad + d.dwell_high_rad + d.return_rad));
   d.rise_law = parse_segment_law(rise_law);
   d.return_law = parse_segment_law(return_law);
-  d.rise_rad = rise_deg / kDegPerRad;
-  d.dwell_high_rad = dwell_deg / kDegPerRad;
-  d.return_rad = return_deg / kDegPerRad;
   try {
     c.model.law = make_dwell_rise_dwell_return(d);
   } catch (const CamError& e) {
@@ -106,17 +123,18 @@ CamCase read_cam_case(const std::string& path) {
     top.optional("name", c.name, [](const std::string& v) { return v.empty() ? "must not be empty" : ""; });
     top.optional_section("output", [&](YamlMap& s) { s.optional("directory", c.output_directory); });
     top.section("cam", [&](YamlMap& s) {
-      double rpm = 0, phi_max_deg = 30, table_tolerance = 0.02;
-      s.required("speed_rpm", rpm, contact::positive_finite);
-      m.omega_rad_per_s = rpm * 2 * contact::kPi / 60;
+      double table_tolerance = 0.02;
+      refuse_old_key(s, "speed_rpm", "speed_rad_per_s", kRadPerSPerRpm);
+      refuse_old_key(s, "max_pressure_angle_deg", "max_pressure_angle_rad", kRadPerDeg);
+      s.required("speed_rad_per_s", m.omega_rad_per_s, contact::positive_finite);
       s.required("base_radius_m", m.geometry.base_radius_m, contact::positive_finite);
       s.optional("offset_m", m.geometry.offset_m, contact::finite);
       s.required("mu", m.mu, contact::in_closed(0, 2));
       s.required("min_radius_m", m.min_radius_m, contact::nonnegative_finite);
-      s.optional("max_pressure_angle_deg", phi_max_deg, [](double v) {
-        return v > 0 && v < 90 ? "" : "must be in (0, 90)";
+      m.max_pressure_angle_rad = 30 * kRadPerDeg;
+      s.optional("max_pressure_angle_rad", m.max_pressure_angle_rad, [](double v) {
+        return v > 0 && v < contact::kPi / 2 ? "" : "must be in (0, pi/2)";
       });
-      m.max_pressure_angle_rad = phi_max_deg / kDegPerRad;
       s.optional("table_tolerance", table_tolerance, contact::positive_finite);
       s.optional("angle_steps", m.angle_steps, [](int v) { return v >= 8 && v <= 1000000 ? "" : "must be in [8, 1000000]"; });
       s.section("roller", [&](YamlMap& r) {

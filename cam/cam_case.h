@@ -1,26 +1,28 @@
 // A cam case file (docs/cam-follower.md §6, cases/cam-follower.yaml): the document's keys `name`, `cam`
 // and `output`, read with the project's case reader (lib/io/yaml_reader.h): every key marked, a key left
-// over is an error naming file:line:col and its key path, a bad value likewise. Angles are given in degrees
-// (keys ending _deg), everything else in SI units. A design the model refuses (CamError: an acceleration
+// over is an error naming file:line:col and its key path, a bad value likewise. Every key is in SI units,
+// angles in radians (keys ending _rad, the speed speed_rad_per_s); a key of the former spelling (speed_rpm,
+// *_deg) is refused with its SI key and the converted value. A design the model refuses (CamError: an acceleration
 // jump, a table fit, an undercut, a pressure angle) becomes a CaseError at its governing key's line.
 //
 //   name: cam-follower
 //   cam:
-//     speed_rpm: 300                       # constant, > 0 (counter-clockwise)
+//     speed_rad_per_s: 31.4159             # constant, > 0 (counter-clockwise); 300 rpm
 //     base_radius_m: 0.040
 //     offset_m: 0                          # follower axis at x = offset (optional)
 //     mu: 0.1                              # roller-cam friction
 //     min_radius_m: 0.003                  # convex pitch curve: rho_pitch - R_roller >= this
-//     max_pressure_angle_deg: 30
+//     max_pressure_angle_rad: 0.5236       # 30 deg (the default)
 //     table_tolerance: 0.02                # lift table only: relative acceleration misfit
 //     angle_steps: 720
 //     roller: { radius_m: 0.013, width_m: 0.010, crown_radius_m: 0.5, E_Pa: 2.1e11, nu: 0.3,
 //               inertia_kg_m2: 5.0e-6, bearing_torque_N_m: 0.002, bearing_drag_N_m_s: 1.0e-5 }
 //     track:  { width_m: 0.012, crown_radius_m: .inf, E_Pa: 2.1e11, nu: 0.3 }
 //     follower: { spring_rate_N_per_m: 2.0e4, preload_N: 150, moving_mass_kg: 0.4, guide_mu: 0.05 }
-//     lift: { rise_law: cycloidal, lift_m: 0.010, rise_deg: 100, dwell_high_deg: 40,
-//             return_law: polynomial-345, return_deg: 100 }
-//     # or lift: { table: [[0, 0.0], [1, 1.2e-6], ...] }   # [angle_deg, lift_m], equal steps from 0, < 360
+//     lift: { rise_law: cycloidal, lift_m: 0.010, rise_rad: 1.7453, dwell_high_rad: 0.6981,
+//             return_law: polynomial-345, return_rad: 1.7453 }
+//     # or lift: { table: [[0, 0.0], [0.0174533, 1.2e-6], ...] }  # [angle_rad, lift_m], steps of 2 pi/n from 0
+//     #   (each angle checked to 1e-6 rad), < 2 pi
 //   output: { directory: out/cam-follower }
 #pragma once
 

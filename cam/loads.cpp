@@ -39,14 +39,37 @@ double solve_normal_load(double W, double phi, double s1, double mu_g, double a0
 
 }  // namespace
 
-CamLoads cam_loads(const FollowerTrain& t, const CamGeometry& g, const CamKinematics& k, double omega, double mu) {
+double bearing_torque_N_m(const FollowerTrain& t, double wr) {
+  return t.bearing_torque_N_m * sign(wr) + t.bearing_drag_N_m_s * wr;
+}
+
+namespace {
+
+CamLoads axial_and_required(const FollowerTrain& t, const CamGeometry& g, const CamKinematics& k, double omega) {
   CamLoads L;
-  const double phi = k.pressure_angle_rad, s1 = k.lift.ds_m_per_rad;
   L.axial_N = t.preload_N + t.spring_rate_N_per_m * k.lift.s_m + t.moving_mass_kg * omega * omega * k.lift.d2s_m_per_rad2;
   // the roller's need: R_r F_t = J alpha + T_b(omega_r)
-  const double wr = k.roller_omega_rad_per_s;
-  const double Tb = t.bearing_torque_N_m * sign(wr) + t.bearing_drag_N_m_s * wr;
-  L.required_tangential_N = (t.roller_inertia_kg_m2 * k.roller_alpha_rad_per_s2 + Tb) / g.roller_radius_m;
+  L.required_tangential_N =
+      (t.roller_inertia_kg_m2 * k.roller_alpha_rad_per_s2 + bearing_torque_N_m(t, k.roller_omega_rad_per_s)) /
+      g.roller_radius_m;
+  return L;
+}
+
+void guide_and_torque(const CamKinematics& k, CamLoads& L) {
+  const double phi = k.pressure_angle_rad;
+  L.contact_lost = !(L.normal_N > 0);
+  L.guide_reaction_N = L.normal_N * std::sin(phi) - L.tangential_N * std::cos(phi);
+  // torque: C x (F_n n + F_t t)
+  const double fx = L.normal_N * k.normal_x + L.tangential_N * k.tangent_x;
+  const double fy = L.normal_N * k.normal_y + L.tangential_N * k.tangent_y;
+  L.shaft_torque_N_m = k.contact_x_m * fy - k.contact_y_m * fx;
+}
+
+}  // namespace
+
+CamLoads cam_loads(const FollowerTrain& t, const CamGeometry& g, const CamKinematics& k, double omega, double mu) {
+  CamLoads L = axial_and_required(t, g, k, omega);
+  const double phi = k.pressure_angle_rad, s1 = k.lift.ds_m_per_rad;
   // rolling first; sliding if the friction cannot supply it
   L.tangential_N = L.required_tangential_N;
   L.normal_N = solve_normal_load(L.axial_N, phi, s1, t.guide_mu, L.required_tangential_N, 0);
@@ -56,12 +79,16 @@ CamLoads cam_loads(const FollowerTrain& t, const CamGeometry& g, const CamKinema
     L.normal_N = solve_normal_load(L.axial_N, phi, s1, t.guide_mu, 0, a1);
     L.tangential_N = a1 * L.normal_N;
   }
-  L.contact_lost = !(L.normal_N > 0);
-  L.guide_reaction_N = L.normal_N * std::sin(phi) - L.tangential_N * std::cos(phi);
-  // torque: C x (F_n n + F_t t)
-  const double fx = L.normal_N * k.normal_x + L.tangential_N * k.tangent_x;
-  const double fy = L.normal_N * k.normal_y + L.tangential_N * k.tangent_y;
-  L.shaft_torque_N_m = k.contact_x_m * fy - k.contact_y_m * fx;
+  guide_and_torque(k, L);
+  return L;
+}
+
+CamLoads cam_loads_with_tangential(const FollowerTrain& t, const CamGeometry& g, const CamKinematics& k, double omega,
+                                   double tangential_N) {
+  CamLoads L = axial_and_required(t, g, k, omega);
+  L.tangential_N = tangential_N;
+  L.normal_N = solve_normal_load(L.axial_N, k.pressure_angle_rad, k.lift.ds_m_per_rad, t.guide_mu, tangential_N, 0);
+  guide_and_torque(k, L);
   return L;
 }
 

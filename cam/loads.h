@@ -46,6 +46,14 @@ void check_train(const FollowerTrain& t);
 CamLoads cam_loads(const FollowerTrain& t, const CamGeometry& g, const CamKinematics& k, double omega_rad_per_s,
                    double mu);
 
+// the same balance with a given F_t on the roller (its own dynamics, cam/roller_motion.h): F_n, Q and the
+// torque; required_tangential_N as cam_loads; regime Rolling (the caller sets it)
+CamLoads cam_loads_with_tangential(const FollowerTrain& t, const CamGeometry& g, const CamKinematics& k,
+                                   double omega_rad_per_s, double tangential_N);
+
+// the bearing's resisting torque T_b = T_0 sign(omega_r) + c_b omega_r
+double bearing_torque_N_m(const FollowerTrain& t, double omega_r_rad_per_s);
+
 // sampled on n_samples equal steps of the revolution; +inf when s'' never goes negative
 struct JumpSpeed {
   double omega_rad_per_s = 0;

@@ -43,10 +43,11 @@ Revolution run_revolution(const CamModel& m) {
                                  theta * kDegPerRad, 1 / k.pitch_curvature_per_m, Rr,
                                  1 / k.pitch_curvature_per_m - Rr, m.min_radius_m));
     if (std::abs(k.pressure_angle_rad) > m.max_pressure_angle_rad)
-      throw CamError(CamErrorKind::PressureAngle, theta, "max_pressure_angle_deg",
+      throw CamError(CamErrorKind::PressureAngle, theta, "max_pressure_angle_rad",
                      fmt::format("at cam angle {:.6g} deg the pressure angle {:.4g} deg exceeds "
-                                 "max_pressure_angle_deg {:.4g}: a larger base circle, an offset or a longer rise",
-                                 theta * kDegPerRad, k.pressure_angle_rad * kDegPerRad,
+                                 "max_pressure_angle_rad {:.6g} ({:.4g} deg): a larger base circle, an offset or a "
+                                 "longer rise",
+                                 theta * kDegPerRad, k.pressure_angle_rad * kDegPerRad, m.max_pressure_angle_rad,
                                  m.max_pressure_angle_rad * kDegPerRad));
     row.loads = cam_loads(m.train, m.geometry, k, m.omega_rad_per_s, m.mu);
     if (row.loads.contact_lost) {  // the guide or the roller's friction can lose contact below omega_jump

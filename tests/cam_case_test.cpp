@@ -17,6 +17,7 @@
 #include "cam/lift_law.h"
 #include "cam/revolution.h"
 #include "lib/io/errors.h"
+#include "lib/numeric.h"
 #include "tests/temp_dir.h"
 
 namespace {
@@ -88,6 +89,25 @@ TEST_F(CamCaseTest, UnknownKeysAndBadValuesNameFileLineAndKey) {
   expect_case_error(f, t, "cam.lift.rise_law", line_of(t, "parabolic"), "must be one of");
 }
 
+// The keys are SI: a key of the former spelling is refused at its line, naming its SI key with the value
+// converted (600 rpm = 62.83 rad/s, 100 deg = 1.745 rad)
+TEST_F(CamCaseTest, FormerDegreeAndRpmKeysAreRefusedWithTheirSIKey) {
+  const fs::path f = dir_ / "cam.yaml";
+  std::string t = shipped_with("  speed_rad_per_s: 62.83185307179586", "  speed_rpm: 600");
+  expect_case_error(f, t, "cam.speed_rpm", line_of(t, "speed_rpm"), "write speed_rad_per_s: 62.83185307179");
+  t = shipped_with("    rise_rad: 1.7453292519943295", "    rise_deg: 100");
+  expect_case_error(f, t, "cam.lift.rise_deg", line_of(t, "rise_deg"), "write rise_rad: 1.74532925199");
+  t = shipped_with("  max_pressure_angle_rad: 0.5235987755982988", "  max_pressure_angle_deg: 30");
+  expect_case_error(f, t, "cam.max_pressure_angle_deg", line_of(t, "max_pressure_angle_deg"),
+                    "write max_pressure_angle_rad: 0.52359877559");
+  // the shipped case's angles are its degrees in radians, to the last digit
+  const cam::CamCase c = cam::read_cam_case((kSource / "cases" / "cam-follower.yaml").string());
+  EXPECT_EQ(c.model.law.segments.size(), 4u);
+  EXPECT_DOUBLE_EQ(c.model.law.segments[1].start_rad, 100 / cam::kDegPerRad);
+  EXPECT_DOUBLE_EQ(c.model.max_pressure_angle_rad, 30 / cam::kDegPerRad);
+  EXPECT_DOUBLE_EQ(c.model.omega_rad_per_s, 600 * 2 * contact::kPi / 60);
+}
+
 TEST_F(CamCaseTest, RefusedDesignsAreErrorsAtTheirKeyNamingTheAngle) {
   const fs::path f = dir_ / "cam.yaml";
   // a harmonic rise between dwells: its acceleration jumps where it meets the high dwell, at 100 deg
@@ -117,7 +137,8 @@ TEST_F(CamCaseTest, LiftTableIsReadFittedAndRunLikeTheLaw) {
   const cam::CamCase law_case = cam::read_cam_case((kSource / "cases" / "cam-follower.yaml").string());
   std::string rows;
   for (int i = 0; i < 360; ++i)
-    rows += fmt::format("{}[{}, {:.17g}]", i ? ", " : "", i, cam::lift_at(law_case.model.law, i / cam::kDegPerRad).s_m);
+    rows += fmt::format("{}[{:.17g}, {:.17g}]", i ? ", " : "", 2 * contact::kPi * i / 360,
+                        cam::lift_at(law_case.model.law, 2 * contact::kPi * i / 360).s_m);
   std::string text = read_text(kSource / "cases" / "cam-follower.yaml");
   const std::size_t from = text.find("  lift:\n"), to = text.find("output:");
   ASSERT_NE(from, std::string::npos);
@@ -134,14 +155,16 @@ TEST_F(CamCaseTest, LiftTableIsReadFittedAndRunLikeTheLaw) {
     EXPECT_NEAR(b.rows[i].loads.normal_N, a.rows[i].loads.normal_N, kLoadRtol * a.rows[i].loads.normal_N) << i;
   }
   // a row off the equal steps: an error at the table naming the row
-  const std::size_t at = text.find("[7, ");
-  text.replace(at, 4, "[7.5, ");
+  const std::string row8 = fmt::format("[{:.17g}, ", 2 * contact::kPi * 7 / 360);
+  const std::size_t at = text.find(row8);
+  ASSERT_NE(at, std::string::npos);
+  text.replace(at, row8.size(), "[0.1225, ");
   { std::ofstream(f) << text; }
   try {
     cam::read_cam_case(f.string());
     FAIL();
   } catch (const contact::CaseError& e) {
-    EXPECT_NE(std::string(e.what()).find("cam.lift.table: row 8: angle_deg must be 7"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("cam.lift.table: row 8: angle_rad must be 0.1221730476"), std::string::npos) << e.what();
   }
 }
 
@@ -173,9 +196,9 @@ TEST_F(CamCaseTest, CommandWritesTheRevolutionTableAndStopsAboveTheJumpSpeed) {
   for (const auto& e : fs::directory_iterator(out))
     EXPECT_EQ(e.path().filename().string().find(".tmp"), std::string::npos) << e.path();
 
-  // 2500 rpm is above the shipped case's jump speed
+  // 2500 rpm (261.8 rad/s) is above the shipped case's jump speed
   const fs::path fast = dir_ / "fast.yaml", out2 = dir_ / "out2";
-  { std::ofstream(fast) << shipped_with("  speed_rpm: 600", "  speed_rpm: 2500"); }
+  { std::ofstream(fast) << shipped_with("  speed_rad_per_s: 62.83185307179586", "  speed_rad_per_s: 261.8"); }
   r = rollwear("cam '" + fast.string() + "' -o '" + out2.string() + "' --log-level warn", dir_);
   EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
   EXPECT_NE(r.out.find("status: jump"), std::string::npos) << r.out;

@@ -1,0 +1,75 @@
+// The roller's steady creep law at one cam angle (docs/cam-follower.md §7).
+#include "cam/creep_law.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "lib/numeric.h"
+#include "lib/tangential/steady.h"
+
+namespace cam {
+
+AngleContact angle_contact(const RollerAndTrack& bodies, const contact::Profiles& profiles, double roller_radius_m,
+                           const CamKinematics& k, double normal_load_N, double mu, const CreepLawSettings& s) {
+  contact::NormalProblem np;
+  np.choice = contact::NormalChoice::Auto;
+  np.bodies.body1.Rx_m = roller_radius_m;
+  np.bodies.body2.Rx_m = cam_radius_m(k);
+  np.profiles = &profiles;
+  np.pair = bodies.pair;
+  np.normal_load_N = normal_load_N;
+  np.grid = s.grid;
+  np.semi_hertz.heathcote_slip = s.heathcote_slip;
+  np.semi_hertz.pressure_fields = false;  // the steady strips read only the strips
+  AngleContact c;
+  c.normal = contact::solve_normal_converged(np);
+  c.problem = contact::make_tangential_problem(c.normal.patch, bodies.pair, {}, mu, 0);
+  c.G_Pa = contact::combined_shear_modulus_Pa(bodies.pair);
+  return c;
+}
+
+contact::TangentialSolution steady_creep(const AngleContact& c, double xi, double speed_m_per_s) {
+  contact::TangentialProblem p = c.problem;
+  p.creepages = {xi, 0, 0};
+  p.L_m_per_Pa = contact::mean_flexibility_m_per_Pa(p.flex, p.creepages, c.normal.patch.a_m, c.normal.patch.b_m);
+  p.speed_m_per_s = speed_m_per_s;
+  contact::SteadyOptions o;
+  o.fields = false;
+  return contact::solve_steady(c.normal.patch, p, contact::TangentialScheme::Consistent, o);
+}
+
+double steady_creep_force_N(const AngleContact& c, double xi) { return steady_creep(c, xi, 1.0).Fx_N; }
+
+CreepageForForce creepage_for_force(const AngleContact& c, double force_N) {
+  CreepageForForce r;
+  const double sat = c.problem.mu * c.normal.patch.normal_load_N;
+  const auto f = [&](double xi) {
+    ++r.evaluations;
+    return steady_creep_force_N(c, xi) - force_N;
+  };
+  // F(xi) decreases with xi; the linear law's xi is where to start, widened until the sign changes
+  const double stiffness = c.G_Pa * c.normal.patch.a_m * c.normal.patch.b_m * c.problem.C.C11;
+  double width = std::abs(force_N) / stiffness;
+  if (c.normal.patch.strip_xi_offset.size() > 0)
+    width = std::max(width, c.normal.patch.strip_xi_offset.abs().maxCoeff());
+  width = std::max(width, 1e-9);
+  const double centre = -force_N / stiffness;
+  double lo = centre - width, hi = centre + width;
+  double f_lo = f(lo), f_hi = f(hi);
+  while (f_lo < 0 && lo > -kMaxCreepage) {
+    lo = std::max(-kMaxCreepage, centre - (width *= 2));
+    f_lo = f(lo);
+  }
+  while (f_hi > 0 && hi < kMaxCreepage) {
+    hi = std::min(kMaxCreepage, centre + (width *= 2));
+    f_hi = f(hi);
+  }
+  if (f_lo < 0 || f_hi > 0) return r;  // beyond the law's reach
+  const contact::RootResult root = contact::find_root_bracketed(f, lo, hi, f_lo, f_hi, 0, kCreepForceRtol * sat);
+  r.xi = root.x;
+  r.found = root.converged;
+  return r;
+}
+
+}  // namespace cam

@@ -1,0 +1,57 @@
+// The roller's steady creep law at one cam angle (docs/cam-follower.md §7): the contact of that angle
+// (lib/normal/normal.h on the roller's and the track's profiles, its strips on a grid, with the Heathcote
+// offsets of the crowned roller, docs/physics.md §2.4) and the project's steady solver
+// (lib/tangential/steady.h, consistent scheme) on it with the longitudinal creepage xi alone. The contact's
+// x runs along the pitch tangent t of cam/kinematics.h, so the solver's Fx is the cam's F_t on the roller and
+// its xi the cam's (docs/physics.md §1: xi = w_x/V, w_x = R_r (omega_r - omega_r,kin) the roller's slip
+// velocity over the cam, xi > 0 a roller lagging the cam, Fx = -G a b C11 xi in the linear range). The law is
+// the solver's, nonlinear and saturating towards -mu F_n sign(xi): the same one FASTSIM gives, so that the
+// roller's dynamics (cam/roller_dynamics.h) and the dissipation (cam/revolution_dissipation.h) agree.
+#pragma once
+
+#include "cam/kinematics.h"
+#include "cam/roller_contact.h"
+#include "lib/grid.h"
+#include "lib/normal/normal.h"
+#include "lib/tangential/tangential.h"
+
+namespace cam {
+
+struct CreepLawSettings {
+  contact::GridSpec grid{40, 40};  // the contact's strips (ny across); along x the pure-xi strip is exact
+  bool heathcote_slip = true;      // the crowned roller's rolling radius varying across the contact
+};
+
+struct AngleContact {
+  contact::NormalSolution normal;      // the contact, its strips on the grid
+  contact::TangentialProblem problem;  // Kalker's coefficients and flexibilities, mu; xi and V set per call
+  double G_Pa = 0;                     // the combined shear modulus
+};
+
+// the contact at angle k under normal_load_N (> 0). Throws contact::NormalSolveError when the normal solve
+// does not converge, std::invalid_argument for bad values
+AngleContact angle_contact(const RollerAndTrack& bodies, const contact::Profiles& profiles, double roller_radius_m,
+                           const CamKinematics& k, double normal_load_N, double mu, const CreepLawSettings& s);
+
+// the steady solution at creepage xi and rolling speed V (strips and totals, no fields)
+contact::TangentialSolution steady_creep(const AngleContact& c, double xi, double speed_m_per_s);
+
+// F_t(xi): the steady creep force on the roller along t (N), independent of V
+double steady_creep_force_N(const AngleContact& c, double xi);
+
+// the creep law inverted: the xi whose steady force is force_N, to kCreepForceRtol mu F_n. found = false
+// when |force_N| is beyond what the law reaches below |xi| = kMaxCreepage (the roller cannot roll with it)
+struct CreepageForForce {
+  double xi = 0;
+  bool found = false;
+  int evaluations = 0;
+};
+CreepageForForce creepage_for_force(const AngleContact& c, double force_N);
+
+// the inversion's tolerance on the force: a fraction of the saturated force mu F_n (the steady strip is
+// exact to rounding, so the root finder, not the law, sets it)
+constexpr double kCreepForceRtol = 1e-10;
+// the largest |xi| the inversion searches: a gross slide (the roller's surface at a third of the cam's)
+constexpr double kMaxCreepage = 1.0;
+
+}  // namespace cam

@@ -1,0 +1,36 @@
+// The quasi-steady dissipation over the revolution (docs/cam-follower.md §8): at every angle step the
+// steady tangential solution (lib/tangential/steady.h through cam/creep_law.h) on that angle's contact at
+// the roller's creepage xi(theta) and rolling speed V(theta) of its motion (cam/roller_motion.h), its strip
+// powers P_l(y_j) (W/m) taken as the step's mean (the rows sit at the steps' starts: the rectangle rule in
+// angle). Where the roller skids its xi is large and the steady solution tends to full slip, mu p |w|:
+// the same law that drove its dynamics. Strips at y = grid_y0 + y_j from the track's centre line (both
+// profiles are centred on it); mean_pressure = pi p_j/4 (the semi-ellipse's mean over 2 a_j), 0 outside.
+#pragma once
+
+#include "cam/angle_dissipation.h"
+#include "cam/creep_law.h"
+#include "cam/revolution.h"
+#include "cam/roller_motion.h"
+
+namespace cam {
+
+struct DissipationTotals {
+  double energy_J = 0;          // sum over the steps of the power times the duration: one revolution's
+  double max_power_W = 0;
+  double max_power_theta_rad = 0;
+};
+
+// throws std::invalid_argument when the motion does not match the revolution
+RevolutionDissipation revolution_dissipation(const CamModel& m, const Revolution& r, const RollerMotion& motion,
+                                             const CreepLawSettings& s = {});
+
+// one angle step: the contact c of row `row`, the roller's state there
+AngleDissipation angle_dissipation(const AngleContact& c, const RevolutionRow& row, const RollerAngle& roller,
+                                   double duration_s);
+
+// the total power of one step (W): sum of power_W_per_m times the strip width
+double total_power_W(const AngleDissipation& d);
+
+DissipationTotals dissipation_totals(const RevolutionDissipation& d);
+
+}  // namespace cam
