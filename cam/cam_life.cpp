@@ -9,6 +9,8 @@
 #include <spdlog/spdlog.h>
 
 #include "cam/revolution.h"
+#include "cam/revolution_dissipation.h"
+#include "cam/roller_motion.h"
 #include "lib/io/enum_names.h"
 #include "lib/numeric.h"
 #include "wear/integrator.h"
@@ -76,6 +78,30 @@ LiftLoss max_lift_loss(const contact::Profiles& unworn, const CamWearGrid& g, co
   Eigen::Index k = 0;
   out.max_m = loss.maxCoeff(&k);
   out.at_theta_rad = samples[static_cast<std::size_t>(k)].theta_rad;
+  return out;
+}
+
+RevolutionDissipation worn_revolution_dissipation(const CamModel& m, const Revolution& r, const RollerMotion& motion,
+                                                  const contact::Profiles& unworn, const CamWearGrid& g,
+                                                  const CamWearState& s, const CreepLawSettings& law) {
+  if (motion.angles.size() != r.rows.size())
+    throw std::invalid_argument("worn_revolution_dissipation: the roller's motion does not match the revolution");
+  const double duration = 2 * contact::kPi / m.angle_steps / m.omega_rad_per_s;
+  RevolutionDissipation out;
+  out.reserve(r.rows.size());
+  for (std::size_t i = 0; i < r.rows.size(); ++i) {
+    const RevolutionRow& row = r.rows[i];
+    const contact::Profiles worn = worn_profiles_at(unworn, g, s, row.contact_arc_m);
+    const AngleContact c = angle_contact(m.bodies, worn, m.geometry.roller_radius_m, row.kin, motion.angles[i].normal_N,
+                                         m.mu, law);
+    RollerAngle roller = motion.angles[i];
+    const CreepageForForce xi = creepage_for_force(c, roller.tangential_N);
+    if (xi.found) {
+      roller.xi = xi.xi;
+      roller.slip_speed_m_per_s = xi.xi * roller.speed_m_per_s;
+    }
+    out.push_back(angle_dissipation(c, row, roller, duration));
+  }
   return out;
 }
 

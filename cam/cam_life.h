@@ -34,6 +34,9 @@
 namespace cam {
 
 struct Revolution;
+struct CamModel;
+struct RollerMotion;
+struct CreepLawSettings;
 
 // where the lift loss is read: the cam angle, the contact's arc on the cam there, the pressure angle
 struct LiftLossSample {
@@ -57,6 +60,15 @@ LiftLoss max_lift_loss(const contact::Profiles& unworn, const CamWearGrid& g, co
 // the periodic revolution's dissipation on the worn geometry (what the revolution's tangential solve
 // makes, with worn_profiles_at at each angle); may throw
 using DissipationOf = std::function<RevolutionDissipation(const CamWearState& worn)>;
+
+// The quasi-steady dissipation (cam/revolution_dissipation.h) on the worn geometry: at each angle step the
+// contact on worn_profiles_at(unworn, g, s, the row's arc) under the motion's normal load, the roller's
+// creepage the one that gives the motion's creep force F_t on that contact (the force is what the roller's
+// inertia and bearing ask for, which wear does not change; where the law cannot give it, the motion's
+// creepage), and the steady solution's strip powers. The unworn state gives the producer's own result.
+RevolutionDissipation worn_revolution_dissipation(const CamModel& m, const Revolution& r, const RollerMotion& motion,
+                                                  const contact::Profiles& unworn, const CamWearGrid& g,
+                                                  const CamWearState& s, const CreepLawSettings& law);
 
 struct CamLifeModel {
   std::string name;
