@@ -2,6 +2,7 @@
 #include "app/cam_run.h"
 
 #include <chrono>
+#include <cmath>
 #include <ctime>
 #include <filesystem>
 #include <regex>
@@ -46,13 +47,18 @@ void remove_previous_snapshots(const fs::path& dir) {
   if (fs::is_empty(dir / "snapshots", ec)) fs::remove(dir / "snapshots", ec);
 }
 
-std::string dissipation_csv(const cam::RevolutionDissipation& rev) {
+// per angle step: the power and energy, and where the contact sits on the cam (its polar angle and radius
+// in the cam's frame: the plot's outline of the cam)
+std::string dissipation_csv(const cam::Revolution& r, const cam::RevolutionDissipation& rev) {
   std::string out = "# the unworn periodic revolution's dissipation per angle step\n"
-                    "cam_angle_deg,cam_arc_m,rolling_speed_m_per_s,power_W,energy_J\n";
-  for (const cam::AngleDissipation& a : rev) {
+                    "cam_angle_deg,cam_arc_m,rolling_speed_m_per_s,power_W,energy_J,contact_angle_deg,contact_radius_m\n";
+  for (std::size_t k = 0; k < rev.size(); ++k) {
+    const cam::AngleDissipation& a = rev[k];
+    const cam::CamKinematics& kin = r.rows[k].kin;
     const double P = cam::total_power_W(a);
-    fmt::format_to(std::back_inserter(out), "{:.8g},{:.10g},{:.10g},{:.10g},{:.10g}\n", a.theta_rad * cam::kDegPerRad,
-                   a.cam_arc_m, a.rolling_speed_m_per_s, P, P * a.duration_s);
+    fmt::format_to(std::back_inserter(out), "{:.8g},{:.10g},{:.10g},{:.10g},{:.10g},{:.8g},{:.10g}\n",
+                   a.theta_rad * cam::kDegPerRad, a.cam_arc_m, a.rolling_speed_m_per_s, P, P * a.duration_s,
+                   kin.contact_angle_rad * cam::kDegPerRad, std::hypot(kin.contact_x_m, kin.contact_y_m));
   }
   return out;
 }
@@ -116,7 +122,7 @@ int run_cam_life_command(const std::string& case_path, const std::string& output
   remove_previous_snapshots(dir);
   fs::create_directories(dir / "snapshots");
   contact::write_files_atomic({{dir / "revolution.csv", cam::revolution_csv(r)},
-                               {dir / "dissipation.csv", dissipation_csv(unworn_rev)}});
+                               {dir / "dissipation.csv", dissipation_csv(r, unworn_rev)}});
 
   std::string life_csv = "# case: " + c.name +
                          "\nstep,revolutions,max_depth_m,lift_loss_m,lift_loss_at_deg,energy_J\n"
