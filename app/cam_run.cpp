@@ -15,7 +15,6 @@
 #include "cam/cam_case.h"
 #include "cam/cam_life.h"
 #include "cam/revolution_dissipation.h"
-#include "cam/roller_dynamics.h"
 #include "lib/io/csv.h"
 #include "lib/io/errors.h"
 #include "lib/numeric.h"
@@ -82,33 +81,22 @@ int run_cam_life_command(const std::string& case_path, const std::string& output
                                                         : fs::path("out") / c.name;
 
   // the unworn periodic revolution: kinematics, loads, the roller's motion, the dissipation
-  cam::Revolution r;
+  std::unique_ptr<cam::CamLifeSetup> setup;
   try {
-    r = cam::run_revolution(m);
+    setup = cam::set_up_cam_life(c.name, m, *c.wear);
   } catch (const cam::CamError& e) {
     throw cam::case_error_of(c, e);
   }
+  const cam::Revolution& r = setup->revolution;
   if (r.status == cam::RevolutionStatus::Jump) {
     fmt::print("status: jump (the contact is lost around cam angle {:.6g} deg; no impact model): no life\n",
                r.jump_at_theta_rad * cam::kDegPerRad);
     return contact::kExitFailure;
   }
-  const cam::RollerDynamicsSettings dynamics;
-  const cam::PeriodicMotion motion = cam::periodic_motion(m, r, dynamics);
-  if (!motion.converged)
-    throw std::runtime_error(fmt::format("the roller's motion is not periodic after {} revolutions (residual {:.3g} "
-                                         "rad/s against {:.3g})",
-                                         motion.revolutions, motion.periodicity_residual_rad_per_s,
-                                         motion.tolerance_rad_per_s));
-  const cam::RevolutionDissipation unworn_rev = cam::revolution_dissipation(m, r, motion.motion, dynamics.law);
-  const contact::Profiles unworn = cam::roller_and_track_profiles(m.bodies);
-  const cam::CamLifeModel life_model =
-      cam::make_cam_life_model(c.name, *c.wear, m.mu, unworn, m.geometry.roller_radius_m, r.cam_circumference_m,
-                               unworn_rev, cam::lift_loss_samples(r));
-  const cam::DissipationOf producer = [&](const cam::CamWearState& s) {
-    if ((s.cam_depth_m == 0).all() && (s.roller_depth_m == 0).all()) return unworn_rev;
-    return cam::worn_revolution_dissipation(m, r, motion.motion, unworn, life_model.grid, s, dynamics.law);
-  };
+  const cam::PeriodicMotion& motion = setup->motion;
+  const cam::RevolutionDissipation& unworn_rev = setup->unworn;
+  const cam::CamLifeModel& life_model = setup->life;
+  const cam::DissipationOf producer = setup->producer();
   const cam::DissipationTotals totals = cam::dissipation_totals(unworn_rev);
   fmt::print("cam {}: {:.6g} rad/s, {} angle steps, cam circumference {:.6g} m\n", c.name, m.omega_rad_per_s,
              r.rows.size(), r.cam_circumference_m);

@@ -105,6 +105,32 @@ RevolutionDissipation worn_revolution_dissipation(const CamModel& m, const Revol
   return out;
 }
 
+DissipationOf CamLifeSetup::producer() const {
+  return [this](const CamWearState& s) {
+    if ((s.cam_depth_m == 0).all() && (s.roller_depth_m == 0).all()) return unworn;
+    return worn_revolution_dissipation(model, revolution, motion.motion, unworn_profiles, life.grid, s, dynamics.law);
+  };
+}
+
+std::unique_ptr<CamLifeSetup> set_up_cam_life(const std::string& name, const CamModel& model, const CamWearSpec& spec) {
+  auto setup = std::make_unique<CamLifeSetup>();
+  CamLifeSetup& u = *setup;
+  u.model = model;
+  u.revolution = run_revolution(u.model);
+  if (u.revolution.status == RevolutionStatus::Jump) return setup;
+  u.motion = periodic_motion(u.model, u.revolution, u.dynamics);
+  if (!u.motion.converged)
+    throw std::runtime_error(fmt::format("the roller's motion is not periodic after {} revolutions (residual {:.3g} "
+                                         "rad/s against {:.3g})",
+                                         u.motion.revolutions, u.motion.periodicity_residual_rad_per_s,
+                                         u.motion.tolerance_rad_per_s));
+  u.unworn = revolution_dissipation(u.model, u.revolution, u.motion.motion, u.dynamics.law);
+  u.unworn_profiles = roller_and_track_profiles(u.model.bodies);
+  u.life = make_cam_life_model(name, spec, u.model.mu, u.unworn_profiles, u.model.geometry.roller_radius_m,
+                               u.revolution.cam_circumference_m, u.unworn, lift_loss_samples(u.revolution));
+  return setup;
+}
+
 double cam_worn_volume_m3(const CamWearGrid& g, const CamWearState& s) {
   return s.cam_depth_m.sum() * g.arc_cell_m() * g.track_cell_m();
 }

@@ -24,19 +24,18 @@
 #include <Eigen/Core>
 
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "cam/cam_wear.h"
+#include "cam/revolution.h"
+#include "cam/roller_dynamics.h"
 #include "lib/normal/profile.h"
 #include "wear/wear_case.h"
 
 namespace cam {
 
-struct Revolution;
-struct CamModel;
-struct RollerMotion;
-struct CreepLawSettings;
 
 // where the lift loss is read: the cam angle, the contact's arc on the cam there, the pressure angle
 struct LiftLossSample {
@@ -126,6 +125,24 @@ struct CamLifeResult {
 // for a bad model; an exception of the producer or the integrator's failure ends the life Failed with its
 // message (the state the last accepted step's).
 CamLifeResult run_cam_life(const CamLifeModel& m, const DissipationOf& dissipation, const CamLifeHooks& hooks = {});
+
+// A case's life, set up: the unworn revolution (status Jump: nothing else is set), the roller's periodic
+// motion, the unworn dissipation, the life's model, and the producer of the dissipation on a worn state
+// (worn_revolution_dissipation with this revolution and motion; the unworn state gives `unworn` itself).
+// Held by pointer: the producer refers to it.
+struct CamLifeSetup {
+  CamModel model;
+  Revolution revolution;
+  RollerDynamicsSettings dynamics;
+  PeriodicMotion motion;
+  contact::Profiles unworn_profiles;
+  RevolutionDissipation unworn;
+  CamLifeModel life;
+  DissipationOf producer() const;
+};
+// Throws CamError for a design the model refuses (the caller places it in the case), std::runtime_error
+// when the roller's motion is not periodic, and what the solvers throw.
+std::unique_ptr<CamLifeSetup> set_up_cam_life(const std::string& name, const CamModel& model, const CamWearSpec& spec);
 
 // the state's worn volumes
 double cam_worn_volume_m3(const CamWearGrid& g, const CamWearState& s);
