@@ -14,6 +14,7 @@
 #include "lib/io/enum_names.h"
 #include "lib/numeric.h"
 #include "wear/integrator.h"
+#include "wear/profile_update.h"
 
 namespace cam {
 
@@ -160,6 +161,7 @@ CamLifeModel make_cam_life_model(const std::string& name, const CamWearSpec& spe
   m.max_depth_m = spec.max_depth_m;
   m.max_lift_loss_m = spec.max_lift_loss_m;
   m.stepping = spec.stepping;
+  m.smoothing_wavelength_m = spec.smoothing_wavelength_m;
   m.snapshots_revolutions = spec.snapshots_revolutions;
   return m;
 }
@@ -175,6 +177,18 @@ CamLifeResult run_cam_life(const CamLifeModel& m, const DissipationOf& dissipati
   life.state = unworn_state(m.grid);
   Eigen::VectorXd x = Eigen::VectorXd::Zero(lay.size());
 
+  // the lateral filter's kernels on the cells' centres (which never move)
+  const auto centres = [](double width_m, int n) {
+    return Eigen::ArrayXd::LinSpaced(n, -0.5 * width_m + 0.5 * width_m / n, 0.5 * width_m - 0.5 * width_m / n);
+  };
+  const bool smooth = m.smoothing_wavelength_m > 0;
+  const wear::SmoothingKernel track_kernel =
+      smooth ? wear::smoothing_kernel(centres(m.grid.track_width_m, m.grid.track_cells), m.smoothing_wavelength_m)
+             : wear::SmoothingKernel{};
+  const wear::SmoothingKernel roller_kernel =
+      smooth ? wear::smoothing_kernel(centres(m.grid.roller_width_m, m.grid.roller_cells), m.smoothing_wavelength_m)
+             : wear::SmoothingKernel{};
+
   // f(h): the wear per revolution on the worn geometry; the last one kept (an FSAL stage, the step
   // report and a limit's probe often ask at the same state)
   Eigen::VectorXd last_x;
@@ -183,8 +197,14 @@ CamLifeResult run_cam_life(const CamLifeModel& m, const DissipationOf& dissipati
   const auto rate = [&](const Eigen::VectorXd& h) -> const Eigen::VectorXd& {
     if (last_x.size() == h.size() && last_x == h) return last_f;
     const CamWearState s = state_of(m.grid, h);
-    const CamWearRate r = wear_per_revolution(dissipation(s), m.grid, m.laws);
+    CamWearRate r = wear_per_revolution(dissipation(s), m.grid, m.laws);
     ++life.revolutions_solved;
+    if (smooth) {
+      Eigen::ArrayXXd& h_cam = r.depth_per_revolution.cam_depth_m;
+      for (int i = 0; i < h_cam.rows(); ++i)
+        if ((h_cam.row(i) != 0).any()) h_cam.row(i) = wear::smooth_conserving(h_cam.row(i).transpose(), track_kernel).transpose();
+      r.depth_per_revolution.roller_depth_m = wear::smooth_conserving(r.depth_per_revolution.roller_depth_m, roller_kernel);
+    }
     if (energy_scale == 0) {
       const double depth_rate = std::max(max_depth_of(r.depth_per_revolution), 1e-300);
       energy_scale = r.energy_J > 0 ? depth_rate / r.energy_J : 1;

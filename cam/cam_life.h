@@ -1,7 +1,9 @@
 // The cam's life in cam revolutions (docs/cam-follower.md §8): the worn depths of the track's map and of
 // the roller (cam/cam_wear.h) obey dh/dN = f(h), N the cam revolutions,
 //   f(h): worn profiles at each angle (worn_profiles_at) -> the periodic revolution's dissipation (the
-//         caller's producer, DissipationOf) -> wear_per_revolution,
+//         caller's producer, DissipationOf) -> wear_per_revolution -> smoothed across the width (the wear
+//         loop's volume-conserving Gaussian filter, wear/profile_update.h, on the lateral cells' centres:
+//         wear features narrower than the cut-off are not kept, as running-in and debris spread them),
 // integrated by the project's integrator (wear/integrator.h: adaptive ARKODE, or fixed steps with their
 // stability control; the case's stepping keys are a wear case's) until a limit ends the life:
 //   max_depth      the deepest wear of either body reaches max_depth_m;
@@ -79,6 +81,7 @@ struct CamLifeModel {
   double max_depth_m = 0;                  // 0 = no such limit
   double max_lift_loss_m = 0;              // 0 = no such limit
   wear::WearStepping stepping;
+  double smoothing_wavelength_m = 0;       // the rate's lateral filter on each arc cell's row and the roller's
   std::vector<double> snapshots_revolutions;  // increasing, in (0, revolutions]
 };
 

@@ -146,6 +146,7 @@ std::string roller_wear_csv(const CamWearGrid& g, const CamWearState& s, double 
 //     stepping: { method: adaptive, rtol: 1.0e-3, ... }          # as wear.stepping (wear/wear_case.h)
 //     arc_cells: 720                # cells along the cam's circumference
 //     lateral_cells: 28             # across the track (and across the roller)
+//     smoothing_wavelength_m: 5.0e-4   # cut-off of the rate's lateral Gaussian filter (as a wear case's)
 //     snapshots_revolutions: [1.0e8, 1.0e9]   # wear maps written there (and at the start and end)
 struct CamWearSpec {
   CamWearLaws laws;  // mu is the case's cam.mu
@@ -155,6 +156,7 @@ struct CamWearSpec {
   wear::WearStepping stepping;
   int arc_cells = 720;
   int lateral_cells = 28;
+  double smoothing_wavelength_m = 5e-4;  // the wear rate's lateral filter (wear/profile_update.h), 0 = none
   std::vector<double> snapshots_revolutions;
 };
 
