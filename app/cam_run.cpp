@@ -73,7 +73,7 @@ int run_cam_life_command(const std::string& case_path, const std::string& output
     const auto it = c.locations.find("cam");
     throw contact::CaseError((it != c.locations.end() ? it->second : case_path) +
                              ": cam.wear: missing: `rollwear run` on a cam case needs the wear laws, revolutions and "
-                             "limits (docs/cam-follower.md §9); `rollwear cam` runs one revolution without them");
+                             "limits (docs/cam-follower.md §13); `rollwear cam` runs one revolution without them");
   }
   const cam::CamModel& m = c.model;
   const fs::path dir = !output_option.empty()           ? fs::path(output_option)

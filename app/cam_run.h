@@ -1,4 +1,4 @@
-// `rollwear run` on a cam case (a document with a cam: section, docs/cam-follower.md §9): the periodic
+// `rollwear run` on a cam case (a document with a cam: section, docs/cam-follower.md §13): the periodic
 // revolution, the roller's motion, the quasi-steady dissipation, then the wear of the track and the roller
 // over cam revolutions until a limit of cam.wear ends the life (cam/cam_life.h). Writes into the output
 // folder, each file atomically:

@@ -1,4 +1,4 @@
-// The cam's life in cam revolutions (docs/cam-follower.md §8): the worn depths of the track's map and of
+// The cam's life in cam revolutions (docs/cam-follower.md §12): the worn depths of the track's map and of
 // the roller (cam/cam_wear.h) obey dh/dN = f(h), N the cam revolutions,
 //   f(h): worn profiles at each angle (worn_profiles_at) -> the periodic revolution's dissipation (the
 //         caller's producer, DissipationOf) -> wear_per_revolution -> smoothed across the width (the wear

@@ -1,4 +1,4 @@
-// The wear of the cam track and of the roller over one cam revolution (docs/cam-follower.md §7), from
+// The wear of the cam track and of the roller over one cam revolution (docs/cam-follower.md §11), from
 // the dissipated power the revolution's tangential solve hands over (cam/angle_dissipation.h), through
 // the project's wear laws (wear/wear_law.h: energy, and archard as the energy law with k_E = K/(H mu)).
 //
@@ -136,7 +136,7 @@ std::string wear_map_csv(const CamWearGrid& g, const CamWearState& s, double rev
 // The roller's worn profile: y_m,depth_m (one row per lateral cell), with the same comment lines.
 std::string roller_wear_csv(const CamWearGrid& g, const CamWearState& s, double revolutions, const std::string& name);
 
-// ---- the case's wear inputs (the cam: section's wear: keys, docs/cam-follower.md §6) ----
+// ---- the case's wear inputs (the cam: section's wear: keys, docs/cam-follower.md §13) ----
 //
 //   wear:
 //     cam:    { law: archard, archard_k: 1.0e-6, hardness_Pa: 6.5e9 }   # the track (and/or roller:)

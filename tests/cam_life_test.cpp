@@ -1,6 +1,6 @@
 // The cam's life in cam revolutions (cam/cam_life.h): the depth and lift-loss limits located against
 // closed forms, the worn state fed back into the producer, failures and snapshots
-// (docs/cam-follower.md §8).
+// (docs/cam-follower.md §12).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -179,7 +179,7 @@ cam::CamWearState shipped_map(int angle_steps, int steps) {
 }
 
 // The reference (tests/data/reference/cam-wear-map.csv) is the run at 1440 angle steps with 32 and 64
-// steps of revolutions, extrapolated: converged to well below the tolerance here (docs/cam-follower.md §10);
+// steps of revolutions, extrapolated: converged to well below the tolerance here (docs/cam-follower.md §14);
 // 40 s, too slow to run here. Regenerate it with
 //   ROLLWEAR_UPDATE_REFERENCES=1 build/release/tests/rollwear_tests --gtest_filter='CamLife.ShippedCase*'
 // The cheap run made here, 180 angle steps and 8 steps of revolutions, must agree with it to

@@ -1,5 +1,5 @@
 // The cam track's wear map and the roller's wear over one revolution (cam/cam_wear.h), against closed
-// forms on synthetic dissipation records (docs/cam-follower.md §7).
+// forms on synthetic dissipation records (docs/cam-follower.md §11).
 #include <gtest/gtest.h>
 
 #include <cmath>
