@@ -14,6 +14,8 @@
 #include <spdlog/fmt/fmt.h>
 
 #include "cam/cam_case.h"
+#include "lib/io/errors.h"
+#include "tests/temp_dir.h"
 
 #include "cam/cam_life.h"
 #include "lib/numeric.h"
@@ -247,6 +249,64 @@ TEST(CamLife, ShippedCaseWearMapAgreesWithItsConvergedReference) {
   std::cout << fmt::format("cam wear map after {:.3g} revolutions: deepest {:.4g} m (roller {:.4g} m); the cheap run's "
                            "largest error {:.3g} ({:.3g} of the roller's)\n",
                            kRegressionN, ref_max, roller_max, cam_err / ref_max, roller_err / roller_max);
+}
+
+// ---- the case's wear section ----
+
+class CamWearCase : public rollwear_test::TempDirTest {
+ protected:
+  // the shipped case with its wear section's lines replaced (from "  wear:" to "output:")
+  std::string with_wear(const std::string& wear_lines) {
+    std::ifstream in(kSource / "cases" / "cam-follower.yaml");
+    std::stringstream text;
+    text << in.rdbuf();
+    std::string s = text.str();
+    const std::size_t a = s.find("\n  wear:"), b = s.find("\noutput:");
+    EXPECT_NE(a, std::string::npos);
+    s = s.substr(0, a + 1) + wear_lines + s.substr(b);
+    const fs::path p = dir_ / "case.yaml";
+    std::ofstream(p) << s;
+    return p.string();
+  }
+  // the CaseError's message reading the case, or "" when it reads
+  static std::string error_of(const std::string& path) {
+    try {
+      cam::read_cam_case(path);
+    } catch (const contact::CaseError& e) {
+      return e.what();
+    }
+    return "";
+  }
+};
+
+TEST_F(CamWearCase, TheShippedCaseReadsItsWearSection) {
+  const cam::CamCase c = cam::read_cam_case((kSource / "cases" / "cam-follower.yaml").string());
+  ASSERT_TRUE(c.wear.has_value());
+  ASSERT_TRUE(c.wear->laws.cam && c.wear->laws.roller);
+  EXPECT_EQ(c.wear->laws.cam->law, "archard");
+  EXPECT_GT(c.wear->max_lift_loss_m, 0);
+  EXPECT_GT(c.wear->revolutions, 0);
+}
+
+// bad input names the file, the line and the key
+TEST_F(CamWearCase, BadWearInputIsRefusedAtItsKey) {
+  const std::string kth = error_of(with_wear(
+      "  wear:\n    cam: { law: kth, hardness_Pa: 6.9e9 }\n    revolutions: 1.0e9\n    limits: { max_depth_m: 1.0e-5 }\n"));
+  EXPECT_NE(kth.find("cam.wear.cam"), std::string::npos) << kth;
+  EXPECT_NE(kth.find("kth"), std::string::npos) << kth;
+  EXPECT_NE(kth.find("case.yaml:"), std::string::npos) << kth;
+  const std::string no_limit =
+      error_of(with_wear("  wear:\n    cam: { law: energy, k_E_m3_per_J: 1.0e-14 }\n    revolutions: 1.0e9\n"));
+  EXPECT_NE(no_limit.find("limits"), std::string::npos) << no_limit;
+  const std::string nothing = error_of(with_wear("  wear:\n    revolutions: 1.0e9\n    limits: { max_depth_m: 1.0e-5 }\n"));
+  EXPECT_NE(nothing.find("nothing wears"), std::string::npos) << nothing;
+  const std::string typo = error_of(with_wear(
+      "  wear:\n    cam: { law: energy, k_E_m3_per_J: 1.0e-14 }\n    revolutions: 1.0e9\n    limits: { max_depth_m: 1.0e-5 }\n"
+      "    arc_cell: 90\n"));
+  EXPECT_NE(typo.find("arc_cell"), std::string::npos) << typo;
+  EXPECT_EQ(error_of(with_wear("  wear:\n    cam: { law: energy, k_E_m3_per_J: 1.0e-14 }\n    revolutions: 1.0e9\n"
+                               "    limits: { max_depth_m: 1.0e-5 }\n")),
+            "");
 }
 
 }  // namespace
