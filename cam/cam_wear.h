@@ -145,7 +145,7 @@ std::string roller_wear_csv(const CamWearGrid& g, const CamWearState& s, double 
 //     limits: { max_depth_m: 2.0e-5, max_lift_loss_m: 2.0e-5 }   # 0 = no such limit; one at least
 //     stepping: { method: adaptive, rtol: 1.0e-3, ... }          # as wear.stepping (wear/wear_case.h)
 //     arc_cells: 720                # cells along the cam's circumference
-//     lateral_cells: 28             # across the track (and across the roller)
+//     lateral_cells: 56             # across the track (and across the roller)
 //     smoothing_wavelength_m: 5.0e-4   # cut-off of the rate's lateral Gaussian filter (as a wear case's)
 //     snapshots_revolutions: [1.0e8, 1.0e9]   # wear maps written there (and at the start and end)
 struct CamWearSpec {
