@@ -83,7 +83,11 @@ int run_cam_life_command(const std::string& case_path, const std::string& output
   // the unworn periodic revolution: kinematics, loads, the roller's motion, the dissipation
   std::unique_ptr<cam::CamLifeSetup> setup;
   try {
-    setup = cam::set_up_cam_life(c.name, m, *c.wear);
+    cam::RollerDynamicsSettings dynamics;  // the case's cam.tangential, as rollwear cam reads it
+    dynamics.law.grid = {c.solver.nx, c.solver.ny};
+    dynamics.periodicity_rtol = c.solver.periodic_rtol;
+    dynamics.max_revolutions = c.solver.max_revolutions;
+    setup = cam::set_up_cam_life(c.name, m, *c.wear, dynamics);
   } catch (const cam::CamError& e) {
     throw cam::case_error_of(c, e);
   }

@@ -40,6 +40,7 @@
 #include "app/sweep_command.h"
 #include "app/cam_run.h"
 #include "cam/cam_case.h"
+#include "cam/cam_run.h"
 #include "cam/revolution.h"
 #include "wear/wear_case.h"
 #include "wear/wear_loop.h"
@@ -801,12 +802,13 @@ int run_cam_command(const CamOptions& opt) {
   const std::filesystem::path dir = !opt.output_directory.empty()   ? std::filesystem::path(opt.output_directory)
                                     : !c.output_directory.empty() ? std::filesystem::path(c.output_directory)
                                                                    : std::filesystem::path("out") / c.name;
-  cam::Revolution r;
+  cam::CamRun run;
   try {
-    r = cam::run_revolution(c.model);
+    run = cam::run_cam(c.model, c.solver);
   } catch (const cam::CamError& e) {
     throw cam::case_error_of(c, e);
   }
+  const cam::Revolution& r = run.revolution;
   const double rpm_per_rad_s = 60 / (2 * kPi);
   fmt::print("cam {}: {:.6g} rad/s ({:.6g} rpm)\n", c.name, c.model.omega_rad_per_s,
              c.model.omega_rad_per_s * rpm_per_rad_s);
@@ -838,9 +840,10 @@ int run_cam_command(const CamOptions& opt) {
              r.rows.size(), r.outside_linear_steps);
   if (r.edge_steps > 0)
     fmt::print("warning: the contact reaches a body's edge at {} angle steps\n", r.edge_steps);
+  fmt::print("{}", cam::cam_summary(run));
   const OutputLock lock(dir);
   remove_stale_temporaries(dir);
-  write_files_atomic({{dir / "revolution.csv", cam::revolution_csv(r)}});
+  write_files_atomic({{dir / "revolution.csv", cam::revolution_csv(run)}});
   spdlog::info("wrote revolution.csv to {}", dir.string());
   return 0;
 }

@@ -171,6 +171,16 @@ CamCase read_cam_case(const std::string& path) {
       if (!(std::abs(m.geometry.offset_m) < m.geometry.base_radius_m + m.geometry.roller_radius_m))
         s.fail("offset_m", "|offset_m| must be < base_radius_m + roller.radius_m");
       s.section("lift", [&](YamlMap& l) { read_lift(l, c, table_tolerance); });
+      s.optional_section("tangential", [&](YamlMap& t) {
+        const auto cells = [](int v) { return v >= 4 && v <= 400 ? "" : "must be in [4, 400]"; };
+        t.optional("nx", c.solver.nx, cells);
+        t.optional("ny", c.solver.ny, cells);
+        t.optional("quasi_steady_tolerance", c.solver.quasi_steady_tolerance, contact::nonnegative_finite);
+        t.optional("periodic_rtol", c.solver.periodic_rtol, contact::positive_finite);
+        t.optional("max_revolutions", c.solver.max_revolutions,
+                   [](int v) { return v >= 2 && v <= 1000 ? "" : "must be in [2, 1000]"; });
+        t.optional("compare_full_transient", c.solver.compare_full_transient);
+      });
       s.optional_section("wear", [&](YamlMap& w) { read_cam_wear(w, c.wear.emplace()); });
     });
   });

@@ -113,10 +113,12 @@ DissipationOf CamLifeSetup::producer() const {
   };
 }
 
-std::unique_ptr<CamLifeSetup> set_up_cam_life(const std::string& name, const CamModel& model, const CamWearSpec& spec) {
+std::unique_ptr<CamLifeSetup> set_up_cam_life(const std::string& name, const CamModel& model, const CamWearSpec& spec,
+                                              const RollerDynamicsSettings& dynamics) {
   auto setup = std::make_unique<CamLifeSetup>();
   CamLifeSetup& u = *setup;
   u.model = model;
+  u.dynamics = dynamics;
   u.revolution = run_revolution(u.model);
   if (u.revolution.status == RevolutionStatus::Jump) return setup;
   u.motion = periodic_motion(u.model, u.revolution, u.dynamics);

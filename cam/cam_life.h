@@ -130,7 +130,8 @@ struct CamLifeResult {
 CamLifeResult run_cam_life(const CamLifeModel& m, const DissipationOf& dissipation, const CamLifeHooks& hooks = {});
 
 // A case's life, set up: the unworn revolution (status Jump: nothing else is set), the roller's periodic
-// motion, the unworn dissipation, the life's model, and the producer of the dissipation on a worn state
+// motion, the unworn quasi-steady dissipation (the same producer as on the worn geometry, so that the rate
+// is continuous at the unworn state: Satran along the revolution, §9, needs Hertz's profiles), the life's model, and the producer of the dissipation on a worn state
 // (worn_revolution_dissipation with this revolution and motion; the unworn state gives `unworn` itself).
 // Held by pointer: the producer refers to it.
 struct CamLifeSetup {
@@ -145,7 +146,9 @@ struct CamLifeSetup {
 };
 // Throws CamError for a design the model refuses (the caller places it in the case), std::runtime_error
 // when the roller's motion is not periodic, and what the solvers throw.
-std::unique_ptr<CamLifeSetup> set_up_cam_life(const std::string& name, const CamModel& model, const CamWearSpec& spec);
+// dynamics: the roller's spin and the creep law's grid (from the case's cam.tangential, as rollwear cam's)
+std::unique_ptr<CamLifeSetup> set_up_cam_life(const std::string& name, const CamModel& model, const CamWearSpec& spec,
+                                              const RollerDynamicsSettings& dynamics = {});
 
 // the state's worn volumes
 double cam_worn_volume_m3(const CamWearGrid& g, const CamWearState& s);

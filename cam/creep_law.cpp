@@ -26,7 +26,44 @@ AngleContact angle_contact(const RollerAndTrack& bodies, const contact::Profiles
   c.normal = contact::solve_normal_converged(np);
   c.problem = contact::make_tangential_problem(c.normal.patch, bodies.pair, {}, mu, 0);
   c.G_Pa = contact::combined_shear_modulus_Pa(bodies.pair);
+  if (s.heathcote_slip) {
+    c.roller_depth_m = roller_depth_m(profiles, c.normal.grid_y0_m, c.normal.patch.grid);
+    c.track_depth_m = track_depth_m(profiles, c.normal.grid_y0_m, c.normal.patch.grid);
+  }
   return c;
+}
+
+namespace {
+Eigen::ArrayXd depth_m(const contact::Profile& profile, double y0_m, const contact::Grid& grid) {
+  const double z0 = contact::profile_z(profile, y0_m);
+  Eigen::ArrayXd d(grid.ny);
+  for (int j = 0; j < grid.ny; ++j) d(j) = contact::profile_z(profile, y0_m + grid.y_m(j)) - z0;
+  return d;
+}
+}  // namespace
+
+Eigen::ArrayXd roller_depth_m(const contact::Profiles& profiles, double y0_m, const contact::Grid& grid) {
+  return depth_m(profiles.body1, y0_m, grid);
+}
+Eigen::ArrayXd track_depth_m(const contact::Profiles& profiles, double y0_m, const contact::Grid& grid) {
+  return depth_m(profiles.body2, y0_m, grid);
+}
+
+CreepForce creep_force(const AngleContact& c, double xi) {
+  const contact::TangentialSolution sol = steady_creep(c, xi, 1.0);
+  CreepForce f;
+  f.force_N = sol.Fx_N;
+  if (c.roller_depth_m.size() > 0) {
+    const contact::ContactPatch& p = c.normal.patch;
+    for (int j = 0; j < p.grid.ny; ++j) {
+      if (!(p.half_length_m(j) > 0)) continue;
+      f.depth_moment_N_m += sol.strip_force_x_N_per_m(j) * c.roller_depth_m(j);
+      f.track_depth_moment_N_m += sol.strip_force_x_N_per_m(j) * c.track_depth_m(j);
+    }
+    f.depth_moment_N_m *= p.grid.dy_m;
+    f.track_depth_moment_N_m *= p.grid.dy_m;
+  }
+  return f;
 }
 
 contact::TangentialSolution steady_creep(const AngleContact& c, double xi, double speed_m_per_s) {

@@ -26,7 +26,25 @@ struct AngleContact {
   contact::NormalSolution normal;      // the contact, its strips on the grid
   contact::TangentialProblem problem;  // Kalker's coefficients and flexibilities, mu; xi and V set per call
   double G_Pa = 0;                     // the combined shear modulus
+  // per strip, the roller's surface below its rolling radius at the reference line, z1(y_j) - z1(y0): strip j's
+  // force acts on the roller at the radius R_r minus this (with Heathcote slip; empty without it)
+  Eigen::ArrayXd roller_depth_m;
+  // likewise the track's surface below the cam's at the reference line, z2(y_j) - z2(y0) (a crowned track)
+  Eigen::ArrayXd track_depth_m;
 };
+
+// the creep force on the roller along t and its torque's correction for the strips' radii:
+//   torque about the axle = R_r force - depth_moment,  depth_moment = sum_j F_j (z1(y_j) - z1(y0)) dy
+struct CreepForce {
+  double force_N = 0;
+  double depth_moment_N_m = 0;
+  double track_depth_moment_N_m = 0;  // sum_j F_j (z2(y_j) - z2(y0)) dy: the same on the cam's side
+};
+CreepForce creep_force(const AngleContact& c, double xi);
+
+// z_k(y_j) - z_k(y0) for the strips of a contact (profiles' y = y0 + grid y), k = 1 the roller, 2 the track
+Eigen::ArrayXd roller_depth_m(const contact::Profiles& profiles, double y0_m, const contact::Grid& grid);
+Eigen::ArrayXd track_depth_m(const contact::Profiles& profiles, double y0_m, const contact::Grid& grid);
 
 // the contact at angle k under normal_load_N (> 0). Throws contact::NormalSolveError when the normal solve
 // does not converge, std::invalid_argument for bad values

@@ -52,8 +52,10 @@ PeriodicMotion periodic_motion(const CamModel& m, const Revolution& r, const Rol
   std::vector<AngleContact> contacts(n);
   long evaluations = 0;
 
-  // the step to row i's end from delta0: J (delta - delta0)/dt = R F(xi(delta)) - T_b - J alpha_kin
-  const auto step_to = [&](std::size_t i, double delta0) {
+  // the step to row i's end from delta0 (and delta1 the step before, when bdf2):
+  //   J (delta - delta0)/dt = R F(xi(delta)) - T_b - J alpha_kin                       (backward Euler)
+  //   J (3 delta - 4 delta0 + delta1)/(2 dt) = R F(xi(delta)) - T_b - J alpha_kin     (BDF2)
+  const auto step_to = [&](std::size_t i, double delta0, double delta1, bool bdf2) {
     const RevolutionRow& row = r.rows[i];
     const AngleContact& c = contacts[i];
     const double Vc = row.kin.rolling_speed_m_per_s, wk = row.kin.roller_omega_rad_per_s;
@@ -62,8 +64,9 @@ PeriodicMotion periodic_motion(const CamModel& m, const Revolution& r, const Rol
     const auto g = [&](double delta) {
       ++e.evaluations;
       const double xi = creepage_of(Rr * delta, Vc);
-      return J * (delta - delta0) / dt - Rr * steady_creep_force_N(c, xi) + bearing_torque_N_m(t, wk + delta) +
-             J * alpha;
+      const double rate = bdf2 ? (1.5 * delta - 2 * delta0 + 0.5 * delta1) / dt : (delta - delta0) / dt;
+      const CreepForce cf = creep_force(c, xi);
+      return J * rate - (Rr * cf.force_N - cf.depth_moment_N_m) + bearing_torque_N_m(t, wk + delta) + J * alpha;
     };
     // delta's domain: |xi| <= kMaxCreepage, i.e. w in [-2 Vc/3 ... ] scaled: xi = w/(Vc - w/2)
     const double w_hi = kMaxCreepage * Vc / (1 + kMaxCreepage / 2), w_lo = -kMaxCreepage * Vc / (1 - kMaxCreepage / 2);
@@ -103,30 +106,39 @@ PeriodicMotion periodic_motion(const CamModel& m, const Revolution& r, const Rol
     }
   }
   std::vector<StepEnd> ends(n);
+  double previous_last = 0;  // delta at row n-1 of the previous revolution
   for (int rev = 1; rev <= s.max_revolutions; ++rev) {
     for (std::size_t i = 0; i < n; ++i)
       contacts[i] = angle_contact(m.bodies, profiles, Rr, r.rows[i].kin, normal[i], m.mu, s.law);
     // row 0 holds the start; rows 1..n-1 and row 0 again (2 pi) are step ends
+    // BDF2 but for the very first step (no history yet); later revolutions take the step before 0 from the
+    // previous one's last row
     double delta = delta0;
     for (std::size_t k = 1; k <= n; ++k) {
       const std::size_t i = k % n;
-      ends[i] = step_to(i, delta);
+      const bool history = rev > 1 || k > 1;
+      const double before = k == 1 ? previous_last : ends[(k + n - 2) % n].delta;
+      ends[i] = step_to(i, delta, before, s.bdf2 && history);
       evaluations += ends[i].evaluations;
       delta = ends[i].delta;
     }
+    previous_last = ends[n - 1].delta;
     const double residual = std::abs(delta - delta0);
     out.residuals_rad_per_s.push_back(residual);
     out.revolutions = rev;
     spdlog::debug("roller dynamics: revolution {}: |omega_r(2 pi) - omega_r(0)| = {:.3e} rad/s", rev, residual);
     // the state at 0 of this revolution is row 0's start; its record is the step end that reaches 2 pi
     // (the same state once periodic)
+    out.start_omega_r_rad_per_s = r.rows[0].kin.roller_omega_rad_per_s + delta0;
     delta0 = delta;
     // the next revolution's normal loads from this one's creep forces
     for (std::size_t i = 0; i < n; ++i)
       normal[i] = cam_loads_with_tangential(t, m.geometry, r.rows[i].kin, m.omega_rad_per_s,
                                             steady_creep_force_N(contacts[i], ends[i].xi))
                       .normal_N;
-    if (residual <= out.tolerance_rad_per_s) {
+    // BDF2 takes its history from the revolution before: the first one starts with a backward Euler step, so a
+    // periodic revolution is one of two or more
+    if (residual <= out.tolerance_rad_per_s && (rev > 1 || !s.bdf2)) {
       out.converged = true;
       break;
     }
@@ -145,6 +157,10 @@ PeriodicMotion periodic_motion(const CamModel& m, const Revolution& r, const Rol
     a.slip_speed_m_per_s = e.w;
     a.speed_m_per_s = e.V;
     a.tangential_N = sol.Fx_N;
+    const CreepForce cf = creep_force(contacts[i], e.xi);
+    a.depth_moment_N_m = cf.depth_moment_N_m;
+    a.track_depth_moment_N_m = cf.track_depth_moment_N_m;
+    a.creep_power_W = -sol.creep_work_W;
     a.normal_N = contacts[i].normal.patch.normal_load_N;
     a.stick_fraction = sol.stick_fraction;
     a.regime = std::abs(e.xi) >= saturation_creepage(contacts[i]) ? RollerRegime::Sliding : RollerRegime::Rolling;

@@ -9,6 +9,11 @@
 
 namespace cam {
 
+double shaft_torque_N_m(const CamLoads& loads, const CamKinematics& k, double track_depth_moment_N_m) {
+  const double n_cross_t = k.normal_x * k.tangent_y - k.normal_y * k.tangent_x;
+  return loads.shaft_torque_N_m - n_cross_t * track_depth_moment_N_m;
+}
+
 RollerMotion quasi_static_motion(const CamModel& m, const Revolution& r, const CreepLawSettings& s) {
   const contact::Profiles profiles = roller_and_track_profiles(m.bodies);
   const double Rr = m.geometry.roller_radius_m;
@@ -35,6 +40,10 @@ RollerMotion quasi_static_motion(const CamModel& m, const Revolution& r, const C
     a.omega_r_rad_per_s = row.kin.roller_omega_rad_per_s + a.slip_speed_m_per_s / Rr;
     const contact::TangentialSolution sol = steady_creep(c, a.xi, a.speed_m_per_s);
     a.tangential_N = sol.Fx_N;
+    const CreepForce cf = creep_force(c, a.xi);
+    a.depth_moment_N_m = cf.depth_moment_N_m;
+    a.track_depth_moment_N_m = cf.track_depth_moment_N_m;
+    a.creep_power_W = -sol.creep_work_W;
     a.normal_N = row.loads.normal_N;
     a.stick_fraction = sol.stick_fraction;
     a.regime = RollerRegime::Rolling;

@@ -179,18 +179,27 @@ CommandRun rollwear(const std::string& args, const fs::path& dir) {
   return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, read_text(out), read_text(err)};
 }
 
+// (the shipped case on 180 angle steps and a 16 x 16 grid: the command's work, not its resolution, is checked)
 TEST_F(CamCaseTest, CommandWritesTheRevolutionTableAndStopsAboveTheJumpSpeed) {
-  const fs::path out = dir_ / "out";
-  CommandRun r = rollwear("cam '" + (kSource / "cases" / "cam-follower.yaml").string() + "' -o '" + out.string() +
-                       "' --log-level warn",
-                   dir_);
+  const fs::path out = dir_ / "out", coarse = dir_ / "coarse.yaml";
+  {
+    std::string t = shipped_with("  angle_steps: 720", "  angle_steps: 180");
+    const std::size_t at = t.find("  lift:\n");
+    t.insert(at, "  tangential: { nx: 16, ny: 16 }\n");
+    std::ofstream(coarse) << t;
+  }
+  CommandRun r = rollwear("cam '" + coarse.string() + "' -o '" + out.string() + "' --log-level warn", dir_);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("jump speed: "), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("status: complete"), std::string::npos) << r.out;
+  for (const char* line : {"roller dynamics: periodic after", "transient: grid 16 x 16", "quasi-steady skip against",
+                           "energy per revolution: shaft", "contact: dissipated"})
+    EXPECT_NE(r.out.find(line), std::string::npos) << line << "\n" << r.out;
   const std::string csv = read_text(out / "revolution.csv");
   EXPECT_EQ(csv.rfind("cam_angle_deg,lift_m,", 0), 0u);
   for (const char* column : {"pressure_angle_deg", "cam_radius_m", "normal_load_N", "tangential_load_N", "a_m", "b_m",
-                             "p0_Pa", ",xi,", "roller_omega_rad_per_s", "contact_arc_m", "rolling_speed_m_per_s"})
+                             "p0_Pa", ",xi,", "roller_omega_rad_per_s", "contact_arc_m", "rolling_speed_m_per_s",
+                             "slip_speed_m_per_s", "dissipated_power_W", "quasi_steady"})
     EXPECT_NE(csv.find(column), std::string::npos) << column;
   // no temporary file left
   for (const auto& e : fs::directory_iterator(out))
@@ -198,7 +207,11 @@ TEST_F(CamCaseTest, CommandWritesTheRevolutionTableAndStopsAboveTheJumpSpeed) {
 
   // 2500 rpm (261.8 rad/s) is above the shipped case's jump speed
   const fs::path fast = dir_ / "fast.yaml", out2 = dir_ / "out2";
-  { std::ofstream(fast) << shipped_with("  speed_rad_per_s: 62.83185307179586", "  speed_rad_per_s: 261.8"); }
+  {
+    std::string t = read_text(coarse);
+    t.replace(t.find("62.83185307179586"), 17, "261.8");
+    std::ofstream(fast) << t;
+  }
   r = rollwear("cam '" + fast.string() + "' -o '" + out2.string() + "' --log-level warn", dir_);
   EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
   EXPECT_NE(r.out.find("status: jump"), std::string::npos) << r.out;

@@ -115,6 +115,12 @@ TEST(CamDissipation, QuasiSteadyPowerIsSpeedTimesCreepageTimesForceAtEveryAngle)
     EXPECT_NEAR(d[i].duration_s, duration, 1e-15);
     EXPECT_EQ(d[i].theta_rad, r.rows[i].kin.theta_rad);
     EXPECT_NEAR(d[i].y_m(0), -d[i].y_m(d[i].y_m.size() - 1), 1e-12);
+    // the strips' mean pressures over their lengths 2 a_j carry the normal load (each strip carries its cell
+    // row's load exactly, lib/patch.h)
+    const AngleContact c = angle_contact(m.bodies, roller_and_track_profiles(m.bodies), m.geometry.roller_radius_m,
+                                         r.rows[i].kin, a.normal_N, m.mu, s);
+    const double dy = d[i].y_m(1) - d[i].y_m(0);
+    EXPECT_NEAR((d[i].mean_pressure_Pa * 2 * c.normal.patch.half_length_m).sum() * dy, a.normal_N, 1e-9 * a.normal_N);
   }
   EXPECT_GT(dissipation_totals(d).energy_J, 0);
 }

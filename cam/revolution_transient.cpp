@@ -1,0 +1,247 @@
+// The tangential problem along the revolution with Satran (docs/cam-follower.md §9).
+#include "cam/revolution_transient.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include <spdlog/fmt/fmt.h>
+
+#include "cam/cam_error.h"
+#include "cam/revolution_dissipation.h"
+#include "lib/normal/hertz.h"
+#include "lib/normal/semi_hertz.h"
+#include "lib/numeric.h"
+#include "lib/tangential/satran.h"
+#include "lib/tangential/steady.h"
+
+namespace cam {
+
+namespace {
+
+struct Fits {
+  contact::ParabolaFit f1, f2;
+  double y0 = 0;
+};
+
+Fits profile_fits(const contact::Profiles& profiles) {
+  Fits f{contact::fit_parabola(profiles.body1), contact::fit_parabola(profiles.body2), 0};
+  if (!contact::has_constant_curvature(f.f1, contact::kConstantCurvatureRtol) ||
+      !contact::has_constant_curvature(f.f2, contact::kConstantCurvatureRtol))
+    throw std::invalid_argument("the revolution's transient needs profiles of constant curvature (Hertz)");
+  const double c = f.f1.curvature_per_m + f.f2.curvature_per_m;
+  if (!(c > 0)) throw std::invalid_argument("the revolution's transient: the profiles' gap has no curvature");
+  f.y0 = (f.f1.curvature_per_m * f.f1.vertex_y_m + f.f2.curvature_per_m * f.f2.vertex_y_m) / c;
+  return f;
+}
+
+contact::HertzContact hertz_at(const RollerAndTrack& bodies, const Fits& f, double Rr, const CamKinematics& k,
+                               double normal_load_N) {
+  const auto radius = [](double curvature) { return curvature == 0 ? contact::kFlat : 1 / curvature; };
+  const contact::Bodies b{{Rr, radius(f.f1.curvature_per_m)}, {cam_radius_m(k), radius(f.f2.curvature_per_m)}};
+  return contact::solve_hertz(b, bodies.pair, normal_load_N);
+}
+
+AngleContact contact_from_hertz(const RollerAndTrack& bodies, const contact::Profiles& profiles, const Fits& f,
+                                double Rr, const CamKinematics& k, const contact::HertzContact& h, double mu,
+                                bool heathcote_slip, const contact::Grid& grid) {
+  if (h.a_m > grid.half_x_m * (1 + 1e-12) || h.b_m > grid.half_y_m * (1 + 1e-12))
+    throw std::invalid_argument("the contact does not fit inside the revolution's grid");
+  AngleContact c;
+  c.normal.solver = contact::NormalSolverKind::Hertz;
+  c.normal.patch = contact::hertz_patch(h, grid);
+  c.normal.grid_y0_m = f.y0;
+  c.normal.status.kind = contact::SolveStatus::Kind::Converged;
+  c.normal.solve_converged = true;
+  if (heathcote_slip)
+    c.normal.patch.strip_xi_offset =
+        contact::heathcote_xi_offset(profiles, Rr, cam_radius_m(k), f.y0 + grid.y_m, f.y0);
+  c.problem = contact::make_tangential_problem(c.normal.patch, bodies.pair, {}, mu, 0);
+  c.G_Pa = contact::combined_shear_modulus_Pa(bodies.pair);
+  if (heathcote_slip) {
+    c.roller_depth_m = roller_depth_m(profiles, f.y0, grid);
+    c.track_depth_m = track_depth_m(profiles, f.y0, grid);
+  }
+  return c;
+}
+
+}  // namespace
+
+AngleContact angle_contact_on_grid(const RollerAndTrack& bodies, const contact::Profiles& profiles,
+                                   double roller_radius_m, const CamKinematics& k, double normal_load_N, double mu,
+                                   bool heathcote_slip, const contact::Grid& grid) {
+  const Fits f = profile_fits(profiles);
+  return contact_from_hertz(bodies, profiles, f, roller_radius_m, k,
+                            hertz_at(bodies, f, roller_radius_m, k, normal_load_N), mu, heathcote_slip, grid);
+}
+
+TransientRevolution transient_revolution(const CamModel& m, const Revolution& r, const RollerMotion& motion,
+                                         const TransientRevolutionSettings& s) {
+  const std::size_t n = r.rows.size();
+  if (motion.angles.size() != n || n < 2)
+    throw std::invalid_argument("transient_revolution: the roller's motion does not match the revolution");
+  if (!(s.quasi_steady_tolerance >= 0)) throw std::invalid_argument("quasi_steady_tolerance must be >= 0");
+  const double Rr = m.geometry.roller_radius_m;
+  const double dt_row = 2 * contact::kPi / static_cast<double>(n) / m.omega_rad_per_s;
+  const contact::Profiles profiles = roller_and_track_profiles(m.bodies);
+  const Fits f = profile_fits(profiles);
+
+  // the contacts first: the grid covers the largest
+  std::vector<contact::HertzContact> hertz(n);
+  double a_max = 0, b_max = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    hertz[i] = hertz_at(m.bodies, f, Rr, r.rows[i].kin, motion.angles[i].normal_N);
+    a_max = std::max(a_max, hertz[i].a_m);
+    b_max = std::max(b_max, hertz[i].b_m);
+  }
+  TransientRevolution out;
+  for (const contact::HertzContact& h : hertz) {
+    out.a_m.push_back(h.a_m);
+    out.b_m.push_back(h.b_m);
+    out.p0_Pa.push_back(h.p0_Pa);
+  }
+  out.grid = contact::make_grid(a_max, b_max, s.grid);
+  const contact::Grid& g = out.grid;
+  std::vector<AngleContact> contacts(n);
+  for (std::size_t i = 0; i < n; ++i)
+    contacts[i] = contact_from_hertz(m.bodies, profiles, f, Rr, r.rows[i].kin, hertz[i], m.mu, s.heathcote_slip, g);
+
+  // unsteadiness per row
+  out.unsteadiness.assign(n, 0);
+  for (std::size_t i = 0; i < n; ++i) {
+    const RollerAngle& ai = motion.angles[i];
+    const double V = ai.speed_m_per_s;
+    if (!(V * dt_row >= g.dx_m))
+      throw std::invalid_argument(fmt::format("transient_revolution: at cam angle {:.6g} deg an angle step rolls {:.3g} m, "
+                                              "less than a cell ({:.3g} m): fewer angle steps or a finer grid",
+                                              r.rows[i].kin.theta_rad * kDegPerRad, V * dt_row, g.dx_m));
+    double change = 0;
+    for (const std::size_t k : {(i + 1) % n, (i + n - 1) % n}) {
+      const RollerAngle& ak = motion.angles[k];
+      const auto rel = [](double x, double y, double ref) { return ref > 0 ? std::abs(x - y) / ref : 0.0; };
+      change = std::max({change, rel(hertz[i].a_m, hertz[k].a_m, hertz[i].a_m), rel(hertz[i].b_m, hertz[k].b_m, hertz[i].b_m),
+                         rel(ai.normal_N, ak.normal_N, ai.normal_N), rel(V, ak.speed_m_per_s, V),
+                         rel(ai.xi, ak.xi, std::max(std::abs(ai.xi), std::abs(ak.xi)))});
+    }
+    out.unsteadiness[i] = 2 * hertz[i].a_m / V / dt_row * change;
+  }
+  // the transit: rows back from i within 2 half_x + 2 dx rolled
+  const double transit = 2 * g.half_x_m + 2 * g.dx_m;
+  const auto rows_back = [&](std::size_t i) {  // how many rows before i (i itself excluded) cover the transit
+    std::size_t k = 0;
+    double rolled = 0;
+    while (rolled < transit && k < n) {
+      ++k;
+      rolled += motion.angles[(i + n - k) % n].speed_m_per_s * dt_row;
+    }
+    return k;
+  };
+  out.skipped.assign(n, 0);
+  if (s.skip) {
+    for (std::size_t i = 0; i < n; ++i) {
+      bool qs = out.unsteadiness[i] <= s.quasi_steady_tolerance;
+      const std::size_t back = rows_back(i);
+      for (std::size_t k = 1; qs && k <= back; ++k) qs = out.unsteadiness[(i + n - k) % n] <= s.quasi_steady_tolerance;
+      out.skipped[i] = qs;
+      out.skipped_rows += qs;
+    }
+  }
+
+  contact::TransientState state = contact::rest_state(g);
+  double carry = 0;  // rolled distance not yet stepped
+  const auto problem_at = [&](std::size_t i) {
+    contact::TangentialProblem p = contacts[i].problem;
+    p.creepages = {motion.angles[i].xi, 0, 0};
+    p.L_m_per_Pa = contact::mean_flexibility_m_per_Pa(p.flex, p.creepages, hertz[i].a_m, hertz[i].b_m);
+    p.speed_m_per_s = motion.angles[i].speed_m_per_s;
+    return p;
+  };
+  // the shift steps of row i; energies into e (per strip, J/m) and the balance terms into energy when counted
+  const auto run_row = [&](std::size_t i, Eigen::ArrayXd* e, TransientEnergy* energy, long& steps) {
+    const contact::TangentialProblem p = problem_at(i);
+    const double V = p.speed_m_per_s;
+    const double rolled = V * dt_row + carry;
+    const long k = static_cast<long>(std::floor(rolled / g.dx_m));
+    carry = rolled - static_cast<double>(k) * g.dx_m;
+    contact::StepKinematics kin;
+    kin.dt_s = g.dx_m / V;
+    kin.dq_m = g.dx_m;
+    kin.slip_x_m = motion.angles[i].xi * g.dx_m;  // w dt = xi V dt
+    for (long q = 0; q < k; ++q) {
+      const contact::StepResult st = contact::satran_step(contacts[i].normal.patch, p, kin, contact::TransientScheme::Shift, state);
+      ++steps;
+      if (e) *e += st.strip_energy_J_per_m;
+      if (energy) {
+        energy->dissipated_J += st.dissipated_J;
+        energy->creep_work_J += st.creep_work_J;
+        energy->elastic_change_J += st.elastic_change_J;
+        energy->trailing_J += st.trailing_J;
+        energy->released_J += st.released_J;
+        energy->flexibility_J += st.flexibility_J;
+        energy->transport_J += st.transport_J;
+        energy->balance_residual_J += st.balance_residual_J;
+      }
+    }
+    return k;
+  };
+  // from rest over the rows before `i` covering the transit
+  const auto warm_up = [&](std::size_t i) {
+    state = contact::rest_state(g);
+    carry = 0;
+    const std::size_t back = rows_back(i);
+    for (std::size_t k = back; k >= 1; --k) run_row((i + n - k) % n, nullptr, nullptr, out.warmup_steps);
+  };
+
+  out.dissipation.resize(n);
+  bool warm = false;
+  for (std::size_t i = 0; i < n; ++i) {
+    const RevolutionRow& row = r.rows[i];
+    const RollerAngle& a = motion.angles[i];
+    if (out.skipped[i]) {
+      out.dissipation[i] = angle_dissipation(contacts[i], row, a, dt_row);
+      ++out.steady_solves;
+      const contact::TangentialSolution sol = steady_creep(contacts[i], a.xi, a.speed_m_per_s);
+      out.energy.dissipated_J += sol.power_W * dt_row;
+      out.energy.creep_work_J += -sol.creep_work_W * dt_row;  // the steps' sign: energy the rigid slip puts in
+      warm = false;
+      continue;
+    }
+    if (!warm) warm_up(i);
+    warm = true;
+    Eigen::ArrayXd e = Eigen::ArrayXd::Zero(g.ny);
+    const long k = run_row(i, &e, &out.energy, out.transient_steps);
+    AngleDissipation& d = out.dissipation[i];
+    d.theta_rad = row.kin.theta_rad;
+    d.duration_s = dt_row;
+    d.cam_arc_m = row.contact_arc_m;
+    d.rolling_speed_m_per_s = row.kin.rolling_speed_m_per_s;
+    d.roller_surface_speed_m_per_s = roller_surface_speed_m_per_s(row.kin.rolling_speed_m_per_s, a.slip_speed_m_per_s);
+    d.y_m = f.y0 + g.y_m;
+    // the mean power over the steps' time; k >= 1 since V dt >= dx (checked)
+    d.power_W_per_m = e / (static_cast<double>(k) * g.dx_m / a.speed_m_per_s);
+    const contact::ContactPatch& patch = contacts[i].normal.patch;
+    d.mean_pressure_Pa = (patch.half_length_m > 0).select(contact::kPi / 4 * patch.strip_peak_Pa, 0.0);
+  }
+  return out;
+}
+
+SkipComparison compare_skip(const TransientRevolution& with_skip, const TransientRevolution& full) {
+  SkipComparison c;
+  if (with_skip.dissipation.size() != full.dissipation.size())
+    throw std::invalid_argument("compare_skip: the revolutions differ in steps");
+  double p_max = 0, diff = 0, e_skip = 0, e_full = 0;
+  for (std::size_t i = 0; i < full.dissipation.size(); ++i) {
+    const double pf = total_power_W(full.dissipation[i]), ps = total_power_W(with_skip.dissipation[i]);
+    p_max = std::max(p_max, pf);
+    diff = std::max(diff, std::abs(ps - pf));
+    e_full += pf * full.dissipation[i].duration_s;
+    e_skip += ps * with_skip.dissipation[i].duration_s;
+  }
+  c.max_power_error = p_max > 0 ? diff / p_max : 0;
+  c.energy_error = e_full > 0 ? (e_skip - e_full) / e_full : 0;
+  const double steps_full = static_cast<double>(full.transient_steps + full.warmup_steps);
+  c.step_saving = steps_full > 0 ? 1 - static_cast<double>(with_skip.transient_steps + with_skip.warmup_steps) / steps_full : 0;
+  return c;
+}
+
+}  // namespace cam

@@ -1,0 +1,82 @@
+// The tangential problem along the revolution with Satran (lib/tangential/satran.h, shift scheme;
+// docs/cam-follower.md §9): the contact of each angle step (Hertz on the roller's and the track's profiles,
+// the normal load and creepage of the roller's motion, cam/roller_motion.h) on one grid over the
+// revolution's largest contact, the traction state carried from step to step while the geometry, the load,
+// the flexibility and the creepage change from one angle step to the next. Each angle step rolls V dt; the
+// shift scheme steps one cell dx at a time (its steps exact, docs/physics.md §4.1), the remainder carried to
+// the next angle step, and the step's strip energies divided by the time they span give its power per unit
+// width. The state's memory is one transit of the contact: from any state, after rolling 2 half_x + 2 dx it is
+// the same, so the revolution starts from rest that far before theta = 0 (a warm-up on the revolution's
+// last steps, its energy not counted), and so does every resumption after a skip.
+//
+// The quasi-steady skip: the transient differs from the steady solution by the change of its inputs over
+// one transit of the contact. A step's unsteadiness is
+//   epsilon_i = (2 a_i / V_i) / dt * max over (a, b, F_n, V, xi) of |change to the neighbouring steps| / value
+// (for xi the value is max(|xi_i|, |xi_neighbour|): a sign change counts as unsteady). A step whose own and
+// preceding steps within one transit (2 half_x + 2 dx rolled) all have epsilon <= the tolerance takes the
+// steady solution (cam/revolution_dissipation.h) on the same grid instead of the transient's steps.
+#pragma once
+
+#include <vector>
+
+#include "cam/angle_dissipation.h"
+#include "cam/creep_law.h"
+#include "cam/revolution.h"
+#include "cam/roller_motion.h"
+#include "lib/grid.h"
+#include "lib/patch.h"
+#include "lib/tangential/tangential.h"
+
+namespace cam {
+
+struct TransientRevolutionSettings {
+  contact::GridSpec grid{40, 40};  // over the revolution's largest contact
+  bool heathcote_slip = true;
+  bool skip = true;                      // the quasi-steady skip
+  double quasi_steady_tolerance = 1e-3;  // epsilon at or below which a settled step is quasi-steady
+};
+
+// Energy over the revolution's counted steps (J), from Satran's step balance (docs/physics.md §4.1):
+//   dissipated = creep work - elastic change - trailing - released - flexibility - transport (+ residual)
+// skipped steps add their steady power and creep power times the step's duration to dissipated and creep work
+struct TransientEnergy {
+  double dissipated_J = 0, creep_work_J = 0, elastic_change_J = 0, trailing_J = 0, released_J = 0,
+         flexibility_J = 0, transport_J = 0, balance_residual_J = 0;
+};
+
+struct TransientRevolution {
+  RevolutionDissipation dissipation;  // one per row, strips on the common grid
+  contact::Grid grid;
+  std::vector<double> a_m, b_m, p0_Pa;  // each row's contact (Hertz under the motion's F_n)
+  std::vector<double> unsteadiness;   // epsilon_i
+  std::vector<char> skipped;          // 1: the row took the steady solution
+  int skipped_rows = 0;
+  long transient_steps = 0;           // Satran steps counted in the revolution
+  long warmup_steps = 0;              // Satran steps run from rest before a transient stretch (not counted)
+  long steady_solves = 0;
+  TransientEnergy energy;
+};
+
+// The contact of angle k under normal_load_N on `grid` (Hertz on the profiles' fitted radii, centred on the
+// gap's vertex, as lib/normal/normal.h's constant-curvature branch, with its Heathcote offsets). Throws
+// std::invalid_argument when a profile is not of constant curvature (a worn one: not built here) or the
+// ellipse does not fit inside the grid.
+AngleContact angle_contact_on_grid(const RollerAndTrack& bodies, const contact::Profiles& profiles,
+                                   double roller_radius_m, const CamKinematics& k, double normal_load_N, double mu,
+                                   bool heathcote_slip, const contact::Grid& grid);
+
+// throws std::invalid_argument when the motion does not match the revolution or an angle step rolls less than
+// one cell (angle_steps too many for the grid: the shift scheme needs V dt >= dx), and as angle_contact_on_grid
+TransientRevolution transient_revolution(const CamModel& m, const Revolution& r, const RollerMotion& motion,
+                                         const TransientRevolutionSettings& s = {});
+
+// the skip's error against the full transient: the largest difference in a step's total power over the largest
+// power, the revolution's dissipated energy's relative difference, and the steps saved
+struct SkipComparison {
+  double max_power_error = 0;  // max_i |P_skip - P_full| / max_i P_full
+  double energy_error = 0;     // (E_skip - E_full) / E_full
+  double step_saving = 0;      // 1 - (steps + warm-ups with skip) / (steps + warm-ups without)
+};
+SkipComparison compare_skip(const TransientRevolution& with_skip, const TransientRevolution& full);
+
+}  // namespace cam

@@ -1,0 +1,138 @@
+// Satran along the revolution (cam/revolution_transient.h, docs/cam-follower.md §9): on the common grid the
+// contact is the normal solver's Hertz; on the base-circle dwell, a constant stretch, the shift scheme's
+// power is the steady solver's on the same contact (its steady state, docs/physics.md §4.1); the step energy
+// balance holds over the revolution to rounding; the quasi-steady skip stays within its tolerance of the full
+// transient while saving steps.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+#include "cam/creep_law.h"
+#include "cam/revolution.h"
+#include "cam/revolution_dissipation.h"
+#include "cam/revolution_transient.h"
+#include "cam/roller_dynamics.h"
+#include "lib/numeric.h"
+
+namespace {
+
+using namespace cam;
+using contact::kPi;
+
+constexpr double kDeg = kPi / 180;
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+CamModel shipped_like() {
+  CamModel m;
+  m.geometry = {0.04, 0.013, 0};
+  DwellRiseDwellReturn d;
+  d.lift_m = 0.01;
+  d.rise_rad = 100 * kDeg;
+  d.dwell_high_rad = 40 * kDeg;
+  d.return_law = SegmentLaw::Polynomial345;
+  d.return_rad = 100 * kDeg;
+  m.law = make_dwell_rise_dwell_return(d);
+  m.train = {2e4, 150, 0.4, 0.05, 3.8e-6, 0.004, 1e-5};
+  m.bodies = {0.011, 0.5, 0.014, kInf, {{2.1e11, 0.3}, {2.1e11, 0.3}}};
+  m.omega_rad_per_s = 62.83;
+  m.mu = 0.1;
+  m.min_radius_m = 0.003;
+  m.max_pressure_angle_rad = 30 * kDeg;
+  m.angle_steps = 180;
+  return m;
+}
+
+struct CamRun {
+  CamModel m = shipped_like();
+  Revolution r;
+  PeriodicMotion p;
+  TransientRevolutionSettings s;
+  CamRun() {
+    r = run_revolution(m);
+    RollerDynamicsSettings ds;
+    ds.law.grid = {20, 20};
+    p = periodic_motion(m, r, ds);
+    s.grid = {20, 20};
+  }
+};
+
+const CamRun& cam_run() {
+  static const CamRun r;
+  return r;
+}
+
+TEST(CamTransient, ContactOnTheCommonGridIsTheNormalSolversHertz) {
+  const CamRun& x = cam_run();
+  const contact::Profiles prof = roller_and_track_profiles(x.m.bodies);
+  const contact::Grid g = contact::make_grid(1e-3, 3e-3, {20, 20});
+  for (const std::size_t i : {0, 30, 60, 150}) {
+    const RevolutionRow& row = x.r.rows[i];
+    const AngleContact a = angle_contact(x.m.bodies, prof, 0.013, row.kin, row.loads.normal_N, x.m.mu, {});
+    const AngleContact b = angle_contact_on_grid(x.m.bodies, prof, 0.013, row.kin, row.loads.normal_N, x.m.mu, true, g);
+    EXPECT_NEAR(b.normal.patch.a_m, a.normal.patch.a_m, 1e-12 * a.normal.patch.a_m);
+    EXPECT_NEAR(b.normal.patch.b_m, a.normal.patch.b_m, 1e-12 * a.normal.patch.b_m);
+    EXPECT_NEAR(b.normal.patch.p0_Pa, a.normal.patch.p0_Pa, 1e-12 * a.normal.patch.p0_Pa);
+    EXPECT_EQ(b.normal.grid_y0_m, a.normal.grid_y0_m);
+  }
+}
+
+// On the low dwell (240-360 deg) nothing changes: after one transit the shift scheme's power at every step
+// is the steady solver's on the same contact and grid, to rounding; over the revolution the step balance
+// dissipated = creep work - elastic change - trailing - transport holds to rounding
+TEST(CamTransient, OnTheDwellTheTransientIsTheSteadySolutionAndTheBalanceHolds) {
+  const CamRun& x = cam_run();
+  TransientRevolutionSettings s = x.s;
+  s.skip = false;
+  const TransientRevolution t = transient_revolution(x.m, x.r, x.p.motion, s);
+  EXPECT_EQ(t.skipped_rows, 0);
+  const contact::Profiles prof = roller_and_track_profiles(x.m.bodies);
+  int checked = 0;
+  for (std::size_t i = 0; i < x.r.rows.size(); ++i) {
+    if (x.r.rows[i].kin.theta_rad < 250 * kDeg) continue;
+    const RollerAngle& a = x.p.motion.angles[i];
+    const AngleContact c = angle_contact_on_grid(x.m.bodies, prof, 0.013, x.r.rows[i].kin, a.normal_N, x.m.mu, true,
+                                                 t.grid);
+    const contact::TangentialSolution sol = steady_creep(c, a.xi, a.speed_m_per_s);
+    constexpr double kRounding = 1e-9;  // the same strips through the shift scheme's exact steps
+    for (int j = 0; j < t.grid.ny; ++j)
+      EXPECT_NEAR(t.dissipation[i].power_W_per_m(j), sol.strip_power_W_per_m(j),
+                  kRounding * sol.strip_power_W_per_m.maxCoeff()) << i << " " << j;
+    ++checked;
+  }
+  EXPECT_GT(checked, 40);
+  const TransientEnergy& e = t.energy;
+  EXPECT_GT(e.dissipated_J, 0);
+  EXPECT_NEAR(e.dissipated_J, e.creep_work_J - e.elastic_change_J - e.trailing_J - e.transport_J,
+              1e-10 * e.creep_work_J);
+  EXPECT_EQ(e.transport_J, 0);  // shift steps only
+}
+
+// The skip: the dwells are quasi-steady, the rise and return are not; against the full transient its error is
+// within the tolerance, and it saves steps
+TEST(CamTransient, QuasiSteadySkipStaysWithinItsToleranceOfTheFullTransient) {
+  const CamRun& x = cam_run();
+  TransientRevolutionSettings s = x.s;
+  s.quasi_steady_tolerance = 1e-3;
+  const TransientRevolution with = transient_revolution(x.m, x.r, x.p.motion, s);
+  s.skip = false;
+  const TransientRevolution full = transient_revolution(x.m, x.r, x.p.motion, s);
+  EXPECT_GT(with.skipped_rows, 0);
+  for (std::size_t i = 0; i < x.r.rows.size(); ++i) {
+    const double th = x.r.rows[i].kin.theta_rad;
+    if (th > 10 * kDeg && th < 95 * kDeg) {
+      EXPECT_FALSE(with.skipped[i]) << th / kDeg;  // the rise: the load and creepage change within a transit
+    }
+    if (th > 260 * kDeg) {
+      EXPECT_TRUE(with.skipped[i]) << th / kDeg;  // the low dwell, settled
+    }
+  }
+  const SkipComparison c = compare_skip(with, full);
+  std::printf("skip: %d of %zu rows, saving %.3f of the steps, max power error %.3e, energy error %.3e\n",
+              with.skipped_rows, x.r.rows.size(), c.step_saving, c.max_power_error, c.energy_error);
+  EXPECT_LE(c.max_power_error, s.quasi_steady_tolerance);
+  EXPECT_LE(std::abs(c.energy_error), s.quasi_steady_tolerance);
+  EXPECT_GT(c.step_saving, 0.2);
+}
+
+}  // namespace
