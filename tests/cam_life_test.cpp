@@ -3,6 +3,8 @@
 // (docs/cam-follower.md §12).
 #include <gtest/gtest.h>
 
+#include <sys/wait.h>
+
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -307,6 +309,76 @@ TEST_F(CamWearCase, BadWearInputIsRefusedAtItsKey) {
   EXPECT_EQ(error_of(with_wear("  wear:\n    cam: { law: energy, k_E_m3_per_J: 1.0e-14 }\n    revolutions: 1.0e9\n"
                                "    limits: { max_depth_m: 1.0e-5 }\n")),
             "");
+}
+
+// ---- rollwear run and rollwear plot on a cam case ----
+
+struct CliRun {
+  int exit_code = -1;
+  std::string out, err;
+};
+
+CliRun rollwear(const std::string& args, const fs::path& dir) {
+  const fs::path out = dir / "stdout.txt", err = dir / "stderr.txt";
+  const std::string command =
+      "'" + std::string(ROLLWEAR_EXE) + "' " + args + " >'" + out.string() + "' 2>'" + err.string() + "'";
+  const int status = std::system(command.c_str());
+  CliRun r;
+  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  std::stringstream o, e;
+  o << std::ifstream(out).rdbuf();
+  e << std::ifstream(err).rdbuf();
+  r.out = o.str();
+  r.err = e.str();
+  return r;
+}
+
+// A coarse copy of the shipped case (72 angle steps, 72 x 28 cells, a 2 um depth limit) runs to its limit,
+// writes its tables and maps (no temporary left), and its folder plots; without cam.wear it is bad input.
+TEST_F(CamWearCase, RunWritesTheLifeAndPlotDrawsIt) {
+  std::string text = with_wear(
+      "  wear:\n    cam: { law: archard, archard_k: 1.0e-6, hardness_Pa: 6.9e9 }\n"
+      "    roller: { law: archard, archard_k: 1.0e-6, hardness_Pa: 6.9e9 }\n    revolutions: 1.0e12\n"
+      "    limits: { max_depth_m: 2.0e-6 }\n    stepping: { method: fixed-depth, max_depth_step_m: 1.0e-6 }\n"
+      "    arc_cells: 72\n    lateral_cells: 28\n    snapshots_revolutions: [1.0e9]\n");
+  {
+    std::stringstream body;
+    body << std::ifstream(text).rdbuf();
+    std::string b = body.str();
+    const std::size_t at = b.find("angle_steps: 720");
+    ASSERT_NE(at, std::string::npos);
+    b.replace(at, 16, "angle_steps: 72");
+    std::ofstream(text) << b;
+  }
+  const fs::path out = dir_ / "out";
+  const CliRun r = rollwear("run '" + text + "' -o '" + out.string() + "' -q", dir_);
+  ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("ended by: max_depth"), std::string::npos) << r.out;
+  for (const char* f : {"revolution.csv", "dissipation.csv", "life.csv", "report.txt", "snapshots/wear_map_0000.csv",
+                        "snapshots/wear_map_0001.csv", "snapshots/wear_map_0002.csv", "snapshots/roller_wear_0002.csv"})
+    EXPECT_TRUE(fs::exists(out / f)) << f;
+  for (const auto& e : fs::recursive_directory_iterator(out))
+    EXPECT_EQ(e.path().filename().string().find(".tmp."), std::string::npos) << e.path();
+  std::ifstream map(out / "snapshots" / "wear_map_0002.csv");
+  std::string line;
+  while (std::getline(map, line) && line.rfind("#", 0) == 0) {
+  }
+  EXPECT_EQ(line, "cam_angle_deg,cam_arc_m,y_m,depth_m");
+  if (std::system("command -v gnuplot >/dev/null 2>&1") == 0) {
+    const CliRun p = rollwear("plot '" + out.string() + "'", dir_);
+    EXPECT_EQ(p.exit_code, 0) << p.err;
+    for (const char* png : {"cam_revolution.png", "cam_life.png", "cam_wear_map.png", "cam_worn.png"})
+      EXPECT_TRUE(fs::exists(out / "plots" / png)) << png;
+  }
+  // the same case without its wear section: bad input, naming cam.wear
+  std::stringstream body;
+  body << std::ifstream(text).rdbuf();
+  std::string b = body.str();
+  b = b.substr(0, b.find("\n  wear:") + 1) + b.substr(b.find("\noutput:"));
+  std::ofstream(text) << b;
+  const CliRun bad = rollwear("run '" + text + "' -o '" + (dir_ / "out2").string() + "' -q", dir_);
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_NE(bad.err.find("cam.wear: missing"), std::string::npos) << bad.err;
 }
 
 }  // namespace
