@@ -40,6 +40,7 @@
 #include "app/commands.h"
 #include "app/plot.h"
 #include "app/sweep_command.h"
+#include "app/cam_run.h"
 #include "cam/cam_case.h"
 #include "cam/cam_run.h"
 #include "cam/revolution.h"
@@ -625,6 +626,7 @@ void remove_previous_snapshots(const std::filesystem::path& dir) {
 }
 
 int run_run_command(const RunOptions& opt) {
+  if (app::is_cam_case(opt.case_path)) return app::run_cam_life_command(opt.case_path, opt.output_directory, opt.quiet);
   using namespace wear;
   using Clock = std::chrono::steady_clock;
   const Clock::time_point started = Clock::now();

@@ -34,6 +34,7 @@
 #include "lib/io/errors.h"
 #include "wear/sweep_summary.h"
 #include "wear/wear_loop.h"
+#include "lib/numeric.h"
 
 extern char** environ;
 
@@ -481,16 +482,52 @@ std::string run_gnuplot(const fs::path& script) {
   throw std::runtime_error(fmt::format("gnuplot failed ({}): {}", how, said.empty() ? "no message" : said));
 }
 
-// a picture: where it goes, and the temporary name gnuplot draws it to
 struct Picture {
   fs::path path, temporary;
 };
 
-// the script run by gnuplot once, then every picture renamed into place; returns the PNGs written. Any
-// failure removes the script and every temporary picture (a torn PNG is never in place).
+// the pictures a script draws: each one's temporary name, for the script to draw to
+struct Pictures {
+  fs::path plots;
+  std::vector<Picture> list;
+  fs::path operator()(const std::string& leaf) {
+    const fs::path path = plots / leaf;
+    list.push_back({path, temporary_for(path)});
+    return list.back().temporary;
+  }
+};
+
+std::vector<fs::path> render(const std::string& script, const std::vector<Picture>& pictures, const fs::path& plots,
+                             std::ostream& err);
+
+// the pictures: the script, gnuplot, then every PNG into place; returns the PNGs written
+std::vector<fs::path> draw(const RunOutput& run, const fs::path& plots, std::ostream& err) {
+  Pictures picture{plots, {}};
+
+  // the data, then one figure after another
+  const auto [divisor, revolutions_text] = revolutions_axis(run.revolutions);
+  std::string script = "# rollwear plot: " + run.case_name + "\n" + terminal_script() + summary_block(run, divisor);
+  script += history_figure(run, picture("depth.png"), run.case_name + ": maximum wear depth", revolutions_text,
+                           "maximum wear depth (µm)", 2, "max depth", "#c0392b");
+  script += history_figure(run, picture("pressure.png"), run.case_name + ": peak contact pressure", revolutions_text,
+                           "peak pressure p0 (MPa)", 3, "peak pressure p0", "#1f4e9c");
+  for (std::size_t b = 0; b < run.bodies.size(); ++b) {
+    const BodySnapshots& body = run.bodies[b];
+    std::vector<std::string> blocks;
+    for (std::size_t k = 0; k < body.snapshots.size(); ++k) {
+      blocks.push_back(fmt::format("$body{}_snapshot{}", b, k));
+      script += snapshot_block(blocks.back(), body.snapshots[k]);
+    }
+    script += profile_figure(run.case_name, body, blocks, picture("profile_" + body.body + ".png"));
+    script += depth_profile_figure(run.case_name, body, blocks, picture("depth_profile_" + body.body + ".png"));
+  }
+  return render(script, picture.list, plots, err);
+}
+
+// gnuplot draws every picture to its temporary name (any failure removes them all), then each goes into
+// place; returns the PNGs written
 std::vector<fs::path> render(const std::string& script, const std::vector<Picture>& pictures, const fs::path& plots,
                              std::ostream& err) {
-  // gnuplot draws every picture to its temporary name; any failure removes them all
   Temporaries temporaries;
   for (const Picture& p : pictures) temporaries.add(p.temporary);
   const fs::path script_path = temporary_for(plots / "plot.gp");
@@ -516,37 +553,6 @@ std::vector<fs::path> render(const std::string& script, const std::vector<Pictur
   }
   return written;
 }
-
-// the pictures: the script, gnuplot, then every PNG into place; returns the PNGs written
-std::vector<fs::path> draw(const RunOutput& run, const fs::path& plots, std::ostream& err) {
-  std::vector<Picture> pictures;
-  const auto picture = [&](const std::string& leaf) {
-    const fs::path path = plots / leaf;
-    pictures.push_back({path, temporary_for(path)});
-    return pictures.back().temporary;
-  };
-
-  // the data, then one figure after another
-  const auto [divisor, revolutions_text] = revolutions_axis(run.revolutions);
-  std::string script = "# rollwear plot: " + run.case_name + "\n" + terminal_script() + summary_block(run, divisor);
-  script += history_figure(run, picture("depth.png"), run.case_name + ": maximum wear depth", revolutions_text,
-                           "maximum wear depth (µm)", 2, "max depth", "#c0392b");
-  script += history_figure(run, picture("pressure.png"), run.case_name + ": peak contact pressure", revolutions_text,
-                           "peak pressure p0 (MPa)", 3, "peak pressure p0", "#1f4e9c");
-  for (std::size_t b = 0; b < run.bodies.size(); ++b) {
-    const BodySnapshots& body = run.bodies[b];
-    std::vector<std::string> blocks;
-    for (std::size_t k = 0; k < body.snapshots.size(); ++k) {
-      blocks.push_back(fmt::format("$body{}_snapshot{}", b, k));
-      script += snapshot_block(blocks.back(), body.snapshots[k]);
-    }
-    script += profile_figure(run.case_name, body, blocks, picture("profile_" + body.body + ".png"));
-    script += depth_profile_figure(run.case_name, body, blocks, picture("depth_profile_" + body.body + ".png"));
-  }
-
-  return render(script, pictures, plots, err);
-}
-
 
 // ---- a sweep's output folder (rollwear sweep, docs/sweeps.md) -----------------------------------------
 
@@ -810,6 +816,145 @@ std::vector<fs::path> draw_sweep(const SweepOutput& s, const fs::path& plots, st
   if (is_random(s)) script += distribution_figure(s, divisor, life_label, picture("life_distribution.png"));
   return render(script, pictures, plots, err);
 }
+
+// ---- a cam's life (rollwear run on a cam case, app/cam_run.h) --------------------------------------------
+
+// the folder of a cam's life: life.csv and dissipation.csv, which a wear loop's run does not write
+bool is_cam_output(const fs::path& dir) {
+  std::error_code ec;
+  return fs::exists(dir / "life.csv", ec) && fs::exists(dir / "dissipation.csv", ec) && !fs::exists(dir / "summary.csv", ec);
+}
+
+// the last snapshots/wear_map_KKKK.csv (highest KKKK)
+fs::path last_wear_map(const fs::path& dir) {
+  fs::path best;
+  int best_k = -1;
+  std::error_code ec;
+  for (const fs::directory_entry& e : fs::directory_iterator(dir / "snapshots", ec)) {
+    const std::string leaf = e.path().filename().string();
+    if (leaf.size() != std::string("wear_map_0000.csv").size() || leaf.compare(0, 9, "wear_map_") != 0 ||
+        leaf.compare(13, 4, ".csv") != 0 || leaf.substr(9, 4).find_first_not_of("0123456789") != std::string::npos)
+      continue;
+    const int k = std::stoi(leaf.substr(9, 4));
+    if (k > best_k) best_k = k, best = e.path();
+  }
+  if (best_k < 0) throw bad_input(fmt::format("no wear map in {} (snapshots/wear_map_KKKK.csv)", (dir / "snapshots").string()));
+  return best;
+}
+
+// 1, 2 or 5 times a power of ten, the largest not above x (x > 0)
+double round_down_125(double x) {
+  const double decade = std::pow(10.0, std::floor(std::log10(x)));
+  for (const double m : {5.0, 2.0, 1.0})
+    if (m * decade <= x) return m * decade;
+  return decade;
+}
+
+std::vector<fs::path> draw_cam(const fs::path& dir, const fs::path& plots, std::ostream& err) {
+  const Table life = read_table(dir / "life.csv");
+  const Table rev = read_table(dir / "revolution.csv");
+  const Table dis = read_table(dir / "dissipation.csv");
+  const fs::path map_path = last_wear_map(dir);
+  const Table map = read_table(map_path);
+  const std::string name = case_name_of(life, dir);
+  double map_revolutions = std::numeric_limits<double>::quiet_NaN();
+  if (const auto it = map.comments.find("revolutions"); it != map.comments.end()) parse_number(it->second.first, map_revolutions);
+
+  const std::vector<double> N = column(life, "revolutions"), depth = column(life, "max_depth_m"),
+                            loss = column(life, "lift_loss_m");
+  const std::vector<double> theta = column(rev, "cam_angle_deg"), lift = column(rev, "lift_m"),
+                            phi = column(rev, "pressure_angle_deg"), Fn = column(rev, "normal_load_N"),
+                            p0 = column(rev, "p0_Pa"), arc = column(rev, "contact_arc_m");
+  const std::vector<double> power = column(dis, "power_W"), alpha = column(dis, "contact_angle_deg"),
+                            radius = column(dis, "contact_radius_m");
+  const std::vector<double> m_angle = column(map, "cam_angle_deg"), m_arc = column(map, "cam_arc_m"),
+                            m_y = column(map, "y_m"), m_depth = column(map, "depth_m");
+  if (power.size() != theta.size())
+    throw bad_input(fmt::format("{}: {} rows, revolution.csv {}: not the same revolution", (dir / "dissipation.csv").string(),
+                                power.size(), theta.size()));
+
+  std::string script = "# rollwear plot: " + name + "\n" + terminal_script();
+  // the data
+  script += "$rev << EOD\n";
+  for (std::size_t k = 0; k < theta.size(); ++k)
+    script += fmt::format("{:.8g} {:.8g} {:.8g} {:.8g} {:.8g} {:.8g}\n", theta[k], lift[k] * 1e3, phi[k], Fn[k], p0[k] * 1e-6,
+                          power[k] * 1e3);
+  script += "EOD\n";
+  const auto [divisor, revolutions_text] = revolutions_axis(N);
+  script += "$life << EOD\n";
+  for (std::size_t k = 0; k < N.size(); ++k)
+    script += fmt::format("{:.8g} {:.8g} {:.8g}\n", N[k] / divisor, depth[k] * 1e6, loss[k] * 1e6);
+  script += "EOD\n";
+  // the map, arc row by arc row (pm3d's scans), and the deepest wear across the width at each arc cell
+  std::vector<double> cell_arc, cell_deepest;
+  script += "$map << EOD\n";
+  for (std::size_t r = 0; r < m_arc.size(); ++r) {
+    if (r > 0 && m_arc[r] != m_arc[r - 1]) script += "\n";
+    if (cell_arc.empty() || m_arc[r] != cell_arc.back()) cell_arc.push_back(m_arc[r]), cell_deepest.push_back(0);
+    cell_deepest.back() = std::max(cell_deepest.back(), m_depth[r]);
+    script += fmt::format("{:.8g} {:.8g} {:.8g}\n", m_angle[r], m_y[r] * 1e3, m_depth[r] * 1e6);
+  }
+  script += "EOD\n";
+  // the worn cam: each angle's contact point moved inwards by the deepest wear there (linear between the arc
+  // cells' centres, periodic), exaggerated
+  const double circumference = 2 * cell_arc.front() * static_cast<double>(cell_arc.size());  // cells of equal length
+  const auto deepest_at = [&](double a) {
+    const double ds = circumference / static_cast<double>(cell_arc.size());
+    double u = a / ds - 0.5;
+    const double n = static_cast<double>(cell_arc.size());
+    u -= std::floor(u / n) * n;
+    const std::size_t c0 = std::min(static_cast<std::size_t>(u), cell_arc.size() - 1), c1 = (c0 + 1) % cell_arc.size();
+    const double w = u - static_cast<double>(c0);
+    return (1 - w) * cell_deepest[c0] + w * cell_deepest[c1];
+  };
+  double deepest = 0, r_min = std::numeric_limits<double>::infinity();
+  for (double d : cell_deepest) deepest = std::max(deepest, d);
+  for (double r : radius) r_min = std::min(r_min, r);
+  const double scale = deepest > 0 ? round_down_125(0.06 * r_min / deepest) : 1;
+  script += "$cam << EOD\n";
+  for (std::size_t k = 0; k <= theta.size(); ++k) {
+    const std::size_t i = k % theta.size();
+    const double a = alpha[i] * contact::kPi / 180, r = radius[i], rw = r - scale * deepest_at(arc[i]);
+    script += fmt::format("{:.8g} {:.8g} {:.8g} {:.8g}\n", r * 1e3 * std::cos(a), r * 1e3 * std::sin(a),
+                          rw * 1e3 * std::cos(a), rw * 1e3 * std::sin(a));
+  }
+  script += "EOD\n";
+
+  Pictures picture{plots, {}};
+  script += figure_start(picture("cam_revolution.png"), name + ": one revolution (unworn)") +
+            "set multiplot layout 2,2\n"
+            "set xlabel 'cam angle (deg)'\nset xrange [0:360]\nset xtics 60\nunset key\n"
+            "set title 'lift (mm)'\nplot $rev using 1:2 with lines lw 2 lc rgb '#1f4e9c'\n"
+            "set title 'pressure angle (deg)'\nplot $rev using 1:3 with lines lw 2 lc rgb '#2a9d8f'\n"
+            "set title 'normal load (N), peak pressure (MPa)'\nset key top left\n"
+            "plot $rev using 1:4 with lines lw 2 lc rgb '#e9a03b' title 'F_n (N)', "
+            "$rev using 1:5 with lines lw 2 lc rgb '#c0392b' title 'p0 (MPa)'\n"
+            "unset key\nset title 'dissipated power (mW)'\nplot $rev using 1:6 with lines lw 2 lc rgb '#c0392b'\n"
+            "unset multiplot\n" +
+            kFigureEnd;
+  script += figure_start(picture("cam_life.png"), name + ": the life") +
+            fmt::format("set xlabel {}\nset ylabel 'µm'\nset key top left\n"
+                        "plot $life using 1:2 with linespoints lw 2 pt 7 ps 0.6 lc rgb '#c0392b' title 'max depth', "
+                        "$life using 1:3 with linespoints lw 2 pt 7 ps 0.6 lc rgb '#1f4e9c' title 'lift loss'\n",
+                        quote(revolutions_text)) +
+            kFigureEnd;
+  script += figure_start(picture("cam_wear_map.png"),
+                         fmt::format("{}: the cam track's wear depth (µm) at {}", name, revolutions_label(map_revolutions))) +
+            "set view map\nset pm3d map corners2color c1\nset palette defined (0 '#ffffff', 1 '#e9a03b', 2 '#c0392b', 3 '#3b0f0f')\n"
+            "set xlabel 'cam angle at which the contact passes (deg)'\nset ylabel 'across the track y (mm)'\n"
+            "set xrange [0:360]\nset xtics 60\nset autoscale yfix\nset cblabel 'depth (µm)'\nunset key\nunset grid\n"
+            "splot $map using 1:2:3 with pm3d\n" +
+            kFigureEnd;
+  script += figure_start(picture("cam_worn.png"),
+                         fmt::format("{}: the worn cam beside the new one at {} (depth × {:g})", name,
+                                     revolutions_label(map_revolutions), scale)) +
+            "set size ratio -1\nset xlabel 'x (mm), cam frame'\nset ylabel 'y (mm)'\nset key outside right top\n"
+            "plot $cam using 1:2 with lines lw 2.5 dt (8,6) lc rgb 'black' title 'new', "
+            "$cam using 3:4 with lines lw 2 lc rgb '#c0392b' title " +
+            quote(fmt::format("worn, depth × {:g}", scale)) + "\n" + kFigureEnd;
+  return render(script, picture.list, plots, err);
+}
+
 }  // namespace
 
 int plot_command(const std::string& output_dir, std::ostream& out, std::ostream& err) {
@@ -824,6 +969,11 @@ int plot_command(const std::string& output_dir, std::ostream& out, std::ostream&
     const fs::path dir = output_dir;
     if (is_sweep_folder(dir)) {  // rollwear sweep's folder: results.csv and sweep.txt
       for (const fs::path& p : draw_sweep(read_sweep_output(dir), dir / "plots", err)) out << p.string() << '\n';
+      out.flush();
+      return 0;
+    }
+    if (is_cam_output(dir)) {
+      for (const fs::path& p : draw_cam(dir, dir / "plots", err)) out << p.string() << '\n';
       out.flush();
       return 0;
     }

@@ -181,6 +181,7 @@ CamCase read_cam_case(const std::string& path) {
                    [](int v) { return v >= 2 && v <= 1000 ? "" : "must be in [2, 1000]"; });
         t.optional("compare_full_transient", c.solver.compare_full_transient);
       });
+      s.optional_section("wear", [&](YamlMap& w) { read_cam_wear(w, c.wear.emplace()); });
     });
   });
   return c;

@@ -28,10 +28,12 @@
 //   output: { directory: out/cam-follower }
 #pragma once
 
+#include <optional>
 #include <string>
 
 #include "cam/cam_error.h"
 #include "cam/cam_run.h"
+#include "cam/cam_wear.h"
 #include "cam/revolution.h"
 #include "lib/io/errors.h"
 #include "lib/io/key_locations.h"
@@ -44,6 +46,7 @@ struct CamCase {
   std::string output_directory; // output.directory, or "" (out/<name>)
   CamModel model;
   CamSolverSettings solver;     // cam.tangential
+  std::optional<CamWearSpec> wear;  // cam.wear: the wear and life inputs (cam/cam_wear.h), if given
   contact::KeyLocations locations;
 };
 

@@ -235,4 +235,7 @@ IntegratorOptions integrator_options(const WearStepping& s) {
   return o;
 }
 
+void read_wear_law(YamlMap& m, WearLaw& law) { read_law(m, law); }
+void read_wear_stepping(YamlMap& m, WearStepping& s) { read_stepping(m, s); }
+
 }  // namespace wear

@@ -34,6 +34,10 @@
 #include "wear/integrator.h"
 #include "wear/wear_law.h"
 
+namespace contact {
+class YamlMap;
+}
+
 namespace wear {
 
 struct WearLimits {
@@ -94,5 +98,10 @@ void check_profile_resolves_contact(const WearCase& c, int body, double node_spa
 
 // the integrator's settings of the case
 IntegratorOptions integrator_options(const WearStepping& s);
+
+// one body's wear law and the stepping, read from their sections with a wear case's keys and errors (for
+// the cases that carry a wear section of their own: the cam's, cam/cam_wear.h)
+void read_wear_law(contact::YamlMap& m, WearLaw& law);
+void read_wear_stepping(contact::YamlMap& m, WearStepping& s);
 
 }  // namespace wear

@@ -1,0 +1,157 @@
+// The cam's life in cam revolutions (docs/cam-follower.md §12): the worn depths of the track's map and of
+// the roller (cam/cam_wear.h) obey dh/dN = f(h), N the cam revolutions,
+//   f(h): worn profiles at each angle (worn_profiles_at) -> the periodic revolution's dissipation (the
+//         caller's producer, DissipationOf) -> wear_per_revolution -> smoothed across the width (the wear
+//         loop's volume-conserving Gaussian filter, wear/profile_update.h, on the lateral cells' centres:
+//         wear features narrower than the cut-off are not kept, as running-in and debris spread them),
+// integrated by the project's integrator (wear/integrator.h: adaptive ARKODE, or fixed steps with their
+// stability control; the case's stepping keys are a wear case's) until a limit ends the life:
+//   max_depth      the deepest wear of either body reaches max_depth_m;
+//   lift_loss      the follower's lift has dropped by max_lift_loss_m at some cam angle.
+// Both are signed, continuous functions of the state (g < 0 inside the life), so the integrator's root
+// finding locates them on its dense output (adaptive) or its Euler line (fixed), as wear_loop's limits.
+//
+// The lift loss. The roller's centre is the cam surface's offset by R_r along the contact normal n, which
+// makes the pressure angle phi with the follower's axis. Wear lowers the bodies' unloaded surfaces under
+// the contact by delta (normal_recession_m: the cam's and the roller's depths at the point of closest
+// approach across the width), so the pitch curve moves inwards by delta along n. The follower keeps its
+// axis: its centre moves along the axis by the Delta d whose component along n is delta,
+//   Delta d cos phi = delta   ->   lift loss = delta / cos phi,
+// to first order in delta / rho (the pitch curve's tangential shift moves the contact point along the
+// curve, a second-order change of d). The elastic approach is the unworn one's (the load changes by
+// k Delta d, a relative change of k delta / F of order 1e-4 here). The lift-loss limit reads the largest
+// loss over the revolution's angle steps.
+#pragma once
+
+#include <Eigen/Core>
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "cam/cam_wear.h"
+#include "cam/revolution.h"
+#include "cam/roller_dynamics.h"
+#include "lib/normal/profile.h"
+#include "wear/wear_case.h"
+
+namespace cam {
+
+
+// where the lift loss is read: the cam angle, the contact's arc on the cam there, the pressure angle
+struct LiftLossSample {
+  double theta_rad = 0;
+  double arc_m = 0;
+  double pressure_angle_rad = 0;
+};
+// one sample per angle step of a complete revolution (its rows' theta, contact_arc_m and phi)
+std::vector<LiftLossSample> lift_loss_samples(const Revolution& r);
+
+struct LiftLoss {
+  double max_m = 0;         // the largest loss over the samples
+  double at_theta_rad = 0;  // where
+};
+// delta / cos phi at each sample, and its largest
+Eigen::ArrayXd lift_loss_m(const contact::Profiles& unworn, const CamWearGrid& g, const CamWearState& s,
+                           const std::vector<LiftLossSample>& samples);
+LiftLoss max_lift_loss(const contact::Profiles& unworn, const CamWearGrid& g, const CamWearState& s,
+                       const std::vector<LiftLossSample>& samples);
+
+// the periodic revolution's dissipation on the worn geometry (what the revolution's tangential solve
+// makes, with worn_profiles_at at each angle); may throw
+using DissipationOf = std::function<RevolutionDissipation(const CamWearState& worn)>;
+
+// The quasi-steady dissipation (cam/revolution_dissipation.h) on the worn geometry: at each angle step the
+// contact on worn_profiles_at(unworn, g, s, the row's arc) under the motion's normal load, the roller's
+// creepage the one that gives the motion's creep force F_t on that contact (the force is what the roller's
+// inertia and bearing ask for, which wear does not change; where the law cannot give it, the motion's
+// creepage), and the steady solution's strip powers. The unworn state gives the producer's own result.
+RevolutionDissipation worn_revolution_dissipation(const CamModel& m, const Revolution& r, const RollerMotion& motion,
+                                                  const contact::Profiles& unworn, const CamWearGrid& g,
+                                                  const CamWearState& s, const CreepLawSettings& law);
+
+struct CamLifeModel {
+  std::string name;
+  CamWearGrid grid;
+  CamWearLaws laws;
+  contact::Profiles unworn;                // roller (body 1) and track (body 2), unworn
+  std::vector<LiftLossSample> samples;     // the lift-loss limit's
+  double revolutions = 0;                  // the budget
+  double max_depth_m = 0;                  // 0 = no such limit
+  double max_lift_loss_m = 0;              // 0 = no such limit
+  wear::WearStepping stepping;
+  double smoothing_wavelength_m = 0;       // the rate's lateral filter on each arc cell's row and the roller's
+  std::vector<double> snapshots_revolutions;  // increasing, in (0, revolutions]
+};
+
+// the model of a case's wear: section (spec) on the grid of its unworn revolution (the circumference and
+// the angles its steps sweep, rev the unworn revolution's dissipation)
+CamLifeModel make_cam_life_model(const std::string& name, const CamWearSpec& spec, double mu,
+                                 const contact::Profiles& unworn, double roller_radius_m,
+                                 double circumference_m, const RevolutionDissipation& rev,
+                                 std::vector<LiftLossSample> samples);
+
+enum class CamLifeEnd { NotRun, MaxDepth, LiftLoss, Revolutions, MaxSteps, Failed };
+// max_depth, lift_loss, revolutions, max_steps, failed, not_run
+std::string to_string(CamLifeEnd e);
+
+struct CamLifeStep {
+  long step = 0;
+  double N = 0;
+  const CamWearState* state = nullptr;
+  double max_depth_m = 0;
+  LiftLoss lift_loss;
+  double energy_J = 0;  // dissipated since N = 0
+};
+
+struct CamLifeHooks {
+  std::function<void(const CamLifeStep&)> on_step;                          // after each accepted step
+  std::function<void(double N, const CamWearState& state)> on_snapshot;     // at 0, each snapshot, the end
+};
+
+struct CamLifeResult {
+  CamLifeEnd ended_by = CamLifeEnd::NotRun;
+  std::string message;
+  double N = 0;
+  CamWearState state;
+  double max_depth_m = 0;
+  LiftLoss lift_loss;
+  double energy_J = 0;             // dissipated over the life
+  double cam_volume_m3 = 0;        // worn from the track: sum of cell depth x cell area
+  double roller_volume_m3 = 0;     // worn from the roller: 2 pi R_r x its worn area
+  long steps = 0, rejected = 0, rhs_evals = 0;
+  long revolutions_solved = 0;     // calls of the dissipation producer
+};
+
+// Integrates from the unworn state to the first limit (located) or the budget. Throws std::invalid_argument
+// for a bad model; an exception of the producer or the integrator's failure ends the life Failed with its
+// message (the state the last accepted step's).
+CamLifeResult run_cam_life(const CamLifeModel& m, const DissipationOf& dissipation, const CamLifeHooks& hooks = {});
+
+// A case's life, set up: the unworn revolution (status Jump: nothing else is set), the roller's periodic
+// motion, the unworn quasi-steady dissipation (the same producer as on the worn geometry, so that the rate
+// is continuous at the unworn state: Satran along the revolution, §9, needs Hertz's profiles), the life's model, and the producer of the dissipation on a worn state
+// (worn_revolution_dissipation with this revolution and motion; the unworn state gives `unworn` itself).
+// Held by pointer: the producer refers to it.
+struct CamLifeSetup {
+  CamModel model;
+  Revolution revolution;
+  RollerDynamicsSettings dynamics;
+  PeriodicMotion motion;
+  contact::Profiles unworn_profiles;
+  RevolutionDissipation unworn;
+  CamLifeModel life;
+  DissipationOf producer() const;
+};
+// Throws CamError for a design the model refuses (the caller places it in the case), std::runtime_error
+// when the roller's motion is not periodic, and what the solvers throw.
+// dynamics: the roller's spin and the creep law's grid (from the case's cam.tangential, as rollwear cam's)
+std::unique_ptr<CamLifeSetup> set_up_cam_life(const std::string& name, const CamModel& model, const CamWearSpec& spec,
+                                              const RollerDynamicsSettings& dynamics = {});
+
+// the state's worn volumes
+double cam_worn_volume_m3(const CamWearGrid& g, const CamWearState& s);
+double roller_worn_volume_m3(const CamWearGrid& g, const CamWearState& s);
+
+}  // namespace cam
