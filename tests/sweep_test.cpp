@@ -236,7 +236,7 @@ TEST(SweepRandom, SpearmanOfMonotoneAndReversedSamples) {
 }
 
 TEST_F(SweepFile, ShippedSweepsReadAndEveryCaseIsValid) {
-  for (const char* name : {"sweep-grid.yaml", "sweep-monte-carlo.yaml"}) {
+  for (const char* name : {"sweep-grid.yaml", "sweep-monte-carlo.yaml", "sweep-contact.yaml"}) {
     const Sweep s = read_sweep((kSource / "cases" / name).string());
     std::vector<long> all(static_cast<std::size_t>(case_count(s)));
     for (long i = 0; i < case_count(s); ++i) all[static_cast<std::size_t>(i)] = i;
