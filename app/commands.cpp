@@ -43,6 +43,12 @@ ContactRun solve_contact_case(const ContactCase& c, bool fields) {
   return r;
 }
 
+ContactPatch in_profile_coordinates(const NormalSolution& normal) {
+  ContactPatch p = normal.patch;
+  p.grid.y_m += normal.grid_y0_m;
+  return p;
+}
+
 TransientResult run_transient_case(const ContactCase& c, const TransientCase& t, const StepObserver& observe) {
   try {
     const TangentialScheme scheme = parse_tangential_scheme(c.solver.tangential);

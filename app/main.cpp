@@ -293,13 +293,6 @@ void print_contact_summary(const ContactCase& c, const NormalSolution& normal, c
   fmt::print("  stick fraction     {:.4f}\n", s.stick_fraction);
 }
 
-// the patch with its strips at the profiles' lateral positions (for strips.csv)
-ContactPatch in_profile_coordinates(const NormalSolution& normal) {
-  ContactPatch p = normal.patch;
-  p.grid.y_m += normal.grid_y0_m;
-  return p;
-}
-
 int run_contact(const ContactOptions& opt) {
   const ContactCase c = read_contact_case(opt.case_path);
   const bool fields = c.output.fields && !opt.no_fields;

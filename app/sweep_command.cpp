@@ -109,7 +109,7 @@ std::string duration(double s) {
 
 CLI::App* add_sweep_command(CLI::App& app, SweepOptions& opt) {
   CLI::App* sub = app.add_subcommand(
-      "sweep", "Many wear lives of one base case: a grid of values (lists, linear and logarithmic ranges; product or "
+      "sweep", "Many wear lives (or, on a base case without wear:, steady contacts as `contact` solves them) of one base case: a grid of values (lists, linear and logarithmic ranges; product or "
                "zip) or random sampling (Monte Carlo, Latin hypercube) of any keys of the case, run on all cores. "
                "Writes results.csv (a row per case) and each case's outputs in case_NNNN/ (docs/sweeps.md).");
   sub->footer(

@@ -76,9 +76,7 @@ void serve(const wear::Sweep& s, const std::filesystem::path& output_directory) 
       spdlog::info("sweep: rank {} ran {} cases", rank(), ran);
       return;
     }
-    const std::vector<double> inputs = wear::case_inputs(s, index);
-    const wear::CaseOutcome c = wear::run_case(wear::case_yaml(s, base, index, inputs), index, inputs,
-                                               output_directory / wear::case_folder_name(index));
+    const wear::CaseOutcome c = wear::run_sweep_case(s, base, index, output_directory);
     const std::string row = wear::results_row(c);
     MPI_Send(row.data(), static_cast<int>(row.size()), MPI_CHAR, 0, kRowTag, MPI_COMM_WORLD);
   }

@@ -1,5 +1,6 @@
 #include "wear/sweep.h"
 
+#include <fcntl.h>
 #include <signal.h>
 #include <unistd.h>
 
@@ -8,10 +9,12 @@
 #include <cerrno>
 #include <chrono>
 #include <cmath>
+#include <cstring>
 #include <condition_variable>
 #include <exception>
 #include <fstream>
 #include <map>
+#include <memory>
 #include <mutex>
 #include <numeric>
 #include <regex>
@@ -25,6 +28,8 @@
 
 #include <spdlog/spdlog.h>
 
+#include "app/commands.h"
+#include "lib/io/case_node.h"
 #include "lib/io/csv.h"
 #include "lib/io/errors.h"
 #include "lib/io/number.h"
@@ -97,6 +102,12 @@ void read_axis_values(YamlMap& a, SweepAxis& axis) {
   if (forms != 1) a.fail_here("give exactly one of values: [...], linear: {from, to, count} or log: {from, to, count}");
 }
 
+std::filesystem::path resolve_base(const std::string& sweep_path, const std::string& base) {
+  const std::filesystem::path p = std::filesystem::path(base).is_absolute() ? std::filesystem::path(base)
+                                                                            : std::filesystem::path(sweep_path).parent_path() / base;
+  return p.lexically_normal();
+}
+
 void read_input(YamlMap& m, RandomInput& in) {
   std::string name;
   m.required("distribution", name, [](const std::string& d) {
@@ -137,7 +148,19 @@ Sweep read_sweep(const std::string& path) {
   };
   contact::read_yaml_file(path, nullptr, [&](YamlMap& m) {
     m.required("base", base);
-    m.optional_section("output", [&](YamlMap& o) { o.optional("directory", s.output_directory); });
+    // the kind of the cases: a contact sweep when the base case has no wear: section (a base that cannot be
+    // read is refused by validate_cases, naming it)
+    try {
+      const YAML::Node b = contact::load_yaml_file(resolve_base(path, base).string());
+      if (b.IsMap() && !b["wear"]) s.kind = SweepKind::Contact;
+    } catch (const std::exception&) {
+    }
+    m.optional_section("output", [&](YamlMap& o) {
+      o.optional("directory", s.output_directory);
+      o.optional("case_files", s.case_files);
+      if (!s.case_files && s.kind != SweepKind::Contact)
+        o.fail("case_files", "false applies to a contact sweep (a base case without wear:); a wear sweep writes each case's folder");
+    });
     std::string combine = "product";
     m.optional("combine", combine, [](const std::string& c) { return c == "product" || c == "zip" ? "" : "must be product or zip"; });
     s.combine = combine == "zip" ? Combine::Zip : Combine::Product;
@@ -219,9 +242,7 @@ Sweep read_sweep(const std::string& path) {
   });
   if (has_random && s.combine == Combine::Zip)
     throw CaseError(path + ": combine: applies to axes:, not to random:");
-  s.base_path = std::filesystem::path(base).is_absolute() ? std::filesystem::path(base)
-                                                          : std::filesystem::path(path).parent_path() / base;
-  s.base_path = s.base_path.lexically_normal();
+  s.base_path = resolve_base(path, base);
   if (s.sampling != Sampling::Grid) {
     const std::size_t n = static_cast<std::size_t>(s.count), k = s.inputs.size();
     s.samples.assign(n, std::vector<double>(k));
@@ -369,48 +390,67 @@ std::string case_folder_name(long i) { return fmt::format("case_{:04d}", i); }
 
 namespace {
 
-// "" when the wear case reader and model take the text, else the reader's message
-std::string refusal(const std::string& text, const std::filesystem::path& scratch, const std::string& shown_as) {
-  contact::write_file_atomic(scratch, text);
+// "" when the case reader (and, for a wear case, its model) takes the text, else the reader's message.
+// `shown_as` names the text in the messages.
+std::string refusal(const Sweep& s, const std::string& text, const std::string& shown_as) {
   try {
-    const WearCase c = read_wear_case(scratch.string());
-    (void)make_wear_model(c);
+    if (s.kind == SweepKind::Contact) {
+      contact::validate_steady(contact::read_contact_case_text(text, shown_as, s.base_path.parent_path()));
+    } else {
+      (void)make_wear_model(read_wear_case_text(text, shown_as, s.base_path.parent_path()));
+    }
     return "";
   } catch (const CaseError& e) {
-    std::string m = e.what();
-    const std::string p = scratch.string();
-    for (std::size_t at = m.find(p); at != std::string::npos; at = m.find(p, at + shown_as.size()))
-      m.replace(at, p.size(), shown_as);
-    return m;
+    return e.what();
   }
 }
 
 }  // namespace
 
-void validate_cases(const Sweep& s, const std::vector<long>& indices, const std::filesystem::path& scratch) {
-  struct RemoveScratch {
-    const std::filesystem::path& p;
-    ~RemoveScratch() {
-      std::error_code ec;
-      std::filesystem::remove(p, ec);
-    }
-  } remove_scratch{scratch};
+std::vector<SweepCase> validate_cases(const Sweep& s, const std::vector<long>& indices) {
   const YAML::Node base = load_base_case(s);
   const std::vector<std::string> keys = varied_keys(s);
-  const std::vector<bool> none(keys.size(), false);
-  const std::string base_refused = refusal(emit(s, with_inputs(s, base, 0, case_inputs(s, 0), none), 0, case_inputs(s, 0)),
-                                           scratch, s.base_path.string() + " (as the base of the sweep)");
+  const std::vector<bool> none(keys.size(), false), all(keys.size(), true);
+  const std::string base_refused = refusal(s, emit(s, with_inputs(s, base, 0, case_inputs(s, 0), none), 0, case_inputs(s, 0)),
+                                           s.base_path.string() + " (as the base of the sweep)");
   if (!base_refused.empty()) throw CaseError(s.path + ": base: the base case is refused: " + base_refused);
+  std::vector<SweepCase> cases;
+  cases.reserve(indices.size());
   for (const long i : indices) {
-    const std::vector<double> in = case_inputs(s, i);
+    SweepCase c;
+    c.index = i;
+    c.inputs = case_inputs(s, i);
+    const std::vector<double>& in = c.inputs;
     const std::string shown = case_folder_name(i) + "/case.yaml";
-    const std::string why = refusal(case_yaml(s, base, i, in), scratch, shown);
-    if (why.empty()) continue;
+    std::string why;
+    if (s.kind == SweepKind::Contact) {
+      // read from the document itself (no text written and parsed again); a refusal is read again from the
+      // text, whose lines the message names
+      const YAML::Node doc = with_inputs(s, base, i, in, all);
+      if (s.case_files) c.text = emit(s, doc, i, in);
+      try {
+        auto read = std::make_shared<contact::ContactCase>(contact::read_contact_case_node(doc, shown, s.base_path.parent_path()));
+        contact::validate_steady(*read);
+        c.contact = std::move(read);
+      } catch (const CaseError&) {
+        const std::string text = c.text.empty() ? emit(s, doc, i, in) : c.text;
+        why = refusal(s, text, shown);
+        if (why.empty())  // the text passes where the document did not: run the text's case
+          c.contact = std::make_shared<contact::ContactCase>(contact::read_contact_case_text(text, shown, s.base_path.parent_path()));
+      }
+    } else {
+      c.text = case_yaml(s, base, i, in);
+      why = refusal(s, c.text, shown);
+    }
+    if (why.empty()) {
+      cases.push_back(std::move(c));
+      continue;
+    }
     // the culprit: the value the reader refuses alone
     for (std::size_t k = 0; k < keys.size(); ++k) {
       std::vector<bool> only(keys.size(), false);
       only[k] = true;
-      const std::string alone = refusal(emit(s, with_inputs(s, base, i, in, only), i, in), scratch, shown);
+      const std::string alone = refusal(s, emit(s, with_inputs(s, base, i, in, only), i, in), shown);
       if (!alone.empty())
         throw CaseError(key_location(s, keys[k]) + ": " + keys[k] + ": case " + std::to_string(i) + "'s value " +
                         round_trip(in[k]) + " is refused: " + alone);
@@ -420,6 +460,7 @@ void validate_cases(const Sweep& s, const std::vector<long>& indices, const std:
     throw CaseError(s.path + ": case " + std::to_string(i) + " (" + values +
                     "): each value passes alone, the combination is refused: " + why);
   }
+  return cases;
 }
 
 // ---- the results table ----
@@ -452,23 +493,39 @@ CaseStatus parse_case_status(const std::string& word) {
   throw std::invalid_argument("not a case status: '" + contact::clipped(word) + "' (ok, failed, bad_input, error)");
 }
 
-std::string results_header(const std::vector<std::string>& keys) {
+namespace {
+// the columns of a case's outputs, between the inputs and the status
+const char* output_columns(SweepKind kind) {
+  return kind == SweepKind::Contact ? "a_m,b_m,p0_Pa,approach_m,Fx_N,Fy_N,Mz_N_m,power_W,stick_fraction"
+                                    : "life_revolutions,ended_by,max_depth_m,worn_volume_m3";
+}
+std::size_t output_column_count(SweepKind kind) { return kind == SweepKind::Contact ? 9 : 4; }
+}  // namespace
+
+std::string results_header(const std::vector<std::string>& keys, SweepKind kind) {
   std::string h = "index";
   for (const std::string& k : keys) h += "," + csv_field(k);
-  return h + ",life_revolutions,ended_by,max_depth_m,worn_volume_m3,status,message\n";
+  return h + "," + output_columns(kind) + ",status,message\n";
 }
 
 std::string results_row(const CaseOutcome& o) {
   std::string r = std::to_string(o.index);
   for (const double v : o.inputs) r += "," + round_trip(v);
-  r += "," + round_trip(o.life_revolutions) + "," + to_string(o.ended_by) + "," + round_trip(o.max_depth_m) + "," +
-       round_trip(o.worn_volume_m3) + "," + to_string(o.status) + "," + csv_field(o.message);
+  if (o.kind == SweepKind::Contact) {
+    const ContactOutputs& c = o.contact;
+    for (const double v : {c.a_m, c.b_m, c.p0_Pa, c.approach_m, c.Fx_N, c.Fy_N, c.Mz_N_m, c.power_W, c.stick_fraction})
+      r += "," + round_trip(v);
+  } else {
+    r += "," + round_trip(o.life_revolutions) + "," + to_string(o.ended_by) + "," + round_trip(o.max_depth_m) + "," +
+         round_trip(o.worn_volume_m3);
+  }
+  r += "," + to_string(o.status) + "," + csv_field(o.message);
   return r + "\n";
 }
 
-CaseStatus row_status(const std::string& row, std::size_t keys) {
+CaseStatus row_status(const std::string& row, std::size_t keys, SweepKind kind) {
   std::size_t at = 0;
-  for (std::size_t k = 0; k < keys + 5; ++k) {  // index, the inputs, life, ended_by, depth, volume
+  for (std::size_t k = 0; k < keys + 1 + output_column_count(kind); ++k) {  // index, the inputs, the outputs
     at = row.find(',', at);
     if (at == std::string::npos) throw std::invalid_argument("not a results row: " + contact::clipped(row));
     ++at;
@@ -492,8 +549,8 @@ namespace {
 // that no longer run; files of any other name stay
 void remove_stale_temporaries(const std::filesystem::path& dir) {
   static const std::regex kTemporary(
-      "(case\\.yaml|row\\.csv|summary\\.csv|report\\.txt|snapshot_[0-9]{4}_body[12]\\.csv|results\\.csv|sweep\\.txt|"
-      "summary\\.txt|\\.validate\\.yaml)\\.tmp\\.([0-9]{1,10})");
+      "(case\\.yaml|row\\.csv|summary\\.csv|strips\\.csv|fields\\.csv|report\\.txt|snapshot_[0-9]{4}_body[12]\\.csv|results\\.csv|sweep\\.txt|"
+      "summary\\.txt|\\.validate\\.yaml|finished\\.csv)\\.tmp\\.([0-9]{1,10})");
   for (const std::filesystem::path& d : {dir, dir / "snapshots"}) {
     std::error_code ec;
     for (const auto& entry : std::filesystem::directory_iterator(d, ec)) {
@@ -590,6 +647,72 @@ CaseOutcome run_case(const std::string& yaml_text, long index, const std::vector
   return o;
 }
 
+CaseOutcome run_contact_case(const contact::ContactCase& c, const std::string& text, long index,
+                             const std::vector<double>& inputs, const std::filesystem::path& dir) {
+  CaseOutcome o;
+  o.index = index;
+  o.inputs = inputs;
+  o.kind = SweepKind::Contact;
+  const bool files = !dir.empty();
+  std::vector<contact::OutputFile> out;
+  if (files) {
+    std::filesystem::create_directories(dir);
+    remove_stale_temporaries(dir);
+    out.push_back({dir / "case.yaml", text});
+  }
+  const bool fields = files && c.output.fields;
+  try {
+    const contact::ContactRun r = contact::solve_contact_case(c, fields);  // as rollwear contact
+    const contact::ContactPatch& p = r.normal.patch;
+    const contact::TangentialSolution& t = r.solution;
+    o.contact = {p.a_m, p.b_m, p.p0_Pa, p.approach_m, t.Fx_N, t.Fy_N, t.Mz_N_m, t.power_W, t.stick_fraction};
+    o.status = CaseStatus::Ok;
+    if (files) {  // rollwear contact's files
+      out.push_back({dir / "summary.csv", contact::summary_csv(c.name, p, r.problem, t, r.scheme)});
+      out.push_back({dir / "strips.csv", contact::strips_csv(contact::in_profile_coordinates(r.normal), t)});
+      if (fields) out.push_back({dir / "fields.csv", contact::fields_csv(p, t)});
+    }
+  } catch (const CaseError& e) {
+    o.status = CaseStatus::BadInput;
+    o.message = e.what();
+  } catch (const contact::SolverError& e) {  // a solver's failure on good input
+    o.status = CaseStatus::Failed;
+    o.message = e.what();
+  } catch (const contact::NormalSolveError& e) {
+    o.status = CaseStatus::Failed;
+    o.message = e.what();
+  } catch (const std::exception& e) {
+    o.status = CaseStatus::Error;
+    o.message = e.what();
+  }
+  if (files) {
+    out.push_back({dir / "row.csv", results_row(o)});  // renamed last: the mark that the case finished
+    contact::write_files_atomic(out);
+    std::error_code ec;
+    if (!fields) std::filesystem::remove(dir / "fields.csv", ec);  // a killed earlier run's: not this case's fields
+  }
+  return o;
+}
+
+CaseOutcome run_sweep_case(const Sweep& s, const YAML::Node& base, long i, const std::filesystem::path& out) {
+  const std::vector<double> inputs = case_inputs(s, i);
+  const std::string text = case_yaml(s, base, i, inputs);
+  const std::filesystem::path dir = out / case_folder_name(i);
+  if (s.kind == SweepKind::Wear) return run_case(text, i, inputs, dir);
+  try {
+    const contact::ContactCase c = contact::read_contact_case_text(text, case_folder_name(i) + "/case.yaml", s.base_path.parent_path());
+    return run_contact_case(c, text, i, inputs, s.case_files ? dir : std::filesystem::path());
+  } catch (const CaseError& e) {  // validated before: not expected
+    CaseOutcome o;
+    o.index = i;
+    o.inputs = inputs;
+    o.kind = SweepKind::Contact;
+    o.status = CaseStatus::BadInput;
+    o.message = e.what();
+    return o;
+  }
+}
+
 std::vector<long> shard_indices(long count, int k, int n) {
   if (n < 1 || k < 1 || k > n) throw CaseError("--shard: K/N needs 1 <= K <= N, got " + std::to_string(k) + "/" + std::to_string(n));
   std::vector<long> v;
@@ -633,6 +756,46 @@ std::uint64_t sweep_fingerprint(const Sweep& s) {
   return contact::hash_words(text.data(), text.size());
 }
 
+// The finished rows of a sweep without case folders (output.case_files: false): OUT/finished.csv, its first
+// line naming the sweep (fingerprint) and the shard, then a row per finished case as it finishes (one
+// append each). A resumed run reads it: another sweep's is a CaseError; a last line cut short by a kill is
+// dropped.
+class Journal {
+ public:
+  Journal(const std::filesystem::path& path, const std::string& head, const std::string& sweep_path) {
+    std::error_code ec;
+    std::string text;
+    if (std::filesystem::exists(path, ec)) {
+      text = read_text(path);
+      if (text.compare(0, head.size(), head) != 0)
+        throw CaseError(sweep_path + ": " + path.string() + " holds the rows of another sweep or shard (the sweep or its base " +
+                        "changed): give another output folder");
+      text.resize(text.rfind('\n') + 1);  // a row cut short by a kill: dropped (run again)
+      std::filesystem::resize_file(path, text.size());
+    }
+    fd_ = ::open(path.c_str(), O_WRONLY | O_APPEND | O_CREAT | O_CLOEXEC, 0644);
+    if (fd_ < 0) throw std::runtime_error(path.string() + ": cannot open: " + std::strerror(errno));
+    if (text.empty()) {
+      append(head);
+      return;
+    }
+    std::istringstream lines(text.substr(head.size()));
+    for (std::string line; std::getline(lines, line);)
+      if (!line.empty()) rows[row_index(line)] = line + "\n";
+  }
+  Journal(const Journal&) = delete;
+  Journal& operator=(const Journal&) = delete;
+  ~Journal() { ::close(fd_); }
+  void append(const std::string& line) {
+    if (::write(fd_, line.data(), line.size()) != static_cast<ssize_t>(line.size()))
+      throw std::runtime_error("sweep: cannot append to finished.csv: " + std::string(std::strerror(errno)));
+  }
+  std::map<long, std::string> rows;  // the rows found, by index
+
+ private:
+  int fd_ = -1;
+};
+
 }  // namespace
 
 SweepRunSummary run_sweep(const Sweep& s, const SweepRunOptions& o) {
@@ -641,25 +804,38 @@ SweepRunSummary run_sweep(const Sweep& s, const SweepRunOptions& o) {
   const std::filesystem::path& out = o.output_directory;
   std::filesystem::create_directories(out);
   remove_stale_temporaries(out);
-  validate_cases(s, indices, out / ".validate.yaml");
+  const std::vector<SweepCase> cases = validate_cases(s, indices);
 
-  // what is finished (row.csv next to the same case.yaml) and what is to run
+  // what is finished (row.csv next to the same case.yaml, or its row in finished.csv) and what is to run
   const YAML::Node base = load_base_case(s);
+  const std::uint64_t fingerprint = sweep_fingerprint(s);
+  std::unique_ptr<Journal> journal;
+  if (!s.case_files)
+    journal = std::make_unique<Journal>(out / "finished.csv", fmt::format("# sweep {:016x} shard {}/{}\n", fingerprint, o.shard_k, o.shard_n), s.path);
   std::map<long, std::string> rows;
-  std::vector<std::pair<long, std::string>> pending;  // index, case text
+  std::vector<const SweepCase*> pending;
   SweepRunSummary summary;
   summary.cases = static_cast<long>(indices.size());
-  for (const long i : indices) {
-    const std::string text = case_yaml(s, base, i, case_inputs(s, i));
+  for (const SweepCase& c : cases) {
+    const long i = c.index;
+    const std::string& text = c.text;
     const std::filesystem::path dir = out / case_folder_name(i);
-    if (std::filesystem::exists(dir / "row.csv")) {
+    if (journal) {
+      const auto found = journal->rows.find(i);
+      if (found == journal->rows.end()) {
+        pending.push_back(&c);
+      } else {
+        rows[i] = found->second;
+        ++summary.resumed;
+      }
+    } else if (std::filesystem::exists(dir / "row.csv")) {
       if (read_text(dir / "case.yaml") != text)
         throw CaseError(s.path + ": " + (dir / "case.yaml").string() + " finished with other inputs than case " +
                         std::to_string(i) + " has now (the sweep or its base changed): give another output folder");
       rows[i] = read_text(dir / "row.csv");
       ++summary.resumed;
     } else {
-      pending.emplace_back(i, text);
+      pending.push_back(&c);
     }
   }
   if (summary.resumed > 0)
@@ -672,7 +848,7 @@ SweepRunSummary run_sweep(const Sweep& s, const SweepRunOptions& o) {
   long done = summary.resumed, failed = 0;
   const std::size_t nkeys = varied_keys(s).size();
   for (const auto& [i, row] : rows)
-    if (row_status(row, nkeys) != CaseStatus::Ok) ++failed;
+    if (row_status(row, nkeys, s.kind) != CaseStatus::Ok) ++failed;
   std::size_t running = 0;
   std::exception_ptr error;  // a failure outside a case's own (the disk): the first one ends the sweep, exit 1
   const auto work = [&] {
@@ -681,10 +857,15 @@ SweepRunSummary run_sweep(const Sweep& s, const SweepRunOptions& o) {
     contact::set_satran_threads(pending.size() < static_cast<std::size_t>(o.threads) ? 0 : 1);
     try {
       for (std::size_t k = next++; k < pending.size(); k = next++) {
-        const auto& [i, text] = pending[k];
-        const CaseOutcome c = run_case(text, i, case_inputs(s, i), out / case_folder_name(i));
+        const SweepCase& sc = *pending[k];
+        const long i = sc.index;
+        const CaseOutcome c = s.kind == SweepKind::Contact
+                                  ? run_contact_case(*sc.contact, sc.text, i, sc.inputs, s.case_files ? out / case_folder_name(i) : std::filesystem::path())
+                                  : run_case(sc.text, i, sc.inputs, out / case_folder_name(i));
+        std::string row = results_row(c);
         const std::lock_guard<std::mutex> lock(mutex);
-        rows[i] = results_row(c);
+        if (journal) journal->append(row);
+        rows[i] = std::move(row);
         ++done;
         if (c.status != CaseStatus::Ok) ++failed;
         changed.notify_all();
@@ -701,10 +882,13 @@ SweepRunSummary run_sweep(const Sweep& s, const SweepRunOptions& o) {
   const auto t0 = std::chrono::steady_clock::now();
   if (o.dispatch && !pending.empty()) {  // elsewhere (MPI ranks): each row as it comes
     double last_report_s = 0;
-    o.dispatch(pending, [&](const std::string& row) {
+    std::vector<std::pair<long, std::string>> dealt;  // index, case text
+    for (const SweepCase* c : pending) dealt.emplace_back(c->index, c->text);
+    o.dispatch(dealt, [&](const std::string& row) {
+      if (journal) journal->append(row);
       rows[row_index(row)] = row;
       ++done;
-      if (row_status(row, nkeys) != CaseStatus::Ok) ++failed;
+      if (row_status(row, nkeys, s.kind) != CaseStatus::Ok) ++failed;
       const double elapsed_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
       if (o.progress && (elapsed_s - last_report_s >= o.progress_interval_s || done == summary.cases)) {
         o.progress(done, failed, summary.cases, elapsed_s);
@@ -740,13 +924,14 @@ SweepRunSummary run_sweep(const Sweep& s, const SweepRunOptions& o) {
   if (error) std::rethrow_exception(error);
   if (cancelled) throw SweepCancelled(fmt::format("sweep {}: cancelled after {} of {} cases", s.path, done, summary.cases));
   summary.failed = 0;
-  std::string table = results_header(varied_keys(s));
+  std::string table = results_header(varied_keys(s), s.kind);
   for (const auto& [i, row] : rows) {
     table += row;
-    if (row_status(row, nkeys) != CaseStatus::Ok) ++summary.failed;
+    if (row_status(row, nkeys, s.kind) != CaseStatus::Ok) ++summary.failed;
   }
-  std::string info = fmt::format("fingerprint {:016x}\ncases {}\nshard {}/{}\nsampling {}\nseed {}\n", sweep_fingerprint(s),
+  std::string info = fmt::format("fingerprint {:016x}\ncases {}\nshard {}/{}\nsampling {}\nseed {}\n", fingerprint,
                                  total, o.shard_k, o.shard_n, sampling_name(s), s.seed);
+  if (s.kind == SweepKind::Contact) info += "kind contact\n";
   for (const SweepAxis& a : s.axes) info += fmt::format("axis {} {} {}\n", a.key, a.values.size(), round_trip(base_value(base, a.key)));
   std::vector<contact::OutputFile> files = {{out / "results.csv", table}, {out / "sweep.txt", info}};
   if (o.shard_n == 1) files.push_back({out / "summary.txt", sweep_summary(table, info)});

@@ -31,6 +31,7 @@
 #include <filesystem>
 #include <functional>
 #include <limits>
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -38,6 +39,7 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include "lib/io/case.h"
 #include "wear/sweep_random.h"
 #include "wear/wear_loop.h"
 
@@ -46,6 +48,9 @@ namespace wear {
 // ---- the sweep file ----
 
 enum class Combine { Product, Zip };
+// what each case is: a wear life (`rollwear run`, the base case has a wear: section) or a steady contact
+// (`rollwear contact`, the base case has none)
+enum class SweepKind { Wear, Contact };
 enum class Sampling { Grid, MonteCarlo, LatinHypercube };
 
 struct SweepAxis {
@@ -58,6 +63,8 @@ struct Sweep {
   std::string path;               // the sweep file
   std::filesystem::path base_path;  // the base case (resolved against the sweep file's folder)
   std::string output_directory;   // output.directory, "" when not given
+  bool case_files = true;         // output.case_files: each case's folder (case_NNNN/) written; false: the table alone
+  SweepKind kind = SweepKind::Wear;  // from the base case: Contact when it has no wear: section
   Sampling sampling = Sampling::Grid;
   Combine combine = Combine::Product;
   std::vector<SweepAxis> axes;    // grid
@@ -89,12 +96,21 @@ YAML::Node load_base_case(const Sweep& s);
 // base case has no such mapping, or holds a mapping or a list there.
 std::string case_yaml(const Sweep& s, const YAML::Node& base, long i, const std::vector<double>& inputs);
 
-// Every case of `indices` read by the wear case reader and model (as `rollwear run` would) before any
-// runs. A refused case is a CaseError naming the sweep file, the line of the axis (or input) whose value
-// alone the reader refuses, the key, the case and the reader's own message; a combination refused while
-// each value alone passes names every varied key. `scratch` is a file the cases are written to in turn
-// (removed after).
-void validate_cases(const Sweep& s, const std::vector<long>& indices, const std::filesystem::path& scratch);
+// A case as validated, kept to run: its inputs, its text (case.yaml; "" for a contact case without case
+// files, whose text is not needed) and, for a contact sweep, the case as read.
+struct SweepCase {
+  long index = 0;
+  std::vector<double> inputs;
+  std::string text;
+  std::shared_ptr<const contact::ContactCase> contact;  // SweepKind::Contact only
+};
+
+// Every case of `indices` read before any runs: by the wear case reader and model (as `rollwear run` would)
+// or, for a contact sweep, by the contact case reader and validate_steady (as `rollwear contact` would).
+// A refused case is a CaseError naming the sweep file, the line of the axis (or input) whose value alone the
+// reader refuses, the key, the case and the reader's own message; a combination refused while each value
+// alone passes names every varied key. Returns the cases, in the order of `indices`.
+std::vector<SweepCase> validate_cases(const Sweep& s, const std::vector<long>& indices);
 
 // ---- the results table ----
 
@@ -105,11 +121,22 @@ std::string to_string(CaseStatus s);
 // the inverse of to_string; throws std::invalid_argument naming the word
 CaseStatus parse_case_status(const std::string& word);
 
-// one case's row: index, the varied inputs, life_revolutions, ended_by, max_depth_m, worn_volume_m3,
-// status, message
+// a contact case's outputs: the `rollwear contact` summary's numbers (nan when it did not run)
+struct ContactOutputs {
+  double a_m = std::numeric_limits<double>::quiet_NaN(), b_m = a_m;  // semi-axes (rolling, lateral)
+  double p0_Pa = a_m, approach_m = a_m;
+  double Fx_N = a_m, Fy_N = a_m, Mz_N_m = a_m;  // creep forces and spin moment
+  double power_W = a_m, stick_fraction = a_m;
+};
+
+// one case's row: index, the varied inputs, then a wear case's life_revolutions, ended_by, max_depth_m,
+// worn_volume_m3 or a contact case's a_m, b_m, p0_Pa, approach_m, Fx_N, Fy_N, Mz_N_m, power_W,
+// stick_fraction; then status, message
 struct CaseOutcome {
   long index = 0;
   std::vector<double> inputs;
+  SweepKind kind = SweepKind::Wear;
+  ContactOutputs contact;  // SweepKind::Contact
   double life_revolutions = std::numeric_limits<double>::quiet_NaN();
   LifeEnd ended_by = LifeEnd::NotRun;
   double max_depth_m = std::numeric_limits<double>::quiet_NaN();
@@ -117,10 +144,10 @@ struct CaseOutcome {
   CaseStatus status = CaseStatus::Error;  // the pessimistic default
   std::string message;
 };
-std::string results_header(const std::vector<std::string>& keys);
+std::string results_header(const std::vector<std::string>& keys, SweepKind kind = SweepKind::Wear);
 std::string results_row(const CaseOutcome& o);  // one line, ending in '\n'
 // a row's status (the inputs before it are `keys` columns); std::invalid_argument for a line that has none
-CaseStatus row_status(const std::string& row, std::size_t keys);
+CaseStatus row_status(const std::string& row, std::size_t keys, SweepKind kind = SweepKind::Wear);
 // the leading index of a row; throws std::invalid_argument for a line that has none
 long row_index(const std::string& row);
 
@@ -132,6 +159,17 @@ std::string case_folder_name(long i);
 // is finished). Never throws for the case's own failure: that is the row's status and message.
 CaseOutcome run_case(const std::string& yaml_text, long index, const std::vector<double>& inputs,
                      const std::filesystem::path& dir);
+
+// Runs one contact case as `rollwear contact` does (solve_contact_case, app/commands.h), fields when the case
+// asks for them (output.fields). With `dir` not empty, writes there case.yaml (`text`), summary.csv,
+// strips.csv, fields.csv (when asked) and then row.csv (the mark that the case is finished); with `dir`
+// empty, no file. Never throws for the case's own failure: that is the row's status and message.
+CaseOutcome run_contact_case(const contact::ContactCase& c, const std::string& text, long index,
+                             const std::vector<double>& inputs, const std::filesystem::path& dir);
+
+// case i of the sweep generated, read and run as run_sweep's threads run it, into out/case_NNNN/ (when
+// s.case_files): what an MPI rank does with a case it is dealt (app/sweep_mpi.h)
+CaseOutcome run_sweep_case(const Sweep& s, const YAML::Node& base, long i, const std::filesystem::path& out);
 
 // the cases of shard k (1-based) of n: i with i % n == k - 1
 std::vector<long> shard_indices(long count, int k, int n);

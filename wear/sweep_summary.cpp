@@ -79,7 +79,43 @@ std::vector<KaplanMeierStep> kaplan_meier(std::vector<std::pair<double, bool>> l
   return steps;
 }
 
+namespace {
+
+// a contact sweep's summary: the cases, those not ok, and each output's range over the ok ones
+std::string contact_summary(const std::string& results_csv) {
+  std::istringstream table(results_csv);
+  std::string header;
+  std::getline(table, header);
+  const std::vector<std::string> head = split_fields(header, 1000);
+  constexpr std::size_t kOutputs = 9;  // a_m ... stick_fraction (wear/sweep.h ContactOutputs)
+  if (head.size() < kOutputs + 3) throw std::invalid_argument("sweep_summary: not a contact sweep's results table");
+  const std::size_t first = head.size() - kOutputs - 2;
+  std::vector<double> lo(kOutputs, std::numeric_limits<double>::infinity()), hi(kOutputs, -std::numeric_limits<double>::infinity());
+  long cases = 0, not_ok = 0;
+  for (std::string line; std::getline(table, line);) {
+    if (line.empty()) continue;
+    ++cases;
+    const std::vector<std::string> f = split_fields(line, first + kOutputs + 1);
+    if (f.size() < first + kOutputs + 1 || f[first + kOutputs] != "ok") {
+      ++not_ok;
+      continue;
+    }
+    for (std::size_t k = 0; k < kOutputs; ++k) {
+      const double v = to_double(f[first + k]);
+      lo[k] = std::min(lo[k], v);
+      hi[k] = std::max(hi[k], v);
+    }
+  }
+  std::string out = fmt::format("contact sweep: {} cases, {} not ok (left out below)\n", cases, not_ok);
+  if (cases > not_ok)
+    for (std::size_t k = 0; k < kOutputs; ++k) out += fmt::format("  {:<16} {:.6g} to {:.6g}\n", head[first + k], lo[k], hi[k]);
+  return out;
+}
+
+}  // namespace
+
 std::string sweep_summary(const std::string& results_csv, const std::string& sweep_txt) {
+  if (sweep_txt.find("\nkind contact\n") != std::string::npos) return contact_summary(results_csv);
   // sweep.txt
   std::istringstream info(sweep_txt);
   std::string sampling = "product", word;

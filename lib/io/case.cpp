@@ -1,6 +1,7 @@
 // The contact case file: one reader per section, the per-key ranges next to the keys, then the
 // cross-key checks of validate(). The generic machinery (marking keys, locations) is yaml_reader.h.
 #include "lib/io/case.h"
+#include "lib/io/case_node.h"
 
 #include <algorithm>
 #include <cmath>
@@ -352,6 +353,11 @@ ContactCase read_contact_case(const std::string& path, const ExtraSections& extr
 ContactCase read_contact_case_text(const std::string& text, const std::string& label,
                                    const std::filesystem::path& base_dir, const ExtraSections& extra) {
   return read_contact_document(parse_yaml_text(text, label), label, base_dir, extra);
+}
+
+ContactCase read_contact_case_node(const YAML::Node& doc, const std::string& label, const std::filesystem::path& base_dir,
+                                   const ExtraSections& extra) {
+  return read_contact_document(doc, label, base_dir, extra);
 }
 
 void validate(const ContactCase& c) {
