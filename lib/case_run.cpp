@@ -1,4 +1,4 @@
-#include "app/commands.h"
+#include "lib/case_run.h"
 
 #include <limits>
 #include <stdexcept>
