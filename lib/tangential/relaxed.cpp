@@ -58,11 +58,18 @@ double saturation_level(const ContactPatch& patch, const ElasticPair& pair, cons
   return std::sqrt(ex * ex + ey * ey + ep * ep);
 }
 
-// the creepages the simplified theory is solved at
-Creepages corrected(const ContactPatch& patch, const ElasticPair& pair, const Creepages& c, double mu) {
+// the creepages the simplified theory is solved at, and the factor on the spin's longitudinal rate phi y / L3
+// (the second spin flexibility: L3x = L3 / that factor, with phi the imposed spin)
+struct Corrected {
+  Creepages c;
+  double spin_x = 1;
+};
+
+Corrected corrected(const ContactPatch& patch, const ElasticPair& pair, const Creepages& c, double mu) {
   const double e = saturation_level(patch, pair, c, mu), ab = patch.a_m / patch.b_m;
-  if (e < 0) return c;
-  return {c.xi * factor(T::kGx, ab, e), c.eta * factor(T::kGy, ab, e), c.phi_per_m * factor(T::kGphi, ab, e)};
+  if (e < 0) return {c, 1};
+  return {{c.xi * factor(T::kGx, ab, e), c.eta * factor(T::kGy, ab, e), c.phi_per_m * factor(T::kGphi, ab, e)},
+          factor(T::kGphiX, ab, e)};
 }
 
 double creep_work_W(const TangentialSolution& s, const Creepages& c, double V) {
@@ -74,9 +81,14 @@ TangentialSolution steady_at(const ContactPatch& patch, const ElasticPair& pair,
                              const Creepages& work_at, double mu, double V, bool fields) {
   SteadyOptions o;
   o.fields = fields;
-  const Creepages solved = corrected(patch, pair, c, mu);
-  TangentialSolution s =
-      solve_steady(patch, make_tangential_problem(patch, pair, solved, mu, V), TangentialScheme::Consistent, o);
+  const Corrected cor = corrected(patch, pair, c, mu);
+  const Creepages& solved = cor.c;
+  TangentialProblem pb = make_tangential_problem(patch, pair, solved, mu, V);
+  // the spin's longitudinal traction rate phi y / L3x with the imposed phi times its own factor (the lateral
+  // one, phi x / L3, takes solved.phi): solved.phi / L3x = c.phi spin_x / L3
+  if (solved.phi_per_m != 0 && c.phi_per_m != 0)
+    pb.L3x_m_per_Pa = pb.flex.L3_m_per_Pa * (solved.phi_per_m / c.phi_per_m) / cor.spin_x;
+  TangentialSolution s = solve_steady(patch, pb, TangentialScheme::Consistent, o);
   // the work of the strips' Heathcote offsets (xi_j - xi, docs/physics.md §2.4), which the solver's creep work
   // holds beside that of the uniform creepages
   const double offsets_W = s.creep_work_W - creep_work_W(s, solved, V);
