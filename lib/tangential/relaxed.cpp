@@ -32,19 +32,22 @@ double over_ab(const double (&v)[T::kNab], double ab) {
   return T::kNab == 1 ? v[0] : (1 - w) * v[i] + w * v[i + 1];
 }
 
-double over_e(const double (&v)[T::kNe], double e) {
-  if (T::kNe == 1 || !(e > T::kE[0])) return v[0];
-  if (e >= T::kE[T::kNe - 1]) return v[T::kNe - 1];
+// linear interpolation over the levels es[0..n) of the saturation level, held constant outside
+double over_e(const double* es, const double* v, int n, double e) {
+  if (n == 1 || !(e > es[0])) return v[0];
+  if (e >= es[n - 1]) return v[n - 1];
   int k = 0;
-  while (e > T::kE[k + 1]) ++k;
-  const double w = (e - T::kE[k]) / (T::kE[k + 1] - T::kE[k]);
+  while (e > es[k + 1]) ++k;
+  const double w = (e - es[k]) / (es[k + 1] - es[k]);
   return (1 - w) * v[k] + w * v[k + 1];
 }
 
-double factor(const double (&g)[T::kNab][T::kNe], double ab, double e) {
+// a factor of the table over a/b (rows) and the levels es (columns)
+template <int Ne>
+double factor(const double (&es)[Ne], const double (&g)[T::kNab][Ne], double ab, double e) {
   const auto [i, w] = ab_bracket(ab);
-  if (T::kNab == 1) return over_e(g[0], e);
-  return (1 - w) * over_e(g[i], e) + w * over_e(g[i + 1], e);
+  if (T::kNab == 1) return over_e(es, g[0], Ne, e);
+  return (1 - w) * over_e(es, g[i], Ne, e) + w * over_e(es, g[i + 1], Ne, e);
 }
 
 // the saturation level e = G a b |(C11 xi, C22 eta, C23 sqrt(ab) phi)| / (3 mu N) (-1: no contact or no friction)
@@ -68,8 +71,9 @@ struct Corrected {
 Corrected corrected(const ContactPatch& patch, const ElasticPair& pair, const Creepages& c, double mu) {
   const double e = saturation_level(patch, pair, c, mu), ab = patch.a_m / patch.b_m;
   if (e < 0) return {c, 1};
-  return {{c.xi * factor(T::kGx, ab, e), c.eta * factor(T::kGy, ab, e), c.phi_per_m * factor(T::kGphi, ab, e)},
-          factor(T::kGphiX, ab, e)};
+  return {{c.xi * factor(T::kE, T::kGx, ab, e), c.eta * factor(T::kE, T::kGy, ab, e),
+           c.phi_per_m * factor(T::kEPhi, T::kGphi, ab, e)},
+          factor(T::kEPhi, T::kGphiX, ab, e)};
 }
 
 double creep_work_W(const TangentialSolution& s, const Creepages& c, double V) {

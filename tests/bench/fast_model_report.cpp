@@ -161,6 +161,9 @@ void transient(double ab, int n, const std::string& label, const std::function<C
 
 // the saturation levels e = G a b C |c| / (3 mu N) the creepage factors are fitted at (scripts/fit-relaxed)
 const std::vector<double> kFitE = {0.05, 0.1, 0.2, 0.3, 0.4, 0.55, 0.7, 0.85};
+// those of the spin's two factors (finer where the exact Fy of spin peaks, e = 0.2-0.4; the first in the linear
+// range, fitted in closed form)
+const std::vector<double> kFitEPhi = {0.001, 0.01, 0.025, 0.05, 0.1, 0.15, 0.2, 0.25, 0.3, 0.35, 0.4, 0.475, 0.55, 0.7, 0.85};
 
 // the pure creepage of direction dir (0 xi, 1 eta, 2 phi) at the level e
 Creepages at_level(const ContactPatch& p, int dir, double e) {
@@ -216,14 +219,18 @@ void fit_factors(double ab, int n) {
 // larger of |dFy| / (2 % |Fy_exact|) and |dMz| / (5 % |Mz_exact|) (the targets' ratio); dFy, dMz relative to
 // the exact ones, with the factors and with none (the simplified theory). The forces of spin are not monotonic
 // in either factor and several pairs fit a level: the pair minimises score + kSmooth |log of its distance to the
-// previous level's pair| (1, 1 before the first), so that the table is smooth in e where it can be.
+// previous level's pair| (1, 1 before the first), so that the table is smooth in e where it can be. At the first
+// level (e = 1e-3, the linear range) the two factors are the ratios of the exact Fy and Mz to the simplified
+// theory's: Kalker's C23 and C33 as the exact solver has them.
 constexpr double kSmooth = 2.0;
+// below this level: the linear range (the factors in closed form)
+constexpr double kLinearLevel = 0.01;
 
 void fit_spin(double ab, int n) {
   const ContactPatch p = ellipse_patch(ab, n);
   const double G = combined_shear_modulus_Pa(kPair), nu = combined_poisson(kPair);
   double pg = 1, px = 1;  // the previous level's pair
-  for (double e : kFitE) {
+  for (double e : kFitEPhi) {
     const Creepages c = at_level(p, 2, e);
     const ExactSolution ex = solve_exact_steady(p, G, nu, c, kMu, kV);
     const double Fy = ex.fields.Fy_N, Mz = ex.fields.Mz_N_m;
@@ -242,9 +249,17 @@ void fit_spin(double ab, int n) {
       return score(model(g, x)) + kSmooth * (std::abs(std::log(g / pg)) + std::abs(std::log(x / px)));
     };
     double bg = pg, bx = px, best = objective(pg, px);
+    if (e < kLinearLevel) {
+      // the linear range: Fy is proportional to the factor on phi and Mz to that on phi y / L3 (the lateral
+      // traction of spin is even in x, so it has no moment): the ratios of the exact to the simplified ones
+      const auto d0 = model(1, 1);
+      bg = 1 / (1 + d0.first * std::abs(Fy) / Fy);
+      bx = 1 / (1 + d0.second * std::abs(Mz) / Mz);
+      best = -1;
+    }
     // a coarse scan in log of both factors, then two finer ones around the best
     double step = 0.05;
-    for (int pass = 0; pass < 3; ++pass) {
+    for (int pass = 0; pass < 3 && best >= 0; ++pass) {
       const double cg = std::log(bg), cx = std::log(bx);
       const double lo_g = pass == 0 ? std::log(0.5) : cg - 5 * step, hi_g = pass == 0 ? std::log(4.0) : cg + 5 * step;
       const double lo_x = pass == 0 ? std::log(0.05) : cx - 5 * step, hi_x = pass == 0 ? std::log(4.0) : cx + 5 * step;
@@ -271,7 +286,7 @@ void check_spin(double ab, int n) {
   const ContactPatch p = ellipse_patch(ab, n);
   const double G = combined_shear_modulus_Pa(kPair), nu = combined_poisson(kPair);
   std::vector<double> es;
-  for (std::size_t k = 0; k + 1 < kFitE.size(); ++k) es.push_back((kFitE[k] + kFitE[k + 1]) / 2);
+  for (std::size_t k = 0; k + 1 < kFitEPhi.size(); ++k) es.push_back((kFitEPhi[k] + kFitEPhi[k + 1]) / 2);
   es.push_back(1 - std::cbrt(0.5));
   es.push_back(1 - std::cbrt(0.1));
   for (double e : es) {
