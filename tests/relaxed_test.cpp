@@ -1,7 +1,8 @@
 // The relaxed model (lib/tangential/relaxed.h) against Kalker's exact theory. References: CONTACT's
 // results on the paper's contact (tests/data/exact/contact_reference.csv, with their provenance), the
 // in-house exact solver's start-ups over a/b (tests/data/fast_model/exact_startup.csv, with the command
-// and grid that made them), and the exact theory's steady energy balance (docs/physics.md §4).
+// and grid that made them; its steady solves under spin, tests/data/fast_model/exact_spin*.csv), and the exact
+// theory's steady energy balance (docs/physics.md §4).
 #include "lib/tangential/relaxed.h"
 
 #include <gtest/gtest.h>
@@ -18,6 +19,7 @@
 #include "lib/history.h"
 #include "lib/normal/hertz.h"
 #include "lib/numeric.h"
+#include "lib/tangential/kalker.h"
 #include "lib/tangential/satran.h"
 #include "lib/tangential/steady.h"
 
@@ -196,6 +198,63 @@ TEST(RelaxedModel, StartUpsOverAspectRatiosWithinTwoPercentOfTheExactSolver) {
     EXPECT_LE(worst, kTransientTarget) << "a/b " << ab << ", " << level * 100 << " % of saturation";
   }
   EXPECT_EQ(held, 6);  // 0.05, 0.1, 0.3 at two levels each
+}
+
+// The steady targets under spin (not loosened): Fy within 2 % of the exact |(Fx, Fy)|, Mz within 5 % of |Mz|.
+constexpr double kSpinMomentTarget = 0.05;
+
+// The in-house exact solver's steady solves under pure spin at about 50 % and 90 % of saturation over a/b,
+// tests/data/fast_model/exact_spin.csv (80 x 80): the relaxed model's two spin factors (the factor on phi and
+// the second spin flexibility, lib/tangential/relaxed.h) hold Fy within 2 % and Mz within 5 % at every a/b;
+// the simplified theory's single L3 gives an Fy of spin 12-44 % low on the narrow contacts (a/b <= 0.3).
+TEST(RelaxedModel, SteadySpinForceAndMomentWithinTargetsOfTheExactSolver) {
+  const auto rows = read_csv("fast_model/exact_spin.csv");
+  ASSERT_EQ(rows.size(), 10u);  // a/b 0.05, 0.1, 0.3, 1, 3 at two levels
+  for (const auto& r : rows) {
+    const double ab = std::stod(r.at(0)), phi = std::stod(r.at(2)), Fy = std::stod(r.at(3)), Mz = std::stod(r.at(4));
+    const ContactPatch p = ellipse_patch(ab, 80);
+    const Creepages c{0, 0, phi};
+    const TangentialSolution m = solve_relaxed_steady(p, kSteel, c, kMu, kV, false);
+    EXPECT_LE(std::abs(m.Fy_N - Fy), kSteadyForceTarget * std::abs(Fy)) << "a/b " << ab << ", level " << r.at(1);
+    EXPECT_LE(std::abs(m.Mz_N_m - Mz), kSpinMomentTarget * std::abs(Mz)) << "a/b " << ab << ", level " << r.at(1);
+    if (ab <= 0.3) {
+      SteadyOptions o;
+      o.fields = false;
+      const TangentialSolution s =
+          solve_steady(p, make_tangential_problem(p, kSteel, c, kMu, kV), TangentialScheme::Consistent, o);
+      EXPECT_GT(std::abs(s.Fy_N - Fy), 0.1 * std::abs(Fy)) << "simplified, a/b " << ab << ": " << s.Fy_N;
+    }
+  }
+}
+
+// Kalker's linear theory (small creepage): Fy = G c^3 C23 phi and Mz = G c^4 C33 phi, c = sqrt(ab). The exact
+// solver's ratios to it at the saturation level 1e-3 (tests/data/fast_model/exact_spin_linear.csv, 80 x 80):
+// the relaxed model within 2 % (Fy) and 5 % (Mz) of them. The simplified theory's single L3 holds Fy (it is
+// built on C23) but not Mz: its moment of spin is 1.39, 1.24, 1.00, 0.85, 0.79 x G c^4 C33 phi at a/b 0.05 to 3.
+// (Mz under eta, 0.41-0.79 of the linear theory's, the relaxed model does not correct: docs/accuracy-vs-exact.md.)
+TEST(RelaxedModel, LinearLimitOfSpinMatchesTheExactSolver) {
+  const auto rows = read_csv("fast_model/exact_spin_linear.csv");
+  ASSERT_EQ(rows.size(), 5u);
+  int simplified_misses = 0;
+  for (const auto& r : rows) {
+    const double ab = std::stod(r.at(0)), Fy_ratio = std::stod(r.at(1)), Mz_ratio = std::stod(r.at(3));
+    const ContactPatch p = ellipse_patch(ab, 80);
+    const KalkerCoefficients C = kalker_coefficients(p.a_m, p.b_m, combined_poisson(kSteel));
+    const double G = combined_shear_modulus_Pa(kSteel), c = std::sqrt(p.a_m * p.b_m);
+    constexpr double kLinearLevel = 1e-3;  // e = G a b sqrt(ab) C23 phi / (3 mu N): far below saturation
+    const double phi = 3 * kMu * p.normal_load_N * kLinearLevel / (G * std::pow(p.a_m * p.b_m, 1.5) * C.C23);
+    const Creepages cr{0, 0, phi};
+    const double Fy_lin = G * c * c * c * C.C23 * phi, Mz_lin = G * std::pow(c, 4) * C.C33 * phi;
+    const TangentialSolution m = solve_relaxed_steady(p, kSteel, cr, kMu, kV, false);
+    EXPECT_NEAR(m.Fy_N / Fy_lin, Fy_ratio, kSteadyForceTarget * std::abs(Fy_ratio)) << "a/b " << ab;
+    EXPECT_NEAR(m.Mz_N_m / Mz_lin, Mz_ratio, kSpinMomentTarget * std::abs(Mz_ratio)) << "a/b " << ab;
+    SteadyOptions o;
+    o.fields = false;
+    const TangentialSolution s =
+        solve_steady(p, make_tangential_problem(p, kSteel, cr, kMu, kV), TangentialScheme::Consistent, o);
+    simplified_misses += std::abs(s.Mz_N_m / Mz_lin - Mz_ratio) > kSpinMomentTarget * std::abs(Mz_ratio);
+  }
+  EXPECT_GE(simplified_misses, 3);  // a/b 0.05, 0.1, 1, 3 (the simplified theory's Mz of spin)
 }
 
 }  // namespace

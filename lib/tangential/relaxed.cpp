@@ -32,19 +32,22 @@ double over_ab(const double (&v)[T::kNab], double ab) {
   return T::kNab == 1 ? v[0] : (1 - w) * v[i] + w * v[i + 1];
 }
 
-double over_e(const double (&v)[T::kNe], double e) {
-  if (T::kNe == 1 || !(e > T::kE[0])) return v[0];
-  if (e >= T::kE[T::kNe - 1]) return v[T::kNe - 1];
+// linear interpolation over the levels es[0..n) of the saturation level, held constant outside
+double over_e(const double* es, const double* v, int n, double e) {
+  if (n == 1 || !(e > es[0])) return v[0];
+  if (e >= es[n - 1]) return v[n - 1];
   int k = 0;
-  while (e > T::kE[k + 1]) ++k;
-  const double w = (e - T::kE[k]) / (T::kE[k + 1] - T::kE[k]);
+  while (e > es[k + 1]) ++k;
+  const double w = (e - es[k]) / (es[k + 1] - es[k]);
   return (1 - w) * v[k] + w * v[k + 1];
 }
 
-double factor(const double (&g)[T::kNab][T::kNe], double ab, double e) {
+// a factor of the table over a/b (rows) and the levels es (columns)
+template <int Ne>
+double factor(const double (&es)[Ne], const double (&g)[T::kNab][Ne], double ab, double e) {
   const auto [i, w] = ab_bracket(ab);
-  if (T::kNab == 1) return over_e(g[0], e);
-  return (1 - w) * over_e(g[i], e) + w * over_e(g[i + 1], e);
+  if (T::kNab == 1) return over_e(es, g[0], Ne, e);
+  return (1 - w) * over_e(es, g[i], Ne, e) + w * over_e(es, g[i + 1], Ne, e);
 }
 
 // the saturation level e = G a b |(C11 xi, C22 eta, C23 sqrt(ab) phi)| / (3 mu N) (-1: no contact or no friction)
@@ -58,11 +61,19 @@ double saturation_level(const ContactPatch& patch, const ElasticPair& pair, cons
   return std::sqrt(ex * ex + ey * ey + ep * ep);
 }
 
-// the creepages the simplified theory is solved at
-Creepages corrected(const ContactPatch& patch, const ElasticPair& pair, const Creepages& c, double mu) {
+// the creepages the simplified theory is solved at, and the factor on the spin's longitudinal rate phi y / L3
+// (the second spin flexibility: L3x = L3 / that factor, with phi the imposed spin)
+struct Corrected {
+  Creepages c;
+  double spin_x = 1;
+};
+
+Corrected corrected(const ContactPatch& patch, const ElasticPair& pair, const Creepages& c, double mu) {
   const double e = saturation_level(patch, pair, c, mu), ab = patch.a_m / patch.b_m;
-  if (e < 0) return c;
-  return {c.xi * factor(T::kGx, ab, e), c.eta * factor(T::kGy, ab, e), c.phi_per_m * factor(T::kGphi, ab, e)};
+  if (e < 0) return {c, 1};
+  return {{c.xi * factor(T::kE, T::kGx, ab, e), c.eta * factor(T::kE, T::kGy, ab, e),
+           c.phi_per_m * factor(T::kEPhi, T::kGphi, ab, e)},
+          factor(T::kEPhi, T::kGphiX, ab, e)};
 }
 
 double creep_work_W(const TangentialSolution& s, const Creepages& c, double V) {
@@ -74,9 +85,14 @@ TangentialSolution steady_at(const ContactPatch& patch, const ElasticPair& pair,
                              const Creepages& work_at, double mu, double V, bool fields) {
   SteadyOptions o;
   o.fields = fields;
-  const Creepages solved = corrected(patch, pair, c, mu);
-  TangentialSolution s =
-      solve_steady(patch, make_tangential_problem(patch, pair, solved, mu, V), TangentialScheme::Consistent, o);
+  const Corrected cor = corrected(patch, pair, c, mu);
+  const Creepages& solved = cor.c;
+  TangentialProblem pb = make_tangential_problem(patch, pair, solved, mu, V);
+  // the spin's longitudinal traction rate phi y / L3x with the imposed phi times its own factor (the lateral
+  // one, phi x / L3, takes solved.phi): solved.phi / L3x = c.phi spin_x / L3
+  if (solved.phi_per_m != 0 && c.phi_per_m != 0)
+    pb.L3x_m_per_Pa = pb.flex.L3_m_per_Pa * (solved.phi_per_m / c.phi_per_m) / cor.spin_x;
+  TangentialSolution s = solve_steady(patch, pb, TangentialScheme::Consistent, o);
   // the work of the strips' Heathcote offsets (xi_j - xi, docs/physics.md §2.4), which the solver's creep work
   // holds beside that of the uniform creepages
   const double offsets_W = s.creep_work_W - creep_work_W(s, solved, V);

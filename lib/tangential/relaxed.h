@@ -12,6 +12,9 @@
 //   - steady forces: the simplified theory's force at a creepage is that of the exact theory at a
 //     slightly different one: each creepage is scaled by a factor g_k(a/b, e) of the saturation level
 //     e = G a b C |c| / (3 mu N) before the steady solve;
+//   - spin: two flexibilities: phi scaled by g_phi(a/b, e) (its lateral rate phi x / L3: Fy) and its longitudinal
+//     rate phi y / L3 by g_phix(a/b, e) (L3x = L3 g_phi / g_phix: Mz), fitted together to the exact Fy and Mz under
+//     pure spin (one flexibility cannot hold both: Kalker's C23 and C33);
 //   - power: the exact theory's steady frictional power is the creep forces' work -V (xi Fx + eta Fy + phi Mz)
 //     (docs/physics.md §4); the bed of springs with three flexibilities is not (1.5-2.2x with mixes).
 //     The model keeps the strips' distribution of the simplified theory's power and scales it to that work

@@ -9,6 +9,9 @@
 //   fast_model_report step AB N DIR     from steady at 50 % to 90 % of saturation in DIR (xi, eta, phi)
 //   fast_model_report fit AB N          the creepage factors of the relaxed model (lines "G", scripts/fit-relaxed)
 //   fast_model_report fitsigma AB N DIR its relaxation length in DIR (line "Z", scripts/fit-relaxed)
+//   fast_model_report checkspin AB N    the relaxed model's spin between the fitted levels (lines "K")
+//   fast_model_report linear AB N       the linear limit of Fy(phi), Mz(eta), Mz(phi) against Kalker's C23, C33
+//   fast_model_report fitspin AB N      its two spin factors (lines "H", scripts/fit-relaxed --spin-only)
 // FAST_MODEL_CASES=xi50,mix50 (say) in the environment: only those steady cases.
 // Lines: "S solver ab n label xi eta phi Fx Fy Mz P W ms" (W = -creep work), "J solver ab n label P_j...",
 // "T solver ab n label q/a Fx Fy Mz P ms".
@@ -158,6 +161,9 @@ void transient(double ab, int n, const std::string& label, const std::function<C
 
 // the saturation levels e = G a b C |c| / (3 mu N) the creepage factors are fitted at (scripts/fit-relaxed)
 const std::vector<double> kFitE = {0.05, 0.1, 0.2, 0.3, 0.4, 0.55, 0.7, 0.85};
+// those of the spin's two factors (finer where the exact Fy of spin peaks, e = 0.2-0.4; the first in the linear
+// range, fitted in closed form)
+const std::vector<double> kFitEPhi = {0.001, 0.01, 0.025, 0.05, 0.1, 0.15, 0.2, 0.25, 0.3, 0.35, 0.4, 0.475, 0.55, 0.7, 0.85};
 
 // the pure creepage of direction dir (0 xi, 1 eta, 2 phi) at the level e
 Creepages at_level(const ContactPatch& p, int dir, double e) {
@@ -205,6 +211,111 @@ void fit_factors(double ab, int n) {
       std::printf("G %d %g %.4f %.6f %.6e %.6e %s\n", dir, ab, e, m, target, f(1) + target,
                   ex.status.converged() ? "" : "unconverged");
     }
+}
+
+// "H ab e g_phi g_phix score Fy_exact Mz_exact dFy dMz dFy(1,1) dMz(1,1)": the relaxed model's two spin factors
+// under pure spin at the level e: g_phi on phi (the lateral rate phi x / L3, so Fy's flexibility) and g_phix on
+// the longitudinal rate phi y / L3 (the second spin flexibility L3x = L3 g_phi / g_phix, so Mz's). score: the
+// larger of |dFy| / (2 % |Fy_exact|) and |dMz| / (5 % |Mz_exact|) (the targets' ratio); dFy, dMz relative to
+// the exact ones, with the factors and with none (the simplified theory). The forces of spin are not monotonic
+// in either factor and several pairs fit a level: the pair minimises score + kSmooth |log of its distance to the
+// previous level's pair| (1, 1 before the first), so that the table is smooth in e where it can be. At the first
+// level (e = 1e-3, the linear range) the two factors are the ratios of the exact Fy and Mz to the simplified
+// theory's: Kalker's C23 and C33 as the exact solver has them.
+constexpr double kSmooth = 2.0;
+// below this level: the linear range (the factors in closed form)
+constexpr double kLinearLevel = 0.01;
+
+void fit_spin(double ab, int n) {
+  const ContactPatch p = ellipse_patch(ab, n);
+  const double G = combined_shear_modulus_Pa(kPair), nu = combined_poisson(kPair);
+  double pg = 1, px = 1;  // the previous level's pair
+  for (double e : kFitEPhi) {
+    const Creepages c = at_level(p, 2, e);
+    const ExactSolution ex = solve_exact_steady(p, G, nu, c, kMu, kV);
+    const double Fy = ex.fields.Fy_N, Mz = ex.fields.Mz_N_m;
+    auto model = [&](double gphi, double gx) {
+      TangentialProblem pb = make_tangential_problem(p, kPair, {0, 0, gphi * c.phi_per_m}, kMu, kV);
+      pb.L3x_m_per_Pa = pb.flex.L3_m_per_Pa * gphi / gx;
+      SteadyOptions o;
+      o.fields = false;
+      const TangentialSolution s = solve_steady(p, pb, TangentialScheme::Consistent, o);
+      return std::pair<double, double>{(s.Fy_N - Fy) / std::abs(Fy), (s.Mz_N_m - Mz) / std::abs(Mz)};
+    };
+    auto score = [&](const std::pair<double, double>& d) {
+      return std::max(std::abs(d.first) / 0.02, std::abs(d.second) / 0.05);
+    };
+    auto objective = [&](double g, double x) {
+      return score(model(g, x)) + kSmooth * (std::abs(std::log(g / pg)) + std::abs(std::log(x / px)));
+    };
+    double bg = pg, bx = px, best = objective(pg, px);
+    if (e < kLinearLevel) {
+      // the linear range: Fy is proportional to the factor on phi and Mz to that on phi y / L3 (the lateral
+      // traction of spin is even in x, so it has no moment): the ratios of the exact to the simplified ones
+      const auto d0 = model(1, 1);
+      bg = 1 / (1 + d0.first * std::abs(Fy) / Fy);
+      bx = 1 / (1 + d0.second * std::abs(Mz) / Mz);
+      best = -1;
+    }
+    // a coarse scan in log of both factors, then two finer ones around the best
+    double step = 0.05;
+    for (int pass = 0; pass < 3 && best >= 0; ++pass) {
+      const double cg = std::log(bg), cx = std::log(bx);
+      const double lo_g = pass == 0 ? std::log(0.5) : cg - 5 * step, hi_g = pass == 0 ? std::log(4.0) : cg + 5 * step;
+      const double lo_x = pass == 0 ? std::log(0.05) : cx - 5 * step, hi_x = pass == 0 ? std::log(4.0) : cx + 5 * step;
+      for (double lg = lo_g; lg <= hi_g + 1e-9; lg += step)
+        for (double lx = lo_x; lx <= hi_x + 1e-9; lx += step) {
+          const double v = objective(std::exp(lg), std::exp(lx));
+          if (v < best) best = v, bg = std::exp(lg), bx = std::exp(lx);
+        }
+      step /= 5;
+    }
+    const auto d = model(bg, bx), d0 = model(1, 1);
+    std::printf("H %g %.4f %.4f %.4f %.3f %.6e %.6e %+.5f %+.5f %+.5f %+.5f %s\n", ab, e, bg, bx, score(d), Fy, Mz,
+                d.first, d.second, d0.first, d0.second, ex.status.converged() ? "" : "unconverged");
+    std::fflush(stdout);
+    pg = bg;
+    px = bx;
+  }
+}
+
+// "K ab e dFy dMz": the relaxed model as compiled (its table interpolated) under pure spin against the exact
+// solver, at the levels between the fit's (their midpoints) and at 50 % and 90 % of saturation: the table's
+// interpolation error (scripts/fit-relaxed prints it)
+void check_spin(double ab, int n) {
+  const ContactPatch p = ellipse_patch(ab, n);
+  const double G = combined_shear_modulus_Pa(kPair), nu = combined_poisson(kPair);
+  std::vector<double> es;
+  for (std::size_t k = 0; k + 1 < kFitEPhi.size(); ++k) es.push_back((kFitEPhi[k] + kFitEPhi[k + 1]) / 2);
+  es.push_back(1 - std::cbrt(0.5));
+  es.push_back(1 - std::cbrt(0.1));
+  for (double e : es) {
+    const Creepages c = at_level(p, 2, e);
+    const ExactSolution ex = solve_exact_steady(p, G, nu, c, kMu, kV);
+    const TangentialSolution r = solve_relaxed_steady(p, kPair, c, kMu, kV, false);
+    std::printf("K %g %.4f %+.5f %+.5f %s\n", ab, e, (r.Fy_N - ex.fields.Fy_N) / std::abs(ex.fields.Fy_N),
+                (r.Mz_N_m - ex.fields.Mz_N_m) / std::abs(ex.fields.Mz_N_m), ex.status.converged() ? "" : "unconverged");
+    std::fflush(stdout);
+  }
+}
+
+// "L ab solver Fy(phi)/(G c^3 C23 phi) Mz(eta)/(G c^3 C23 eta) Mz(phi)/(G c^4 C33 phi)": the linear limit (e = 1e-3,
+// c = sqrt(ab)) against Kalker's coefficients as the product has them (lib/tangential/kalker.h), for the exact
+// solver, the simplified theory and the relaxed model; the signs as the solvers give them
+void linear_limit(double ab, int n) {
+  const ContactPatch p = ellipse_patch(ab, n);
+  const double G = combined_shear_modulus_Pa(kPair), nu = combined_poisson(kPair), c = std::sqrt(p.a_m * p.b_m);
+  const KalkerCoefficients C = kalker_coefficients(p.a_m, p.b_m, nu);
+  const Creepages ce = at_level(p, 1, 1e-3), cp = at_level(p, 2, 1e-3);
+  auto row = [&](const char* name, const TangentialSolution& se, const TangentialSolution& sp) {
+    std::printf("L %g %s %.4f %.4f %.4f  C23 %.4f C33 %.4f\n", ab, name, sp.Fy_N / (G * c * c * c * C.C23 * cp.phi_per_m),
+                se.Mz_N_m / (G * c * c * c * C.C23 * ce.eta), sp.Mz_N_m / (G * std::pow(c, 4) * C.C33 * cp.phi_per_m),
+                C.C23, C.C33);
+  };
+  row("exact", solve_exact_steady(p, G, nu, ce, kMu, kV).fields, solve_exact_steady(p, G, nu, cp, kMu, kV).fields);
+  row("simplified", solve_steady(p, make_tangential_problem(p, kPair, ce, kMu, kV)),
+      solve_steady(p, make_tangential_problem(p, kPair, cp, kMu, kV)));
+  row("relaxed", solve_relaxed_steady(p, kPair, ce, kMu, kV), solve_relaxed_steady(p, kPair, cp, kMu, kV));
 }
 
 // "Z dir ab sigma/a p maxerr unconverged": the relaxation length sigma0 and exponent p (sigma = sigma0 (1 - e_eff)^p)
@@ -268,6 +379,12 @@ int main(int argc, char** argv) {
   const double G = combined_shear_modulus_Pa(kPair), nu = combined_poisson(kPair);
   if (what == "fit") {
     fit_factors(ab, n);
+  } else if (what == "checkspin") {
+    check_spin(ab, n);
+  } else if (what == "linear") {
+    linear_limit(ab, n);
+  } else if (what == "fitspin") {
+    fit_spin(ab, n);
   } else if (what == "fitsigma" && argc >= 5) {
     const std::string dir = argv[4];
     fit_sigma(ab, n, dir == "xi" ? 0 : dir == "eta" ? 1 : 2);
