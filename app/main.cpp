@@ -343,7 +343,7 @@ CLI::App* add_transient_command(CLI::App& app, TransientOptions& opt, CommonOpti
       "                    shortened,step_scheme (t_s, q_m: where the forces hold, the middle of a whole\n"
       "                    shift step, else its end; shortened 1: the last step, cut short to end at t_end_s;\n"
       "                    step_scheme: what the step ran, upwind in a shift run being the fallback at CFL < 1)\n"
-      "  strip_power.csv   step,t_s,y_m,power_W_per_m: one row per strip and step\n"
+      "  strip_power.csv   step,t_s,y_m,power_W_per_m: one row per strip and step (not with --no-fields)\n"
       "  strip_energy.csv  y_m,energy_J_per_m: each strip's power integrated over the run\n"
       "  snapshot_<k>.csv  x_m,y_m,pressure_Pa,tau_x_Pa,tau_y_Pa,slip_x_m_per_s,slip_y_m_per_s,t_s: the fields\n"
       "                    for the k-th time of transient.snapshots_s (k from 1), at the end of the step that\n"
@@ -365,7 +365,8 @@ CLI::App* add_transient_command(CLI::App& app, TransientOptions& opt, CommonOpti
   sub->add_option("-o,--output", opt.output_directory,
                   "Output directory (default: the case's output.directory, else out/<case name>)");
   sub->add_flag("--no-fields", opt.no_fields,
-                "Do not write the snapshot_<k>.csv fields (and do not compute them)");
+                "Do not write the fields: the snapshot_<k>.csv (nor compute them) and strip_power.csv (per strip "
+                "and step; strip_energy.csv keeps its integral)");
   sub->add_flag("-q,--quiet", opt.quiet,
                 "No progress line on stderr (the summary still goes to stdout, log messages by --log-level)");
   sub->add_flag("--force", opt.force,
@@ -516,12 +517,14 @@ int run_transient_command(const TransientOptions& opt) {
       timeseries.emplace(dir / "timeseries.csv");
       interrupted::remove_on_signal(timeseries->temporary_path());
       timeseries->append(transient_header());
-      strip_power.emplace(dir / "strip_power.csv");
-      interrupted::remove_on_signal(strip_power->temporary_path());
-      strip_power->append(strip_power_header());
+      if (fields) {  // a field: per strip and step, 25 times timeseries.csv (docs/benchmarks.md, "Outputs")
+        strip_power.emplace(dir / "strip_power.csv");
+        interrupted::remove_on_signal(strip_power->temporary_path());
+        strip_power->append(strip_power_header());
+      }
     }
     timeseries->append(transient_row(r));
-    strip_power->append(strip_power_rows(r, y_m, power_W_per_m));
+    if (strip_power) strip_power->append(strip_power_rows(r, y_m, power_W_per_m));
     log.last = r;
     log.t_s += r.dt_s;
     if (log.sliding_end_step == 0 && r.stick_fraction > 0) {
@@ -549,9 +552,12 @@ int run_transient_command(const TransientOptions& opt) {
                                                                  log.sliding_end_s)});
 
   print_transient_summary(c, t, res, log);
-  write_files_atomic(files, {&*timeseries, &*strip_power});
+  std::vector<StreamedFile*> streamed = {&*timeseries};
+  if (strip_power) streamed.push_back(&*strip_power);
+  write_files_atomic(files, streamed);
+  if (!strip_power) std::filesystem::remove(dir / "strip_power.csv");  // an earlier run's: not this run's
   interrupted::forget();
-  spdlog::info("wrote {} files to {}", files.size() + 2, dir.string());
+  spdlog::info("wrote {} files to {}", files.size() + streamed.size(), dir.string());
   return 0;
 }
 

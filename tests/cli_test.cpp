@@ -489,13 +489,19 @@ TEST_F(CommandLine, TransientOnSmallStartupWritesEveryTable) {
   // nothing else: no temporary files left behind
   EXPECT_EQ(std::distance(fs::directory_iterator(out), fs::directory_iterator()), 6);
 
-  // --no-fields: no snapshots
+  // --no-fields: no snapshots, no strip_power.csv (per strip and step: a field; an earlier run's removed),
+  // timeseries.csv and strip_energy.csv as before
   const fs::path bare = dir_ / "bare";
+  fs::create_directories(bare);
+  std::ofstream(bare / "strip_power.csv") << "an earlier run's strip powers\n";
   const ProcessResult nf =
       rollwear("transient " + quoted(case_path) + " -o " + quoted(bare) + " --no-fields --quiet --log-level off", dir_);
   ASSERT_EQ(nf.exit_code, 0) << nf.err;
   EXPECT_FALSE(fs::exists(bare / "snapshot_1.csv"));
-  EXPECT_EQ(std::distance(fs::directory_iterator(bare), fs::directory_iterator()), 4);
+  EXPECT_FALSE(fs::exists(bare / "strip_power.csv"));
+  EXPECT_EQ(lines_of(read_text(bare / "timeseries.csv")).size(), series.size());  // equal to rounding: the
+  EXPECT_TRUE(fs::exists(bare / "strip_energy.csv"));  // snapshot steps compute their fields
+  EXPECT_EQ(std::distance(fs::directory_iterator(bare), fs::directory_iterator()), 3);
 }
 
 TEST_F(CommandLine, TransientCflBreachExitsTwoNamingDtAndAllowedStep) {

@@ -547,7 +547,7 @@ TransientOutputEstimate estimate_transient_output(const TransientCase& t, bool f
   e.steps = 1 + per_dt + (s.scheme == TransientScheme::Shift || t.inertia || s.substep ? rolled_m / grid.dx_m : 0);
   constexpr double kTimeseriesColumns = 17, kStripPowerColumns = 4, kSnapshotColumns = 8, kStripEnergyColumns = 2;
   const double cells = static_cast<double>(grid.nx) * grid.ny;
-  const double numbers = e.steps * (kTimeseriesColumns + kStripPowerColumns * grid.ny) +
+  const double numbers = e.steps * (kTimeseriesColumns + (fields ? kStripPowerColumns * grid.ny : 0)) +
                          kStripEnergyColumns * grid.ny +
                          (fields ? static_cast<double>(s.snapshot_times_s.size()) * kSnapshotColumns * cells : 0);
   e.bytes = numbers * kCsvBytesPerNumber;

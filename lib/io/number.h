@@ -16,10 +16,9 @@ namespace contact {
 // the longest shortest-round-trip double: sign, 17 digits, point, "e-308"
 constexpr int kRoundTripMaxChars = 32;
 
-inline char* round_trip_to(char* first, char* last, double v) {
-  const std::to_chars_result r = std::to_chars(first, last, v, std::chars_format::general);
-  return r.ec == std::errc() ? r.ptr : first;
-}
+// writes round_trip(v) at first (std::to_chars(general)'s text, byte for byte), returns its end; first
+// itself if [first, last) is too short
+char* round_trip_to(char* first, char* last, double v);
 
 inline std::string round_trip(double v) {
   char buf[kRoundTripMaxChars];
