@@ -178,6 +178,23 @@ TEST_F(CaseReader, ErrorCarriesItsPlaceAsData) {
   expect(kMinimalCase.substr(0, kMinimalCase.find("load:")) + "friction: { mu: 0.3 }\n", 1, 1, "load");  // a section
 }
 
+// A check across keys (after every value was read) carries its first key's place as data too
+TEST_F(CaseReader, CrossKeyErrorCarriesItsPlaceAsData) {
+  std::string flat = kMinimalCase;
+  flat.replace(flat.find("Ry_m: 0.500"), 11, "Ry_m: .inf");  // no relative curvature across: a line contact
+  try {
+    read_contact_case(write(flat));
+    ADD_FAILURE() << "no error for two cylinders with parallel axes";
+  } catch (const CaseError& e) {
+    const InputLocation& l = e.location;
+    EXPECT_EQ(l.file, path());
+    EXPECT_EQ(l.line, 2) << e.what();
+    EXPECT_GT(l.column, 0) << e.what();
+    EXPECT_EQ(l.key, "bodies.body1.Ry_m") << e.what();
+    EXPECT_EQ(std::string(e.what()).rfind(fmt::format("{}:{}:{}: ", l.file, l.line, l.column), 0), 0u) << e.what();
+  }
+}
+
 // A document's text reads as the file with that text does; profile files are relative to the folder given
 TEST_F(CaseReader, TextReadsAsTheFile) {
   const std::string text = std::regex_replace(kMinimalCase, std::regex("  body1: .*\n  body2: .*\n"),

@@ -159,47 +159,47 @@ void validate(const WearCase& c) {
   const contact::ContactCase& k = c.contact;
   const WearSection& w = c.wear;
   if (!k.profiles)
-    throw CaseError(where(k, "wear") + "wear, profiles: the worn body needs a lateral profile; give a profiles: "
+    throw key_error(k, "wear", "wear, profiles: the worn body needs a lateral profile; give a profiles: "
                     "section (e.g. body1: { crowned: { Ry_m: 0.5, width_m: 0.02 } })");
   if (k.solver.normal == "hertz" || k.solver.normal == "halfspace")
-    throw CaseError(where(k, "solver.normal") + "solver.normal: a wear run solves the worn profiles with auto "
+    throw key_error(k, "solver.normal", "solver.normal: a wear run solves the worn profiles with auto "
                     "(Hertz while the curvature is constant, then semi-Hertz) or semi-hertz, not " + k.solver.normal);
-  if (k.inertia) throw CaseError(where(k, "inertia") + "inertia: not supported in a wear run");
+  if (k.inertia) throw key_error(k, "inertia", "inertia: not supported in a wear run");
   for (const auto& [key, law, R] : {std::tuple<const char*, const std::optional<WearLaw>*, double>{
                                         "wear.body1", &w.body1, k.bodies.body1.Rx_m},
                                     {"wear.body2", &w.body2, k.bodies.body2.Rx_m}}) {
     if (!law->has_value()) continue;
     if (!(R > 0) || !std::isfinite(R))
-      throw CaseError(where(k, key) + key + ": the body wears but its rolling radius Rx_m = " + number(R) +
+      throw key_error(k, key, std::string(key) + ": the body wears but its rolling radius Rx_m = " + number(R) +
                       " gives no revolutions (a flat or concave body cannot be the worn body)");
     const std::string name = (*law)->law;
     // Archard's law is the energy law with k_E = K/(H mu) (wear_law.h): mu = 0 has no energy equivalent
     if (name == "archard" && !(k.friction.mu > 0))
-      throw CaseError(where(k, "friction.mu") + "friction.mu, " + key + ".law: the archard law needs friction (it is "
+      throw key_error(k, "friction.mu", std::string("friction.mu, ") + key + ".law: the archard law needs friction (it is "
                       "the energy law with k_E = K/(H mu)), got mu = " + number(k.friction.mu) + "; give mu > 0");
     if (k.transient && name != "energy" && name != "archard")
-      throw CaseError(where(k, std::string(key) + ".law") + key + ".law, transient: the " + name +
+      throw key_error(k, std::string(key) + ".law", std::string(key) + ".law, transient: the " + name +
                       " law reads steady per-cell fields; a transient duty cycle takes energy or archard");
   }
   if (k.transient) {
     if (!contact::is_constant(k.load.normal_load_N))
-      throw CaseError(where(k, "load.normal_load_N") + "load.normal_load_N: a wear run's duty cycle needs a constant "
+      throw key_error(k, "load.normal_load_N", "load.normal_load_N: a wear run's duty cycle needs a constant "
                       "load (the worn contact is solved once per evaluation)");
     if (k.transient->scheme != "shift")
-      throw CaseError(where(k, "transient.scheme") + "transient.scheme: a wear run's duty cycle uses shift");
+      throw key_error(k, "transient.scheme", "transient.scheme: a wear run's duty cycle uses shift");
   } else {
     contact::validate_steady(k);
     if (!(contact::speed_of(k) > 0))
-      throw CaseError(where(k, "kinematics.speed_m_per_s") + "kinematics.speed_m_per_s: steady running needs a "
+      throw key_error(k, "kinematics.speed_m_per_s", "kinematics.speed_m_per_s: steady running needs a "
                       "rolling speed > 0 (revolutions)");
   }
   if (!w.snapshots_revolutions.empty() && w.snapshots_revolutions.back() > w.revolutions)
-    throw CaseError(where(k, "wear.snapshots_revolutions") + "wear.snapshots_revolutions, wear.revolutions: snapshot at " +
+    throw key_error(k, "wear.snapshots_revolutions", "wear.snapshots_revolutions, wear.revolutions: snapshot at " +
                     number(w.snapshots_revolutions.back()) + " is after the end of the life budget, " +
                     number(w.revolutions));
   if (contact::enum_from_name(kSteppingMethods, w.stepping.method) == Method::FixedStep &&
       !(w.stepping.step_revolutions > 0))
-    throw CaseError(where(k, "wear.stepping") + "wear.stepping.step_revolutions: fixed-revolutions needs a step > 0");
+    throw key_error(k, "wear.stepping", "wear.stepping.step_revolutions: fixed-revolutions needs a step > 0");
   if (!w.collective.empty()) validate_collective(c);
 }
 
@@ -213,8 +213,8 @@ void check_profile_resolves_contact(const WearCase& c, int body, double node_spa
       "{} nodes across it, {:.3g} m apart or closer; ",
       key, node_spacing_m, contact_width_m, min_nodes, needed_m);
   if (contact::given(c.contact, key + ".file"))
-    throw CaseError(contact::where(c.contact, key + ".file") + what + "give a profile file with nodes that close");
-  throw CaseError(contact::where(c.contact, key) + what + "a generated profile spaces its nodes by its width_m (at "
+    throw contact::key_error(c.contact, key + ".file", what + "give a profile file with nodes that close");
+  throw contact::key_error(c.contact, key, what + "a generated profile spaces its nodes by its width_m (at "
                   "most width_m/" + number(1 / contact::kProfileMaxSpacingFraction) + "), so give " + key +
                   " as { file: PATH } (y_m,z_m) with nodes that close");
 }

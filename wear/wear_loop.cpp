@@ -139,7 +139,7 @@ WearModel make_wear_model(const WearCase& c) {
   m.scheme = contact::parse_tangential_scheme(k.solver.tangential);
   // the exact theory for reference lives: steady duty cycles only (one exact solve per wear-rate evaluation)
   if (m.scheme == contact::TangentialScheme::Exact && k.transient)
-    throw contact::CaseError(contact::where(k, "solver.tangential") + "solver.tangential: a wear run takes the exact "
+    throw contact::key_error(k, "solver.tangential", "solver.tangential: a wear run takes the exact "
                              "theory with a steady duty cycle only (no transient: section); use consistent or classic");
   if (k.transient) {
     m.transient = contact::transient_case_of(k);

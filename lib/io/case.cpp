@@ -4,6 +4,7 @@
 #include "lib/io/case_node.h"
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <filesystem>
 #include <stdexcept>
@@ -260,6 +261,38 @@ std::string where(const ContactCase& c, std::string key) {
   return c.path.empty() ? std::string() : c.path + ": ";
 }
 
+InputLocation location_of(const ContactCase& c, std::string key) {
+  const std::string asked = key;
+  for (;;) {
+    const auto it = c.locations.find(key);
+    if (it != c.locations.end()) {  // "FILE:LINE:COL"
+      const std::string& place = it->second;
+      const std::size_t col_at = place.rfind(':');
+      const std::size_t line_at = col_at == std::string::npos || col_at == 0 ? std::string::npos
+                                                                             : place.rfind(':', col_at - 1);
+      InputLocation l{place, 0, 0, asked};
+      const auto number = [&](std::size_t from, std::size_t to, int& v) {
+        const auto [end, ec] = std::from_chars(place.data() + from, place.data() + to, v);
+        return ec == std::errc() && end == place.data() + to && to > from;
+      };
+      if (line_at != std::string::npos && number(line_at + 1, col_at, l.line) &&
+          number(col_at + 1, place.size(), l.column))
+        l.file = place.substr(0, line_at);
+      else
+        l.line = l.column = 0;
+      return l;
+    }
+    const std::size_t dot = key.rfind('.');
+    if (dot == std::string::npos) break;
+    key.erase(dot);
+  }
+  return {c.path, 0, 0, asked};
+}
+
+CaseError key_error(const ContactCase& c, const std::string& key, const std::string& message) {
+  return CaseError(where(c, key) + message, location_of(c, key));
+}
+
 bool given(const ContactCase& c, const std::string& key) { return c.locations.count(key) > 0; }
 
 namespace {
@@ -267,7 +300,7 @@ namespace {
 // the constant of a history the steady command needs
 double steady_value(const ContactCase& c, const History& h, const std::string& key) {
   if (h.value.empty() || !is_constant(h))
-    throw CaseError(where(c, key) + key + ": the steady 'contact' command needs a constant; histories are for "
+    throw key_error(c, key, std::string(key) + ": the steady 'contact' command needs a constant; histories are for "
                     "'transient'");
   return h.value.front();
 }
@@ -280,7 +313,7 @@ void check_inertia_kinematics(const ContactCase& c) {
   if (!keys.empty()) {
     std::string names;
     for (const std::string& k : keys) names += (names.empty() ? "" : ", ") + k;
-    throw CaseError(where(c, keys.front()) + names + ", inertia: with inertia the rolling speed and xi follow "
+    throw key_error(c, keys.front(), names + ", inertia: with inertia the rolling speed and xi follow "
                     "from the roller's spin (V = (omega1 R1 + V2)/2, xi = (V2 - omega1 R1)/V); remove " +
                     (keys.size() > 1 ? "them" : "it") + " and give inertia.path_speed_m_per_s");
   }
@@ -288,7 +321,7 @@ void check_inertia_kinematics(const ContactCase& c) {
   for (const auto& [key, h] : {std::pair<const char*, const History*>{"kinematics.eta", &c.kinematics.eta},
                                {"kinematics.phi_per_m", &c.kinematics.phi_per_m}})
     if (!h->value.empty() && (min_value(*h) != 0 || max_value(*h) != 0))
-      throw CaseError(where(c, key) + key + ", inertia: an inertia run models longitudinal creep only; " +
+      throw key_error(c, key, std::string(key) + ", inertia: an inertia run models longitudinal creep only; " +
                       "lateral and spin creepage must be 0");
 }
 
@@ -303,7 +336,7 @@ void check_curvature(const ContactCase& c, const char* axis, const char* symbol,
           ? fmt::format("no relative curvature ({} = 0 1/m): Hertz cannot treat a line contact", symbol)
           : fmt::format("conforming contact (relative curvature {} = {:.6g} 1/m <= 0): Hertz cannot treat it",
                         symbol, curvature_per_m);
-  throw CaseError(where(c, key1) + key1 + ", " + key2 + ": " + what);
+  throw key_error(c, key1, key1 + ", " + key2 + ": " + what);
 }
 
 }  // namespace
@@ -366,37 +399,37 @@ void validate(const ContactCase& c) {
   if (!c.profiles) {
     check_curvature(c, "Ry_m", "B", c.bodies.body1.Ry_m, c.bodies.body2.Ry_m);
     if (c.solver.normal == "semi-hertz" || c.solver.normal == "halfspace")
-      throw CaseError(where(c, "solver.normal") + "solver.normal, profiles: the " + c.solver.normal +
+      throw key_error(c, "solver.normal", "solver.normal, profiles: the " + c.solver.normal +
                       " solver works on lateral profiles; give a profiles: section (or normal: auto)");
   } else {
     // the profiles are the lateral geometry: no Ry_m besides
     for (const char* key : {"bodies.body1.Ry_m", "bodies.body2.Ry_m"})
       if (given(c, key))
-        throw CaseError(where(c, key) + key + ", profiles: the lateral geometry comes from the profiles; "
+        throw key_error(c, key, std::string(key) + ", profiles: the lateral geometry comes from the profiles; "
                         "remove Ry_m (Rx_m stays: the rolling radius)");
     // Hertz needs constant curvature
     if (c.solver.normal == "hertz")
       for (const auto& [key, p] : {std::pair<const char*, const Profile*>{"profiles.body1", &c.profiles->profiles.body1},
                                    {"profiles.body2", &c.profiles->profiles.body2}})
         if (!has_constant_curvature(*p, kCaseCurvatureRtol))
-          throw CaseError(where(c, "solver.normal") + "solver.normal, " + key + ": Hertz needs profiles of " +
+          throw key_error(c, "solver.normal", std::string("solver.normal, ") + key + ": Hertz needs profiles of " +
                           "constant curvature (within " + number(kCaseCurvatureRtol) + "), " + key +
                           " is not; use normal: auto, semi-hertz or halfspace");
   }
 
   // Kalker's exact theory (lib/tangential/exact.h) solves with friction only
   if (parse_tangential_scheme(c.solver.tangential) == TangentialScheme::Exact && !(c.friction.mu > 0))
-    throw CaseError(where(c, "friction.mu") + "friction.mu, solver.tangential: the exact solver needs mu > 0");
+    throw key_error(c, "friction.mu", "friction.mu, solver.tangential: the exact solver needs mu > 0");
 
   // the run: snapshots within it, a time step for the fixed-step schemes
   if (c.transient) {
     const TransientSection& t = *c.transient;
     if (!t.snapshots_s.empty() && t.snapshots_s.back() > t.t_end_s)
-      throw CaseError(where(c, "transient.snapshots_s") + "transient.snapshots_s, transient.t_end_s: snapshot at " +
+      throw key_error(c, "transient.snapshots_s", "transient.snapshots_s, transient.t_end_s: snapshot at " +
                       number(t.snapshots_s.back()) + " s is after the end of the run, t_end_s = " +
                       number(t.t_end_s) + " s");
     if (t.scheme != "shift" && !(t.dt_s > 0))
-      throw CaseError(where(c, "transient.dt_s") + "transient.dt_s, transient.scheme: the " + t.scheme +
+      throw key_error(c, "transient.dt_s", "transient.dt_s, transient.scheme: the " + t.scheme +
                       " scheme needs a time step dt_s > 0");
   }
 
@@ -404,10 +437,10 @@ void validate(const ContactCase& c) {
   if (c.inertia) {
     check_inertia_kinematics(c);
     if (c.transient && c.transient->scheme != "shift")
-      throw CaseError(where(c, "transient.scheme") + "transient.scheme, inertia: an inertia run uses the shift "
+      throw key_error(c, "transient.scheme", "transient.scheme, inertia: an inertia run uses the shift "
                       "scheme, got '" + c.transient->scheme + "'");
     if (c.transient && !(c.transient->dt_s > 0))
-      throw CaseError(where(c, "transient.dt_s") + "transient.dt_s, inertia: an inertia run needs the longest "
+      throw key_error(c, "transient.dt_s", "transient.dt_s, inertia: an inertia run needs the longest "
                       "step dt_s > 0 (the spin-up is stiff; e.g. 2.0e-6 s)");
   }
 }
@@ -419,7 +452,7 @@ void validate_steady(const ContactCase& c) {
   steady_value(c, c.kinematics.eta, "kinematics.eta");
   steady_value(c, c.kinematics.phi_per_m, "kinematics.phi_per_m");
   if (c.inertia)
-    throw CaseError(where(c, "inertia") + "inertia: the steady 'contact' command has no roller inertia; "
+    throw key_error(c, "inertia", "inertia: the steady 'contact' command has no roller inertia; "
                     "inertia is for 'transient'");
 }
 
@@ -437,7 +470,7 @@ Bodies bodies_of(const ContactCase& c) {
   if (c.profiles) {  // Ry from the profiles, which must then have constant curvature
     const auto lateral_radius = [&](const Profile& p, const char* key) {
       if (!has_constant_curvature(p, kCaseCurvatureRtol))
-        throw CaseError(where(c, key) + key + ": the radii of this command need profiles of constant curvature "
+        throw key_error(c, key, std::string(key) + ": the radii of this command need profiles of constant curvature "
                         "(within " + number(kCaseCurvatureRtol) + ")");
       const double curvature_per_m = fit_parabola(p).curvature_per_m;
       return curvature_per_m == 0 ? kFlat : 1 / curvature_per_m;
@@ -481,7 +514,7 @@ NormalSolution solve_normal_of(const ContactCase& c) {
   try {
     return solve_normal_converged(normal_problem_of(c));
   } catch (const NormalChoiceError& e) {
-    throw CaseError(where(c, "solver.normal") + "solver.normal, profiles: " + e.what());
+    throw key_error(c, "solver.normal", std::string("solver.normal, profiles: ") + e.what());
   }
 }
 
@@ -582,7 +615,7 @@ CaseError transient_error(const ContactCase& c, const SettingError& e) {
                          "substep: true)",
                          number(cfl->dt_s), c.transient->scheme, vmax * cfl->dt_s / dx, number(vmax), dx, dt_max);
     }
-    return CaseError(where(c, key) + key + ": " + what);
+    return key_error(c, key, std::string(key) + ": " + what);
   }
   return CaseError((c.path.empty() ? std::string() : c.path + ": ") + "transient: " + e.what());
 }

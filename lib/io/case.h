@@ -133,6 +133,11 @@ void read_running_condition(YamlMap& m, ContactCase& c);
 // "FILE:LINE:COL: " of the key if it was read from the file, else of its closest enclosing section
 // that was, else "FILE: " (nothing for a case built in code): the prefix of a cross-key message
 std::string where(const ContactCase& c, std::string key);
+// the same place as data (the key itself, or its nearest enclosing key that was read; the file alone
+// when none was), for a CaseError whose reader wants the file, line and key apart (the Python bindings)
+InputLocation location_of(const ContactCase& c, std::string key);
+// CaseError(where(c, key) + message) carrying location_of(c, key)
+CaseError key_error(const ContactCase& c, const std::string& key, const std::string& message);
 // true if the key was read from the file
 bool given(const ContactCase& c, const std::string& key);
 
