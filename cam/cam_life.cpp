@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #include <spdlog/fmt/fmt.h>
@@ -82,19 +83,35 @@ LiftLoss max_lift_loss(const contact::Profiles& unworn, const CamWearGrid& g, co
   return out;
 }
 
+CreepLawSettings worn_contact_settings(const contact::Profiles& unworn, const CamWearGrid& g, CreepLawSettings law,
+                                       double max_strip_m) {
+  const double lo = std::max(unworn.body1.y_m(0), unworn.body2.y_m(0));
+  const double hi = std::min(unworn.body1.y_m(unworn.body1.y_m.size() - 1), unworn.body2.y_m(unworn.body2.y_m.size() - 1));
+  law.fixed_grid_y_lo_m = lo;
+  law.fixed_grid_y_hi_m = hi;
+  const double cell = g.roller_cell_m();
+  const int per_cell = max_strip_m > 0 ? std::max(1, static_cast<int>(std::ceil(cell / max_strip_m - 1e-9))) : 1;
+  law.grid.ny = std::max(2, per_cell * static_cast<int>(std::lround((hi - lo) / cell)));
+  return law;
+}
+
 RevolutionDissipation worn_revolution_dissipation(const CamModel& m, const Revolution& r, const RollerMotion& motion,
                                                   const contact::Profiles& unworn, const CamWearGrid& g,
                                                   const CamWearState& s, const CreepLawSettings& law) {
   if (motion.angles.size() != r.rows.size())
     throw std::invalid_argument("worn_revolution_dissipation: the roller's motion does not match the revolution");
   const double duration = 2 * contact::kPi / m.angle_steps / m.omega_rad_per_s;
+  // the strips no wider than the unworn revolution's narrowest contact's (2 b / ny)
+  double b_min = std::numeric_limits<double>::infinity();
+  for (const RevolutionRow& row : r.rows) b_min = std::min(b_min, row.contact.b_m);
+  const CreepLawSettings fixed = worn_contact_settings(unworn, g, law, 2 * b_min / law.grid.ny);
   RevolutionDissipation out;
   out.reserve(r.rows.size());
   for (std::size_t i = 0; i < r.rows.size(); ++i) {
     const RevolutionRow& row = r.rows[i];
     const contact::Profiles worn = worn_profiles_at(unworn, g, s, row.contact_arc_m);
     const AngleContact c = angle_contact(m.bodies, worn, m.geometry.roller_radius_m, row.kin, motion.angles[i].normal_N,
-                                         m.mu, law);
+                                         m.mu, fixed);
     RollerAngle roller = motion.angles[i];
     const CreepageForForce xi = creepage_for_force(c, roller.tangential_N);
     if (xi.found) {

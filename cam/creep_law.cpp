@@ -22,6 +22,11 @@ AngleContact angle_contact(const RollerAndTrack& bodies, const contact::Profiles
   np.grid = s.grid;
   np.semi_hertz.heathcote_slip = s.heathcote_slip;
   np.semi_hertz.pressure_fields = false;  // the steady strips read only the strips
+  // worn profiles change a little from one evaluation of the life's rate to the next: the contact must
+  // follow them continuously (semi_hertz.h; docs/cam-follower.md §14)
+  np.semi_hertz.continuous_rule = true;
+  np.semi_hertz.fixed_grid_y_lo_m = s.fixed_grid_y_lo_m;
+  np.semi_hertz.fixed_grid_y_hi_m = s.fixed_grid_y_hi_m;
   AngleContact c;
   c.normal = contact::solve_normal_converged(np);
   c.problem = contact::make_tangential_problem(c.normal.patch, bodies.pair, {}, mu, 0);

@@ -20,6 +20,9 @@ namespace cam {
 struct CreepLawSettings {
   contact::GridSpec grid{40, 40};  // the contact's strips (ny across); along x the pure-xi strip is exact
   bool heathcote_slip = true;      // the crowned roller's rolling radius varying across the contact
+  // a worn (semi-Hertzian) contact's strips over this fixed lateral extent (profiles' y) instead of the
+  // contact's: both 0 = the contact's (lib/normal/semi_hertz.h). The life sets it (cam/cam_life.h).
+  double fixed_grid_y_lo_m = 0, fixed_grid_y_hi_m = 0;
 };
 
 struct AngleContact {

@@ -671,11 +671,19 @@ void describe_approach(const ApproachSearch& search, int evaluations, const std:
 // gap. Then a_j <= the row's largest a(y), p_j <= p0, and a row whose centre misses the contact
 // keeps its own load: it no longer hands it to the nearest row in contact, which could lie in
 // another patch. Returns the rows' loads (F(delta), to rounding); throws NoStripCentreError.
-Eigen::ArrayXd fill_strips(const Gap& gap, const Evaluation& ev, const GridSpec& spec, SemiHertzResult& res) {
+Eigen::ArrayXd fill_strips(const Gap& gap, const Evaluation& ev, const GridSpec& spec, const SemiHertzOptions& options,
+                           SemiHertzResult& res) {
   ContactPatch& patch = res.patch;
   const double half_x = std::sqrt(ev.t / ev.A_mod);  // a at the gap's minimum, the longest strip
-  const double half_y = (res.contact_y_max_m - res.contact_y_min_m) / 2;
-  res.grid_y0_m = (res.contact_y_min_m + res.contact_y_max_m) / 2;
+  const bool fixed = options.fixed_grid_y_hi_m > options.fixed_grid_y_lo_m;
+  if (fixed && (res.contact_y_min_m < options.fixed_grid_y_lo_m || res.contact_y_max_m > options.fixed_grid_y_hi_m))
+    throw std::invalid_argument(fmt::format("semi-Hertz: the contact [{}, {}] m leaves the fixed grid's extent [{}, {}] m",
+                                            res.contact_y_min_m, res.contact_y_max_m, options.fixed_grid_y_lo_m,
+                                            options.fixed_grid_y_hi_m));
+  const double y_lo = fixed ? options.fixed_grid_y_lo_m : res.contact_y_min_m;
+  const double y_hi = fixed ? options.fixed_grid_y_hi_m : res.contact_y_max_m;
+  const double half_y = (y_hi - y_lo) / 2;
+  res.grid_y0_m = (y_lo + y_hi) / 2;
   patch.grid = make_grid(half_x, half_y, spec);
   const Grid& g = patch.grid;
   patch.half_length_m = Eigen::ArrayXd::Zero(g.ny);
@@ -684,11 +692,11 @@ Eigen::ArrayXd fill_strips(const Gap& gap, const Evaluation& ev, const GridSpec&
   bool centre_in_contact = false;
   const double line_load_per_g = ev.p0 * (kPi / 2) / std::sqrt(ev.t * ev.A_mod);  // (pi/2) p a = this * g
   Solver::March rows(gap, ev.t), centres(gap, ev.t), ends(gap, ev.t);
-  double below = rows.integral_to(res.contact_y_min_m);
+  double below = rows.integral_to(y_lo);
   std::size_t node = 0;  // the first gap node right of the current row's left edge
-  double yl = res.contact_y_min_m;
+  double yl = y_lo;
   for (int j = 0; j < g.ny; ++j) {
-    const double yr = j + 1 == g.ny ? res.contact_y_max_m : res.grid_y0_m + g.y_edge(j + 1);
+    const double yr = j + 1 == g.ny ? y_hi : res.grid_y0_m + g.y_edge(j + 1);
     const double upto = rows.integral_to(yr);
     const double g_mean = (upto - below) / (yr - yl);
     row_load_N(j) = line_load_per_g * (upto - below);
@@ -772,11 +780,11 @@ SemiHertzResult solve_semi_hertz(const Profiles& profiles, double Rx1_m, double 
   double eps = 0.5;
   double delta = options.initial_approach_m > 0 ? options.initial_approach_m : first_approach(solver, A, F, Estar, eps);
   SemiHertzResult res;
-  res.rule = ApproachRule::SelfConsistent;
+  res.rule = options.continuous_rule ? ApproachRule::Continuous : ApproachRule::SelfConsistent;
   ApproachSearch search = find_approach(solver, F, delta, eps, options.max_iterations, options, res.rule);
   int evaluations = search.evaluations;
   std::string remedy;
-  if (!search.converged && search.bracketed()) {
+  if (!options.continuous_rule && !search.converged && search.bracketed()) {
     remedy = "; by the continuous rule: with the self-consistent one " + jump_text(search);
     res.rule = ApproachRule::Continuous;
     search = find_approach(solver, F, std::sqrt(search.lo * search.hi), search.ev.eps,
@@ -788,7 +796,7 @@ SemiHertzResult solve_semi_hertz(const Profiles& profiles, double Rx1_m, double 
 
   // the strips carry their rows' loads, scaled to carry F exactly
   ContactPatch& patch = res.patch;
-  Eigen::ArrayXd row_load_N = fill_strips(gap, ev, spec, res);
+  Eigen::ArrayXd row_load_N = fill_strips(gap, ev, spec, options, res);
   const Grid& g = patch.grid;
   const double carried_N = row_load_N.sum();  // F(delta), to rounding
   const double scale = F / carried_N;         // exact to rounding (carried = F(delta) within load_rtol)

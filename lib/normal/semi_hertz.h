@@ -66,6 +66,18 @@ struct SemiHertzOptions {
   double load_rtol = 1e-6;        // the root find stops at |F(delta)/F - 1| <= load_rtol
   int max_iterations = 60;        // evaluations of F(delta)
   double initial_approach_m = 0;  // warm start, e.g. the last solve's approach; 0 = estimate
+  // always the continuous rule (eps from two passes, y0 the basin centroid), never the self-consistent
+  // one: the result is then continuous in the profiles as well as in delta. A caller that solves again
+  // and again on profiles changing by little (the cam's life, docs/cam-follower.md §12) needs that: by
+  // default the rule is chosen per solve, and where the self-consistent F(delta) jumps across the load
+  // for one profile and not for the next, the contact jumps between the two rules' solutions.
+  bool continuous_rule = false;
+  // the strips' lateral extent (profiles' y, lo < hi): the grid laid over [lo, hi] whatever the contact's
+  // extent, strips outside the contact empty. Both 0: over the contact's extent (the default), which
+  // moves every strip when a lobe of contact enters or leaves; a fixed extent keeps the strips in place
+  // as the profiles change, so the strips' sums change continuously (the cam's life, §12 of
+  // docs/cam-follower.md). The contact must lie within it.
+  double fixed_grid_y_lo_m = 0, fixed_grid_y_hi_m = 0;
   double kp_epsilon = 0;          // 0: eps from the equivalent ellipse (exact on constant curvature);
                                   // in (0, 1): Kik-Piotrowski as published, fixed eps (0.55 in their
                                   // paper) and a = sqrt((eps delta - h)/A), for comparison
