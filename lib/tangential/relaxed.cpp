@@ -10,6 +10,7 @@
 #include "lib/normal/hertz.h"
 #include "lib/tangential/kalker.h"
 #include "lib/tangential/relaxed_table.h"
+#include "lib/tangential/shift_run.h"
 #include "lib/tangential/steady.h"
 
 namespace contact {
@@ -144,135 +145,19 @@ TangentialSolution relaxed_step(const ContactPatch& patch, const ElasticPair& pa
   return steady_at(patch, pair, state.effective, c, mu, speed_m_per_s, fields);
 }
 
-namespace {
-
-TangentialSolution no_contact_fields(const Grid& g) {
-  TangentialSolution s;
-  s.tau_x_Pa = s.tau_y_Pa = s.slip_x_m_per_s = s.slip_y_m_per_s = s.power_W_per_m2 = Eigen::ArrayXXd::Zero(g.nx, g.ny);
-  s.state = Eigen::ArrayXXi::Zero(g.nx, g.ny);
-  s.strip_power_W_per_m = s.strip_creep_power_W_per_m = s.strip_trailing_W_per_m = s.strip_force_x_N_per_m =
-      s.strip_force_y_N_per_m = Eigen::ArrayXd::Zero(g.ny);
-  return s;
-}
-
-// the contact at load F on the run's grid (as Satran's run puts it: a given patch, or Hertz's ellipse on
-// the grid of the largest load; none at F = 0)
-ContactPatch contact_at(const TransientCase& c, const Grid& grid, double F, bool& in_contact) {
-  in_contact = false;
-  if (c.patch) {
-    in_contact = true;
-    return *c.patch;
-  }
-  if (F > 0) {
-    const HertzContact h = solve_hertz(c.bodies, c.materials, F);
-    if ((grid.y_m.abs() < h.b_m).any()) {
-      in_contact = true;
-      return hertz_patch(h, grid);
-    }
-  }
-  return {};
-}
-
-}  // namespace
-
 TransientResult run_relaxed_transient(const TransientCase& c, const StepObserver& observe) {
   const TransientSettings& set = c.settings;
   check_transient_inputs(c);
   if (c.inertia) throw SettingError("", "inertia", "the relaxed model's run has no roller inertia (Satran's has)");
   if (set.scheme != TransientScheme::Shift)
     throw SettingError("", "scheme", "the relaxed model rolls by the shift scheme's steps; use scheme: shift");
-  if (c.patch && !(is_constant(c.inputs.normal_load_N) && c.inputs.normal_load_N.value[0] == c.patch->normal_load_N))
-    throw SettingError("", "normal_load_N", "a run on a given contact patch needs the constant load of the patch, " +
-                                                std::to_string(c.patch->normal_load_N) + " N");
-  TransientResult res;
-  if (c.patch) {
-    res.grid = c.patch->grid;
-  } else {
-    const HertzContact largest = solve_hertz(c.bodies, c.materials, max_value(c.inputs.normal_load_N));
-    res.grid = make_grid(largest.a_m, largest.b_m, set.grid);
-  }
-  const Grid& g = res.grid;
-  const double dx = g.dx_m;
-  res.strip_energy_J_per_m = Eigen::ArrayXd::Zero(g.ny);
-  res.final_state = rest_state(g);  // Satran's node state: not the model's (left at rest)
-
-  std::vector<double> snaps = set.snapshot_times_s;
-  std::sort(snaps.begin(), snaps.end());
-  std::size_t next_snap = 0;
-  double t = 0, q = 0, F_patch = std::numeric_limits<double>::quiet_NaN();
-  ContactPatch patch;
-  bool in_contact = false;
   RelaxedState state = relaxed_rest();
-  const double longest = set.dt_s > 0 ? set.dt_s : std::numeric_limits<double>::infinity();
-  int step = 0;
-  bool has_whole_step = false;
-  while (t < set.t_end_s * (1 - 1e-12)) {
-    const double left = set.t_end_s - t;
-    const double t_roll = time_to_accumulate(c.inputs.speed_m_per_s, t, dx);
-    const double dt = std::min({t_roll - t, longest, left});
-    const double dq = dt == t_roll - t ? dx : std::min(dx, integral(c.inputs.speed_m_per_s, t, t + dt));
-    if (!(dt > 0)) break;
-    const bool shortened = dt == left && dt < std::min(t_roll - t, longest) * (1 - 1e-9);
-    const double tm = t + dt / 2;
-    const Creepages cr{value_at(c.inputs.xi, tm), value_at(c.inputs.eta, tm), value_at(c.inputs.phi_per_m, tm)};
-    const double V = value_at(c.inputs.speed_m_per_s, tm);
-    const double F = value_at(c.inputs.normal_load_N, t + dt);
-    if (!(F == F_patch)) {
-      patch = contact_at(c, g, F, in_contact);
-      F_patch = F;
-    }
-    const bool fields = next_snap < snaps.size();
-    TangentialSolution f;
-    if (in_contact) {
-      f = relaxed_step(patch, c.materials, cr, c.mu, V, dq, state, fields);
-    } else {
-      f = no_contact_fields(g);
-      state = relaxed_rest();  // out of contact: nothing is held
-    }
-    TransientRecord rec;
-    rec.step = ++step;
-    rec.t_s = t + dt;
-    rec.q_m = q + dq;
-    rec.dt_s = dt;
-    rec.speed_m_per_s = V;
-    rec.xi = cr.xi;
-    rec.eta = cr.eta;
-    rec.phi_per_m = cr.phi_per_m;
-    rec.normal_load_N = F;
-    rec.Fx_N = f.Fx_N;
-    rec.Fy_N = f.Fy_N;
-    rec.Mz_N_m = f.Mz_N_m;
-    rec.power_W = f.power_W;
-    rec.stick_fraction = f.stick_fraction;
-    rec.balance_residual_W = std::numeric_limits<double>::quiet_NaN();  // a model: no discrete balance
-    rec.cfl = dq / dx;
-    rec.scheme = dq == 0 ? StepScheme::Standstill : StepScheme::Shift;
-    rec.shortened = shortened;
-    if (!shortened || !has_whole_step) {
-      res.end = rec;
-      has_whole_step = !shortened;
-    }
-    t += dt;
-    q += dq;
-    res.strip_energy_J_per_m += f.strip_power_W_per_m * dt;
-    res.dissipated_J += f.power_W * dt;
-    if (observe) observe(rec, f.strip_power_W_per_m);
-    while (next_snap < snaps.size() && snaps[next_snap] <= t * (1 + 1e-12)) {
-      Snapshot sn;
-      sn.t_s = t;
-      sn.pressure_Pa = in_contact ? patch.pressure_Pa : Eigen::ArrayXXd::Zero(g.nx, g.ny);
-      sn.tau_x_Pa = f.tau_x_Pa;
-      sn.tau_y_Pa = f.tau_y_Pa;
-      sn.slip_x_m_per_s = f.slip_x_m_per_s;
-      sn.slip_y_m_per_s = f.slip_y_m_per_s;
-      res.snapshots.push_back(std::move(sn));
-      ++next_snap;
-    }
-  }
-  res.steps = step;
-  res.t_end_s = t;
-  res.q_end_m = q;
-  return res;
+  return run_shift_steps(
+      c, observe,
+      [&](const ContactPatch& patch, const ShiftStep& s) {
+        return relaxed_step(patch, c.materials, s.creepages, c.mu, s.speed_m_per_s, s.dq_m, state, s.fields);
+      },
+      [&](const Grid&) { state = relaxed_rest(); });  // out of contact: nothing is held
 }
 
 }  // namespace contact

@@ -1,0 +1,38 @@
+// The time stepping of a transient run by the shift scheme's steps, shared by the runs that solve one
+// step at a time on the run's grid: Kalker's exact theory (exact.h, run_exact_transient) and the relaxed
+// model (relaxed.h, run_relaxed_transient). Each step rolls dx, or less when the longest step (dt_s) or
+// the end comes first, or nothing at V = 0 (a standing step); the creepages and the speed are taken at
+// the step's middle, the load (and with it the contact) at its end, as Satran's runs do. The caller checks
+// its own settings before (a run on a given patch with a load other than the patch's is refused here); this writes the records, the strip energies, the snapshots and the run's end.
+#pragma once
+
+#include <functional>
+
+#include "lib/patch.h"
+#include "lib/tangential/satran.h"
+#include "lib/tangential/tangential.h"
+
+namespace contact {
+
+struct ShiftStep {
+  int step = 0;                // 1, 2, ...
+  double t_s = 0, dt_s = 0;    // the step's start and duration
+  double dq_m = 0;             // the distance it rolls, 0 <= dq <= dx
+  double speed_m_per_s = 0;    // at the step's middle
+  Creepages creepages;         // at the step's middle
+  double normal_load_N = 0;    // at the step's end
+  bool fields = false;         // a snapshot is still to come: the per-cell fields are read
+};
+
+// the step's solution on a patch with some cell in contact
+using ShiftStepSolve = std::function<TangentialSolution(const ContactPatch& patch, const ShiftStep& step)>;
+
+// Runs c by the shift scheme's steps; `solve` is called for every step with contact, `no_contact` (if
+// set) for every step without, with the run's grid (a solver that carries the previous step forgets it there).
+TransientResult run_shift_steps(const TransientCase& c, const StepObserver& observe, const ShiftStepSolve& solve,
+                                const std::function<void(const Grid&)>& no_contact = {});
+
+// no cell in contact: every field and strip total zero on the grid
+TangentialSolution no_contact_solution(const Grid& g);
+
+}  // namespace contact
