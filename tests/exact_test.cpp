@@ -17,6 +17,7 @@
 #include "lib/grid.h"
 #include "lib/history.h"
 #include "lib/normal/halfspace.h"
+#include "lib/io/csv_reader.h"
 #include "lib/normal/hertz.h"
 #include "lib/numeric.h"
 #include "lib/patch.h"
@@ -29,25 +30,7 @@ namespace {
 
 // rows of a CSV file with '#' comments and a header line, as strings
 std::vector<std::vector<std::string>> read_csv(const std::string& name) {
-  const std::string path = std::string(ROLLWEAR_SOURCE_DIR) + "/tests/data/exact/" + name;
-  std::ifstream in(path);
-  EXPECT_TRUE(in.good()) << path;
-  std::vector<std::vector<std::string>> rows;
-  std::string line;
-  bool header = true;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#') continue;
-    if (header) {
-      header = false;
-      continue;
-    }
-    std::vector<std::string> cells;
-    std::stringstream ss(line);
-    std::string cell;
-    while (std::getline(ss, cell, ',')) cells.push_back(cell);
-    rows.push_back(cells);
-  }
-  return rows;
+  return read_csv_table(std::string(ROLLWEAR_SOURCE_DIR) + "/tests/data/exact/" + name).rows;  // lib/io/csv_reader.h
 }
 
 struct Coefficients {

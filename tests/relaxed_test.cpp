@@ -17,6 +17,7 @@
 #include "lib/elastic.h"
 #include "lib/grid.h"
 #include "lib/history.h"
+#include "lib/io/csv_reader.h"
 #include "lib/normal/hertz.h"
 #include "lib/numeric.h"
 #include "lib/tangential/kalker.h"
@@ -28,25 +29,7 @@ namespace {
 
 // rows of a CSV file of tests/data with '#' comments and a header line, as strings
 std::vector<std::vector<std::string>> read_csv(const std::string& name) {
-  const std::string path = std::string(ROLLWEAR_SOURCE_DIR) + "/tests/data/" + name;
-  std::ifstream in(path);
-  EXPECT_TRUE(in.good()) << path;
-  std::vector<std::vector<std::string>> rows;
-  std::string line;
-  bool header = true;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#') continue;
-    if (header) {
-      header = false;
-      continue;
-    }
-    std::vector<std::string> cells;
-    std::stringstream ss(line);
-    std::string cell;
-    while (std::getline(ss, cell, ',')) cells.push_back(cell);
-    rows.push_back(cells);
-  }
-  return rows;
+  return read_csv_table(std::string(ROLLWEAR_SOURCE_DIR) + "/tests/data/" + name).rows;  // lib/io/csv_reader.h
 }
 
 std::map<std::string, double> contact_reference() {
