@@ -404,6 +404,37 @@ TEST(SemiHertzRootFind, LoadIsContinuousInTheApproachOnTwoPatches) {
   EXPECT_LT(worst, 1e-4);
 }
 
+// The worn roller of cases/paper-wear.yaml with spin (phi_per_m: 1) where its life failed at 1.855e7
+// revolutions (tests/data/semi_hertz/paper_wear_phi1_worn_roller.csv, on a flat path): a 10 um ridge at
+// y = 0.5 mm over a plateau 13 mm wide, flat to 0.1 um. As the level eps delta reaches the plateau,
+// F(delta) stays continuous but rises steeply: d ln F / d ln delta = 2.2e3 at the root (Hertz: 1.5).
+// The root find clamped its secant's slope to [0.5, 4], crawled into a bracket of 1e-9 of delta and
+// took the 2.1e-6 change of F across it for a jump (status MaxIterations, load_jumps: the life ended
+// "failed"). Reference: a continuous F has a root to load_rtol, found from a cold start (by the
+// continuous rule: the self-consistent one's F jumps across the load, as designed) and, with the
+// continuous rule, from starts 1 % below and above it (the wear loop's warm starts) at the same delta.
+TEST(SemiHertzRootFind, SteepContinuousLoadOnANearlyConformalWornGapConverges) {
+  const Profiles pr{read_profile_csv(std::string(ROLLWEAR_SOURCE_DIR) +
+                                     "/tests/data/semi_hertz/paper_wear_phi1_worn_roller.csv"),
+                    flat_profile(0.030)};
+  const SemiHertzResult cold = solve_semi_hertz(pr, kRx1, kRx2, steel(), 1500, {80, 80});
+  ASSERT_TRUE(cold.status.converged()) << cold.status.message;
+  EXPECT_FALSE(cold.load_jumps);
+  EXPECT_LE(cold.status.residual, SemiHertzOptions{}.load_rtol);
+  EXPECT_EQ(cold.rule, ApproachRule::Continuous);
+  EXPECT_GT(cold.approach_slope, 1e2);  // the steep F that the old root find took for a jump
+  for (double start : {0.99, 1.01}) {
+    SemiHertzOptions o;
+    o.continuous_rule = true;
+    o.initial_approach_m = start * cold.approach_m;
+    const SemiHertzResult warm = solve_semi_hertz(pr, kRx1, kRx2, steel(), 1500, {80, 80}, o);
+    ASSERT_TRUE(warm.status.converged()) << start << ": " << warm.status.message;
+    // F rises by 2.2e3 load_rtol per 1e-6 of delta here: the roots agree to the bracket's width
+    EXPECT_NEAR(warm.approach_m / cold.approach_m, 1, 1e-8) << start;
+    EXPECT_NEAR(warm.patch.p0_Pa / cold.patch.p0_Pa, 1, 1e-4) << start;
+  }
+}
+
 // A roller narrower than its contact: reported, never cut silently
 TEST(SemiHertz, ContactReachingABodysEdgeIsReported) {
   const rollwear_test::ExpectWarnings warnings;

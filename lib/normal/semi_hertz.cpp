@@ -43,7 +43,7 @@ namespace {
 // peak exceeds the field's peak p0 (finding 5; the stress sweep holds it to 1e-12)
 constexpr double kLoadBalanceRtol = 1e-9;
 constexpr double kPeakRtol = 1e-9;
-constexpr double kJumpWidth = 1e-9;  // the root find's bracket, relative: narrower is a jump of F(delta)
+constexpr double kJumpWidth = 1e-12;  // the root find's bracket in ln delta: narrower is a jump of F(delta)
 
 std::string num(double v) { return six_digits(v); }  // lib/io/number.h
 
@@ -566,52 +566,69 @@ struct ApproachSearch {
   bool converged = false;
   double lo = 0, hi = std::numeric_limits<double>::infinity();  // the bracket
   double residual_lo = 0, residual_hi = 0;
+  double slope = 0;  // d ln F / d ln delta near the root (the last secant)
   bool bracketed() const { return lo > 0 && std::isfinite(hi); }
   // the bracket closed on a jump of F(delta) across the load (see find_approach)
-  bool on_jump() const { return !converged && bracketed() && hi / lo - 1 < kJumpWidth; }
+  bool on_jump() const { return !converged && bracketed() && std::log(hi / lo) <= kJumpWidth; }
 };
 
-// Secant in (log delta, log F), kept inside the bracket [lo, hi]; a secant step that did not halve
-// the residual is followed by a bisection once the root is bracketed, so the bracket shrinks at
-// least geometrically (a secant can crawl along one side of a bracket where F(delta) bends, finding
-// 6); a smooth F converges before it matters. Where F(delta) jumps across the load the bracket
-// closes on the jump (not converged, bracketed).
+// The root of F(delta) = F in two stages. Bracketing: steps in (ln delta, ln F) with the local slope
+// d ln F / d ln delta (the caller's, else Hertz's 3/2 for the first step, then the secant of the last
+// two evaluations), each step at most a factor 4 in delta, until two evaluations straddle the load.
+// Then find_root_bracketed (lib/numeric.h: Illinois regula falsi with bisections) in ln delta, to
+// |F(delta)/F - 1| <= load_rtol. The slope is not bounded above: on a nearly conformal worn gap F(delta)
+// is continuous but steep (d ln F / d ln delta = 2.2e3 at the root of paper-wear.yaml with spin at
+// 1.85e7 revolutions, docs/semi-hertz.md), and the old secant, its slope clamped to [0.5, 4], crawled
+// into a bracket of 1e-9 of delta that it then took for a jump. A jump is now a bracket narrower than
+// kJumpWidth (1e-12 of delta) with the residual above load_rtol at both ends: a continuous F would need
+// d ln F / d ln delta > 1e6 there.
 ApproachSearch find_approach(Solver& solver, double F, double delta, double eps, int max_evaluations,
-                             const SemiHertzOptions& options, ApproachRule rule) {
+                             const SemiHertzOptions& options, ApproachRule rule, double slope_guess = 0) {
   ApproachSearch s;
-  double prev_ld = 0, prev_lf = 0, last_abs_residual = std::numeric_limits<double>::infinity();
-  while (s.evaluations < max_evaluations) {
-    s.ev = solver.evaluate(delta, eps, rule);
+  Evaluation ev_lo, ev_hi;  // the bracket's ends
+  auto evaluate = [&](double d) {
+    s.ev = solver.evaluate(d, eps, rule);
     ++s.evaluations;
     eps = s.ev.eps;
     s.residual = s.ev.F / F - 1;
-    SPDLOG_TRACE("semi-Hertz: delta {:.9e} m -> F {:.9e} N (eps {:.6f})", delta, s.ev.F, s.ev.eps);
+    SPDLOG_TRACE("semi-Hertz: delta {:.9e} m -> F {:.9e} N (eps {:.6f})", d, s.ev.F, s.ev.eps);
     if (std::abs(s.residual) <= options.load_rtol) {
       s.converged = true;
-      break;
-    }
-    if (s.ev.F < F) {
-      s.lo = delta;
+    } else if (s.residual < 0) {
+      s.lo = d;
       s.residual_lo = s.residual;
+      ev_lo = s.ev;
     } else {
-      s.hi = delta;
+      s.hi = d;
       s.residual_hi = s.residual;
+      ev_hi = s.ev;
     }
-    // a bracket narrower than 1e-9 of delta with the residual above load_rtol at both ends: F(delta)
-    // jumps across the load there (a continuous F would need d ln F / d ln delta > 1e3; Hertz's is 1.5)
-    if (s.on_jump()) break;
-    const double ld = std::log(delta), lf = std::log(s.ev.F);
-    double slope = 1.5;  // Hertz: F ~ delta^(3/2)
-    if (s.evaluations > 1 && ld != prev_ld) slope = std::clamp((lf - prev_lf) / (ld - prev_ld), 0.5, 4.0);
-    prev_ld = ld;
-    prev_lf = lf;
-    double next = delta * std::exp((std::log(F) - lf) / slope);
-    const bool crawling = std::abs(s.residual) > 0.5 * last_abs_residual;
-    last_abs_residual = std::abs(s.residual);
-    if (!(next > s.lo && next < s.hi) || (s.bracketed() && crawling))
-      next = std::isinf(s.hi) ? 4 * s.lo : (s.lo > 0 ? std::sqrt(s.lo * s.hi) : s.hi / 4);
-    delta = next;
+    return s.residual;
+  };
+  // bracketing
+  double slope = slope_guess > 0 ? slope_guess : 1.5;  // Hertz: F ~ delta^(3/2)
+  evaluate(delta);
+  while (!s.converged && !s.bracketed() && s.evaluations < max_evaluations) {
+    const double ld = std::log(delta), lf = std::log1p(s.residual);
+    const double step = std::clamp(-lf / slope, -std::log(4.0), std::log(4.0));
+    delta *= std::exp(step);
+    evaluate(delta);
+    const double secant = (std::log1p(s.residual) - lf) / (std::log(delta) - ld);
+    slope = secant > 0 && std::isfinite(secant) ? secant : 1.5;  // F not rising there: Hertz's again
   }
+  s.slope = slope;
+  if (s.converged || !s.bracketed() || s.evaluations >= max_evaluations) return s;
+  // the root within the bracket; f < 0 at lo, > 0 at hi
+  const RootResult root = find_root_bracketed(
+      [&](double ld) { return evaluate(std::exp(ld)); }, std::log(s.lo), std::log(s.hi), s.residual_lo, s.residual_hi,
+      kJumpWidth, options.load_rtol, max_evaluations - s.evaluations);
+  if (!s.converged) {  // the bracket's end nearer the load (find_root_bracketed's x)
+    s.ev = root.f < 0 ? ev_lo : ev_hi;
+    s.residual = root.f;
+  }
+  if (s.bracketed()) s.slope = std::log1p(s.residual_hi) - std::log1p(s.residual_lo) > 0
+                                   ? (std::log1p(s.residual_hi) - std::log1p(s.residual_lo)) / std::log(s.hi / s.lo)
+                                   : s.slope;
   return s;
 }
 
@@ -636,6 +653,7 @@ void describe_approach(const ApproachSearch& search, int evaluations, const std:
   res.contact_y_min_m = ev.runs.front().l;
   res.contact_y_max_m = ev.runs.back().r;
   res.status.iterations = evaluations;
+  res.approach_slope = search.slope;
   res.status.residual = std::abs(search.residual);
   char msg[200];
   std::snprintf(msg, sizeof msg, "load residual %.1e %s tol %.1e after %d evaluations", std::abs(search.residual),
@@ -781,7 +799,8 @@ SemiHertzResult solve_semi_hertz(const Profiles& profiles, double Rx1_m, double 
   double delta = options.initial_approach_m > 0 ? options.initial_approach_m : first_approach(solver, A, F, Estar, eps);
   SemiHertzResult res;
   res.rule = options.continuous_rule ? ApproachRule::Continuous : ApproachRule::SelfConsistent;
-  ApproachSearch search = find_approach(solver, F, delta, eps, options.max_iterations, options, res.rule);
+  ApproachSearch search =
+      find_approach(solver, F, delta, eps, options.max_iterations, options, res.rule, options.initial_slope);
   int evaluations = search.evaluations;
   std::string remedy;
   if (!options.continuous_rule && !search.converged && search.bracketed()) {

@@ -66,6 +66,11 @@ struct SemiHertzOptions {
   double load_rtol = 1e-6;        // the root find stops at |F(delta)/F - 1| <= load_rtol
   int max_iterations = 60;        // evaluations of F(delta)
   double initial_approach_m = 0;  // warm start, e.g. the last solve's approach; 0 = estimate
+  // with it, d ln F / d ln delta there (the last solve's SemiHertzResult::approach_slope); 0 = Hertz's 3/2.
+  // The first step goes to initial_approach_m (F/F(initial))^(1/initial_slope): a caller that solves again
+  // on profiles changed by little (the same cam angle one wear step later) passes both and the root find
+  // takes 1 or 2 evaluations; a poor guess costs only evaluations, never the result.
+  double initial_slope = 0;
   // always the continuous rule (eps from two passes, y0 the basin centroid), never the self-consistent
   // one: the result is then continuous in the profiles as well as in delta. A caller that solves again
   // and again on profiles changing by little (the cam's life, docs/cam-follower.md §12) needs that: by
@@ -102,6 +107,8 @@ struct SemiHertzResult {
                              // Heathcote offset vanishes, so xi is the creepage there)
   double contact_y_min_m = 0, contact_y_max_m = 0;  // lateral extent of the contact (profiles' y)
   double approach_m = 0;      // delta
+  double approach_slope = 0;  // d ln F / d ln delta near delta (the root find's last secant; Hertz 3/2), for
+                              // SemiHertzOptions::initial_slope
   double epsilon = 0;         // lateral virtual penetration ratio: contact where h < epsilon delta
   double equivalent_B_per_m = 0;  // B_e, lateral curvature of the equivalent ellipse
   bool reaches_edge = false;  // the contact reaches an end of the profiles' overlap (a body's edge)
