@@ -435,6 +435,57 @@ TEST(SemiHertzRootFind, SteepContinuousLoadOnANearlyConformalWornGapConverges) {
   }
 }
 
+// A worn gap with two nearly equal minima (the cam's worn track, docs/semi-hertz.md): a narrow pit
+// (radius 0.05 m at y = -2 mm) and a broad one (0.5 m at y = +2.5 mm) whose depth differs by dz, on a
+// flat path. The continuous rule took the basin centroid of the lower minimum: as dz changed sign by
+// 2e-10 m the reference point jumped from one pit to the other, the approach by 18 %, p0 by 15 % and
+// the load-weighted Heathcote offset by 14 % (the cam's 43 % jump of one angle's dissipation). Reference:
+// the contact is continuous in the depths, so a 2e-10 m change (3e-5 of the approach) may move these
+// by its own order; kSwapTol leaves a margin of 30 on that and is 150 times smaller than the jump.
+// Far from the swap (dz = -3 um) the rule is the one-minimum rule: the narrow pit's centroid, exactly.
+Profile two_pits(double dz_m) {
+  Profile p;
+  constexpr int kNodes = 801;
+  p.y_m.resize(kNodes);
+  p.z_m.resize(kNodes);
+  for (int i = 0; i < kNodes; ++i) {
+    const double y = -0.01 + 0.02 * i / (kNodes - 1);
+    p.y_m(i) = y;
+    p.z_m(i) = std::min((y + 0.002) * (y + 0.002) / (2 * 0.05), (y - 0.0025) * (y - 0.0025) / (2 * 0.5) - dz_m);
+  }
+  p.source = "two_pits";
+  return p;
+}
+
+TEST(SemiHertzReference, ContinuousWhereTwoMinimaSwap) {
+  constexpr double kSwapTol = 1e-3;
+  SemiHertzOptions o;
+  o.continuous_rule = true;
+  auto solve = [&](double dz, double load) {
+    const SemiHertzResult r = solve_semi_hertz({two_pits(dz), flat_profile(0.030)}, kRx1, kRx2, steel(), load, {40, 80}, o);
+    EXPECT_TRUE(r.status.converged()) << dz << ": " << r.status.message;
+    return r;
+  };
+  auto heathcote_mean = [](const SemiHertzResult& r) {  // load-weighted mean offset over the strips
+    const ContactPatch& p = r.patch;
+    double m = 0, w = 0;
+    for (int j = 0; j < p.grid.ny; ++j) {
+      m += p.strip_xi_offset(j) * p.strip_peak_Pa(j) * p.half_length_m(j);
+      w += p.strip_peak_Pa(j) * p.half_length_m(j);
+    }
+    return m / w;
+  };
+  for (double load : {200.0, 1500.0, 20000.0}) {  // two patches, two, one (merged through the neck)
+    const SemiHertzResult below = solve(-1e-10, load), above = solve(1e-10, load);
+    EXPECT_NEAR(above.approach_m / below.approach_m, 1, kSwapTol) << load;
+    EXPECT_NEAR(above.patch.p0_Pa / below.patch.p0_Pa, 1, kSwapTol) << load;
+    EXPECT_NEAR(heathcote_mean(above) / heathcote_mean(below), 1, kSwapTol) << load;
+  }
+  const SemiHertzResult far = solve(-3e-6, 1500);
+  EXPECT_EQ(far.patches, 2);
+  EXPECT_NEAR(far.reference_y_m, -0.002, 1e-9);
+}
+
 // A roller narrower than its contact: reported, never cut silently
 TEST(SemiHertz, ContactReachingABodysEdgeIsReported) {
   const rollwear_test::ExpectWarnings warnings;
