@@ -355,16 +355,19 @@ class Solver {
       ev.y0 = ref->I1 / ref->I0;
       ev.refs.assign(1, {ev.y0, 1});
       ev.h0 = h_at(ev.t, ev.y0);
-      ev.J = boussinesq_integral(ev, false, ev.y0);
+      boussinesq_integrals(ev, false, &ev.y0, &ev.J, 1);
       ev.p0 = kPi * Estar_ * (ev.delta - ev.h0) / ev.J;
     } else {
       // the basin centroid of each minimum that counts (reference_minima), p0 the weighted mean of theirs
       ev.refs.clear();
+      for (const auto& [node, weight] : reference_minima(ev.t)) ev.refs.push_back({basin_centroid(ev.t, node), weight});
+      y0s_.resize(ev.refs.size());
+      Js_.resize(ev.refs.size());
+      for (std::size_t k = 0; k < ev.refs.size(); ++k) y0s_[k] = ev.refs[k].y0;
+      boussinesq_integrals(ev, true, y0s_.data(), Js_.data(), ev.refs.size());
       double p0w = 0, w = 0, y0w = 0, h0w = 0, Jw = 0;
-      for (const auto& [node, weight] : reference_minima(ev.t)) {
-        const double y0 = basin_centroid(ev.t, node), h0 = h_at(ev.t, y0);
-        const double J = boussinesq_integral(ev, true, y0);
-        ev.refs.push_back({y0, weight});
+      for (std::size_t k = 0; k < ev.refs.size(); ++k) {
+        const double y0 = ev.refs[k].y0, h0 = h_at(ev.t, y0), J = Js_[k], weight = ev.refs[k].weight;
         p0w += weight * kPi * Estar_ * (ev.delta - h0) / J;
         y0w += weight * y0;
         h0w += weight * h0;
@@ -552,10 +555,12 @@ class Solver {
   // (necks), each piece with its own cells, so that two lobes merging through a neck keep the cells
   // they had apart; with one set of cells over the merged patch J dropped by 26 % at the merge
   // (paper-wear.yaml with xi 0, docs/semi-hertz.md).
-  double boussinesq_integral(const Evaluation& ev, bool split_at_necks, double y0) const {
+  // J at every reference point y0s[k] (into J[k]) in one pass over the cells: a cell's g, w and a once
+  void boussinesq_integrals(const Evaluation& ev, bool split_at_necks, const double* y0s, double* J, std::size_t n_refs) const {
     static const KernelTable psi;
-    double J = 0;
-    std::vector<double> cuts;
+    std::fill(J, J + n_refs, 0.0);
+    const double wa_per_g = 1 / std::sqrt(ev.t * ev.A_mod);  // w a = g / sqrt(t A_mod)
+    std::vector<double>& cuts = cuts_;
     for (const ContactRun& run : ev.runs) {
       cuts.assign(1, run.l);
       if (split_at_necks)
@@ -583,19 +588,20 @@ class Solver {
           while (seg + 1 < gap_.y.size() && gap_.y[seg] < y_c) ++seg;
           const double g = g_on_segment(ev.t, seg, y_c);
           if (g > 0) {
-            const double w = std::sqrt(g / ev.t), a = std::sqrt(g / ev.A_mod);
-            J += w * a * (psi((y_right - y0) / a) - psi((y_left - y0) / a));
+            const double wa = g * wa_per_g, inv_a = std::sqrt(ev.A_mod / g);
+            for (std::size_t k = 0; k < n_refs; ++k)
+              J[k] += wa * (psi((y_right - y0s[k]) * inv_a) - psi((y_left - y0s[k]) * inv_a));
           }
           y_left = y_right;
         }
       }
     }
-    return J;
   }
 
   const Gap& gap_;
   double A_, Estar_;
   int cells_;
+  mutable std::vector<double> cuts_, y0s_, Js_;  // scratch, kept between evaluations
   double kp_epsilon_;  // > 0: fixed eps, no equivalent-ellipse correction
   // min of h over the nodes kBlock b ... kBlock (b + 1) (segments kBlock b ... kBlock (b + 1) - 1)
   static constexpr std::size_t kBlock = 16;
@@ -652,70 +658,71 @@ struct ApproachSearch {
   bool on_jump() const { return !converged && bracketed() && std::log(hi / lo) <= kJumpWidth; }
 };
 
-// The root of F(delta) = F in two stages, on f = ln(F(delta)/F) against ln delta (nearly linear: F is
-// close to a power of delta). Bracketing: steps with the local slope d ln F / d ln delta (the caller's,
-// else Hertz's 3/2 for the first step, then the secant of the last two evaluations), each at most a
-// factor 4 in delta, until two evaluations straddle the load. Then find_root_bracketed (lib/numeric.h:
-// Illinois regula falsi with bisections). Both aim at |f| <= kPolish load_rtol and stop there: the wear
-// loop differentiates the results in time, so a root anywhere within load_rtol would add noise of that
-// order to its rates (WearLoop.WearAfterNRevolutionsConvergesAsToleranceTightens); on a smooth F the
-// superlinear steps get there with about one evaluation more. Converged: |F(delta)/F - 1| <= load_rtol at
-// the best end. The slope is not bounded above: on a nearly conformal worn gap F(delta) is continuous
-// but steep (d ln F / d ln delta = 2.2e3 at the root of paper-wear.yaml with spin at 1.85e7 revolutions,
-// docs/semi-hertz.md), and the old secant, its slope clamped to [0.5, 4], crawled into a bracket of 1e-9
-// of delta that it then took for a jump. A jump is now a bracket narrower than kJumpWidth (1e-12 of
+// The root of F(delta) = F, on f = ln(F(delta)/F) against x = ln delta (nearly linear: F is close to a
+// power of delta): Newton steps with the secant slope of the last two evaluations (the first with the
+// caller's slope, else Hertz's 3/2), at most a factor 4 in delta until two evaluations straddle the load,
+// then kept inside that bracket; a step that leaves the bracket, or follows a step that did not halve
+// |f|, is a bisection of the bracket, so it shrinks at least geometrically where F bends or is not
+// monotone (the worn cam's F(delta) is not: docs/semi-hertz.md). It aims at |f| <= kPolish load_rtol:
+// the wear loop differentiates the results in time, and a root anywhere within load_rtol would add
+// noise of that order to its rates (WearLoop.WearAfterNRevolutionsConvergesAsToleranceTightens); the
+// secant's superlinear steps get there with about one evaluation more. Converged: |F(delta)/F - 1| <=
+// load_rtol at the best evaluation. The slope is not bounded above: on a nearly conformal worn gap
+// F(delta) is continuous but steep (d ln F / d ln delta = 2.2e3 at the root of paper-wear.yaml with spin
+// at 1.85e7 revolutions), and the old secant, its slope clamped to [0.5, 4], crawled into a bracket of
+// 1e-9 of delta that it then took for a jump. A jump is now a bracket narrower than kJumpWidth (1e-12 of
 // delta) with the residual above load_rtol at both ends: a continuous F would need d ln F / d ln delta
 // > 1e6 there.
 ApproachSearch find_approach(Solver& solver, double F, double delta, double eps, int max_evaluations,
                              const SemiHertzOptions& options, ApproachRule rule, double slope_guess = 0) {
   ApproachSearch s;
-  const double target = std::log1p(kPolish * options.load_rtol);
-  Evaluation ev_lo, ev_hi;  // the bracket's ends
-  double f_lo = 0, f_hi = 0, f_last = 0;
-  bool done = false;
-  auto evaluate = [&](double d) {
+  const double target = std::log1p(kPolish * options.load_rtol), kStep = std::log(4.0);
+  Evaluation best;
+  double f_best = std::numeric_limits<double>::infinity(), f_lo = 0, f_hi = 0;
+  auto evaluate = [&](double x) {
+    const double d = std::exp(x);
     s.ev = solver.evaluate(d, eps, rule);
     ++s.evaluations;
     eps = s.ev.eps;
     const double f = std::log(s.ev.F / F);
     SPDLOG_TRACE("semi-Hertz: delta {:.9e} m -> F {:.9e} N (eps {:.6f})", d, s.ev.F, s.ev.eps);
-    if (std::abs(f) <= target) done = true;
     if (f < 0) {
       s.lo = d;
       f_lo = f;
-      ev_lo = s.ev;
     } else {
       s.hi = d;
       f_hi = f;
-      ev_hi = s.ev;
     }
-    f_last = f;
+    if (std::abs(f) < std::abs(f_best)) {
+      f_best = f;
+      best = s.ev;
+    }
     return f;
   };
-  // bracketing
   double slope = slope_guess > 0 ? slope_guess : 1.5;  // Hertz: F ~ delta^(3/2)
-  evaluate(delta);
-  while (!done && !s.bracketed() && s.evaluations < max_evaluations) {
-    const double ld = std::log(delta), lf = f_last;
-    delta *= std::exp(std::clamp(-lf / slope, -std::log(4.0), std::log(4.0)));
-    evaluate(delta);
-    const double secant = (f_last - lf) / (std::log(delta) - ld);
-    slope = secant > 0 && std::isfinite(secant) ? secant : 1.5;  // F not rising there: Hertz's again
+  double x = std::log(delta), f = evaluate(x);
+  bool crawling = false;
+  while (std::abs(f) > target && s.evaluations < max_evaluations && !(s.bracketed() && std::log(s.hi / s.lo) <= kJumpWidth)) {
+    double next = x - f / slope;
+    if (s.bracketed()) {
+      const double xl = std::log(s.lo), xh = std::log(s.hi);
+      if (crawling || !(next > xl && next < xh)) next = (xl + xh) / 2;
+    } else {
+      next = std::clamp(next, x - kStep, x + kStep);
+    }
+    const double f_next = evaluate(next);
+    const double secant = (f_next - f) / (next - x);
+    if (secant > 0 && std::isfinite(secant)) slope = secant;  // else F does not rise there: keep the last
+    crawling = std::abs(f_next) > 0.5 * std::abs(f);
+    x = next;
+    f = f_next;
   }
-  if (!done && s.bracketed() && s.evaluations < max_evaluations)
-    find_root_bracketed([&](double ld) { return evaluate(std::exp(ld)); }, std::log(s.lo), std::log(s.hi), f_lo, f_hi,
-                        kJumpWidth, target, max_evaluations - s.evaluations);
-  // the best evaluation: the last when it reached the target, else the bracket's end nearer the load
-  if (!done && s.bracketed()) {
-    const bool lo_better = -f_lo <= f_hi;
-    s.ev = lo_better ? ev_lo : ev_hi;
-    f_last = lo_better ? f_lo : f_hi;
-  }
-  s.residual = std::expm1(f_last);
+  s.ev = best;
+  s.residual = std::expm1(f_best);
   s.converged = std::abs(s.residual) <= options.load_rtol;
   s.residual_lo = std::expm1(f_lo);
   s.residual_hi = std::expm1(f_hi);
-  s.slope = s.bracketed() && f_hi > f_lo ? (f_hi - f_lo) / std::log(s.hi / s.lo) : slope;
+  s.slope = slope;
   return s;
 }
 
