@@ -514,10 +514,10 @@ TEST(SemiHertz, WarmStartFromLastApproachConvergesAtOnce) {
 }
 
 // The caller's warm start with its slope (SemiHertzOptions::initial_slope, the last solve's
-// approach_slope): a load changed by 1 % on a worn band costs 3 evaluations (the old root, a Newton step
-// with the known slope, one polishing secant), fewer than from the cold start; the root is the same to the
-// root find's aim (kPolish load_rtol on ln F, so 1e-9 on delta over a slope near 1.5).
-TEST(SemiHertz, WarmStartWithSlopeTakesThreeEvaluations) {
+// approach_slope): a load changed by 1 % on a worn band costs 4 evaluations (the old root, a Newton step
+// with the known slope, two polishing secants), fewer than the 5 from the cold start; the root is the same to the
+// root find's aim (1e-12 on ln F, so below 1e-11 on delta over a slope near 1.5): 1e-8 is a margin.
+TEST(SemiHertz, WarmStartWithSlopeTakesFewerEvaluations) {
   const Profiles worn{flat_worn_crown_profile(0.5, 0.020, 1.5e-3), flat_profile(0.030)};
   const SemiHertzResult before = solve_semi_hertz(worn, kRx1, kRx2, steel(), 1500, {20, 20});
   const SemiHertzResult cold = solve_semi_hertz(worn, kRx1, kRx2, steel(), 1515, {20, 20});
@@ -527,7 +527,7 @@ TEST(SemiHertz, WarmStartWithSlopeTakesThreeEvaluations) {
   const SemiHertzResult warm = solve_semi_hertz(worn, kRx1, kRx2, steel(), 1515, {20, 20}, o);
   ASSERT_TRUE(warm.status.converged()) << warm.status.message;
   EXPECT_GT(before.approach_slope, 1);
-  EXPECT_LE(warm.status.iterations, 3);
+  EXPECT_LE(warm.status.iterations, 4);
   EXPECT_GT(cold.status.iterations, warm.status.iterations);
   std::printf("  evaluations: cold %d, warm with slope %d\n", cold.status.iterations, warm.status.iterations);
   EXPECT_NEAR(warm.approach_m / cold.approach_m, 1, 1e-8);

@@ -46,8 +46,9 @@ constexpr double kPeakRtol = 1e-9;
 // the continuous rule blends the reference points of minima lying within this fraction of their own depth
 // below their necks of the lowest (Solver::reference_minima)
 constexpr double kMinimaBlend = 0.1;
-// the root find aims at kPolish load_rtol (find_approach)
-constexpr double kPolish = 1e-3;
+// the root find aims at kPolish load_rtol (find_approach): the wear lives' convergence tests need the
+// rates free of solver noise to 1e-10 (at 1e-3 the rtol-1e-6 life of paper-wear.yaml was 5e-5 off)
+constexpr double kPolish = 1e-6;
 constexpr double kJumpWidth = 1e-12;  // the root find's bracket in ln delta: narrower is a jump of F(delta)
 
 std::string num(double v) { return six_digits(v); }  // lib/io/number.h
@@ -665,8 +666,9 @@ struct ApproachSearch {
 // |f|, is a bisection of the bracket, so it shrinks at least geometrically where F bends or is not
 // monotone (the worn cam's F(delta) is not: docs/semi-hertz.md). It aims at |f| <= kPolish load_rtol:
 // the wear loop differentiates the results in time, and a root anywhere within load_rtol would add
-// noise of that order to its rates (WearLoop.WearAfterNRevolutionsConvergesAsToleranceTightens); the
-// secant's superlinear steps get there with about one evaluation more. Converged: |F(delta)/F - 1| <=
+// noise of that order to its rates (WearLoop.WearAfterNRevolutionsConvergesAsToleranceTightens,
+// WearLife.PaperWearConvergesToTheFixedDepthLife); the secant's superlinear steps get there with about
+// one evaluation more. Converged: |F(delta)/F - 1| <=
 // load_rtol at the best evaluation. The slope is not bounded above: on a nearly conformal worn gap
 // F(delta) is continuous but steep (d ln F / d ln delta = 2.2e3 at the root of paper-wear.yaml with spin
 // at 1.85e7 revolutions), and the old secant, its slope clamped to [0.5, 4], crawled into a bracket of
