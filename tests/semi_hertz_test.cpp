@@ -404,6 +404,88 @@ TEST(SemiHertzRootFind, LoadIsContinuousInTheApproachOnTwoPatches) {
   EXPECT_LT(worst, 1e-4);
 }
 
+// The worn roller of cases/paper-wear.yaml with spin (phi_per_m: 1) where its life failed at 1.855e7
+// revolutions (tests/data/semi_hertz/paper_wear_phi1_worn_roller.csv, on a flat path): a 10 um ridge at
+// y = 0.5 mm over a plateau 13 mm wide, flat to 0.1 um. As the level eps delta reaches the plateau,
+// F(delta) stays continuous but rises steeply: d ln F / d ln delta = 2.2e3 at the root (Hertz: 1.5).
+// The root find clamped its secant's slope to [0.5, 4], crawled into a bracket of 1e-9 of delta and
+// took the 2.1e-6 change of F across it for a jump (status MaxIterations, load_jumps: the life ended
+// "failed"). Reference: a continuous F has a root to load_rtol, found from a cold start (by the
+// continuous rule: the self-consistent one's F jumps across the load, as designed) and, with the
+// continuous rule, from starts 1 % below and above it (the wear loop's warm starts) at the same delta.
+TEST(SemiHertzRootFind, SteepContinuousLoadOnANearlyConformalWornGapConverges) {
+  const Profiles pr{read_profile_csv(std::string(ROLLWEAR_SOURCE_DIR) +
+                                     "/tests/data/semi_hertz/paper_wear_phi1_worn_roller.csv"),
+                    flat_profile(0.030)};
+  const SemiHertzResult cold = solve_semi_hertz(pr, kRx1, kRx2, steel(), 1500, {80, 80});
+  ASSERT_TRUE(cold.status.converged()) << cold.status.message;
+  EXPECT_FALSE(cold.load_jumps);
+  EXPECT_LE(cold.status.residual, SemiHertzOptions{}.load_rtol);
+  EXPECT_EQ(cold.rule, ApproachRule::Continuous);
+  EXPECT_GT(cold.approach_slope, 1e2);  // the steep F that the old root find took for a jump
+  for (double start : {0.99, 1.01}) {
+    SemiHertzOptions o;
+    o.continuous_rule = true;
+    o.initial_approach_m = start * cold.approach_m;
+    const SemiHertzResult warm = solve_semi_hertz(pr, kRx1, kRx2, steel(), 1500, {80, 80}, o);
+    ASSERT_TRUE(warm.status.converged()) << start << ": " << warm.status.message;
+    // F rises by 2.2e3 load_rtol per 1e-6 of delta here: the roots agree to the bracket's width
+    EXPECT_NEAR(warm.approach_m / cold.approach_m, 1, 1e-8) << start;
+    EXPECT_NEAR(warm.patch.p0_Pa / cold.patch.p0_Pa, 1, 1e-4) << start;
+  }
+}
+
+// A worn gap with two nearly equal minima (the cam's worn track, docs/semi-hertz.md): a narrow pit
+// (radius 0.05 m at y = -2 mm) and a broad one (0.5 m at y = +2.5 mm) whose depth differs by dz, on a
+// flat path. The continuous rule took the basin centroid of the lower minimum: as dz changed sign by
+// 2e-10 m the reference point jumped from one pit to the other, the approach by 18 %, p0 by 15 % and
+// the load-weighted Heathcote offset by 14 % (the cam's 43 % jump of one angle's dissipation). Reference:
+// the contact is continuous in the depths, so a 2e-10 m change (3e-5 of the approach) may move these
+// by its own order; kSwapTol leaves a margin of 30 on that and is 150 times smaller than the jump.
+// Far from the swap (dz = -3 um) the rule is the one-minimum rule: the narrow pit's centroid, exactly.
+Profile two_pits(double dz_m) {
+  Profile p;
+  constexpr int kNodes = 801;
+  p.y_m.resize(kNodes);
+  p.z_m.resize(kNodes);
+  for (int i = 0; i < kNodes; ++i) {
+    const double y = -0.01 + 0.02 * i / (kNodes - 1);
+    p.y_m(i) = y;
+    p.z_m(i) = std::min((y + 0.002) * (y + 0.002) / (2 * 0.05), (y - 0.0025) * (y - 0.0025) / (2 * 0.5) - dz_m);
+  }
+  p.source = "two_pits";
+  return p;
+}
+
+TEST(SemiHertzReference, ContinuousWhereTwoMinimaSwap) {
+  constexpr double kSwapTol = 1e-3;
+  SemiHertzOptions o;
+  o.continuous_rule = true;
+  auto solve = [&](double dz, double load) {
+    const SemiHertzResult r = solve_semi_hertz({two_pits(dz), flat_profile(0.030)}, kRx1, kRx2, steel(), load, {40, 80}, o);
+    EXPECT_TRUE(r.status.converged()) << dz << ": " << r.status.message;
+    return r;
+  };
+  auto heathcote_mean = [](const SemiHertzResult& r) {  // load-weighted mean offset over the strips
+    const ContactPatch& p = r.patch;
+    double m = 0, w = 0;
+    for (int j = 0; j < p.grid.ny; ++j) {
+      m += p.strip_xi_offset(j) * p.strip_peak_Pa(j) * p.half_length_m(j);
+      w += p.strip_peak_Pa(j) * p.half_length_m(j);
+    }
+    return m / w;
+  };
+  for (double load : {200.0, 1500.0, 20000.0}) {  // two patches, two, one (merged through the neck)
+    const SemiHertzResult below = solve(-1e-10, load), above = solve(1e-10, load);
+    EXPECT_NEAR(above.approach_m / below.approach_m, 1, kSwapTol) << load;
+    EXPECT_NEAR(above.patch.p0_Pa / below.patch.p0_Pa, 1, kSwapTol) << load;
+    EXPECT_NEAR(heathcote_mean(above) / heathcote_mean(below), 1, kSwapTol) << load;
+  }
+  const SemiHertzResult far = solve(-3e-6, 1500);
+  EXPECT_EQ(far.patches, 2);
+  EXPECT_NEAR(far.reference_y_m, -0.002, 1e-9);
+}
+
 // A roller narrower than its contact: reported, never cut silently
 TEST(SemiHertz, ContactReachingABodysEdgeIsReported) {
   const rollwear_test::ExpectWarnings warnings;
@@ -429,6 +511,26 @@ TEST(SemiHertz, WarmStartFromLastApproachConvergesAtOnce) {
   EXPECT_EQ(warm.status.iterations, 1);
   EXPECT_NEAR(warm.approach_m / cold.approach_m, 1, 1e-6);
   EXPECT_NEAR(warm.patch.p0_Pa / cold.patch.p0_Pa, 1, 1e-6);
+}
+
+// The caller's warm start with its slope (SemiHertzOptions::initial_slope, the last solve's
+// approach_slope): a load changed by 1 % on a worn band costs 4 evaluations (the old root, a Newton step
+// with the known slope, two polishing secants), fewer than the 5 from the cold start; the root is the same to the
+// root find's aim (1e-12 on ln F, so below 1e-11 on delta over a slope near 1.5): 1e-8 is a margin.
+TEST(SemiHertz, WarmStartWithSlopeTakesFewerEvaluations) {
+  const Profiles worn{flat_worn_crown_profile(0.5, 0.020, 1.5e-3), flat_profile(0.030)};
+  const SemiHertzResult before = solve_semi_hertz(worn, kRx1, kRx2, steel(), 1500, {20, 20});
+  const SemiHertzResult cold = solve_semi_hertz(worn, kRx1, kRx2, steel(), 1515, {20, 20});
+  SemiHertzOptions o;
+  o.initial_approach_m = before.approach_m;
+  o.initial_slope = before.approach_slope;
+  const SemiHertzResult warm = solve_semi_hertz(worn, kRx1, kRx2, steel(), 1515, {20, 20}, o);
+  ASSERT_TRUE(warm.status.converged()) << warm.status.message;
+  EXPECT_GT(before.approach_slope, 1);
+  EXPECT_LE(warm.status.iterations, 4);
+  EXPECT_GT(cold.status.iterations, warm.status.iterations);
+  std::printf("  evaluations: cold %d, warm with slope %d\n", cold.status.iterations, warm.status.iterations);
+  EXPECT_NEAR(warm.approach_m / cold.approach_m, 1, 1e-8);
 }
 
 TEST(SemiHertz, RejectsImpossibleInput) {

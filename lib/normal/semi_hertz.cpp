@@ -43,7 +43,13 @@ namespace {
 // peak exceeds the field's peak p0 (finding 5; the stress sweep holds it to 1e-12)
 constexpr double kLoadBalanceRtol = 1e-9;
 constexpr double kPeakRtol = 1e-9;
-constexpr double kJumpWidth = 1e-9;  // the root find's bracket, relative: narrower is a jump of F(delta)
+// the continuous rule blends the reference points of minima lying within this fraction of their own depth
+// below their necks of the lowest (Solver::reference_minima)
+constexpr double kMinimaBlend = 0.1;
+// the root find aims at kPolish load_rtol (find_approach): the wear lives' convergence tests need the
+// rates free of solver noise to 1e-10 (at 1e-3 the rtol-1e-6 life of paper-wear.yaml was 5e-5 off)
+constexpr double kPolish = 1e-6;
+constexpr double kJumpWidth = 1e-12;  // the root find's bracket in ln delta: narrower is a jump of F(delta)
 
 std::string num(double v) { return six_digits(v); }  // lib/io/number.h
 
@@ -264,10 +270,16 @@ struct ContactRun {  // a patch: nodes i0..i1 have g > 0; edges l, r exact
   double I0 = 0, I1 = 0;  // integral of g_+ and of y g_+ over the patch
 };
 
+// a reference point of the continuous rule: the basin centroid of one minimum of the gap, its weight
+struct ReferencePoint {
+  double y0 = 0, weight = 1;
+};
+
 struct Evaluation {
   double delta = 0, eps = 0.5, t = 0, B_e = 0, A_mod = 0;
   double G1 = 0;          // integral of g_+ over all patches
-  double y0 = 0, h0 = 0;  // reference point and the gap there
+  double y0 = 0, h0 = 0;  // reference point and the gap there (the continuous rule: weighted means)
+  std::vector<ReferencePoint> refs;  // the reference points blended (one, unless minima are nearly equal)
   double J = 0;           // integral of (p/p0) / r dA
   double S = 0;           // integral of p/p0 dA
   double p0 = 0, F = 0;
@@ -335,20 +347,92 @@ class Solver {
     ev.t = eps * delta;
     ev.A_mod = kp_epsilon_ > 0 ? A_ : A_ * eps / (1 - eps);
     find_runs(ev);
-    // reference point: centroid of g_+ over the patch holding the gap's minimum, or of the basin
-    // weight m_+ (basin_centroid)
-    const ContactRun* ref = &ev.runs.front();
-    for (const ContactRun& run : ev.runs)
-      if (run.i0 <= gap_.imin && gap_.imin <= run.i1) ref = &run;
-    ev.y0 = rule == ApproachRule::SelfConsistent ? ref->I1 / ref->I0 : basin_centroid(ev.t);
-    std::size_t seg = ref->i0 == 0 ? 1 : ref->i0;
-    while (seg + 1 < gap_.y.size() && gap_.y[seg] < ev.y0) ++seg;
-    ev.h0 = ev.t - g_on_segment(ev.t, seg, ev.y0);
-    ev.J = boussinesq_integral(ev, rule == ApproachRule::Continuous);
     ev.S = kPi / 2 * ev.G1 / std::sqrt(ev.t * ev.A_mod);
-    ev.p0 = kPi * Estar_ * (ev.delta - ev.h0) / ev.J;
+    if (rule == ApproachRule::SelfConsistent) {
+      // reference point: centroid of g_+ over the patch holding the gap's minimum
+      const ContactRun* ref = &ev.runs.front();
+      for (const ContactRun& run : ev.runs)
+        if (run.i0 <= gap_.imin && gap_.imin <= run.i1) ref = &run;
+      ev.y0 = ref->I1 / ref->I0;
+      ev.refs.assign(1, {ev.y0, 1});
+      ev.h0 = h_at(ev.t, ev.y0);
+      boussinesq_integrals(ev, false, &ev.y0, &ev.J, 1);
+      ev.p0 = kPi * Estar_ * (ev.delta - ev.h0) / ev.J;
+    } else {
+      // the basin centroid of each minimum that counts (reference_minima), p0 the weighted mean of theirs
+      ev.refs.clear();
+      for (const auto& [node, weight] : reference_minima(ev.t)) ev.refs.push_back({basin_centroid(ev.t, node), weight});
+      y0s_.resize(ev.refs.size());
+      Js_.resize(ev.refs.size());
+      for (std::size_t k = 0; k < ev.refs.size(); ++k) y0s_[k] = ev.refs[k].y0;
+      boussinesq_integrals(ev, true, y0s_.data(), Js_.data(), ev.refs.size());
+      double p0w = 0, w = 0, y0w = 0, h0w = 0, Jw = 0;
+      for (std::size_t k = 0; k < ev.refs.size(); ++k) {
+        const double y0 = ev.refs[k].y0, h0 = h_at(ev.t, y0), J = Js_[k], weight = ev.refs[k].weight;
+        p0w += weight * kPi * Estar_ * (ev.delta - h0) / J;
+        y0w += weight * y0;
+        h0w += weight * h0;
+        Jw += weight * J;
+        w += weight;
+      }
+      ev.p0 = p0w / w;
+      ev.y0 = y0w / w;
+      ev.h0 = h0w / w;
+      ev.J = Jw / w;
+      for (ReferencePoint& r : ev.refs) r.weight /= w;
+    }
     ev.F = ev.p0 * ev.S;
     return ev;
+  }
+
+  // The continuous rule's reference is the basin centroid of the gap's lowest minimum, unless another
+  // minimum is nearly as low: where two minima swap, taking the lower one's made the contact jump (43 %
+  // of one cam angle's dissipation, docs/semi-hertz.md). Every local minimum k of h below the level t
+  // (a run of equal nodes counts once, by its first node) gets the weight
+  //   w_k = s(1 - (h_k - h_min) / (kMinimaBlend P_k)),  s(x) = 0 (x <= 0), x^2 (3 - 2x) (0..1), 1 (x >= 1),
+  // P_k = min(t, the lower of its two necks) - h_k (its depth below where it spills into a neighbour).
+  // The lowest gets 1; one lower than it by more than kMinimaBlend of its own depth P_k gets 0 (the rule
+  // is then the one-minimum rule, unchanged); at a swap both weigh 1. w_k is continuous in the depths and
+  // in t: a minimum is born or dies with its neck (P_k = 0, w_k = 0), never with a finite weight.
+  std::vector<std::pair<std::size_t, double>> reference_minima(double t) const {
+    const std::vector<double>& h = gap_.h;
+    const std::size_t n = h.size();
+    std::vector<std::pair<std::size_t, double>> out;
+    for (std::size_t i = 0; i < n; ++i) {
+      if (i % kBlock == 0 && i / kBlock < block_min_.size() && block_min_[i / kBlock] >= t) {
+        i += kBlock - 1;
+        continue;
+      }
+      if (h[i] >= t || (i > 0 && h[i - 1] <= h[i])) continue;  // below t, and the first of its run
+      std::size_t j = i;  // the run's last node
+      while (j + 1 < n && h[j + 1] == h[i]) ++j;
+      if (j + 1 < n && h[j + 1] < h[i]) continue;  // a step down, not a minimum
+      if (i == gap_.imin) {
+        out.emplace_back(i, 1.0);
+        continue;
+      }
+      auto neck = [&](std::size_t from, int dir) {  // the first local maximum going dir, at most t
+        std::size_t k = from;
+        for (;;) {
+          if ((dir < 0 && k == 0) || (dir > 0 && k + 1 == n)) return t;
+          const std::size_t next = dir < 0 ? k - 1 : k + 1;
+          if (h[next] < h[k] || h[next] >= t) return std::min(t, std::max(h[k], h[next]));
+          k = next;
+        }
+      };
+      const double depth = std::min(neck(i, -1), neck(j, +1)) - h[i];
+      const double x = depth > 0 ? 1 - (h[i] - h[gap_.imin]) / (kMinimaBlend * depth) : 0;
+      if (x > 0) out.emplace_back(i, x >= 1 ? 1.0 : x * x * (3 - 2 * x));
+    }
+    return out;
+  }
+
+  // h at y (linear between the gap's nodes; y within the gap), as t - g
+  double h_at(double t, double y) const {
+    const std::size_t s = std::clamp<std::size_t>(
+        static_cast<std::size_t>(std::lower_bound(gap_.y.begin(), gap_.y.end(), y) - gap_.y.begin()), 1,
+        gap_.y.size() - 1);
+    return t - g_on_segment(t, s, y);
   }
 
   // The basin rule's reference point: the centroid of m_+, m(y) = the smallest g on the way from the
@@ -356,13 +440,13 @@ class Solver {
   // Across a neck, the far side weighs at most g at the neck, which is 0 when the lobes merge, so y0
   // moves continuously with t (docs/semi-hertz.md, "Lobes merging"). On a segment going outward from
   // node i (m = c there, c <= g_i) to node k: m = c while g >= c, then g; c becomes min(c, g_k).
-  double basin_centroid(double t) const {
+  double basin_centroid(double t, std::size_t start) const {
     const std::vector<double>& y = gap_.y;
     const std::vector<double>& h = gap_.h;
     double I0 = 0, I1 = 0;
     for (const int dir : {-1, +1}) {
-      double c = t - h[gap_.imin];
-      for (std::size_t i = gap_.imin; c > 0;) {
+      double c = t - h[start];
+      for (std::size_t i = start; c > 0;) {
         if ((dir < 0 && i == 0) || (dir > 0 && i + 1 == y.size())) break;
         const std::size_t k = dir < 0 ? i - 1 : i + 1;
         const double ya = y[i], yb = y[k], ga = t - h[i], gb = t - h[k];
@@ -472,10 +556,12 @@ class Solver {
   // (necks), each piece with its own cells, so that two lobes merging through a neck keep the cells
   // they had apart; with one set of cells over the merged patch J dropped by 26 % at the merge
   // (paper-wear.yaml with xi 0, docs/semi-hertz.md).
-  double boussinesq_integral(const Evaluation& ev, bool split_at_necks) const {
+  // J at every reference point y0s[k] (into J[k]) in one pass over the cells: a cell's g, w and a once
+  void boussinesq_integrals(const Evaluation& ev, bool split_at_necks, const double* y0s, double* J, std::size_t n_refs) const {
     static const KernelTable psi;
-    double J = 0;
-    std::vector<double> cuts;
+    std::fill(J, J + n_refs, 0.0);
+    const double wa_per_g = 1 / std::sqrt(ev.t * ev.A_mod);  // w a = g / sqrt(t A_mod)
+    std::vector<double>& cuts = cuts_;
     for (const ContactRun& run : ev.runs) {
       cuts.assign(1, run.l);
       if (split_at_necks)
@@ -503,19 +589,20 @@ class Solver {
           while (seg + 1 < gap_.y.size() && gap_.y[seg] < y_c) ++seg;
           const double g = g_on_segment(ev.t, seg, y_c);
           if (g > 0) {
-            const double w = std::sqrt(g / ev.t), a = std::sqrt(g / ev.A_mod);
-            J += w * a * (psi((y_right - ev.y0) / a) - psi((y_left - ev.y0) / a));
+            const double wa = g * wa_per_g, inv_a = std::sqrt(ev.A_mod / g);
+            for (std::size_t k = 0; k < n_refs; ++k)
+              J[k] += wa * (psi((y_right - y0s[k]) * inv_a) - psi((y_left - y0s[k]) * inv_a));
           }
           y_left = y_right;
         }
       }
     }
-    return J;
   }
 
   const Gap& gap_;
   double A_, Estar_;
   int cells_;
+  mutable std::vector<double> cuts_, y0s_, Js_;  // scratch, kept between evaluations
   double kp_epsilon_;  // > 0: fixed eps, no equivalent-ellipse correction
   // min of h over the nodes kBlock b ... kBlock (b + 1) (segments kBlock b ... kBlock (b + 1) - 1)
   static constexpr std::size_t kBlock = 16;
@@ -566,52 +653,78 @@ struct ApproachSearch {
   bool converged = false;
   double lo = 0, hi = std::numeric_limits<double>::infinity();  // the bracket
   double residual_lo = 0, residual_hi = 0;
+  double slope = 0;  // d ln F / d ln delta near the root (the last secant)
   bool bracketed() const { return lo > 0 && std::isfinite(hi); }
   // the bracket closed on a jump of F(delta) across the load (see find_approach)
-  bool on_jump() const { return !converged && bracketed() && hi / lo - 1 < kJumpWidth; }
+  bool on_jump() const { return !converged && bracketed() && std::log(hi / lo) <= kJumpWidth; }
 };
 
-// Secant in (log delta, log F), kept inside the bracket [lo, hi]; a secant step that did not halve
-// the residual is followed by a bisection once the root is bracketed, so the bracket shrinks at
-// least geometrically (a secant can crawl along one side of a bracket where F(delta) bends, finding
-// 6); a smooth F converges before it matters. Where F(delta) jumps across the load the bracket
-// closes on the jump (not converged, bracketed).
+// The root of F(delta) = F, on f = ln(F(delta)/F) against x = ln delta (nearly linear: F is close to a
+// power of delta): Newton steps with the secant slope of the last two evaluations (the first with the
+// caller's slope, else Hertz's 3/2), at most a factor 4 in delta until two evaluations straddle the load,
+// then kept inside that bracket; a step that leaves the bracket, or follows a step that did not halve
+// |f|, is a bisection of the bracket, so it shrinks at least geometrically where F bends or is not
+// monotone (the worn cam's F(delta) is not: docs/semi-hertz.md). It aims at |f| <= kPolish load_rtol:
+// the wear loop differentiates the results in time, and a root anywhere within load_rtol would add
+// noise of that order to its rates (WearLoop.WearAfterNRevolutionsConvergesAsToleranceTightens,
+// WearLife.PaperWearConvergesToTheFixedDepthLife); the secant's superlinear steps get there with about
+// one evaluation more. Converged: |F(delta)/F - 1| <=
+// load_rtol at the best evaluation. The slope is not bounded above: on a nearly conformal worn gap
+// F(delta) is continuous but steep (d ln F / d ln delta = 2.2e3 at the root of paper-wear.yaml with spin
+// at 1.85e7 revolutions), and the old secant, its slope clamped to [0.5, 4], crawled into a bracket of
+// 1e-9 of delta that it then took for a jump. A jump is now a bracket narrower than kJumpWidth (1e-12 of
+// delta) with the residual above load_rtol at both ends: a continuous F would need d ln F / d ln delta
+// > 1e6 there.
 ApproachSearch find_approach(Solver& solver, double F, double delta, double eps, int max_evaluations,
-                             const SemiHertzOptions& options, ApproachRule rule) {
+                             const SemiHertzOptions& options, ApproachRule rule, double slope_guess = 0) {
   ApproachSearch s;
-  double prev_ld = 0, prev_lf = 0, last_abs_residual = std::numeric_limits<double>::infinity();
-  while (s.evaluations < max_evaluations) {
-    s.ev = solver.evaluate(delta, eps, rule);
+  const double target = std::log1p(kPolish * options.load_rtol), kStep = std::log(4.0);
+  Evaluation best;
+  double f_best = std::numeric_limits<double>::infinity(), f_lo = 0, f_hi = 0;
+  auto evaluate = [&](double x) {
+    const double d = std::exp(x);
+    s.ev = solver.evaluate(d, eps, rule);
     ++s.evaluations;
     eps = s.ev.eps;
-    s.residual = s.ev.F / F - 1;
-    SPDLOG_TRACE("semi-Hertz: delta {:.9e} m -> F {:.9e} N (eps {:.6f})", delta, s.ev.F, s.ev.eps);
-    if (std::abs(s.residual) <= options.load_rtol) {
-      s.converged = true;
-      break;
-    }
-    if (s.ev.F < F) {
-      s.lo = delta;
-      s.residual_lo = s.residual;
+    const double f = std::log(s.ev.F / F);
+    SPDLOG_TRACE("semi-Hertz: delta {:.9e} m -> F {:.9e} N (eps {:.6f})", d, s.ev.F, s.ev.eps);
+    if (f < 0) {
+      s.lo = d;
+      f_lo = f;
     } else {
-      s.hi = delta;
-      s.residual_hi = s.residual;
+      s.hi = d;
+      f_hi = f;
     }
-    // a bracket narrower than 1e-9 of delta with the residual above load_rtol at both ends: F(delta)
-    // jumps across the load there (a continuous F would need d ln F / d ln delta > 1e3; Hertz's is 1.5)
-    if (s.on_jump()) break;
-    const double ld = std::log(delta), lf = std::log(s.ev.F);
-    double slope = 1.5;  // Hertz: F ~ delta^(3/2)
-    if (s.evaluations > 1 && ld != prev_ld) slope = std::clamp((lf - prev_lf) / (ld - prev_ld), 0.5, 4.0);
-    prev_ld = ld;
-    prev_lf = lf;
-    double next = delta * std::exp((std::log(F) - lf) / slope);
-    const bool crawling = std::abs(s.residual) > 0.5 * last_abs_residual;
-    last_abs_residual = std::abs(s.residual);
-    if (!(next > s.lo && next < s.hi) || (s.bracketed() && crawling))
-      next = std::isinf(s.hi) ? 4 * s.lo : (s.lo > 0 ? std::sqrt(s.lo * s.hi) : s.hi / 4);
-    delta = next;
+    if (std::abs(f) < std::abs(f_best)) {
+      f_best = f;
+      best = s.ev;
+    }
+    return f;
+  };
+  double slope = slope_guess > 0 ? slope_guess : 1.5;  // Hertz: F ~ delta^(3/2)
+  double x = std::log(delta), f = evaluate(x);
+  bool crawling = false;
+  while (std::abs(f) > target && s.evaluations < max_evaluations && !(s.bracketed() && std::log(s.hi / s.lo) <= kJumpWidth)) {
+    double next = x - f / slope;
+    if (s.bracketed()) {
+      const double xl = std::log(s.lo), xh = std::log(s.hi);
+      if (crawling || !(next > xl && next < xh)) next = (xl + xh) / 2;
+    } else {
+      next = std::clamp(next, x - kStep, x + kStep);
+    }
+    const double f_next = evaluate(next);
+    const double secant = (f_next - f) / (next - x);
+    if (secant > 0 && std::isfinite(secant)) slope = secant;  // else F does not rise there: keep the last
+    crawling = std::abs(f_next) > 0.5 * std::abs(f);
+    x = next;
+    f = f_next;
   }
+  s.ev = best;
+  s.residual = std::expm1(f_best);
+  s.converged = std::abs(s.residual) <= options.load_rtol;
+  s.residual_lo = std::expm1(f_lo);
+  s.residual_hi = std::expm1(f_hi);
+  s.slope = slope;
   return s;
 }
 
@@ -636,6 +749,7 @@ void describe_approach(const ApproachSearch& search, int evaluations, const std:
   res.contact_y_min_m = ev.runs.front().l;
   res.contact_y_max_m = ev.runs.back().r;
   res.status.iterations = evaluations;
+  res.approach_slope = search.slope;
   res.status.residual = std::abs(search.residual);
   char msg[200];
   std::snprintf(msg, sizeof msg, "load residual %.1e %s tol %.1e after %d evaluations", std::abs(search.residual),
@@ -781,7 +895,8 @@ SemiHertzResult solve_semi_hertz(const Profiles& profiles, double Rx1_m, double 
   double delta = options.initial_approach_m > 0 ? options.initial_approach_m : first_approach(solver, A, F, Estar, eps);
   SemiHertzResult res;
   res.rule = options.continuous_rule ? ApproachRule::Continuous : ApproachRule::SelfConsistent;
-  ApproachSearch search = find_approach(solver, F, delta, eps, options.max_iterations, options, res.rule);
+  ApproachSearch search =
+      find_approach(solver, F, delta, eps, options.max_iterations, options, res.rule, options.initial_slope);
   int evaluations = search.evaluations;
   std::string remedy;
   if (!options.continuous_rule && !search.converged && search.bracketed()) {
@@ -818,8 +933,12 @@ SemiHertzResult solve_semi_hertz(const Profiles& profiles, double Rx1_m, double 
                               patch.strip_peak_Pa.maxCoeff(), patch.p0_Pa));
 
   // Heathcote slip per strip, zero at the reference point
-  if (options.heathcote_slip)
-    patch.strip_xi_offset = heathcote_xi_offset(profiles, Rx1_m, Rx2_m, res.grid_y0_m + g.y_m, res.reference_y_m);
+  // (linear in the reference's radii: the weighted mean of each reference point's offsets)
+  if (options.heathcote_slip) {
+    patch.strip_xi_offset = Eigen::ArrayXd::Zero(g.ny);
+    for (const ReferencePoint& ref : ev.refs)
+      patch.strip_xi_offset += ref.weight * heathcote_xi_offset(profiles, Rx1_m, Rx2_m, res.grid_y0_m + g.y_m, ref.y0);
+  }
 
   spdlog::debug("semi-Hertz: delta {:.6e} m, eps {:.4f}, B_e {:.4e} 1/m, a {:.6e} m, b {:.6e} m, p0 {:.6e} Pa, "
                 "{} patch(es), y [{:.6e}, {:.6e}] m, {}",

@@ -18,17 +18,20 @@
 //   y0 the centroid of g_+ over the patch holding the gap's minimum (Hertz: the centre).
 // Along a strip, integral sqrt(1 - x^2/a^2) / sqrt(x^2 + eta^2) dx = 2 (sqrt(a^2 + eta^2)/a) (K(k) - E(k)),
 // k^2 = a^2/(a^2 + eta^2); its log singularity at eta = 0 is integrated exactly. The load
-// F(delta) = p0 integral (pi/2) a(y) sqrt(g/(eps delta)) dy rises with delta; a bracketed secant in
-// log delta, with a bisection after any step that does not halve the residual, finds F(delta) =
-// normal load. F(delta) can jump across the load: where two lobes of contact merge, y0 jumps into the
+// F(delta) = p0 integral (pi/2) a(y) sqrt(g/(eps delta)) dy rises with delta (not everywhere: on nearly
+// conformal worn gaps it is steep and not monotone, docs/semi-hertz.md); Newton steps with the secant
+// slope in (log delta, log F), kept in the bracket, with a bisection after any step that leaves it or
+// does not halve the residual, find F(delta) = normal load. F(delta) can jump across the load: where two lobes of contact merge, y0 jumps into the
 // neck (docs/stress-suite.md, finding 6b), and where merging lobes widen the contact, eps = eps_y(A,
 // B_e(eps delta)) has two fixed points and the warm-started iteration picks one by history. The bracket
 // then closes on the jump, and the root find starts again from that bracket by the continuous rule:
 //   eps from two passes eps <- eps_y(A, B_e(eps delta)) from eps = 1/2 (exact on constant curvature),
 //   y0 the centroid of m_+, m(y) the smallest g on the way from the gap's minimum to y (the lobe
 //   centroid where g falls monotonically away from the minimum; across a neck the far side weighs at
-//   most g at the neck, nothing when the lobes merge),
-// both continuous in delta. The result says which rule ran (SemiHertzResult::rule).
+//   most g at the neck, nothing when the lobes merge); where other minima are nearly as low, p0 the
+//   weighted mean of each such minimum's basin condition (weights continuous in the depths, 1 for the
+//   lowest, 0 for one higher by a tenth of its own depth below its neck),
+// both continuous in delta, and the second in the depths. The result says which rule ran (SemiHertzResult::rule).
 #pragma once
 
 #include <Eigen/Core>
@@ -66,6 +69,11 @@ struct SemiHertzOptions {
   double load_rtol = 1e-6;        // the root find stops at |F(delta)/F - 1| <= load_rtol
   int max_iterations = 60;        // evaluations of F(delta)
   double initial_approach_m = 0;  // warm start, e.g. the last solve's approach; 0 = estimate
+  // with it, d ln F / d ln delta there (the last solve's SemiHertzResult::approach_slope); 0 = Hertz's 3/2.
+  // The first step goes to initial_approach_m (F/F(initial))^(1/initial_slope): a caller that solves again
+  // on profiles changed by little (the same cam angle one wear step later) passes both and the root find
+  // takes 1 or 2 evaluations; a poor guess costs only evaluations, never the result.
+  double initial_slope = 0;
   // always the continuous rule (eps from two passes, y0 the basin centroid), never the self-consistent
   // one: the result is then continuous in the profiles as well as in delta. A caller that solves again
   // and again on profiles changing by little (the cam's life, docs/cam-follower.md §12) needs that: by
@@ -102,6 +110,8 @@ struct SemiHertzResult {
                              // Heathcote offset vanishes, so xi is the creepage there)
   double contact_y_min_m = 0, contact_y_max_m = 0;  // lateral extent of the contact (profiles' y)
   double approach_m = 0;      // delta
+  double approach_slope = 0;  // d ln F / d ln delta near delta (the root find's last secant; Hertz 3/2), for
+                              // SemiHertzOptions::initial_slope
   double epsilon = 0;         // lateral virtual penetration ratio: contact where h < epsilon delta
   double equivalent_B_per_m = 0;  // B_e, lateral curvature of the equivalent ellipse
   bool reaches_edge = false;  // the contact reaches an end of the profiles' overlap (a body's edge)
