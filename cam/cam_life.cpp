@@ -126,7 +126,7 @@ RevolutionDissipation worn_revolution_dissipation(const CamModel& m, const Revol
 DissipationOf CamLifeSetup::producer() const {
   return [this](const CamWearState& s) {
     if ((s.cam_depth_m == 0).all() && (s.roller_depth_m == 0).all()) return unworn;
-    return worn_revolution_dissipation(model, revolution, motion.motion, unworn_profiles, life.grid, s, dynamics.law);
+    return (*worn)(s);
   };
 }
 
@@ -148,6 +148,8 @@ std::unique_ptr<CamLifeSetup> set_up_cam_life(const std::string& name, const Cam
   u.unworn_profiles = roller_and_track_profiles(u.model.bodies);
   u.life = make_cam_life_model(name, spec, u.model.mu, u.unworn_profiles, u.model.geometry.roller_radius_m,
                                u.revolution.cam_circumference_m, u.unworn, lift_loss_samples(u.revolution));
+  u.worn = std::make_shared<WornRevolution>(u.model, u.revolution, u.motion.motion, u.unworn_profiles, u.life.grid,
+                                            u.dynamics.law);
   return setup;
 }
 

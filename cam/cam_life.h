@@ -33,6 +33,7 @@
 #include "cam/cam_wear.h"
 #include "cam/revolution.h"
 #include "cam/roller_dynamics.h"
+#include "cam/worn_revolution.h"
 #include "lib/normal/profile.h"
 #include "wear/wear_case.h"
 
@@ -141,8 +142,9 @@ CamLifeResult run_cam_life(const CamLifeModel& m, const DissipationOf& dissipati
 // A case's life, set up: the unworn revolution (status Jump: nothing else is set), the roller's periodic
 // motion, the unworn quasi-steady dissipation (the same producer as on the worn geometry, so that the rate
 // is continuous at the unworn state: Satran along the revolution, §9, needs Hertz's profiles), the life's model, and the producer of the dissipation on a worn state
-// (worn_revolution_dissipation with this revolution and motion; the unworn state gives `unworn` itself).
-// Held by pointer: the producer refers to it.
+// (worn_revolution_dissipation with this revolution and motion, evaluated by one WornRevolution,
+// cam/worn_revolution.h, shared by the producers made: its warm starts and shared contacts; the unworn state
+// gives `unworn` itself). Held by pointer: the producer refers to it.
 struct CamLifeSetup {
   CamModel model;
   Revolution revolution;
@@ -151,6 +153,7 @@ struct CamLifeSetup {
   contact::Profiles unworn_profiles;
   RevolutionDissipation unworn;
   CamLifeModel life;
+  std::shared_ptr<WornRevolution> worn;  // the producer's evaluator (its statistics: worn->stats())
   DissipationOf producer() const;
 };
 // Throws CamError for a design the model refuses (the caller places it in the case), std::runtime_error
