@@ -26,6 +26,8 @@ struct CreepLawSettings {
   // the semi-Hertzian search's first approach (SemiHertzOptions::initial_approach_m): 0 = its own estimate;
   // cam/worn_revolution.h passes an angle's approach at the life's last evaluation
   double initial_approach_m = 0;
+  // the semi-Hertzian search's load tolerance (SemiHertzOptions::load_rtol)
+  double normal_load_rtol = contact::SemiHertzOptions{}.load_rtol;
 };
 
 struct AngleContact {

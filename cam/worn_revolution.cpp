@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "cam/cam_life.h"
+#include "lib/normal/normal.h"
 #include "lib/numeric.h"
 
 namespace cam {
@@ -114,9 +115,10 @@ RevolutionDissipation WornRevolution::operator()(const CamWearState& s) {
     for (Eigen::Index i = 0; i < w.wl.size(); ++i)
       worn.body1.z_m(i) += (1 - w.wl(i)) * s.roller_depth_m(w.l0(i)) + w.wl(i) * s.roller_depth_m(w.l1(i));
   }
-  const double load_rtol = contact::SemiHertzOptions{}.load_rtol;
+  const double load_rtol = law_.normal_load_rtol;
   Eigen::ArrayXd solved_track_z;  // the worn track profile of the last angle solved
   std::size_t solved = 0;         // that angle
+  double previous_approach = 0;   // its approach at the last evaluation
   RevolutionDissipation out;
   out.reserve(angles_.size());
   for (std::size_t i = 0; i < angles_.size(); ++i) {
@@ -143,11 +145,29 @@ RevolutionDissipation WornRevolution::operator()(const CamWearState& s) {
     }
 
     CreepLawSettings law = law_;
-    if (options_.warm_start) law.initial_approach_m = a.approach_m;
-    const AngleContact c = angle_contact(model_.bodies, worn, model_.geometry.roller_radius_m, a.row.kin,
-                                         a.roller.normal_N, model_.mu, law);
+    if (options_.warm_start) {
+      // this angle's last approach, scaled as the angle solved before it changed since the last evaluation
+      // (what wear did to every angle alike, e.g. the roller's wear)
+      law.initial_approach_m = a.approach_m;
+      if (a.approach_m > 0 && i > 0 && previous_approach > 0 && angles_[solved].approach_m > 0)
+        law.initial_approach_m = a.approach_m * (angles_[solved].approach_m / previous_approach);
+    }
+    AngleContact c;
+    try {
+      c = angle_contact(model_.bodies, worn, model_.geometry.roller_radius_m, a.row.kin, a.roller.normal_N, model_.mu,
+                        law);
+    } catch (const contact::NormalSolveError&) {
+      // a warm-started search that does not converge (F(delta) bends or jumps between the start and the
+      // root: semi_hertz.h) is run again from the solver's own first approach, as a cold evaluation would
+      if (!(law.initial_approach_m > 0)) throw;
+      ++stats_.cold_retries;
+      law.initial_approach_m = 0;
+      c = angle_contact(model_.bodies, worn, model_.geometry.roller_radius_m, a.row.kin, a.roller.normal_N, model_.mu,
+                        law);
+    }
     ++stats_.contacts_solved;
     stats_.approach_evaluations += c.normal.status.iterations;
+    previous_approach = a.approach_m;
     a.approach_m = c.normal.patch.approach_m;
     RollerAngle roller = a.roller;
     const CreepageForForce xi = options_.warm_start && a.xi_known ? creepage_for_force(c, roller.tangential_N, a.xi)

@@ -15,7 +15,8 @@
 //   - Warm starts: each angle's semi-Hertzian search starts from its approach at the last evaluation, and
 //     the creep law's inversion searches around its last creepage: fewer evaluations of F(delta) and of
 //     the steady law for the same tolerances (SemiHertzOptions::load_rtol, kCreepForceRtol), so the
-//     result differs from a cold start only within those tolerances.
+//     result differs from a cold start only within those tolerances. A warm-started solve that does not
+//     converge is solved again from the solver's own start.
 // Not thread-safe (the warm starts are state); one per life.
 #pragma once
 
@@ -47,6 +48,7 @@ struct WornRevolutionStats {
   long contacts_solved = 0;        // normal solves (the rest reused a shared contact)
   long approach_evaluations = 0;   // F(delta) evaluations of the semi-Hertzian searches
   long creep_evaluations = 0;      // steady solves of the creep law's inversions
+  long cold_retries = 0;           // warm-started normal solves that did not converge, solved again cold
 };
 
 struct WornRevolutionOptions {

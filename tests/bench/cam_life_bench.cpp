@@ -1,6 +1,6 @@
 // The cost of a cam's worn revolution and of its life (docs/cam-follower.md §15). A plain program:
 //   cam_life_bench CASE.yaml [worn_depth_m = 8e-6] [repeats = 5] [life-only]
-//   cam_life_bench CASE.yaml life [variants = all]     the case's whole life (its own stepping) with each of
+//   cam_life_bench CASE.yaml life [variants = all [load_rtol]]   the case's whole life (its own stepping) with each of
 //                                                      the savings on or off: life, evaluations, CPU
 // 1. sets up the case's life (the unworn periodic revolution), CPU timed;
 // 2. wears the case to worn_depth_m (fixed-depth steps of 1e-6 m, the fast producer): a worn state;
@@ -54,7 +54,7 @@ int main(int argc, char** argv) {
   spdlog::set_level(spdlog::level::warn);
   const bool whole_life = argc > 2 && std::string(argv[2]) == "life";
   const double worn_depth = argc > 2 && !whole_life ? std::stod(argv[2]) : 8e-6;
-  const int repeats = argc > 3 ? std::stoi(argv[3]) : 5;
+  const int repeats = argc > 3 && !whole_life ? std::stoi(argv[3]) : 5;
   const bool life_only = argc > 4 && std::string(argv[4]) == "life-only";  // the life's evaluator alone (to profile)
   const cam::CamCase c = cam::read_cam_case(argv[1]);
   if (!c.wear) {
@@ -67,11 +67,12 @@ int main(int argc, char** argv) {
   dynamics.max_revolutions = c.solver.max_revolutions;
 
   double t0 = cpu_s();
-  const auto setup = cam::set_up_cam_life(c.name, c.model, *c.wear, dynamics);
+  const std::unique_ptr<cam::CamLifeSetup> setup = cam::set_up_cam_life(c.name, c.model, *c.wear, dynamics);
   std::printf("set-up (unworn periodic revolution): %.3f s CPU\n", cpu_s() - t0);
 
   if (whole_life) {
     const std::string which = argc > 3 ? argv[3] : "all";
+    if (argc > 4) setup->dynamics.law.normal_load_rtol = std::stod(argv[4]);  // the worn solves' load tolerance
     const struct {
       const char* name;
       cam::WornRevolutionOptions o;
@@ -89,12 +90,12 @@ int main(int argc, char** argv) {
       const double cpu = cpu_s() - t0;
       const cam::WornRevolutionStats& st = ev.stats();
       std::printf("%-8s life %.6g revolutions (%s), %ld steps, %ld evaluations, %.2f s CPU, %.1f ms/revolution; "
-                  "per revolution %.1f normal solves, %.1f F(delta), %.1f creep law\n",
+                  "per revolution %.1f normal solves, %.1f F(delta), %.1f creep law; %ld cold retries\n",
                   v.name, life.N, cam::to_string(life.ended_by).c_str(), life.steps, life.revolutions_solved, cpu,
                   1e3 * cpu / std::max<long>(1, life.revolutions_solved),
                   static_cast<double>(st.contacts_solved) / std::max<long>(1, st.evaluations),
                   static_cast<double>(st.approach_evaluations) / std::max<long>(1, st.evaluations),
-                  static_cast<double>(st.creep_evaluations) / std::max<long>(1, st.evaluations));
+                  static_cast<double>(st.creep_evaluations) / std::max<long>(1, st.evaluations), st.cold_retries);
     }
     return 0;
   }
