@@ -92,6 +92,7 @@ CreepLawSettings worn_contact_settings(const contact::Profiles& unworn, const Ca
   const double cell = g.roller_cell_m();
   const int per_cell = max_strip_m > 0 ? std::max(1, static_cast<int>(std::ceil(cell / max_strip_m - 1e-9))) : 1;
   law.grid.ny = std::max(2, per_cell * static_cast<int>(std::lround((hi - lo) / cell)));
+  law.worn = true;
   return law;
 }
 

@@ -73,7 +73,8 @@ using DissipationOf = std::function<RevolutionDissipation(const CamWearState& wo
 // unworn revolution's narrowest 2 b / ny, the law's resolution of the unworn contact), so that a lobe of contact entering or leaving changes the strips'
 // sums continuously (with the strips over the contact's own extent every strip moved, and the
 // revolution's dissipation jumped by up to 17 % at an angle for a 1e-4 change of the depths:
-// docs/cam-follower.md §14).
+// docs/cam-follower.md §14). And never Hertz's closed form (CreepLawSettings::worn): a worn profile that still
+// fits a constant curvature would switch the solver, and the rate would jump by up to 2e-3 where it stops fitting.
 CreepLawSettings worn_contact_settings(const contact::Profiles& unworn, const CamWearGrid& g, CreepLawSettings law,
                                        double max_strip_m = 0);
 

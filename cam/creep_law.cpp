@@ -29,6 +29,7 @@ AngleContact angle_contact(const RollerAndTrack& bodies, const contact::Profiles
   np.semi_hertz.fixed_grid_y_hi_m = s.fixed_grid_y_hi_m;
   np.semi_hertz.initial_approach_m = s.initial_approach_m;
   np.semi_hertz.load_rtol = s.normal_load_rtol;
+  np.worn = s.worn;
   AngleContact c;
   c.normal = contact::solve_normal_converged(np);
   c.problem = contact::make_tangential_problem(c.normal.patch, bodies.pair, {}, mu, 0);
