@@ -59,6 +59,27 @@ Eigen::ArrayXd lift_loss_m(const contact::Profiles& unworn, const CamWearGrid& g
 LiftLoss max_lift_loss(const contact::Profiles& unworn, const CamWearGrid& g, const CamWearState& s,
                        const std::vector<LiftLossSample>& samples);
 
+// max_lift_loss made once for a grid and samples, then evaluated on many states (the life's limit is
+// probed at every step and root iteration): the profiles' nodes, their unworn gap and lateral weights, and
+// the samples' arc weights kept; the same arithmetic, so the same result to the bit.
+class LiftLossProbe {
+ public:
+  LiftLossProbe(const contact::Profiles& unworn, const CamWearGrid& g, std::vector<LiftLossSample> samples);
+  LiftLoss operator()(const CamWearState& s) const;
+
+ private:
+  struct Weights {
+    int c0 = 0, c1 = 0;
+    double w1 = 0;
+  };
+  CamWearGrid grid_;
+  std::vector<LiftLossSample> samples_;
+  std::vector<Weights> sample_arc_;             // per sample, its arc cells
+  std::vector<double> gap0_;                    // per roller node in the overlap: the unworn gap
+  std::vector<Weights> roller_lat_, track_lat_; // ... its lateral cells on the roller's and the track's grid
+  double gap0_min_ = 0;
+};
+
 // the periodic revolution's dissipation on the worn geometry (what the revolution's tangential solve
 // makes, with worn_profiles_at at each angle); may throw
 using DissipationOf = std::function<RevolutionDissipation(const CamWearState& worn)>;

@@ -417,6 +417,23 @@ TEST(WornRevolution, SharedContactsAndWarmStartsAgreeWithTheColdRevolution) {
   (void)u;
 }
 
+// The life's lift-loss probe (made once, probed at every step and root iteration) is max_lift_loss to the
+// bit, on a worn state and on one worn unevenly along the arc.
+TEST(WornRevolution, LiftLossProbeIsMaxLiftLossToTheBit) {
+  const CoarseShipped& c = coarse_shipped();
+  const cam::CamLifeSetup& u = *c.setup;
+  cam::CamWearState uneven = c.worn;
+  for (int i = 0; i < uneven.cam_depth_m.rows(); ++i) uneven.cam_depth_m.row(i) *= 1 + 0.5 * std::sin(0.3 * i);
+  const cam::LiftLossProbe probe(u.unworn_profiles, u.life.grid, u.life.samples);
+  for (const cam::CamWearState* s : std::vector<const cam::CamWearState*>{&c.worn, &uneven}) {
+    const cam::LiftLoss want = cam::max_lift_loss(u.unworn_profiles, u.life.grid, *s, u.life.samples);
+    const cam::LiftLoss got = probe(*s);
+    EXPECT_GT(want.max_m, 0);
+    EXPECT_EQ(got.max_m, want.max_m);
+    EXPECT_EQ(got.at_theta_rad, want.at_theta_rad);
+  }
+}
+
 // The worn contacts take the semi-Hertzian continuous rule always (angle_contact sets it): by default the
 // solver picks its rule per solve, and where the two rules give different contacts on a worn gap the
 // dissipation jumped between neighbouring states (13-fold at one angle for a 1e-4 change of the depths,
