@@ -82,7 +82,8 @@ WornRevolution::WornRevolution(const CamModel& m, const Revolution& r, const Rol
     w.l0.resize(y.size());
     w.l1.resize(y.size());
     w.wl.resize(y.size());
-    for (Eigen::Index i = 0; i < y.size(); ++i) weights(y(i) + 0.5 * width_m, cell_m, cells, false, w.l0(i), w.l1(i), w.wl(i));
+    for (Eigen::Index i = 0; i < y.size(); ++i)
+      weights(y(i) + 0.5 * width_m, cell_m, cells, false, w.l0(i), w.l1(i), w.wl(i));
     return w;
   };
   roller_nodes_ = node_weights(unworn.body1.y_m, g.roller_width_m, g.roller_cell_m(), g.roller_cells);

@@ -377,8 +377,8 @@ double power_difference(const RevolutionDissipation& a, const RevolutionDissipat
 TEST(WornRevolution, WithoutSavingsIsTheColdRevolutionToTheBit) {
   const CoarseShipped& c = coarse_shipped();
   const cam::CamLifeSetup& u = *c.setup;
-  const RevolutionDissipation ref = cam::worn_revolution_dissipation(u.model, u.revolution, u.motion.motion,
-                                                                     u.unworn_profiles, u.life.grid, c.worn, u.dynamics.law);
+  const RevolutionDissipation ref = cam::worn_revolution_dissipation(
+      u.model, u.revolution, u.motion.motion, u.unworn_profiles, u.life.grid, c.worn, u.dynamics.law);
   cam::WornRevolution ev = worn_revolution(c, {false, false});
   EXPECT_EQ(power_difference(ev(c.worn), ref), 0.0);
   EXPECT_EQ(ev.stats().contacts_solved, 72);
@@ -409,9 +409,9 @@ TEST(WornRevolution, SharedContactsAndWarmStartsAgreeWithTheColdRevolution) {
   EXPECT_LE(solved_first, 72 - 14);
   EXPECT_LT(ev.stats().approach_evaluations - approach_first, cold_approach_next);
   // the root finds stop at |F(delta)/F - 1| <= 1e-6 and |F_t - F| <= 1e-10 mu F_n from different starts, and
-  // a shared contact's track differs by less than 1e-6 of the approach: the strip powers then differ by
-  // some 1e-5 of the largest (here 3.7e-12 and 4.8e-6; 7.3e-5 with shared contacts on an 8 um worn state of the shipped
-  // case at 720 steps, docs/cam-follower.md §15); a contact shared wrongly, or a warm start that found
+  // a shared contact's track differs by less than 1e-6 of the approach: the strip powers then differ by some
+  // 1e-5 of the largest (here 3.7e-12 and 4.8e-6; 7.3e-5 with shared contacts on an 8 um worn state of the
+  // shipped case at 720 steps, docs/cam-follower.md §15); a contact shared wrongly, or a warm start that found
   // another root, differs by percent
   constexpr double kSolveTolerancePower = 1e-4;
   const double d1 = power_difference(first, cold(c.worn)), d2 = power_difference(second, ref);

@@ -76,7 +76,8 @@ int main(int argc, char** argv) {
     const struct {
       const char* name;
       cam::WornRevolutionOptions o;
-    } variants[] = {{"neither", {false, false}}, {"shared", {true, false}}, {"warm", {false, true}}, {"both", {true, true}}};
+    } variants[] = {
+        {"neither", {false, false}}, {"shared", {true, false}}, {"warm", {false, true}}, {"both", {true, true}}};
     for (const auto& v : variants) {
       if (which != "all" && which != v.name) continue;
       cam::WornRevolution ev(setup->model, setup->revolution, setup->motion.motion, setup->unworn_profiles,
