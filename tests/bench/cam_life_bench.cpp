@@ -167,5 +167,19 @@ int main(int argc, char** argv) {
                 st.approach_evaluations - before.approach_evaluations, st.creep_evaluations - before.creep_evaluations,
                 d1.power, d1.energy, d2.power, d2.energy);
   }
+  {
+    // the warm start's floor: the same state twice, each angle's search starting at its own root
+    cam::WornRevolution ev(setup->model, setup->revolution, setup->motion.motion, setup->unworn_profiles,
+                           setup->life.grid, setup->dynamics.law, {false, true});
+    ev(s);
+    const cam::WornRevolutionStats before = ev.stats();
+    t0 = cpu_s();
+    ev(s);
+    const double t_same = cpu_s() - t0;
+    std::printf("%-34s %8.1f ms/revolution  solves %ld, F(delta) %ld, creep law %ld per revolution\n",
+                "warm, the same state again", 1e3 * t_same, ev.stats().contacts_solved - before.contacts_solved,
+                ev.stats().approach_evaluations - before.approach_evaluations,
+                ev.stats().creep_evaluations - before.creep_evaluations);
+  }
   return 0;
 }
