@@ -465,6 +465,24 @@ TEST(WornRevolution, WornContactsTakeTheContinuousRule) {
   EXPECT_EQ(by_default.rule, contact::ApproachRule::SelfConsistent) << "the scan no longer tells the rules apart";
 }
 
+// The worn contacts never take Hertz's closed form: a worn profile that still fits a constant curvature (here
+// the roller worn evenly by 1 um) would otherwise be solved by Hertz, and the life's rate would jump by up to
+// 2e-3 where wear makes the profile stop fitting (docs/cam-follower.md §15).
+TEST(WornRevolution, WornContactsNeverTakeHertzsClosedForm) {
+  const CoarseShipped& c = coarse_shipped();
+  const cam::CamLifeSetup& u = *c.setup;
+  const cam::RevolutionRow& row = u.revolution.rows.front();
+  contact::Profiles worn = u.unworn_profiles;
+  worn.body1.z_m += 1e-6;  // the crowned roller: a flat track offset no longer fits (its depth range is 0)
+  const cam::CreepLawSettings law = cam::worn_contact_settings(u.unworn_profiles, u.life.grid, u.dynamics.law);
+  const cam::AngleContact ac = cam::angle_contact(u.model.bodies, worn, u.model.geometry.roller_radius_m, row.kin,
+                                                  row.loads.normal_N, u.model.mu, law);
+  EXPECT_EQ(ac.normal.solver, contact::NormalSolverKind::SemiHertz);
+  const cam::AngleContact by_default = cam::angle_contact(u.model.bodies, worn, u.model.geometry.roller_radius_m,
+                                                          row.kin, row.loads.normal_N, u.model.mu, u.dynamics.law);
+  EXPECT_EQ(by_default.normal.solver, contact::NormalSolverKind::Hertz) << "the profile no longer fits a curvature";
+}
+
 // ---- the case's wear section ----
 
 class CamWearCase : public rollwear_test::TempDirTest {
