@@ -142,10 +142,14 @@ int run_cam_life_command(const std::string& case_path, const std::string& output
       "case: {}\nlife: {:.6g} cam revolutions ({:.6g} h at {:.6g} rad/s)\nended by: {}\nwhy: {}\n"
       "max depth: {:.6g} m\nmax lift loss: {:.6g} m at cam angle {:.4g} deg\n"
       "worn volume: track {:.6g} m^3, roller {:.6g} m^3\ndissipated: {:.6g} J\n"
-      "steps: {} ({} rejected), evaluations of the wear rate: {}, revolutions solved: {}\ncpu: {:.3g} s\n",
+      "steps: {} ({} rejected), evaluations of the wear rate: {}, revolutions solved: {}\n"
+      "worn revolutions: {} angle steps, {} normal solves (the rest shared a contact), {} F(delta) and {} creep-law "
+      "evaluations, {} warm starts retried cold\ncpu: {:.3g} s\n",
       c.name, life.N, hours, m.omega_rad_per_s, cam::to_string(life.ended_by), life.message, life.max_depth_m,
       life.lift_loss.max_m, life.lift_loss.at_theta_rad * cam::kDegPerRad, life.cam_volume_m3, life.roller_volume_m3,
-      life.energy_J, life.steps, life.rejected, life.rhs_evals, life.revolutions_solved, cpu);
+      life.energy_J, life.steps, life.rejected, life.rhs_evals, life.revolutions_solved, setup->worn->stats().angles,
+      setup->worn->stats().contacts_solved, setup->worn->stats().approach_evaluations,
+      setup->worn->stats().creep_evaluations, setup->worn->stats().cold_retries, cpu);
   contact::write_files_atomic({{dir / "life.csv", life_csv}, {dir / "report.txt", report}});
   fmt::print("{}", report);
   fmt::print("wrote {} (revolution.csv, dissipation.csv, life.csv, report.txt, {} wear maps in snapshots/)\n",

@@ -83,6 +83,97 @@ LiftLoss max_lift_loss(const contact::Profiles& unworn, const CamWearGrid& g, co
   return out;
 }
 
+namespace {
+// cam_wear.cpp's interpolation between cell centres (periodic along the arc, clamped across)
+void centre_weights(double x, double dx, int n, bool periodic, int& c0, int& c1, double& w1) {
+  double u = x / dx - 0.5;
+  c0 = c1 = 0;
+  w1 = 0;
+  if (n == 1) return;
+  if (periodic) {
+    u -= std::floor(u / n) * n;
+    c0 = std::min(static_cast<int>(std::floor(u)), n - 1);
+    c1 = (c0 + 1) % n;
+    w1 = u - c0;
+    return;
+  }
+  if (u <= 0) return;
+  if (u >= n - 1) {
+    c0 = c1 = n - 1;
+    return;
+  }
+  c0 = static_cast<int>(std::floor(u));
+  c1 = c0 + 1;
+  w1 = u - c0;
+}
+}  // namespace
+
+LiftLossProbe::LiftLossProbe(const contact::Profiles& unworn, const CamWearGrid& g, std::vector<LiftLossSample> samples)
+    : grid_(g), samples_(std::move(samples)) {
+  check_grid(g);
+  for (const LiftLossSample& x : samples_) {
+    Weights w;
+    centre_weights(x.arc_m, g.arc_cell_m(), g.arc_cells, true, w.c0, w.c1, w.w1);
+    sample_arc_.push_back(w);
+  }
+  const contact::Profile& roller = unworn.body1;
+  const contact::Profile& track = unworn.body2;
+  const double lo = std::max(roller.y_m(0), track.y_m(0));
+  const double hi = std::min(roller.y_m(roller.y_m.size() - 1), track.y_m(track.y_m.size() - 1));
+  gap0_min_ = std::numeric_limits<double>::infinity();
+  for (Eigen::Index i = 0; i < roller.y_m.size(); ++i) {
+    const double y = roller.y_m(i);
+    if (y < lo || y > hi) continue;
+    gap0_.push_back(roller.z_m(i) + contact::profile_z(track, y));
+    gap0_min_ = std::min(gap0_min_, gap0_.back());
+    Weights r, t;
+    centre_weights(y + 0.5 * g.roller_width_m, g.roller_cell_m(), g.roller_cells, false, r.c0, r.c1, r.w1);
+    centre_weights(y + 0.5 * g.track_width_m, g.track_cell_m(), g.track_cells, false, t.c0, t.c1, t.w1);
+    roller_lat_.push_back(r);
+    track_lat_.push_back(t);
+  }
+  ROLLWEAR_ASSERT(!gap0_.empty(), "the roller's and the track's profiles do not overlap laterally");
+}
+
+LiftLoss LiftLossProbe::operator()(const CamWearState& s) const {
+  LiftLoss out;
+  if (samples_.empty()) return out;
+  const std::size_t n = gap0_.size();
+  // per node: the unworn gap plus the roller's depth; per arc cell used, its row at the nodes
+  std::vector<double> base(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const Weights& r = roller_lat_[i];
+    base[i] = (1 - r.w1) * s.roller_depth_m(r.c0) + r.w1 * s.roller_depth_m(r.c1);
+  }
+  std::vector<std::vector<double>> rows(static_cast<std::size_t>(grid_.arc_cells));
+  const auto row = [&](int c) -> const std::vector<double>& {
+    std::vector<double>& v = rows[static_cast<std::size_t>(c)];
+    if (v.empty()) {
+      v.resize(n);
+      for (std::size_t i = 0; i < n; ++i) {
+        const Weights& t = track_lat_[i];
+        v[i] = (1 - t.w1) * s.cam_depth_m(c, t.c0) + t.w1 * s.cam_depth_m(c, t.c1);
+      }
+    }
+    return v;
+  };
+  bool first = true;
+  for (std::size_t k = 0; k < samples_.size(); ++k) {
+    const Weights& a = sample_arc_[k];
+    const std::vector<double>& r0 = row(a.c0);
+    const std::vector<double>& r1 = row(a.c1);
+    double gap = std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < n; ++i) gap = std::min(gap, gap0_[i] + base[i] + ((1 - a.w1) * r0[i] + a.w1 * r1[i]));
+    const double loss = (gap - gap0_min_) / std::cos(samples_[k].pressure_angle_rad);
+    if (first || loss > out.max_m) {
+      out.max_m = loss;
+      out.at_theta_rad = samples_[k].theta_rad;
+      first = false;
+    }
+  }
+  return out;
+}
+
 CreepLawSettings worn_contact_settings(const contact::Profiles& unworn, const CamWearGrid& g, CreepLawSettings law,
                                        double max_strip_m) {
   const double lo = std::max(unworn.body1.y_m(0), unworn.body2.y_m(0));
@@ -92,6 +183,7 @@ CreepLawSettings worn_contact_settings(const contact::Profiles& unworn, const Ca
   const double cell = g.roller_cell_m();
   const int per_cell = max_strip_m > 0 ? std::max(1, static_cast<int>(std::ceil(cell / max_strip_m - 1e-9))) : 1;
   law.grid.ny = std::max(2, per_cell * static_cast<int>(std::lround((hi - lo) / cell)));
+  law.worn = true;
   return law;
 }
 
@@ -126,7 +218,7 @@ RevolutionDissipation worn_revolution_dissipation(const CamModel& m, const Revol
 DissipationOf CamLifeSetup::producer() const {
   return [this](const CamWearState& s) {
     if ((s.cam_depth_m == 0).all() && (s.roller_depth_m == 0).all()) return unworn;
-    return worn_revolution_dissipation(model, revolution, motion.motion, unworn_profiles, life.grid, s, dynamics.law);
+    return (*worn)(s);
   };
 }
 
@@ -148,6 +240,8 @@ std::unique_ptr<CamLifeSetup> set_up_cam_life(const std::string& name, const Cam
   u.unworn_profiles = roller_and_track_profiles(u.model.bodies);
   u.life = make_cam_life_model(name, spec, u.model.mu, u.unworn_profiles, u.model.geometry.roller_radius_m,
                                u.revolution.cam_circumference_m, u.unworn, lift_loss_samples(u.revolution));
+  u.worn = std::make_shared<WornRevolution>(u.model, u.revolution, u.motion.motion, u.unworn_profiles, u.life.grid,
+                                            u.dynamics.law);
   return setup;
 }
 
@@ -208,6 +302,8 @@ CamLifeResult run_cam_life(const CamLifeModel& m, const DissipationOf& dissipati
       smooth ? wear::smoothing_kernel(centres(m.grid.roller_width_m, m.grid.roller_cells), m.smoothing_wavelength_m)
              : wear::SmoothingKernel{};
 
+  const LiftLossProbe lift_loss(m.unworn, m.grid, m.samples);
+
   // f(h): the wear per revolution on the worn geometry; the last one kept (an FSAL stage, the step
   // report and a limit's probe often ask at the same state)
   Eigen::VectorXd last_x;
@@ -240,14 +336,14 @@ CamLifeResult run_cam_life(const CamLifeModel& m, const DissipationOf& dissipati
     g = Eigen::VectorXd::Constant(kLimits, -1.0);
     const CamWearState s = state_of(m.grid, h);
     if (m.max_depth_m > 0) g(0) = max_depth_of(s) - m.max_depth_m;
-    if (m.max_lift_loss_m > 0) g(1) = max_lift_loss(m.unworn, m.grid, s, m.samples).max_m - m.max_lift_loss_m;
+    if (m.max_lift_loss_m > 0) g(1) = lift_loss(s).max_m - m.max_lift_loss_m;
   };
   const auto finish = [&](CamLifeEnd end, std::string message) -> CamLifeResult& {
     life.ended_by = end;
     life.message = std::move(message);
     life.state = state_of(m.grid, x);
     life.max_depth_m = max_depth_of(life.state);
-    life.lift_loss = max_lift_loss(m.unworn, m.grid, life.state, m.samples);
+    life.lift_loss = lift_loss(life.state);
     life.energy_J = energy_scale > 0 ? x(lay.energy()) / energy_scale : 0;
     life.cam_volume_m3 = cam_worn_volume_m3(m.grid, life.state);
     life.roller_volume_m3 = roller_worn_volume_m3(m.grid, life.state);
@@ -286,7 +382,7 @@ CamLifeResult run_cam_life(const CamLifeModel& m, const DissipationOf& dissipati
         step.N = info.N;
         step.state = &s;
         step.max_depth_m = max_depth_of(s);
-        step.lift_loss = max_lift_loss(m.unworn, m.grid, s, m.samples);
+        step.lift_loss = lift_loss(s);
         step.energy_J = h(lay.energy()) / energy_scale;
         hooks.on_step(step);
       }

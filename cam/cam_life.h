@@ -33,6 +33,7 @@
 #include "cam/cam_wear.h"
 #include "cam/revolution.h"
 #include "cam/roller_dynamics.h"
+#include "cam/worn_revolution.h"
 #include "lib/normal/profile.h"
 #include "wear/wear_case.h"
 
@@ -58,6 +59,27 @@ Eigen::ArrayXd lift_loss_m(const contact::Profiles& unworn, const CamWearGrid& g
 LiftLoss max_lift_loss(const contact::Profiles& unworn, const CamWearGrid& g, const CamWearState& s,
                        const std::vector<LiftLossSample>& samples);
 
+// max_lift_loss made once for a grid and samples, then evaluated on many states (the life's limit is
+// probed at every step and root iteration): the profiles' nodes, their unworn gap and lateral weights, and
+// the samples' arc weights kept; the same arithmetic, so the same result to the bit.
+class LiftLossProbe {
+ public:
+  LiftLossProbe(const contact::Profiles& unworn, const CamWearGrid& g, std::vector<LiftLossSample> samples);
+  LiftLoss operator()(const CamWearState& s) const;
+
+ private:
+  struct Weights {
+    int c0 = 0, c1 = 0;
+    double w1 = 0;
+  };
+  CamWearGrid grid_;
+  std::vector<LiftLossSample> samples_;
+  std::vector<Weights> sample_arc_;             // per sample, its arc cells
+  std::vector<double> gap0_;                    // per roller node in the overlap: the unworn gap
+  std::vector<Weights> roller_lat_, track_lat_; // ... its lateral cells on the roller's and the track's grid
+  double gap0_min_ = 0;
+};
+
 // the periodic revolution's dissipation on the worn geometry (what the revolution's tangential solve
 // makes, with worn_profiles_at at each angle); may throw
 using DissipationOf = std::function<RevolutionDissipation(const CamWearState& worn)>;
@@ -72,7 +94,8 @@ using DissipationOf = std::function<RevolutionDissipation(const CamWearState& wo
 // unworn revolution's narrowest 2 b / ny, the law's resolution of the unworn contact), so that a lobe of contact entering or leaving changes the strips'
 // sums continuously (with the strips over the contact's own extent every strip moved, and the
 // revolution's dissipation jumped by up to 17 % at an angle for a 1e-4 change of the depths:
-// docs/cam-follower.md §14).
+// docs/cam-follower.md §14). And never Hertz's closed form (CreepLawSettings::worn): a worn profile that still
+// fits a constant curvature would switch the solver, and the rate would jump by up to 2e-3 where it stops fitting.
 CreepLawSettings worn_contact_settings(const contact::Profiles& unworn, const CamWearGrid& g, CreepLawSettings law,
                                        double max_strip_m = 0);
 
@@ -141,8 +164,9 @@ CamLifeResult run_cam_life(const CamLifeModel& m, const DissipationOf& dissipati
 // A case's life, set up: the unworn revolution (status Jump: nothing else is set), the roller's periodic
 // motion, the unworn quasi-steady dissipation (the same producer as on the worn geometry, so that the rate
 // is continuous at the unworn state: Satran along the revolution, §9, needs Hertz's profiles), the life's model, and the producer of the dissipation on a worn state
-// (worn_revolution_dissipation with this revolution and motion; the unworn state gives `unworn` itself).
-// Held by pointer: the producer refers to it.
+// (worn_revolution_dissipation with this revolution and motion, evaluated by one WornRevolution,
+// cam/worn_revolution.h, shared by the producers made: its warm starts and shared contacts; the unworn state
+// gives `unworn` itself). Held by pointer: the producer refers to it.
 struct CamLifeSetup {
   CamModel model;
   Revolution revolution;
@@ -151,6 +175,7 @@ struct CamLifeSetup {
   contact::Profiles unworn_profiles;
   RevolutionDissipation unworn;
   CamLifeModel life;
+  std::shared_ptr<WornRevolution> worn;  // the producer's evaluator (its statistics: worn->stats())
   DissipationOf producer() const;
 };
 // Throws CamError for a design the model refuses (the caller places it in the case), std::runtime_error

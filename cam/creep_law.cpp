@@ -27,6 +27,9 @@ AngleContact angle_contact(const RollerAndTrack& bodies, const contact::Profiles
   np.semi_hertz.continuous_rule = true;
   np.semi_hertz.fixed_grid_y_lo_m = s.fixed_grid_y_lo_m;
   np.semi_hertz.fixed_grid_y_hi_m = s.fixed_grid_y_hi_m;
+  np.semi_hertz.initial_approach_m = s.initial_approach_m;
+  np.semi_hertz.load_rtol = s.normal_load_rtol;
+  np.worn = s.worn;
   AngleContact c;
   c.normal = contact::solve_normal_converged(np);
   c.problem = contact::make_tangential_problem(c.normal.patch, bodies.pair, {}, mu, 0);
@@ -83,20 +86,16 @@ contact::TangentialSolution steady_creep(const AngleContact& c, double xi, doubl
 
 double steady_creep_force_N(const AngleContact& c, double xi) { return steady_creep(c, xi, 1.0).Fx_N; }
 
-CreepageForForce creepage_for_force(const AngleContact& c, double force_N) {
+namespace {
+// the root of F(xi) = force_N in a bracket grown from [centre - width, centre + width]
+CreepageForForce creepage_in_bracket(const AngleContact& c, double force_N, double centre, double width) {
   CreepageForForce r;
   const double sat = c.problem.mu * c.normal.patch.normal_load_N;
   const auto f = [&](double xi) {
     ++r.evaluations;
     return steady_creep_force_N(c, xi) - force_N;
   };
-  // F(xi) decreases with xi; the linear law's xi is where to start, widened until the sign changes
-  const double stiffness = c.G_Pa * c.normal.patch.a_m * c.normal.patch.b_m * c.problem.C.C11;
-  double width = std::abs(force_N) / stiffness;
-  if (c.normal.patch.strip_xi_offset.size() > 0)
-    width = std::max(width, c.normal.patch.strip_xi_offset.abs().maxCoeff());
-  width = std::max(width, 1e-9);
-  const double centre = -force_N / stiffness;
+  // F(xi) decreases with xi: widened until the sign changes
   double lo = centre - width, hi = centre + width;
   double f_lo = f(lo), f_hi = f(hi);
   while (f_lo < 0 && lo > -kMaxCreepage) {
@@ -112,6 +111,57 @@ CreepageForForce creepage_for_force(const AngleContact& c, double force_N) {
   r.xi = root.x;
   r.found = root.converged;
   return r;
+}
+
+double linear_stiffness_N(const AngleContact& c) {
+  return c.G_Pa * c.normal.patch.a_m * c.normal.patch.b_m * c.problem.C.C11;
+}
+}  // namespace
+
+CreepageForForce creepage_for_force(const AngleContact& c, double force_N) {
+  // the linear law's xi is where to start
+  const double stiffness = linear_stiffness_N(c);
+  double width = std::abs(force_N) / stiffness;
+  if (c.normal.patch.strip_xi_offset.size() > 0)
+    width = std::max(width, c.normal.patch.strip_xi_offset.abs().maxCoeff());
+  width = std::max(width, 1e-9);
+  return creepage_in_bracket(c, force_N, -force_N / stiffness, width);
+}
+
+CreepageForForce creepage_for_force(const AngleContact& c, double force_N, double xi_guess) {
+  if (!std::isfinite(xi_guess) || std::abs(xi_guess) >= kMaxCreepage) return creepage_for_force(c, force_N);
+  // from the guess one step of the linear law's slope, then the root in the bracket they make (the law is
+  // nearly linear over so small a change), else the bracket grown around the step's end
+  CreepageForForce r;
+  const double tol = kCreepForceRtol * c.problem.mu * c.normal.patch.normal_load_N;
+  const auto f = [&](double xi) {
+    ++r.evaluations;
+    return steady_creep_force_N(c, xi) - force_N;
+  };
+  const double x0 = xi_guess, f0 = f(x0);
+  if (std::abs(f0) <= tol) {
+    r.xi = x0;
+    r.found = true;
+    return r;
+  }
+  const double x1 = std::clamp(x0 + f0 / linear_stiffness_N(c), -kMaxCreepage, kMaxCreepage), f1 = f(x1);
+  if (std::abs(f1) <= tol) {
+    r.xi = x1;
+    r.found = true;
+    return r;
+  }
+  if ((f0 > 0) != (f1 > 0)) {
+    const bool up = x0 < x1;
+    const contact::RootResult root =
+        contact::find_root_bracketed(f, up ? x0 : x1, up ? x1 : x0, up ? f0 : f1, up ? f1 : f0, 0, tol);
+    r.xi = root.x;
+    r.found = root.converged;
+    return r;
+  }
+  const int before = r.evaluations;
+  CreepageForForce grown = creepage_in_bracket(c, force_N, x1, std::max(2 * std::abs(x1 - x0), 1e-12));
+  grown.evaluations += before;
+  return grown;
 }
 
 }  // namespace cam

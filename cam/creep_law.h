@@ -23,6 +23,14 @@ struct CreepLawSettings {
   // a worn (semi-Hertzian) contact's strips over this fixed lateral extent (profiles' y) instead of the
   // contact's: both 0 = the contact's (lib/normal/semi_hertz.h). The life sets it (cam/cam_life.h).
   double fixed_grid_y_lo_m = 0, fixed_grid_y_hi_m = 0;
+  // the semi-Hertzian search's first approach (SemiHertzOptions::initial_approach_m): 0 = its own estimate;
+  // cam/worn_revolution.h passes an angle's approach at the life's last evaluation
+  double initial_approach_m = 0;
+  // worn profiles: never Hertz's closed form (NormalProblem::worn), even where a worn profile still fits a
+  // constant curvature: the switch between the two would be a jump of the life's rate (they agree to 2e-3)
+  bool worn = false;
+  // the semi-Hertzian search's load tolerance (SemiHertzOptions::load_rtol)
+  double normal_load_rtol = contact::SemiHertzOptions{}.load_rtol;
 };
 
 struct AngleContact {
@@ -68,6 +76,10 @@ struct CreepageForForce {
   int evaluations = 0;
 };
 CreepageForForce creepage_for_force(const AngleContact& c, double force_N);
+// the same from xi_guess (e.g. the creepage of the same angle on a slightly different contact): a step of the
+// linear law's slope from it, the root in the bracket the two make (else a bracket grown around the step's
+// end): the same root to the same tolerance, in fewer steady solves
+CreepageForForce creepage_for_force(const AngleContact& c, double force_N, double xi_guess);
 
 // the inversion's tolerance on the force: a fraction of the saturated force mu F_n (the steady strip is
 // exact to rounding, so the root finder, not the law, sets it)

@@ -1,0 +1,190 @@
+// The worn revolution's dissipation, evaluated again and again over a life (cam/worn_revolution.h).
+#include "cam/worn_revolution.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include "cam/cam_life.h"
+#include "lib/normal/normal.h"
+#include "lib/numeric.h"
+
+namespace cam {
+
+namespace {
+
+bool same(double a, double b) {
+  if (a == b) return true;
+  return std::abs(a - b) <= kSameInputRtol * std::max(std::abs(a), std::abs(b));
+}
+
+// the interpolation cam_depth_at and roller_depth_at use: between cell centres x_c = (c + 0.5) dx of n
+// cells, periodic (the arc) or constant beyond the outer centres (across)
+void weights(double x, double dx, int n, bool periodic, int& c0, int& c1, double& w1) {
+  double u = x / dx - 0.5;
+  c0 = c1 = 0;
+  w1 = 0;
+  if (n == 1) return;
+  if (periodic) {
+    u -= std::floor(u / n) * n;
+    c0 = std::min(static_cast<int>(std::floor(u)), n - 1);
+    c1 = (c0 + 1) % n;
+    w1 = u - c0;
+    return;
+  }
+  if (u <= 0) return;
+  if (u >= n - 1) {
+    c0 = c1 = n - 1;
+    return;
+  }
+  c0 = static_cast<int>(std::floor(u));
+  c1 = c0 + 1;
+  w1 = u - c0;
+}
+
+}  // namespace
+
+WornRevolution::WornRevolution(const CamModel& m, const Revolution& r, const RollerMotion& motion,
+                               const contact::Profiles& unworn, const CamWearGrid& g, const CreepLawSettings& law,
+                               WornRevolutionOptions options)
+    : model_(m), unworn_(unworn), grid_(g), options_(options) {
+  if (motion.angles.size() != r.rows.size())
+    throw std::invalid_argument("WornRevolution: the roller's motion does not match the revolution");
+  check_grid(g);
+  duration_s_ = 2 * contact::kPi / m.angle_steps / m.omega_rad_per_s;
+  // the strips no wider than the unworn revolution's narrowest contact's (2 b / ny), as
+  // worn_revolution_dissipation lays them
+  double b_min = std::numeric_limits<double>::infinity();
+  for (const RevolutionRow& row : r.rows) b_min = std::min(b_min, row.contact.b_m);
+  law_ = worn_contact_settings(unworn, g, law, 2 * b_min / law.grid.ny);
+
+  angles_.resize(r.rows.size());
+  for (std::size_t i = 0; i < r.rows.size(); ++i) {
+    Angle& a = angles_[i];
+    a.row = r.rows[i];
+    a.roller = motion.angles[i];
+    a.cam_radius_m = cam_radius_m(a.row.kin);
+    weights(a.row.contact_arc_m, g.arc_cell_m(), g.arc_cells, true, a.a0, a.a1, a.wa);
+    if (i > 0) {
+      const Angle& p = angles_[i - 1];
+      const RollerAngle &x = a.roller, &y = p.roller;
+      a.same_inputs_as_previous = same(a.cam_radius_m, p.cam_radius_m) && same(x.normal_N, y.normal_N) &&
+                                  same(x.tangential_N, y.tangential_N) && same(x.xi, y.xi) &&
+                                  same(x.speed_m_per_s, y.speed_m_per_s) &&
+                                  same(x.slip_speed_m_per_s, y.slip_speed_m_per_s) &&
+                                  same(a.row.kin.rolling_speed_m_per_s, p.row.kin.rolling_speed_m_per_s);
+      if (a.same_inputs_as_previous) ++stats_.same_input_angles;
+    }
+  }
+  const auto node_weights = [](const Eigen::ArrayXd& y, double width_m, double cell_m, int cells) {
+    NodeWeights w;
+    w.l0.resize(y.size());
+    w.l1.resize(y.size());
+    w.wl.resize(y.size());
+    for (Eigen::Index i = 0; i < y.size(); ++i)
+      weights(y(i) + 0.5 * width_m, cell_m, cells, false, w.l0(i), w.l1(i), w.wl(i));
+    return w;
+  };
+  roller_nodes_ = node_weights(unworn.body1.y_m, g.roller_width_m, g.roller_cell_m(), g.roller_cells);
+  track_nodes_ = node_weights(unworn.body2.y_m, g.track_width_m, g.track_cell_m(), g.track_cells);
+  track_rows_.resize(static_cast<std::size_t>(g.arc_cells));
+  track_row_made_.assign(static_cast<std::size_t>(g.arc_cells), -1);
+}
+
+const Eigen::ArrayXd& WornRevolution::track_row_at_nodes(int arc_cell, const CamWearState& s) {
+  const std::size_t c = static_cast<std::size_t>(arc_cell);
+  Eigen::ArrayXd& row = track_rows_[c];
+  if (track_row_made_[c] == stats_.evaluations) return row;
+  const NodeWeights& w = track_nodes_;
+  row.resize(w.wl.size());
+  for (Eigen::Index i = 0; i < w.wl.size(); ++i)
+    row(i) = (1 - w.wl(i)) * s.cam_depth_m(arc_cell, w.l0(i)) + w.wl(i) * s.cam_depth_m(arc_cell, w.l1(i));
+  track_row_made_[c] = stats_.evaluations;
+  return row;
+}
+
+RevolutionDissipation WornRevolution::operator()(const CamWearState& s) {
+  if (s.cam_depth_m.rows() != grid_.arc_cells || s.cam_depth_m.cols() != grid_.track_cells ||
+      s.roller_depth_m.size() != grid_.roller_cells)
+    throw std::invalid_argument("WornRevolution: the state does not match the grid");
+  ++stats_.evaluations;
+  contact::Profiles worn = unworn_;
+  // the roller's worn profile: the same at every angle
+  {
+    const NodeWeights& w = roller_nodes_;
+    for (Eigen::Index i = 0; i < w.wl.size(); ++i)
+      worn.body1.z_m(i) += (1 - w.wl(i)) * s.roller_depth_m(w.l0(i)) + w.wl(i) * s.roller_depth_m(w.l1(i));
+  }
+  const double load_rtol = law_.normal_load_rtol;
+  Eigen::ArrayXd solved_track_z;  // the worn track profile of the last angle solved
+  std::size_t solved = 0;         // that angle
+  double previous_approach = 0;   // its approach at the last evaluation
+  RevolutionDissipation out;
+  out.reserve(angles_.size());
+  for (std::size_t i = 0; i < angles_.size(); ++i) {
+    Angle& a = angles_[i];
+    ++stats_.angles;
+    const Eigen::ArrayXd& r0 = track_row_at_nodes(a.a0, s);
+    const Eigen::ArrayXd& r1 = track_row_at_nodes(a.a1, s);
+    worn.body2.z_m = unworn_.body2.z_m + ((1 - a.wa) * r0 + a.wa * r1);
+
+    // shares the last solved angle's contact: every step since has had the same inputs, and the same track
+    bool share = options_.share_contacts && i > 0 && solved_track_z.size() == worn.body2.z_m.size();
+    for (std::size_t k = solved + 1; share && k <= i; ++k) share = angles_[k].same_inputs_as_previous;
+    if (share)
+      share = (worn.body2.z_m - solved_track_z).abs().maxCoeff() <= load_rtol * angles_[solved].approach_m;
+    if (share) {
+      AngleDissipation d = out[solved];
+      d.theta_rad = a.row.kin.theta_rad;
+      d.cam_arc_m = a.row.contact_arc_m;
+      out.push_back(std::move(d));
+      a.approach_m = angles_[solved].approach_m;
+      a.xi = angles_[solved].xi;
+      a.xi_known = angles_[solved].xi_known;
+      continue;
+    }
+
+    CreepLawSettings law = law_;
+    if (options_.warm_start) {
+      // this angle's last approach, scaled as the angle solved before it changed since the last evaluation
+      // (what wear did to every angle alike, e.g. the roller's wear)
+      law.initial_approach_m = a.approach_m;
+      if (a.approach_m > 0 && i > 0 && previous_approach > 0 && angles_[solved].approach_m > 0)
+        law.initial_approach_m = a.approach_m * (angles_[solved].approach_m / previous_approach);
+    }
+    AngleContact c;
+    try {
+      c = angle_contact(model_.bodies, worn, model_.geometry.roller_radius_m, a.row.kin, a.roller.normal_N, model_.mu,
+                        law);
+    } catch (const contact::NormalSolveError&) {
+      // a warm-started search that does not converge (F(delta) bends or jumps between the start and the
+      // root: semi_hertz.h) is run again from the solver's own first approach, as a cold evaluation would
+      if (!(law.initial_approach_m > 0)) throw;
+      ++stats_.cold_retries;
+      law.initial_approach_m = 0;
+      c = angle_contact(model_.bodies, worn, model_.geometry.roller_radius_m, a.row.kin, a.roller.normal_N, model_.mu,
+                        law);
+    }
+    ++stats_.contacts_solved;
+    stats_.approach_evaluations += c.normal.status.iterations;
+    previous_approach = a.approach_m;
+    a.approach_m = c.normal.patch.approach_m;
+    RollerAngle roller = a.roller;
+    const CreepageForForce xi = options_.warm_start && a.xi_known ? creepage_for_force(c, roller.tangential_N, a.xi)
+                                                                  : creepage_for_force(c, roller.tangential_N);
+    stats_.creep_evaluations += xi.evaluations;
+    if (xi.found) {
+      roller.xi = xi.xi;
+      roller.slip_speed_m_per_s = xi.xi * roller.speed_m_per_s;
+      a.xi = xi.xi;
+      a.xi_known = true;
+    }
+    out.push_back(angle_dissipation(c, a.row, roller, duration_s_));
+    solved_track_z = worn.body2.z_m;
+    solved = i;
+  }
+  return out;
+}
+
+}  // namespace cam

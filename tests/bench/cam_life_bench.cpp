@@ -1,0 +1,185 @@
+// The cost of a cam's worn revolution and of its life (docs/cam-follower.md §15). A plain program:
+//   cam_life_bench CASE.yaml [worn_depth_m = 8e-6] [repeats = 5] [life-only]
+//   cam_life_bench CASE.yaml life [variants = all [load_rtol]]   the case's whole life (its own stepping) with each of
+//                                                      the savings on or off: life, evaluations, CPU
+// 1. sets up the case's life (the unworn periodic revolution), CPU timed;
+// 2. wears the case to worn_depth_m (fixed-depth steps of 1e-6 m, the fast producer): a worn state;
+// 3. on that state, CPU per revolution (median of the repeats) of worn_revolution_dissipation (cold: every
+//    angle solved from scratch, the reference) and of WornRevolution with each saving on or off, a warm
+//    evaluation taken on the state scaled by 1 + 1e-3 after one on the state itself (as the life's next
+//    evaluation would), with the normal solves, F(delta) and creep-law evaluations per revolution and the
+//    largest difference of a strip power (of the largest strip power) and of the energy against the reference.
+#include <algorithm>
+#include <cstdio>
+#include <ctime>
+#include <string>
+#include <vector>
+
+#include <spdlog/spdlog.h>
+
+#include "cam/cam_case.h"
+#include "cam/cam_life.h"
+#include "cam/revolution_dissipation.h"
+#include "cam/worn_revolution.h"
+
+namespace {
+
+double cpu_s() { return static_cast<double>(std::clock()) / CLOCKS_PER_SEC; }
+
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  return v.empty() ? 0 : v[v.size() / 2];
+}
+
+struct Difference {
+  double power = 0, energy = 0;
+};
+Difference difference(const cam::RevolutionDissipation& a, const cam::RevolutionDissipation& ref) {
+  double pmax = 0, dmax = 0;
+  for (std::size_t k = 0; k < ref.size(); ++k) {
+    pmax = std::max(pmax, ref[k].power_W_per_m.abs().maxCoeff());
+    dmax = std::max(dmax, (a[k].power_W_per_m - ref[k].power_W_per_m).abs().maxCoeff());
+  }
+  const double e = cam::dissipation_totals(a).energy_J, e_ref = cam::dissipation_totals(ref).energy_J;
+  return {dmax / pmax, std::abs(e / e_ref - 1)};
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc < 2) {
+    std::fprintf(stderr, "usage: cam_life_bench CASE.yaml [worn_depth_m] [repeats]\n");
+    return 2;
+  }
+  spdlog::set_level(spdlog::level::warn);
+  const bool whole_life = argc > 2 && std::string(argv[2]) == "life";
+  const double worn_depth = argc > 2 && !whole_life ? std::stod(argv[2]) : 8e-6;
+  const int repeats = argc > 3 && !whole_life ? std::stoi(argv[3]) : 5;
+  const bool life_only = argc > 4 && std::string(argv[4]) == "life-only";  // the life's evaluator alone (to profile)
+  const cam::CamCase c = cam::read_cam_case(argv[1]);
+  if (!c.wear) {
+    std::fprintf(stderr, "%s: no cam.wear section\n", argv[1]);
+    return 2;
+  }
+  cam::RollerDynamicsSettings dynamics;
+  dynamics.law.grid = {c.solver.nx, c.solver.ny};
+  dynamics.periodicity_rtol = c.solver.periodic_rtol;
+  dynamics.max_revolutions = c.solver.max_revolutions;
+
+  double t0 = cpu_s();
+  const std::unique_ptr<cam::CamLifeSetup> setup = cam::set_up_cam_life(c.name, c.model, *c.wear, dynamics);
+  std::printf("set-up (unworn periodic revolution): %.3f s CPU\n", cpu_s() - t0);
+
+  if (whole_life) {
+    const std::string which = argc > 3 ? argv[3] : "all";
+    if (argc > 4) setup->dynamics.law.normal_load_rtol = std::stod(argv[4]);  // the worn solves' load tolerance
+    const struct {
+      const char* name;
+      cam::WornRevolutionOptions o;
+    } variants[] = {
+        {"neither", {false, false}}, {"shared", {true, false}}, {"warm", {false, true}}, {"both", {true, true}}};
+    for (const auto& v : variants) {
+      if (which != "all" && which != v.name) continue;
+      cam::WornRevolution ev(setup->model, setup->revolution, setup->motion.motion, setup->unworn_profiles,
+                             setup->life.grid, setup->dynamics.law, v.o);
+      const cam::DissipationOf producer = [&](const cam::CamWearState& st) {
+        if ((st.cam_depth_m == 0).all() && (st.roller_depth_m == 0).all()) return setup->unworn;
+        return ev(st);
+      };
+      t0 = cpu_s();
+      const cam::CamLifeResult life = cam::run_cam_life(setup->life, producer);
+      const double cpu = cpu_s() - t0;
+      const cam::WornRevolutionStats& st = ev.stats();
+      std::printf("%-8s life %.6g revolutions (%s), %ld steps, %ld evaluations, %.2f s CPU, %.1f ms/revolution; "
+                  "per revolution %.1f normal solves, %.1f F(delta), %.1f creep law; %ld cold retries\n",
+                  v.name, life.N, cam::to_string(life.ended_by).c_str(), life.steps, life.revolutions_solved, cpu,
+                  1e3 * cpu / std::max<long>(1, life.revolutions_solved),
+                  static_cast<double>(st.contacts_solved) / std::max<long>(1, st.evaluations),
+                  static_cast<double>(st.approach_evaluations) / std::max<long>(1, st.evaluations),
+                  static_cast<double>(st.creep_evaluations) / std::max<long>(1, st.evaluations), st.cold_retries);
+    }
+    return 0;
+  }
+
+  cam::CamLifeModel to_depth = setup->life;
+  to_depth.max_depth_m = worn_depth;
+  to_depth.max_lift_loss_m = 0;
+  to_depth.stepping.method = "fixed-depth";
+  to_depth.stepping.max_depth_step_m = 1e-6;
+  to_depth.snapshots_revolutions.clear();
+  t0 = cpu_s();
+  const cam::CamLifeResult worn = cam::run_cam_life(to_depth, setup->producer());
+  std::printf("worn to %.3g m in %ld steps (%ld revolutions solved): %.3f s CPU\n", worn.max_depth_m, worn.steps,
+              worn.revolutions_solved, cpu_s() - t0);
+  const cam::CamWearState& s = worn.state;
+  cam::CamWearState s2 = s;
+  s2.cam_depth_m *= 1 + 1e-3;
+  s2.roller_depth_m *= 1 + 1e-3;
+
+  {
+    // along the track: the largest change of a row from the one before, of the deepest wear
+    const Eigen::ArrayXXd& h = s.cam_depth_m;
+    const double hmax = h.abs().maxCoeff();
+    for (int i = 1; i < h.rows(); i += 30)
+      std::printf("arc cell %d (cam angle %.1f deg): row change %.2e of the deepest wear\n", i,
+                  setup->life.grid.cell_theta_rad.size() ? setup->life.grid.cell_theta_rad(i) * 57.29577951308232 : 0.0,
+                  (h.row(i) - h.row(i - 1)).abs().maxCoeff() / hmax);
+  }
+  std::vector<double> t;
+  cam::RevolutionDissipation ref, ref2;
+  for (int k = 0; k < (life_only ? 1 : std::max(1, repeats / 2)); ++k) {
+    t0 = cpu_s();
+    ref = cam::worn_revolution_dissipation(setup->model, setup->revolution, setup->motion.motion,
+                                           setup->unworn_profiles, setup->life.grid, s, setup->dynamics.law);
+    t.push_back(cpu_s() - t0);
+  }
+  ref2 = cam::worn_revolution_dissipation(setup->model, setup->revolution, setup->motion.motion, setup->unworn_profiles,
+                                          setup->life.grid, s2, setup->dynamics.law);
+  std::printf("%-34s %8.1f ms/revolution  (energy %.9g J)\n", "reference (cold, every angle)", 1e3 * median(t),
+              cam::dissipation_totals(ref).energy_J);
+
+  const struct {
+    const char* name;
+    cam::WornRevolutionOptions o;
+  } variants[] = {{"neither", {false, false}}, {"shared contacts", {true, false}}, {"warm starts", {false, true}},
+                  {"both (the life's)", {true, true}}};
+  for (const auto& v : variants) {
+    if (life_only && !(v.o.share_contacts && v.o.warm_start)) continue;
+    cam::WornRevolution ev(setup->model, setup->revolution, setup->motion.motion, setup->unworn_profiles,
+                           setup->life.grid, setup->dynamics.law, v.o);
+    std::vector<double> tw;
+    Difference d1, d2;
+    cam::WornRevolutionStats before;
+    for (int k = 0; k < repeats; ++k) {
+      const cam::RevolutionDissipation a = ev(s);  // the first on s is cold for warm starts
+      d1 = difference(a, ref);
+      before = ev.stats();
+      t0 = cpu_s();
+      const cam::RevolutionDissipation b = ev(s2);
+      tw.push_back(cpu_s() - t0);
+      d2 = difference(b, ref2);
+    }
+    const cam::WornRevolutionStats& st = ev.stats();
+    if (v.o.share_contacts) std::printf("angle steps with the inputs of the step before: %ld\n", st.same_input_angles);
+    std::printf("%-34s %8.1f ms/revolution  solves %ld, F(delta) %ld, creep law %ld per revolution;"
+                " against the reference: power %.2e, energy %.2e (on s), %.2e, %.2e (on s2)\n",
+                v.name, 1e3 * median(tw), st.contacts_solved - before.contacts_solved,
+                st.approach_evaluations - before.approach_evaluations, st.creep_evaluations - before.creep_evaluations,
+                d1.power, d1.energy, d2.power, d2.energy);
+  }
+  {
+    // the warm start's floor: the same state twice, each angle's search starting at its own root
+    cam::WornRevolution ev(setup->model, setup->revolution, setup->motion.motion, setup->unworn_profiles,
+                           setup->life.grid, setup->dynamics.law, {false, true});
+    ev(s);
+    const cam::WornRevolutionStats before = ev.stats();
+    t0 = cpu_s();
+    ev(s);
+    const double t_same = cpu_s() - t0;
+    std::printf("%-34s %8.1f ms/revolution  solves %ld, F(delta) %ld, creep law %ld per revolution\n",
+                "warm, the same state again", 1e3 * t_same, ev.stats().contacts_solved - before.contacts_solved,
+                ev.stats().approach_evaluations - before.approach_evaluations,
+                ev.stats().creep_evaluations - before.creep_evaluations);
+  }
+  return 0;
+}
