@@ -71,6 +71,10 @@ struct ExactSolution {
   SolveStatus status;
   int stick_iterations = 0;       // GMRES iterations of the all-stick start
   int active_set_iterations = 0;  // after it (0: the all-stick solution was admissible)
+  int products = 0;               // FFT products A tau over the whole solve (the main cost)
+  Eigen::ArrayXXd dtau_x_Pa, dtau_y_Pa;  // ((nx + 1) x ny) the change of the tractions from the start a
+                                         // warm-started solve was given (empty without one): the next
+                                         // rolling step's first guess of its own change
 };
 
 // Steady rolling on the patch's grid. G_Pa, nu: combined constants (combined_shear_modulus_Pa,

@@ -85,6 +85,7 @@ void BM_ExactRollingStep(benchmark::State& state) {
   state.counters["dF_rel"] = std::abs(s.fields.Fx_N - ref.fields.Fx_N) / std::abs(ref.fields.Fx_N);
   state.counters["gmres"] = s.status.iterations;
   state.counters["newton"] = s.active_set_iterations;
+  state.counters["products"] = s.products;
   state.counters["converged"] = s.status.converged() && ref.status.converged() ? 1 : 0;
 }
 
