@@ -21,6 +21,7 @@
 #include "lib/normal/hertz.h"
 #include "lib/numeric.h"
 #include "lib/patch.h"
+#include "lib/tangential/kalker.h"
 #include "tests/log_capture.h"
 
 namespace contact {
@@ -323,6 +324,38 @@ TEST(ExactRolling, StartFromRestBuildsUpAsContactDoes) {
       }
   }
   EXPECT_LT(last / steady.fields.Fx_N, 1.0);
+}
+
+// Reference: Coulomb's law cell by cell (the solve's own fixed-point residual) and mu Fn. A long contact
+// (a/b = 3, the ellipse of ellipse_patch on 40 x 40) started from rest at 90 % of saturation (xi from
+// the simplified theory's closed form |F|/(mu N) = 1 - (1 - e)^3, e = G a b C11 xi / (3 mu N)): the
+// first step leaves tractions of about a tenth of mu p0 and a few slip cells; at the second every cell
+// slips. Measured against a residual scaled by the iterate's own tractions, that start looked eight
+// times off, the backtracking accepted a Newton step that reversed the traction of a cell, and the
+// iteration then cycled between reversals at a residual of exactly 2 (200 Newton iterations, not
+// converged). The residual is scaled by the larger of the iterate's and the cells' own solutions, and
+// the first Newton step starts on the previous step's stick and slip sets (docs/exact-theory.md §3).
+TEST(ExactRolling, LongContactNearSaturationStartsUpFromRest) {
+  const ElasticPair pair = paper_steel();
+  const double G = combined_shear_modulus_Pa(pair), nu = combined_poisson(pair), mu = 0.3;
+  const ContactPatch p = ellipse_patch(3, 40);
+  const KalkerCoefficients C = kalker_coefficients(p.a_m, p.b_m, nu);
+  constexpr double kSaturation = 0.9;
+  const double e = 1 - std::cbrt(1 - kSaturation);
+  const double xi = 3 * mu * p.normal_load_N * e / (G * p.a_m * p.b_m * C.C11);
+  const double load = p.pressure_Pa.sum() * p.grid.dx_m * p.grid.dy_m;
+  // a converged step takes a few Newton iterations (2-4 measured); the cycle took all 200
+  constexpr int kNewtonBound = 20;
+  ExactSolution s;
+  double last = 0;
+  for (int k = 1; k <= 3; ++k) {
+    s = solve_exact_rolling_step(p, G, nu, {xi, 0, 0}, mu, 1.0, k == 1 ? nullptr : &s, exact_run_options());
+    ASSERT_TRUE(s.status.converged()) << "step " << k << ": " << s.status.message;
+    EXPECT_LE(s.active_set_iterations, kNewtonBound) << "step " << k;
+    EXPECT_LT(s.fields.Fx_N, last) << "step " << k << ": the force builds up";
+    EXPECT_LE(std::abs(s.fields.Fx_N), mu * load * (1 + 1e-9)) << "step " << k;
+    last = s.fields.Fx_N;
+  }
 }
 
 // Reference: CONTACT's start-up of a circle (tests/data/exact: a sphere R 10 mm on a flat, steel,
