@@ -19,7 +19,7 @@
 // stick and slip sets, each step one preconditioned GMRES solve.
 // Convergence is judged on the fixed-point residual: with u = A tau fresh from a convolution, each
 // contact cell's own Coulomb problem (all other tractions frozen) is solved, and
-//   residual = max_i |tau_i(cell's own solve) - tau_i| / max_i |tau_i|,
+//   residual = max_i |tau_i(cell's own solve) - tau_i| / max_i max(|tau_i|, |tau_i(cell's own solve)|),
 // converged when residual <= tol; at full stick, on GMRES's relative residual <= stick_tol. The
 // status carries the number and the GMRES iterations (one FFT product each).
 #pragma once
