@@ -104,8 +104,13 @@ constexpr int kGmresRestart = 60;
 // against a margin of 5 % leaves room for a condition up to 50)
 constexpr double kLooseStickTol = 1e-3;
 constexpr double kLooseStickMargin = 0.05;
+// a start traction above the bound by no more than this share is the previous solve's clipped one
+// (|tau| = g up to rounding): kept as it is, so that the previous step's u = A tau still holds
+constexpr double kBoundRounding = 1e-12;
 // backtracking steps of the Newton iteration before a step that raised the residual is accepted
 constexpr int kMaxHalvings = 4;
+
+double sq(double v) { return v * v; }
 
 double F_a(double X, double Y) { return Y != 0 ? Y * std::asinh(X / std::abs(Y)) : 0.0; }
 double F_b(double X, double Y) { return X != 0 ? X * std::asinh(Y / std::abs(X)) : 0.0; }
@@ -327,7 +332,10 @@ ExactSolution solve_exact(const ContactPatch& patch, double G_Pa, double nu, con
                           double speed_m_per_s, const ExactOptions& opt, const Eigen::ArrayXXd* prev_ux,
                           const Eigen::ArrayXXd* prev_uy, const Eigen::ArrayXXd* start_tx,
                           const Eigen::ArrayXXd* start_ty, int prev_offset = 1, double creep_scale = 1.0,
-                          const char* mode_name = nullptr, const Eigen::ArrayXXi* start_state = nullptr) {
+                          const char* mode_name = nullptr, const Eigen::ArrayXXi* start_state = nullptr,
+                          const Eigen::ArrayXXd* start_ux = nullptr, const Eigen::ArrayXXd* start_uy = nullptr,
+                          const Eigen::ArrayXXd* guess_x = nullptr, const Eigen::ArrayXXd* guess_y = nullptr,
+                          bool warn_unconverged = true) {
   const bool transient = prev_ux != nullptr;
   const char* const mode = mode_name                 ? mode_name
                            : !transient             ? "exact steady"
@@ -496,9 +504,17 @@ ExactSolution solve_exact(const ContactPatch& patch, double G_Pa, double nu, con
     }
   };
   int gmres_total = 0;
-  Eigen::VectorXd xm, zv, mz;
+  int products = 0;  // FFT products A tau
+  // u = A tau of the current (tx, ty) is in (ux, uy): kept by linearity through the Newton steps
+  // (the product of the right-hand side's tractions plus the Krylov vectors' products combined as
+  // the increment is), so that the residual of a Newton iterate costs no product of its own
+  bool u_current = false;
+  Eigen::ArrayXXd u0x, u0y, uzx, uzy;
+  std::vector<Eigen::ArrayXXd> Ukx, Uky;  // the u of each Krylov vector's traction
+  Eigen::MatrixXd Vbuf;                   // GMRES's basis, rows for up to 2 nc unknowns
   // one Newton step from (tx, ty): solves for the increment to rel_tol; returns the relative residual
-  auto newton_step = [&](double rel_tol) {
+  Eigen::ArrayXXd ugx, ugy;
+  auto newton_step = [&](double rel_tol, const Eigen::ArrayXXd* gx = nullptr, const Eigen::ArrayXXd* gy = nullptr) {
     index_unknowns();
     const int n = offset[nc];
     // the current tractions in these unknowns: the fixed part -g e on slip cells
@@ -520,20 +536,58 @@ ExactSolution solve_exact(const ContactPatch& patch, double G_Pa, double nu, con
     fy0 += py;
     Eigen::VectorXd b(n), w(n), r(n), v(n), xi(n);
     rows(fx0, fy0, nullptr, true, b);  // F(x0) without the |s|/g term of the slip rows
+    ++products;
+    u0x = ux;
+    u0y = uy;
+    uzx.setZero(nxe, ny);
+    uzy.setZero(nxe, ny);
     for (int c = 0; c < nc; ++c)
       if (slip[c]) b(offset[c]) += sabs[c] / Gb[cells[c]] * x0(offset[c]);
     b = -b;
     const double b_norm = b.norm();
     Eigen::VectorXd z = Eigen::VectorXd::Zero(n);
+    // a guessed direction of the increment (the previous step's change of the tractions, taken along
+    // the current unknowns): its multiple that best reduces the residual starts the increment
+    Eigen::VectorXd x_guess;
+    if (gx && n > 0 && b_norm > 0) {
+      Eigen::VectorXd xg(n), q(n);
+      for (int c = 0; c < nc; ++c) {
+        const int qq = cells[c], o = offset[c];
+        const double gxq = gx->data()[qq], gyq = gy->data()[qq];
+        if (slip[c]) {
+          xg(o) = -ey[c] * gxq + ex[c] * gyq;
+        } else {
+          xg(o) = gxq;
+          xg(o + 1) = gyq;
+        }
+      }
+      to_traction(xg);
+      rows(px, py, &xg, false, q);
+      ++products;
+      const double qq = q.squaredNorm(), alpha = qq > 0 ? q.dot(b) / qq : 0.0;
+      if (std::isfinite(alpha) && alpha != 0) {
+        b -= alpha * q;
+        x_guess = alpha * xg;
+        u0x += alpha * ux;
+        u0y += alpha * uy;
+      }
+    }
     auto matvec = [&](const Eigen::VectorXd& zz, Eigen::VectorXd& y) {
       precondition(zz, xi);
       to_traction(xi);
       rows(px, py, &xi, false, y);
+      ++products;
     };
     double rel = 0;
     if (n > 0 && b_norm > 0) {
       const int m = kGmresRestart;
-      Eigen::MatrixXd Vk(n, m + 1), Hm = Eigen::MatrixXd::Zero(m + 1, m);
+      if (Vbuf.rows() < n) Vbuf.resize(2 * nc, m + 1);
+      auto Vk = Vbuf.topRows(n);
+      if (static_cast<int>(Ukx.size()) < m + 1) {
+        Ukx.resize(static_cast<std::size_t>(m) + 1);
+        Uky.resize(static_cast<std::size_t>(m) + 1);
+      }
+      Eigen::MatrixXd Hm = Eigen::MatrixXd::Zero(m + 1, m);
       Eigen::VectorXd cs(m), sn(m), e(m + 1);
       bool zero = true;  // z = 0: the residual is b, no product needed
       for (;;) {
@@ -542,6 +596,8 @@ ExactSolution solve_exact(const ContactPatch& patch, double G_Pa, double nu, con
         } else {
           matvec(z, w);
           r = b - w;
+          uzx = ux;  // the increment's u, measured
+          uzy = uy;
         }
         const double beta = r.norm();
         rel = beta / std::max(b_norm, 1e-300);
@@ -555,6 +611,8 @@ ExactSolution solve_exact(const ContactPatch& patch, double G_Pa, double nu, con
           v = Vk.col(k);
           matvec(v, w);
           ++gmres_total;
+          Ukx[k] = ux;
+          Uky[k] = uy;
           for (int i = 0; i <= k; ++i) {  // modified Gram-Schmidt
             Hm(i, k) = Vk.col(i).dot(w);
             w -= Hm(i, k) * Vk.col(i);
@@ -578,6 +636,10 @@ ExactSolution solve_exact(const ContactPatch& patch, double G_Pa, double nu, con
         }
         const Eigen::VectorXd yk = Hm.topLeftCorner(k, k).triangularView<Eigen::Upper>().solve(e.head(k));
         z += Vk.leftCols(k) * yk;
+        for (int i = 0; i < k; ++i) {
+          uzx += yk(i) * Ukx[i];
+          uzy += yk(i) * Uky[i];
+        }
         zero = false;
         // the cycle's own residual estimate (exact in exact arithmetic) met the tolerance: done, without
         // the product that would measure it again (the Newton iteration measures its own residual)
@@ -589,7 +651,11 @@ ExactSolution solve_exact(const ContactPatch& patch, double G_Pa, double nu, con
     }
     precondition(z, xi);
     xi += x0;
+    if (x_guess.size() == n) xi += x_guess;
     to_traction(xi);
+    ux = u0x + uzx;
+    uy = u0y + uzy;
+    u_current = true;
     for (int c = 0; c < nc; ++c) {
       const int q = cells[c];
       TX[q] = px.data()[q] + (slip[c] ? -Gb[q] * ex[c] : 0.0);
@@ -602,7 +668,7 @@ ExactSolution solve_exact(const ContactPatch& patch, double G_Pa, double nu, con
   // stick_tol unless the tractions already exceed the bound by more than that solve's error
   auto exceeds_bound = [&](double margin) {
     for (const int q : cells)
-      if (std::hypot(TX[q], TY[q]) > Gb[q] * (1 + margin)) return true;
+      if (TX[q] * TX[q] + TY[q] * TY[q] > sq(Gb[q] * (1 + margin))) return true;
     return false;
   };
   double rel = 0;
@@ -611,6 +677,23 @@ ExactSolution solve_exact(const ContactPatch& patch, double G_Pa, double nu, con
     for (const int q : cells) {
       TX[q] = (*start_tx)(q % nxe, q / nxe);
       TY[q] = (*start_ty)(q % nxe, q / nxe);
+    }
+    // their product given (start_ux: A of the start tractions, the previous step's u) holds when
+    // every traction of the start is on a cell in contact now (none dropped)
+    if (start_ux && start_uy && start_ux->rows() == nxe && start_ux->cols() == ny && start_uy->rows() == nxe &&
+        start_uy->cols() == ny) {
+      bool kept = true;
+      for (int j = 0; j < ny && kept; ++j)
+        for (int i = 0; i < nx; ++i)
+          if (((*start_tx)(i, j) != 0 || (*start_ty)(i, j) != 0) && !(patch.pressure_Pa(i, j) > 0)) {
+            kept = false;
+            break;
+          }
+      if (kept) {
+        ux = *start_ux;
+        uy = *start_uy;
+        u_current = true;
+      }
     }
   } else {
     rel = newton_step(kLooseStickTol);
@@ -627,7 +710,10 @@ ExactSolution solve_exact(const ContactPatch& patch, double G_Pa, double nu, con
                                  opt.stick_tol, gmres_total);
     residual = rel;
   } else if (admissible) {
-    A.apply(tx, ty, ux, uy);
+    if (!u_current) {
+      A.apply(tx, ty, ux, uy);
+      ++products;
+    }
     for (const int q : cells) state.data()[q] = 1;
     status.kind = SolveStatus::Kind::Converged;
     status.message = fmt::format("full stick: GMRES relative residual {:.2g} <= {:.3g} after {} iterations", rel,
@@ -639,19 +725,24 @@ ExactSolution solve_exact(const ContactPatch& patch, double G_Pa, double nu, con
     // tractions and directions; then one Newton step.
     for (const int q : cells) {  // the stick tractions clipped to the bound start it
       const double t = std::hypot(TX[q], TY[q]);
-      if (t > Gb[q]) {
+      if (t > Gb[q] * (1 + kBoundRounding)) {
         TX[q] *= Gb[q] / t;
         TY[q] *= Gb[q] / t;
+        u_current = false;
       }
     }
     // backtracking: a Newton step that raised the residual is halved towards the last accepted
     // tractions, up to kMaxHalvings times (semi-smooth Newton can cycle between active sets)
-    Eigen::ArrayXXd acc_x = tx, acc_y = ty, sol_x = tx, sol_y = ty;
+    Eigen::ArrayXXd acc_x = tx, acc_y = ty, sol_x = tx, sol_y = ty, acc_ux, acc_uy;
     const bool use_start_state = start_tx && start_state && start_state->rows() == nx && start_state->cols() == ny;
     double accepted_residual = std::numeric_limits<double>::infinity();
     int halvings = 0;
     for (;; ++outer) {
-      A.apply(tx, ty, ux, uy);
+      if (!u_current) {
+        A.apply(tx, ty, ux, uy);
+        ++products;
+        u_current = true;
+      }
       double change = 0, scale = 0;
       for (int c = 0; c < nc; ++c) {
         const int q = cells[c];
@@ -660,15 +751,16 @@ ExactSolution solve_exact(const ContactPatch& patch, double G_Pa, double nu, con
         double sx, sy;
         const bool stick = element_solve(rx, ry, bx, by, Gb[q], sx, sy);
         state.data()[q] = stick ? 1 : 2;
-        change = std::max(change, std::hypot(sx - TX[q], sy - TY[q]));
-        scale = std::max({scale, std::hypot(TX[q], TY[q]), std::hypot(sx, sy)});  // a zero start: the solution's
+        // squares here, the roots after the loop
+        change = std::max(change, sq(sx - TX[q]) + sq(sy - TY[q]));
+        scale = std::max({scale, TX[q] * TX[q] + TY[q] * TY[q], sx * sx + sy * sy});  // a zero start: the solution's
         slip[c] = !stick;
         sol_x.data()[q] = sx;
         sol_y.data()[q] = sy;
         if (!stick) {  // the slip of the element solution: s = r + B tau, along -tau
           const double vx = rx + bx * sx, vy = ry + by * sy;
-          sabs[c] = std::hypot(vx, vy);
-          const double en = std::hypot(sx, sy);
+          sabs[c] = std::sqrt(vx * vx + vy * vy);
+          const double en = std::sqrt(sx * sx + sy * sy);
           ex[c] = -sx / en;
           ey[c] = -sy / en;
         }
@@ -690,6 +782,8 @@ ExactSolution solve_exact(const ContactPatch& patch, double G_Pa, double nu, con
           }
         }
       }
+      change = std::sqrt(change);
+      scale = std::sqrt(scale);
       residual = scale > 0 ? change / scale : change;
       if (!std::isfinite(residual)) {
         status.kind = SolveStatus::Kind::Failed;
@@ -712,18 +806,26 @@ ExactSolution solve_exact(const ContactPatch& patch, double G_Pa, double nu, con
         ++halvings;
         tx = 0.5 * (tx + acc_x);
         ty = 0.5 * (ty + acc_y);
+        ux = 0.5 * (ux + acc_ux);  // A is linear: the halved tractions' u
+        uy = 0.5 * (uy + acc_uy);
         continue;
       }
       halvings = 0;
       accepted_residual = residual;
       acc_x = tx;
       acc_y = ty;
+      acc_ux = ux;
+      acc_uy = uy;
       for (int c = 0; c < nc; ++c)
         if (slip[c]) {
           TX[cells[c]] = sol_x.data()[cells[c]];
           TY[cells[c]] = sol_y.data()[cells[c]];
         }
-      newton_step(std::max(opt.stick_tol, 1e-2 * residual));
+      if (outer == 0 && guess_x && guess_x->rows() == nxe && guess_x->cols() == ny && guess_y->rows() == nxe &&
+          guess_y->cols() == ny)
+        newton_step(std::max(opt.stick_tol, 1e-2 * residual), guess_x, guess_y);
+      else
+        newton_step(std::max(opt.stick_tol, 1e-2 * residual));
     }
     // the iterate obeys the bound to the tolerance only (a slip cell's Newton traction is
     // -g e + tau_t t, |tau| = g sqrt(1 + (tau_t/g)^2)): onto the bound, a change within the tolerance
@@ -732,10 +834,15 @@ ExactSolution solve_exact(const ContactPatch& patch, double G_Pa, double nu, con
       if (t > Gb[q]) {
         TX[q] *= Gb[q] / t;
         TY[q] *= Gb[q] / t;
+        u_current = false;
       }
     }
-    A.apply(tx, ty, ux, uy);
+    if (!u_current) {
+      A.apply(tx, ty, ux, uy);
+      ++products;
+    }
   }
+  out.products = products;
   out.active_set_iterations = outer;
   status.iterations = gmres_total;
   status.residual = residual;
@@ -778,10 +885,17 @@ ExactSolution solve_exact(const ContactPatch& patch, double G_Pa, double nu, con
   s.creep_work_W = creep_scale * V * (xi_Fx + creepages.eta * s.Fy_N + creepages.phi_per_m * s.Mz_N_m);
   out.u_x_m = ux;
   out.u_y_m = uy;
+  if (start_tx) {
+    out.dtau_x_Pa = Eigen::ArrayXXd::Zero(nxe, ny);
+    out.dtau_y_Pa = out.dtau_x_Pa;
+    out.dtau_x_Pa.topRows(nx) = s.tau_x_Pa - *start_tx;
+    out.dtau_y_Pa.topRows(nx) = s.tau_y_Pa - *start_ty;
+  }
 
   spdlog::debug("{} ({} x {}): {}; Fx {:.6e} N, Fy {:.6e} N, Mz {:.6e} N m, P {:.6e} W, stick {:.3f}", mode, nx, ny,
                 status.message, s.Fx_N, s.Fy_N, s.Mz_N_m, s.power_W, s.stick_fraction);
-  if (!status.converged()) spdlog::warn("{} ({} x {}): not converged: {}", mode, nx, ny, status.message);
+  if (!status.converged() && warn_unconverged)
+    spdlog::warn("{} ({} x {}): not converged: {}", mode, nx, ny, status.message);
   return out;
 }
 
@@ -816,6 +930,40 @@ ContactPatch coarsened_along_x(const ContactPatch& p) {
   return c;
 }
 
+// The 3-D steady solve from this many cells a side on (both even), when it has not converged within
+// kColdNewtonBudget Newton iterations from the clipped all-stick tractions, starts again from its
+// solution on half the cells each way. From the all-stick start the Newton iteration crawls near
+// saturation as in plane strain: pure xi at 90 % of saturation on a/b = 3 took 33, 30, 125 Newton
+// iterations at 40, 80, 160 cells a side (12 s at 160; docs/exact-theory.md §3). Where the cold
+// start converges quickly (the paper's contact: 3 to 5) it is kept: from the half grid's solution
+// the paper's 80 x 80 took 8.
+constexpr int kNestedCells = 40;
+constexpr int kColdNewtonBudget = 12;
+
+// the patch on half the cells each way (2 x 2 cells merged: their mean pressure; a strip pair's mean
+// Heathcote offset)
+ContactPatch coarsened(const ContactPatch& p) {
+  ContactPatch c = coarsened_along_x(p);
+  const Grid& g = p.grid;
+  const int ny = g.ny / 2;
+  c.grid.ny = ny;
+  c.grid.dy_m = 2 * g.dy_m;
+  c.grid.y_m = Eigen::ArrayXd(ny);
+  Eigen::ArrayXXd pr(c.grid.nx, ny);
+  for (int j = 0; j < ny; ++j) {
+    c.grid.y_m(j) = 0.5 * (g.y_m(2 * j) + g.y_m(2 * j + 1));
+    pr.col(j) = 0.5 * (c.pressure_Pa.col(2 * j) + c.pressure_Pa.col(2 * j + 1));
+  }
+  c.pressure_Pa = pr;
+  if (p.strip_xi_offset.size() == g.ny) {
+    c.strip_xi_offset = Eigen::ArrayXd(ny);
+    for (int j = 0; j < ny; ++j) c.strip_xi_offset(j) = 0.5 * (p.strip_xi_offset(2 * j) + p.strip_xi_offset(2 * j + 1));
+  }
+  c.half_length_m.resize(0);
+  c.strip_peak_Pa.resize(0);
+  return c;
+}
+
 // a coarse field (nx/2 x ny) on the fine cells, linear between the coarse cell centres (constant
 // beyond the first and last)
 Eigen::ArrayXXd prolonged_along_x(const Eigen::ArrayXXd& c, int nx) {
@@ -832,7 +980,34 @@ Eigen::ArrayXXd prolonged_along_x(const Eigen::ArrayXXd& c, int nx) {
 
 ExactSolution solve_exact_steady(const ContactPatch& patch, double G_Pa, double nu, const Creepages& creepages,
                                  double mu, double speed_m_per_s, const ExactOptions& opt) {
-  const int nx = patch.grid.nx;
+  const int nx = patch.grid.nx, ny = patch.grid.ny;
+  if (!opt.plane_strain && nx >= kNestedCells && ny >= kNestedCells && nx % 2 == 0 && ny % 2 == 0 &&
+      opt.max_iterations > kColdNewtonBudget && patch.pressure_Pa.rows() == nx && patch.pressure_Pa.cols() == ny &&
+      patch.grid.x_m.size() == nx && patch.grid.y_m.size() == ny && patch.pressure_Pa.allFinite() &&
+      (patch.pressure_Pa >= 0).all() && (patch.strip_xi_offset.size() == 0 || patch.strip_xi_offset.size() == ny)) {
+    ExactOptions cold = opt;
+    cold.max_iterations = kColdNewtonBudget;
+    ExactSolution first = solve_exact(patch, G_Pa, nu, creepages, mu, speed_m_per_s, cold, nullptr, nullptr, nullptr,
+                                      nullptr, 1, 1.0, nullptr, nullptr, nullptr, nullptr, nullptr, nullptr, false);
+    // converged, or stopped by the GMRES budget or a failure (which the restart would not mend)
+    if (first.status.converged() || first.active_set_iterations < kColdNewtonBudget) {
+      if (!first.status.converged())
+        spdlog::warn("exact steady ({} x {}): not converged: {}", nx, ny, first.status.message);
+      return first;
+    }
+    const ExactSolution coarse = solve_exact_steady(coarsened(patch), G_Pa, nu, creepages, mu, speed_m_per_s, opt);
+    if (coarse.status.converged()) {
+      // prolonged along x, then along y (the transposed field along its rows)
+      const Eigen::ArrayXXd tx =
+          prolonged_along_x(prolonged_along_x(coarse.fields.tau_x_Pa, nx).transpose().eval(), ny).transpose();
+      const Eigen::ArrayXXd ty =
+          prolonged_along_x(prolonged_along_x(coarse.fields.tau_y_Pa, nx).transpose().eval(), ny).transpose();
+      ExactSolution s = solve_exact(patch, G_Pa, nu, creepages, mu, speed_m_per_s, opt, nullptr, nullptr, &tx, &ty);
+      s.status.message += fmt::format(" (from the {} x {} solution after {} Newton iterations from all stick)", nx / 2,
+                                      ny / 2, kColdNewtonBudget);
+      return s;
+    }
+  }
   if (opt.plane_strain && nx >= kNestedPlaneStrainCells && nx % 2 == 0 && patch.pressure_Pa.rows() == nx &&
       patch.grid.x_m.size() == nx) {
     const ExactSolution coarse =
@@ -856,7 +1031,8 @@ ExactSolution solve_exact_rolling_step(const ContactPatch& patch, double G_Pa, d
     return solve_exact(patch, G_Pa, nu, creepages, mu, speed_m_per_s, opt, &rest, &rest, nullptr, nullptr);
   }
   return solve_exact(patch, G_Pa, nu, creepages, mu, speed_m_per_s, opt, &previous->u_x_m, &previous->u_y_m,
-                     &previous->fields.tau_x_Pa, &previous->fields.tau_y_Pa, 1, 1.0, nullptr, &previous->fields.state);
+                     &previous->fields.tau_x_Pa, &previous->fields.tau_y_Pa, 1, 1.0, nullptr, &previous->fields.state,
+                     &previous->u_x_m, &previous->u_y_m, &previous->dtau_x_Pa, &previous->dtau_y_Pa);
 }
 
 ExactSolution solve_exact_shift(const ContactPatch& patch, double G_Pa, double nu, double shift_x_m, double shift_y_m,
@@ -872,7 +1048,7 @@ ExactSolution solve_exact_shift(const ContactPatch& patch, double G_Pa, double n
     return solve_exact(patch, G_Pa, nu, c, mu, V, opt, &rest, &rest, nullptr, nullptr, 0);
   }
   return solve_exact(patch, G_Pa, nu, c, mu, V, opt, &previous->u_x_m, &previous->u_y_m, &previous->fields.tau_x_Pa,
-                     &previous->fields.tau_y_Pa, 0);
+                     &previous->fields.tau_y_Pa, 0, 1.0, nullptr, nullptr, &previous->u_x_m, &previous->u_y_m);
 }
 
 
@@ -910,7 +1086,8 @@ ExactShiftForce solve_exact_shift_force(const ContactPatch& patch, double G_Pa, 
     const ExactSolution* start = last ? &*last : previous;
     ExactSolution e = solve_exact(patch, G_Pa, nu, Creepages{sx / dx, sy / dx, 0}, mu, dx / dt_s, opt, &prev_ux,
                                   &prev_uy, start ? &start->fields.tau_x_Pa : nullptr,
-                                  start ? &start->fields.tau_y_Pa : nullptr, 0, 1.0, "exact shift");
+                                  start ? &start->fields.tau_y_Pa : nullptr, 0, 1.0, "exact shift", nullptr,
+                                  start ? &start->u_x_m : nullptr, start ? &start->u_y_m : nullptr);
     ++best.shift_solves;
     if (!e.status.converged() && !failed) failed = e.status;
     const double err = std::hypot(e.fields.Fx_N - Fx_N, e.fields.Fy_N - Fy_N);
@@ -1027,7 +1204,8 @@ ExactSolution solve_exact_roll(const ContactPatch& patch, double G_Pa, double nu
     return solve_exact(patch, G_Pa, nu, creepages, mu, dx / dt_s, opt, &px, &py, nullptr, nullptr, 0, theta,
                        "exact rolling step");
   return solve_exact(patch, G_Pa, nu, creepages, mu, dx / dt_s, opt, &px, &py, &previous->fields.tau_x_Pa,
-                     &previous->fields.tau_y_Pa, 0, theta, "exact rolling step", &previous->fields.state);
+                     &previous->fields.tau_y_Pa, 0, theta, "exact rolling step", &previous->fields.state,
+                     &previous->u_x_m, &previous->u_y_m, &previous->dtau_x_Pa, &previous->dtau_y_Pa);
 }
 
 namespace {

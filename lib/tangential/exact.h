@@ -19,7 +19,7 @@
 // stick and slip sets, each step one preconditioned GMRES solve.
 // Convergence is judged on the fixed-point residual: with u = A tau fresh from a convolution, each
 // contact cell's own Coulomb problem (all other tractions frozen) is solved, and
-//   residual = max_i |tau_i(cell's own solve) - tau_i| / max_i |tau_i|,
+//   residual = max_i |tau_i(cell's own solve) - tau_i| / max_i max(|tau_i|, |tau_i(cell's own solve)|),
 // converged when residual <= tol; at full stick, on GMRES's relative residual <= stick_tol. The
 // status carries the number and the GMRES iterations (one FFT product each).
 #pragma once
@@ -71,6 +71,10 @@ struct ExactSolution {
   SolveStatus status;
   int stick_iterations = 0;       // GMRES iterations of the all-stick start
   int active_set_iterations = 0;  // after it (0: the all-stick solution was admissible)
+  int products = 0;               // FFT products A tau over the whole solve (the main cost)
+  Eigen::ArrayXXd dtau_x_Pa, dtau_y_Pa;  // ((nx + 1) x ny) the change of the tractions from the start a
+                                         // warm-started solve was given (empty without one): the next
+                                         // rolling step's first guess of its own change
 };
 
 // Steady rolling on the patch's grid. G_Pa, nu: combined constants (combined_shear_modulus_Pa,
@@ -78,7 +82,9 @@ struct ExactSolution {
 // A patch with a cell of non-finite or negative pressure, G <= 0, nu outside [0, 0.5), mu <= 0,
 // non-finite creepages or options out of range: std::invalid_argument.
 // An unconverged solve is returned with its status (MaxIterations or Failed) and a spdlog::warn;
-// the caller decides.
+// the caller decides. From 40 x 40 cells on (both even), a solve not converged within 12 Newton
+// iterations from the all-stick start starts again from its own solution on half the cells each way
+// (grid sequencing, docs/exact-theory.md §3); its status then counts the fine grid's last solve.
 ExactSolution solve_exact_steady(const ContactPatch& patch, double G_Pa, double nu, const Creepages& creepages,
                                  double mu, double speed_m_per_s, const ExactOptions& opt = {});
 

@@ -59,16 +59,12 @@ void BM_ExactSteady(benchmark::State& state) { exact_steady(state, paper().mu); 
 void BM_ExactSteadyFullStick(benchmark::State& state) { exact_steady(state, 1e4); }
 
 // one rolling step by dq = dx at q = 2a after a start from rest (the state reached untimed), warm
-// started from the previous step as a transient run does
-void BM_ExactRollingStep(benchmark::State& state) {
+// started from the previous step as a transient run does; the steps before it with the same options
+void rolling_step(benchmark::State& state, const ExactOptions& o) {
   const int n = static_cast<int>(state.range(0));
   const auto& c = paper();
   const ContactPatch patch = solve_normal_hertz(c.bodies, c.pair, c.normal_load_N, {n, n});
   const double G = combined_shear_modulus_Pa(c.pair), nu = combined_poisson(c.pair);
-  ExactOptions o;
-  o.tol = std::pow(10.0, -static_cast<double>(state.range(1)));
-  // the linear solves' floor: 10^-range(2) when given, else the tolerance
-  o.stick_tol = state.range(2) > 0 ? std::pow(10.0, -static_cast<double>(state.range(2))) : o.tol;
   ExactSolution prev;
   for (int k = 1; k < n; ++k)  // q = 2a - dx
     prev = solve_exact_rolling_step(patch, G, nu, {kXi, 0, 0}, c.mu, c.speed_m_per_s, k == 1 ? nullptr : &prev, o);
@@ -85,9 +81,26 @@ void BM_ExactRollingStep(benchmark::State& state) {
   state.counters["dF_rel"] = std::abs(s.fields.Fx_N - ref.fields.Fx_N) / std::abs(ref.fields.Fx_N);
   state.counters["gmres"] = s.status.iterations;
   state.counters["newton"] = s.active_set_iterations;
+  state.counters["products"] = s.products;
   state.counters["converged"] = s.status.converged() && ref.status.converged() ? 1 : 0;
 }
 
+// arguments: cells a side, -log10 of the tolerance, -log10 of the linear solves' floor (0: the tolerance)
+void BM_ExactRollingStep(benchmark::State& state) {
+  ExactOptions o;
+  o.tol = std::pow(10.0, -static_cast<double>(state.range(1)));
+  o.stick_tol = state.range(2) > 0 ? std::pow(10.0, -static_cast<double>(state.range(2))) : o.tol;
+  rolling_step(state, o);
+}
+// the tolerance and the linear floor as numbers (argument: cells a side)
+void BM_ExactRollingStepAt(benchmark::State& state, double tol, double linear_floor) {
+  ExactOptions o;
+  o.tol = tol;
+  o.stick_tol = linear_floor;
+  rolling_step(state, o);
+}
+
+BENCHMARK_CAPTURE(BM_ExactRollingStepAt, tol1e-2_linear0.3, 1e-2, 0.3)->Arg(80)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_ExactRollingStep)
     ->Args({80, 1, 0})->Args({80, 2, 0})->Args({80, 3, 0})->Args({80, 4, 0})
     ->Args({80, 2, 1})->Args({80, 3, 1})->Args({80, 3, 2})->Args({80, 4, 1})
