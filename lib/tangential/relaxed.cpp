@@ -131,6 +131,20 @@ std::array<double, 4> mix_per_level(int iab, double theta_deg, double psi_deg, d
   return d;
 }
 
+// the no-spin table's (D_xi, D_eta, D_moment) at (row ab, theta, e), linear in each
+std::array<double, 3> no_spin_at(int iab, double theta_deg, double e) {
+  const auto [it, wt] = bracket(M::kThetaDeg, M::kNtheta, theta_deg);
+  const auto [ie, we] = bracket(M::kE, M::kNe, e);
+  std::array<double, 3> d{0, 0, 0};
+  for (int a = 0; a < 2; ++a)
+    for (int q = 0; q < 2; ++q) {
+      const double f = (a == 0 ? 1 - wt : wt) * (q == 0 ? 1 - we : we);
+      if (f == 0 || it + a >= M::kNtheta || ie + q >= M::kNe) continue;
+      for (int k = 0; k < 3; ++k) d[k] += f * M::kNoSpin[iab][it + a][ie + q][k];
+    }
+  return d;
+}
+
 // the mix correction in levels (relaxed.h, relaxed_mix_correction) of the levels l
 RelaxedMix mix_correction_of(const Levels& l, double ab) {
   const double e = l.e();
@@ -155,6 +169,13 @@ RelaxedMix mix_correction_of(const Levels& l, double ab) {
       wr = std::log(ab / M::kAb[row]) / std::log(M::kAb[row + 1] / M::kAb[row]);
     }
   }
+  if (l.phi == 0) {  // without spin: no spin parts, a moment added to Mz (relaxed.h)
+    const std::array<double, 3> n0 = no_spin_at(row, theta, e);
+    const std::array<double, 3> n1 = wr > 0 ? no_spin_at(row + 1, theta, e) : n0;
+    const auto at = [&](int k) { return (1 - wr) * n0[k] + wr * n1[k]; };
+    const double se = l.eta < 0 ? -1.0 : 1.0;
+    return {sx * at(0) * e, se * at(1) * e, 0, 0, se * at(2) * e};
+  }
   const std::array<double, 4> d0 = mix_per_level(row, theta, psi, e);
   const std::array<double, 4> d1 = wr > 0 ? mix_per_level(row + 1, theta, psi, e) : d0;
   for (int k = 0; k < 4; ++k) d[k] = ((1 - wr) * d0[k] + wr * d1[k]) * e;
@@ -166,6 +187,7 @@ RelaxedMix mix_correction_of(const Levels& l, double ab) {
 struct Corrected {
   Creepages c;
   double phi_x_per_m = 0;
+  double moment = 0;  // added to the march's Mz, times mu N sqrt(ab) (without imposed spin)
 };
 
 // the pure creepages' factors at the level of c, and the mix correction: `mix` (levels) in place of the table's
@@ -183,6 +205,7 @@ Corrected corrected(const ContactPatch& patch, const ElasticPair& pair, const Cr
   r.c.eta += d.eta * l.scale_eta;
   r.c.phi_per_m += d.phi_lateral * l.scale_phi;
   r.phi_x_per_m += d.phi_longitudinal * l.scale_phi;
+  r.moment = d.moment;
   return r;
 }
 
@@ -219,6 +242,8 @@ TangentialSolution steady_at(const ContactPatch& patch, const ElasticPair& pair,
     s.power_W = target;
   }
   s.creep_work_W = creep_work_W(s, work_at, V) + offsets_W;
+  // without imposed spin, the fitted moment (phi Mz is 0 in the work above)
+  if (cor.moment != 0) s.Mz_N_m += cor.moment * mu * patch.normal_load_N * std::sqrt(patch.a_m * patch.b_m);
   return s;
 }
 

@@ -22,7 +22,10 @@
 //     (eta, phi) in their plane. The spin's correction has two parts, one in its lateral rate phi x / L3 and one
 //     in its longitudinal rate phi y / L3: under pure eta they give the moment that the uniform rate eta / L2
 //     lacks (the exact Mz under eta: the lateral traction's shape along x far from saturation, the turn of the
-//     slip's direction across the contact near it). Pure xi: none;
+//     slip's direction across the contact near it). Without imposed spin (phi = 0) the march is kept free of
+//     spin (its mirror skip and the cost of a solve without spin, lib/tangential/steady.h): the correction has
+//     no spin parts there, and Mz is the march's plus a fitted moment (the traction field's own moment is the
+//     march's; Mz does not enter the power when phi = 0). Pure xi: none;
 //   - power: the exact theory's steady frictional power is the creep forces' work -V (xi Fx + eta Fy + phi Mz)
 //     (docs/physics.md §4); the bed of springs with three flexibilities is not (1.5-2.2x with mixes).
 //     The model keeps the strips' distribution of the simplified theory's power and scales it to that work
@@ -63,6 +66,7 @@ TangentialSolution solve_relaxed_steady(const ContactPatch& patch, const Elastic
 // separately
 struct RelaxedMix {
   double xi = 0, eta = 0, phi_lateral = 0, phi_longitudinal = 0;
+  double moment = 0;  // without imposed spin (the spin's parts 0 then): added to the march's Mz, times mu N sqrt(ab)
 };
 // the mix correction the table gives at the creepages c (zero for pure xi)
 RelaxedMix relaxed_mix_correction(const ContactPatch& patch, const ElasticPair& pair, const Creepages& creepages,
