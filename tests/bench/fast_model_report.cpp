@@ -15,7 +15,7 @@
 //   fast_model_report fitmix AB N       its mix corrections over directions and levels (lines "M", scripts/fit-relaxed)
 //   fast_model_report checkmix AB N     the relaxed model at directions and levels between the fitted ones (lines "C")
 //   fast_model_report cost AB N [REPS]  its steady solve and step against the consistent solve and Satran's (lines "X")
-// FAST_MODEL_CASES=xi50,mix50 (say) in the environment: only those steady cases.
+// FAST_MODEL_CASES=xi50,mix50 (say) in the environment: only those steady cases; FAST_MODEL_NU: Poisson's ratio.
 // Lines: "S solver ab n label xi eta phi Fx Fy Mz P W ms" (W = -creep work), "J solver ab n label P_j...",
 // "T solver ab n label q/a Fx Fy Mz P ms".
 #include <algorithm>
@@ -43,7 +43,14 @@ using namespace contact;
 
 namespace {
 
-const ElasticPair kPair{{210e9, 0.28}, {210e9, 0.28}};
+// steel (E 210 GPa, nu 0.28); FAST_MODEL_NU=0.1 (say) in the environment: that Poisson's ratio for both bodies
+// (the relaxed model's tables are fitted at 0.28: docs/accuracy-vs-exact.md, "Poisson's ratio")
+ElasticPair pair_from_env() {
+  const char* v = std::getenv("FAST_MODEL_NU");
+  const double nu = v ? std::atof(v) : 0.28;
+  return {{210e9, nu}, {210e9, nu}};
+}
+const ElasticPair kPair = pair_from_env();
 constexpr double kMu = 0.3, kV = 1.0;
 
 ContactPatch ellipse_patch(double ab, int n) {
@@ -330,6 +337,9 @@ void linear_limit(double ab, int n) {
 // plane (0: eta, 90: phi); psi over [0, 180) (the mirror y -> -y gives the rest), xi >= 0 (its sign's symmetry)
 const std::vector<double> kMixTheta = {0, 15, 30, 45, 60, 75, 90};
 const std::vector<double> kMixPsi = {0, 22.5, 45, 67.5, 90, 112.5, 135, 157.5};
+// and its levels: the creepage factors' (kFitE) with one in the linear range (Mz under eta there) and one more
+// where the forces of -xi, eta, -phi nearly cancel
+const std::vector<double> kMixE = {0.005, 0.05, 0.1, 0.2, 0.3, 0.4, 0.475, 0.55, 0.7, 0.85};
 
 // the creepages of level e in the direction (theta, psi) (degrees)
 Creepages in_direction(const ContactPatch& p, double theta_deg, double psi_deg, double e) {
@@ -411,7 +421,7 @@ void fit_mix(double ab, int n) {
     for (double psi : kMixPsi) {
       if (theta == 0 && psi != 0) continue;  // pure xi: one direction
       V4 D = V4::Zero(), Dn = V4::Zero();
-      for (double e : kFitE) {
+      for (double e : kMixE) {
         const Creepages c = in_direction(p, theta, psi, e);
         const ExactSolution ex = solve_exact_steady(p, G, nu, c, kMu, kV);
         auto model = [&](const V4& d) {
