@@ -21,14 +21,16 @@ namespace {
 
 namespace T = relaxed_table;
 
-// linear interpolation in log(a/b) between the table's rows, clamped at its ends: (row, weight of row + 1)
-std::pair<int, double> ab_bracket(double ab) {
-  if (T::kNab == 1 || !(ab > T::kAb[0])) return {0, 0.0};
-  if (ab >= T::kAb[T::kNab - 1]) return {T::kNab - 2, 1.0};
+// linear interpolation in log(a/b) between the rows abs[0..n) of a table, clamped at its ends: (row, weight of
+// row + 1)
+std::pair<int, double> ab_bracket(const double* abs, int n, double ab) {
+  if (n == 1 || !(ab > abs[0])) return {0, 0.0};
+  if (ab >= abs[n - 1]) return {n - 2, 1.0};
   int i = 0;
-  while (ab > T::kAb[i + 1]) ++i;
-  return {i, std::log(ab / T::kAb[i]) / std::log(T::kAb[i + 1] / T::kAb[i])};
+  while (ab > abs[i + 1]) ++i;
+  return {i, std::log(ab / abs[i]) / std::log(abs[i + 1] / abs[i])};
 }
+std::pair<int, double> ab_bracket(double ab) { return ab_bracket(T::kAb, T::kNab, ab); }
 
 double over_ab(const double (&v)[T::kNab], double ab) {
   const auto [i, w] = ab_bracket(ab);
@@ -157,18 +159,9 @@ RelaxedMix mix_correction_of(const Levels& l, double ab) {
   if (psi < 0) psi += 180, sm = -1;
   if (psi >= 180) psi -= 180, sm = -sm;
   std::array<double, 4> d{0, 0, 0, 0};
-  // linear in log(a/b) between the table's rows, clamped at its ends
-  int row = 0;
-  double wr = 0;
-  if (M::kNab > 1 && ab > M::kAb[0]) {
-    if (ab >= M::kAb[M::kNab - 1]) {
-      row = M::kNab - 2;
-      wr = 1;
-    } else {
-      while (ab > M::kAb[row + 1]) ++row;
-      wr = std::log(ab / M::kAb[row]) / std::log(M::kAb[row + 1] / M::kAb[row]);
-    }
-  }
+  const std::pair<int, double> br = ab_bracket(M::kAb, M::kNab, ab);
+  const int row = br.first;
+  const double wr = br.second;  // linear in log(a/b) between the table's rows, clamped at its ends
   if (l.phi == 0) {  // without spin: no spin parts, a moment added to Mz (relaxed.h)
     const std::array<double, 3> n0 = no_spin_at(row, theta, e);
     const std::array<double, 3> n1 = wr > 0 ? no_spin_at(row + 1, theta, e) : n0;
