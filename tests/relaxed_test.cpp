@@ -249,6 +249,26 @@ TEST(RelaxedModel, LinearLimitOfSpinMatchesTheExactSolver) {
   EXPECT_GE(simplified_misses, 3);  // a/b 0.05, 0.1, 1, 3 (the simplified theory's Mz of spin)
 }
 
+// Without imposed spin the mix correction has no spin parts (lib/tangential/relaxed.h): the march keeps the mirror
+// skip of a patch symmetric in y and the cost of a solve without spin (with a spin part a pure-eta solve cost 4.3x
+// the consistent one, docs/accuracy-vs-exact.md). The strips are then mirror copies, to the bit; the moment is the
+// march's plus the fitted one (Kalker's C23 eta, which the bed of springs' uniform lateral rate lacks).
+TEST(RelaxedModel, WithoutSpinTheMarchHasNoSpinAndTheMomentIsCorrected) {
+  const ContactPatch p = ellipse_patch(0.3, 40);
+  for (const Creepages& c : {Creepages{0, 2e-3, 0}, Creepages{1e-3, -1e-3, 0}}) {
+    const TangentialSolution m = solve_relaxed_steady(p, kSteel, c, kMu, kV);
+    const int ny = p.grid.ny;
+    for (int j = 0; j < ny / 2; ++j) {
+      EXPECT_EQ(m.strip_force_y_N_per_m(j), m.strip_force_y_N_per_m(ny - 1 - j)) << "strip " << j;
+      EXPECT_EQ(m.strip_power_W_per_m(j), m.strip_power_W_per_m(ny - 1 - j)) << "strip " << j;
+    }
+    const RelaxedMix mix = relaxed_mix_correction(p, kSteel, c, kMu);
+    EXPECT_EQ(mix.phi_lateral, 0);
+    EXPECT_EQ(mix.phi_longitudinal, 0);
+    EXPECT_NE(mix.moment, 0);
+  }
+}
+
 // The in-house exact solver's steady solves under pure eta and mixed creepages (xi + eta, xi + phi, xi + eta + phi,
 // -xi + eta - phi) at about 50 % and 90 % of saturation over a/b, tests/data/fast_model/exact_mix.csv (80 x 80): the
 // relaxed model (its mix corrections, lib/tangential/relaxed.h) holds Fx and Fy within 2 % of the exact |(Fx, Fy)|
