@@ -98,9 +98,9 @@ TEST(RelaxedInertia, SmallOscillationAboutFreeRollingIsTheLinearClosedForm) {
 }
 
 // A duty cycle as the wear loop runs it (start, run, stop, standstill): steady running skipped once the effective
-// creepage has settled changes the dissipated energy and every strip's by less than 1e-8, in far fewer steps
-// (the settled level, 1e-10 in saturation, is 8e-10 of the creepage at this contact's level e = 0.125: the
-// energies move by about that share, 1.3e-9 measured).
+// creepage has settled (its last 1e-4 of saturation level summed in closed form, a geometric series linearised
+// about the steady state) changes the dissipated energy and every strip's by less than 1e-8, in far fewer steps
+// (measured: 9e-10, 238 steps against 3909; fails with the tail's energy left out: 1.3e-6).
 TEST(RelaxedSkip, SteadyRunningSkippedChangesTheEnergiesBelowTenPerBillion) {
   TransientCase c;
   c.bodies = kPaperBodies;

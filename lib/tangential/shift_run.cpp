@@ -166,14 +166,18 @@ TransientResult run_shift_steps(const TransientCase& c, const StepObserver& obse
         sk.cfl = whole_steps;
         sk.skipped = true;
         sk.shortened = false;
+        Eigen::ArrayXd strip_J = f.strip_power_W_per_m * span;
+        double J = f.power_W * span;
+        if (skip.energy) skip.energy(span, whole_steps * dq, f, strip_J, J);
+        sk.power_W = J / span;
         t += span;
         q += whole_steps * dq;
-        res.strip_energy_J_per_m += f.strip_power_W_per_m * span;
-        res.dissipated_J += f.power_W * span;
+        res.strip_energy_J_per_m += strip_J;
+        res.dissipated_J += J;
         res.end = sk;
         has_whole_step = true;
         if (skip.skipped) skip.skipped(whole_steps * dq);
-        if (observe) observe(sk, f.strip_power_W_per_m);
+        if (observe) observe(sk, Eigen::ArrayXd(strip_J / span));
       }
     }
   }

@@ -33,9 +33,14 @@ using ShiftStepSolve = std::function<TangentialSolution(const ContactPatch& patc
 // steps, up to one step before the next change of an input, snapshot time or t_end_s, as Satran's skip) is one
 // record with the last step's strip powers times its duration; `skipped(rolled_m)` then advances the solver's
 // state over the distance the stretch rolls. Unset: no step is skipped.
+// `energy` (if set) gives the stretch's strip energies (J/m) and energy (J) over span_s rolling rolled_m from the
+// last step's solution, in place of that step's powers times span_s (a solver whose state still relaxes).
 struct ShiftSkip {
   std::function<bool()> settled;
   std::function<void(double rolled_m)> skipped;
+  std::function<void(double span_s, double rolled_m, const TangentialSolution& last, Eigen::ArrayXd& strip_J_per_m,
+                     double& J)>
+      energy;
 };
 
 // Runs c by the shift scheme's steps; `solve` is called for every step with contact, `no_contact` (if
