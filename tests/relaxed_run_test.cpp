@@ -169,5 +169,21 @@ TEST(RelaxedSkip, OtherSchemesAreRefusedAtTheirKey) {
   }
 }
 
+// first_mirrored_strip remembers its last patch on the thread (the relaxed transient's steps all solve on one):
+// the same patch changed in place, or another patch, is checked again
+TEST(RelaxedSkip, MirrorCheckSeesAPatchChangedInPlace) {
+  ContactPatch p = solve_normal_hertz(kPaperBodies, kSteel, kLoad, {20, 20});
+  const int ny = p.grid.ny;
+  EXPECT_EQ(first_mirrored_strip(p, 0.0), ny - ny / 2);
+  p.half_length_m(0) *= 1.1;  // no longer its own mirror image
+  EXPECT_EQ(first_mirrored_strip(p, 0.0), ny);
+  p.half_length_m(0) /= 1.1;
+  p.strip_xi_offset = Eigen::ArrayXd::LinSpaced(ny, -1e-4, 2e-4);  // asymmetric Heathcote offsets
+  EXPECT_EQ(first_mirrored_strip(p, 0.0), ny);
+  p.strip_xi_offset = Eigen::ArrayXd();
+  EXPECT_EQ(first_mirrored_strip(solve_normal_hertz(kPaperBodies, kSteel, kLoad, {20, 21}), 0.0), 21 - 21 / 2);
+  EXPECT_EQ(first_mirrored_strip(p, 0.5), ny);  // spin: never
+}
+
 }  // namespace
 }  // namespace contact
