@@ -492,7 +492,7 @@ void expect_first_order(const std::map<std::string, double>& exact, const std::s
 
 // The independent reference of the paper-wear goldens: the same life to 1e7 revolutions with Kalker's exact
 // theory (tangential: exact) on 40, 80 and 160 cells a side (tests/data/reference/paper-wear-exact.txt, made by
-// ROLLWEAR_UPDATE_EXACT_REFERENCES=1 rollwear_tests --gtest_filter='WearGolden.PaperWear', about 3 min; it does
+// ROLLWEAR_UPDATE_EXACT_REFERENCES=1 rollwear_tests --gtest_filter='WearGolden.PaperWear', 6.8 min at load 9; it does
 // not move with the relaxed model). The exact grid power undercounts the creep forces' work at first order
 // (docs/exact-theory.md), so the reference is Richardson's 2 v(160) - v(80).
 std::map<std::string, double> paper_wear_exact_reference(const WearCase& c) {
