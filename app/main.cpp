@@ -87,7 +87,8 @@ CLI::App* add_contact_command(CLI::App& app, ContactOptions& opt, CommonOptions&
   CLI::App* sub = app.add_subcommand(
       "contact", "Steady rolling contact of one case: the normal problem (Hertz, or on the case's profiles the "
                  "semi-Hertzian or half-space solver, as solver.normal says), then the tangential problem "
-                 "(Kalker's simplified theory). Prints a summary and writes summary.csv, strips.csv and "
+                 "(by default the relaxed model, matched to Kalker's exact theory; solver.tangential: consistent "
+                 "for his simplified theory, exact for the exact theory). Prints a summary and writes summary.csv, strips.csv and "
                  "fields.csv.");
   sub->footer(
       "The summary names the normal solver that ran (and why, for solver.normal: auto) and the number of\n"
@@ -333,7 +334,8 @@ struct TransientOptions {
 CLI::App* add_transient_command(CLI::App& app, TransientOptions& opt, CommonOptions& common) {
   CLI::App* sub = app.add_subcommand(
       "transient",
-      "Transient rolling contact of one case (Satran): the tangential problem stepped in time over the "
+      "Transient rolling contact of one case: the tangential problem stepped in time (by default the relaxed "
+      "model; Satran with solver.tangential: consistent) over the "
       "case's histories of load, speed and creepages, or with the roller's inertia. Needs a transient: "
       "section. Writes timeseries.csv, strip_power.csv, strip_energy.csv, snapshot_<k>.csv, summary.csv.");
   sub->footer(
@@ -441,10 +443,10 @@ void print_transient_summary(const ContactCase& c, const TransientCase& t, const
   const TransientRecord& r = res.end;  // the last whole step (the shortened last step runs a cruder scheme)
   fmt::print("case {} ({}), {} x {} grid, {} scheme{}\n", c.name, c.path, res.grid.nx, res.grid.ny,
              to_string(t.settings.scheme),
-             t.inertia ? ", roller inertia"
-             : parse_tangential_scheme(c.solver.tangential) == TangentialScheme::Exact   ? ", exact theory"
-             : parse_tangential_scheme(c.solver.tangential) == TangentialScheme::Relaxed ? ", relaxed model"
-                                                                                           : "");
+             std::string(parse_tangential_scheme(c.solver.tangential) == TangentialScheme::Exact     ? ", exact theory"
+                         : parse_tangential_scheme(c.solver.tangential) == TangentialScheme::Relaxed ? ", relaxed model"
+                                                                                                     : "") +
+                 (t.inertia ? ", roller inertia" : ""));
   fmt::print("  steps           {}", res.steps);
   if (res.fallback_steps > 0)
     fmt::print(", {} of them upwind at CFL < 1 (the fallback: less accurate than shift)", res.fallback_steps);
@@ -843,8 +845,9 @@ int run_cam_command(const CamOptions& opt) {
 }
 
 int main(int argc, char** argv) {
-  CLI::App app{"rollwear: wear of bodies in rolling contact (Hertz normal problem, Kalker's simplified "
-               "theory for the tangential one, steady or transient).",
+  CLI::App app{"rollwear: wear of bodies in rolling contact (Hertz normal problem; for the tangential one, "
+               "steady or transient, a fast model matched to Kalker's exact theory by default, or his simplified "
+               "theory).",
                "rollwear"};
   app.footer("Exit status: 0 success, 2 bad input (case file, options), 1 any other failure (a solver's with\n"
              "its cause, or an output folder another run holds).\n"

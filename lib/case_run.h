@@ -16,7 +16,7 @@ struct ContactRun {
   NormalSolution normal;
   TangentialProblem problem;
   TangentialSolution solution;
-  TangentialScheme scheme = TangentialScheme::Consistent;
+  TangentialScheme scheme = kDefaultTangentialScheme;
   std::string exact_solve;  // scheme Exact: the exact solve's status message (problem.C and L are nan then)
 };
 

@@ -79,7 +79,7 @@ TEST_F(CaseReader, ReadsPaperCase) {
   EXPECT_EQ(c.kinematics.eta.value, std::vector<double>{0});
   EXPECT_EQ(c.kinematics.phi_per_m.value, std::vector<double>{0});
   EXPECT_EQ(c.friction.mu, 0.3);
-  EXPECT_EQ(c.solver.tangential, "consistent");
+  EXPECT_EQ(c.solver.tangential, "relaxed");  // the default (no solver.tangential in the shipped case)
   EXPECT_EQ(c.solver.nx, 80);
   EXPECT_EQ(c.solver.ny, 80);
   EXPECT_EQ(c.output.directory, "out/paper");
@@ -94,7 +94,10 @@ TEST_F(CaseReader, OptionalSectionsTakeDefaultsAndNameIsFileStem) {
   EXPECT_EQ(creepages_of(c).xi, 0);
   EXPECT_FALSE(c.transient);
   EXPECT_FALSE(c.inertia);
-  EXPECT_EQ(c.solver.tangential, "consistent");
+  // the default scheme: the relaxed model, matched to the exact theory (lib/tangential/tangential.h)
+  EXPECT_EQ(c.solver.tangential, "relaxed");
+  EXPECT_EQ(parse_tangential_scheme(c.solver.tangential), kDefaultTangentialScheme);
+  EXPECT_EQ(kDefaultTangentialScheme, TangentialScheme::Relaxed);
   EXPECT_EQ(c.solver.nx, defaults.solver.nx);
   EXPECT_EQ(c.solver.ny, defaults.solver.ny);
   EXPECT_EQ(c.output.directory, "");

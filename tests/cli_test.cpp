@@ -320,7 +320,7 @@ TEST_F(CommandLine, ContactOnPaperCaseWritesThreeTables) {
                                {0, 16}));
   const std::vector<std::string> row = split(summary[1]);
   EXPECT_EQ(row[0], "paper");
-  EXPECT_EQ(row[16], "consistent");
+  EXPECT_EQ(row[16], "relaxed");  // the default scheme
   EXPECT_EQ(row[17], "80");
   EXPECT_EQ(row[18], "80");
 
@@ -512,7 +512,7 @@ TEST_F(CommandLine, TransientCflBreachExitsTwoNamingDtAndAllowedStep) {
                               "load: { normal_load_N: 1500 }\n"                                  // 4
                               "kinematics: { speed_m_per_s: 1.8, xi: 0.001 }\n"                  // 5
                               "friction: { mu: 0.3 }\n"                                          // 6
-                              "solver: { nx: 20, ny: 20 }\n"                                     // 7
+                              "solver: { tangential: consistent, nx: 20, ny: 20 }\n"             // 7 (Satran)
                               "transient: { scheme: upwind, t_end_s: 2.0e-4, dt_s: 5.0e-5 }\n";  // 8
   const fs::path out = dir_ / "breach";
   const ProcessResult r = rollwear("transient " + quoted(case_path) + " -o " + quoted(out), dir_);
@@ -590,8 +590,8 @@ double contact_reference(const std::string& quantity, const std::string& grid) {
 // total, printed beside the creep forces' work.
 TEST_F(CommandLine, ContactWithExactTheoryMatchesContactsForce) {
   const fs::path c = dir_ / "paper-exact.yaml";
-  std::ofstream(c) << with_solver(read_text(kSource / "cases" / "paper.yaml"), "tangential: consistent",
-                                  "tangential: exact");
+  std::ofstream(c) << with_solver(read_text(kSource / "cases" / "paper.yaml"), "solver:     { nx",
+                                  "solver:     { tangential: exact, nx");
   const fs::path out = dir_ / "exact";
   const ProcessResult r = rollwear("contact " + quoted(c) + " -o " + quoted(out) + " --log-level warn", dir_);
   ASSERT_EQ(r.exit_code, 0) << r.err;
@@ -645,8 +645,8 @@ TEST_F(CommandLine, ContactWithExactTheoryMatchesContactsForce) {
 // The coarse grid's own error is up to 2 % (docs/exact-theory.md: 0.1554, 0.5127, 0.7659, 0.9460
 // here against CONTACT's 80 x 80 0.1585, 0.5198, 0.7727, 0.9491).
 TEST_F(CommandLine, TransientWithExactTheoryBuildsUpAsContactDoes) {
-  std::string text = with_solver(read_text(kSource / "cases" / "paper.yaml"), "tangential: consistent, nx: 80, ny: 80",
-                                 "tangential: exact, nx: 20, ny: 20");
+  std::string text = with_solver(read_text(kSource / "cases" / "paper.yaml"), "solver:     { nx: 80, ny: 80",
+                                 "solver:     { tangential: exact, nx: 20, ny: 20");
   const fs::path steady_case = dir_ / "steady.yaml", transient_case = dir_ / "startup.yaml";
   std::ofstream(steady_case) << text;
   const double a = solve_hertz({{0.020, 0.500}, {0.025, kFlat}}, {{210e9, 0.28}, {210e9, 0.28}}, 1500).a_m;
@@ -691,8 +691,8 @@ TEST_F(CommandLine, TransientWithExactTheoryBuildsUpAsContactDoes) {
 TEST_F(CommandLine, RelaxedModelMatchesContactsForceAndStartUp) {
   constexpr double kTarget = 0.02;
   const fs::path c = dir_ / "paper-relaxed.yaml";
-  std::ofstream(c) << with_solver(read_text(kSource / "cases" / "paper.yaml"), "tangential: consistent",
-                                  "tangential: relaxed");
+  std::ofstream(c) << with_solver(read_text(kSource / "cases" / "paper.yaml"), "solver:     { nx",
+                                  "solver:     { tangential: relaxed, nx");
   const ProcessResult r = rollwear("contact " + quoted(c) + " -o " + quoted(dir_ / "r") + " --log-level warn", dir_);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("relaxed scheme"), std::string::npos) << r.out;
@@ -703,8 +703,8 @@ TEST_F(CommandLine, RelaxedModelMatchesContactsForceAndStartUp) {
   EXPECT_NEAR(Fx / contact_reference("Fx_N", "80x80"), 1, kTarget) << Fx;
   EXPECT_NEAR(P / -work, 1, 1e-9);
 
-  std::string text = with_solver(read_text(kSource / "cases" / "paper.yaml"), "tangential: consistent, nx: 80, ny: 80",
-                                 "tangential: relaxed, nx: 20, ny: 20");
+  std::string text = with_solver(read_text(kSource / "cases" / "paper.yaml"), "solver:     { nx: 80, ny: 80",
+                                 "solver:     { tangential: relaxed, nx: 20, ny: 20");
   const fs::path steady_case = dir_ / "steady.yaml", transient_case = dir_ / "startup.yaml";
   std::ofstream(steady_case) << text;
   const double a = solve_hertz({{0.020, 0.500}, {0.025, kFlat}}, {{210e9, 0.28}, {210e9, 0.28}}, 1500).a_m;
@@ -735,8 +735,8 @@ TEST_F(CommandLine, RelaxedModelMatchesContactsForceAndStartUp) {
 // shift, a roller's inertia (exit 2, nothing written).
 TEST_F(CommandLine, ExactTheoryRefusedWhereItDoesNotRun) {
   const fs::path c = dir_ / "nofriction.yaml";
-  std::ofstream(c) << with_solver(with_solver(read_text(kSource / "cases" / "paper.yaml"), "tangential: consistent",
-                                              "tangential: exact"),
+  std::ofstream(c) << with_solver(with_solver(read_text(kSource / "cases" / "paper.yaml"), "solver:     { nx",
+                                              "solver:     { tangential: exact, nx"),
                                   "{ mu: 0.3 }", "{ mu: 0 }");
   const ProcessResult r = rollwear("contact " + quoted(c) + " -o " + quoted(dir_ / "o"), dir_);
   EXPECT_EQ(r.exit_code, 2) << r.err;
@@ -744,8 +744,8 @@ TEST_F(CommandLine, ExactTheoryRefusedWhereItDoesNotRun) {
   EXPECT_FALSE(fs::exists(dir_ / "o"));
   // the transient run: the shift scheme's steps only, no inertia; refused before the first step
   const fs::path upwind = dir_ / "upwind.yaml";
-  std::ofstream(upwind) << with_solver(read_text(kSource / "cases" / "paper.yaml"), "tangential: consistent, nx: 80",
-                                       "tangential: exact, nx: 8, ny: 8 }\ntransient: { scheme: upwind, dt_s: 1.0e-6, "
+  std::ofstream(upwind) << with_solver(read_text(kSource / "cases" / "paper.yaml"), "solver:     { nx: 80",
+                                       "solver:     { tangential: exact, nx: 8, ny: 8 }\ntransient: { scheme: upwind, dt_s: 1.0e-6, "
                                        "t_end_s: 1.0e-5 }\n#");
   const ProcessResult u = rollwear("transient " + quoted(upwind) + " -o " + quoted(dir_ / "u"), dir_);
   EXPECT_EQ(u.exit_code, 2) << u.err;

@@ -403,9 +403,13 @@ TEST(WearLoop, ReusingUnchangedProfilesChangesNothing) {
 }
 
 // ---- regression: the shipped wear cases after a few revolutions ----
-// Goldens in tests/data/golden/<case>.txt: 'key value' lines. Regenerate after an intended change with
-//   ROLLWEAR_UPDATE_GOLDENS=1 ./build/release/tests/rollwear_tests --gtest_filter='WearGolden.*'
-// and commit the files with the reason. Tolerance: 1e-9 relative (the runs are deterministic; the
+// Goldens in tests/data/golden/<case>.txt: 'key value' lines. The shipped cases run the default tangential
+// model, the relaxed one; <case>-consistent.txt hold the simplified theory's (tangential: consistent), which
+// did not move when the default changed. After an intended change of the relaxed model, regenerate its
+// goldens and the start-stop life's converged reference with one command,
+//   scripts/update-relaxed-goldens
+// and commit the files with the reason (the consistent goldens: ROLLWEAR_UPDATE_GOLDENS=1 with
+// --gtest_filter='WearGolden.*Consistent'). Tolerance: 1e-9 relative (the runs are deterministic; the
 // margin covers another compiler's rounding).
 
 void check_golden(const std::string& name, const std::map<std::string, double>& values) {
@@ -448,16 +452,142 @@ std::map<std::string, double> wear_values(const WearModel& m, const LifeResult& 
   return v;
 }
 
-TEST(WearGolden, PaperWear) {
-  const WearCase c = read_wear_case((kSource / "cases" / "paper-wear.yaml").string());
-  const LifeResult life = run_to(c, 1e7);
-  check_golden("paper-wear", wear_values(make_wear_model(c), life));
+// 'key value' lines of a file of tests/data ('#' comments)
+std::map<std::string, double> stored_values(const fs::path& p) {
+  std::ifstream in(p);
+  EXPECT_TRUE(in) << p << " missing";
+  std::map<std::string, double> stored;
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.empty() || line[0] == '#') continue;
+    std::istringstream words(line);
+    std::string key;
+    double v = 0;
+    if (words >> key >> v) stored[key] = v;
+  }
+  return stored;
 }
 
+WearCase with_scheme(WearCase c, const std::string& scheme) {
+  c.contact.solver.tangential = scheme;
+  return c;
+}
+
+// The relaxed model's wear after 1e7 revolutions against the exact theory's: the goal is the steady-force target
+// (2 %) carried into the energy and the volume worn, which are proportional to the force. It is MISSED: the
+// relaxed goldens are 6.2 % below the exact theory's, the simplified theory's 3.1 % (measured, below). On the
+// unworn crown the relaxed power is within 0.5 % of the exact creep work (the simplified theory +2.8 %); on the
+// crown worn for 1e7 revolutions (a/b = 0.037, below the relaxed table's 0.05, and Heathcote offsets across
+// the wider contact, which the model's xi factor does not scale) its Fx is 4.0 % below the exact theory's (the
+// simplified theory's 0.7 %) (rollwear contact on the worn profile, exact on 80 and 160 cells). The tests hold
+// the measured gaps, so that a change of the model that moves them is seen, and the reference's convergence.
+constexpr double kRelaxedWearTarget = 0.02;
+constexpr double kGapTolerance = 5e-4;  // the quoted gaps are rounded to 0.01 %
+
+// the exact reference's own check: first order in the cell size, (v80 - v40) / (v160 - v80) near 2
+void expect_first_order(const std::map<std::string, double>& exact, const std::string& key) {
+  const double ratio = (exact.at(key + "_80") - exact.at(key + "_40")) / (exact.at(key + "_160") - exact.at(key + "_80"));
+  EXPECT_NEAR(ratio, 2.0, 0.2) << key << ": the exact wear is not first order in the cell size";
+}
+
+// The independent reference of the paper-wear goldens: the same life to 1e7 revolutions with Kalker's exact
+// theory (tangential: exact) on 40, 80 and 160 cells a side (tests/data/reference/paper-wear-exact.txt, made by
+// ROLLWEAR_UPDATE_EXACT_REFERENCES=1 rollwear_tests --gtest_filter='WearGolden.PaperWear', 6.8 min at load 9; it does
+// not move with the relaxed model). The exact grid power undercounts the creep forces' work at first order
+// (docs/exact-theory.md), so the reference is Richardson's 2 v(160) - v(80).
+std::map<std::string, double> paper_wear_exact_reference(const WearCase& c) {
+  const fs::path p = kSource / "tests" / "data" / "reference" / "paper-wear-exact.txt";
+  if (std::getenv("ROLLWEAR_UPDATE_EXACT_REFERENCES")) {
+    std::ofstream out(p);
+    out << "# paper-wear (cases/paper-wear.yaml) after 1e7 revolutions with tangential: exact on n x n cells, and\n"
+           "# Richardson's extrapolation from 80 and 160 (first order in the cell size). Made by\n"
+           "#   ROLLWEAR_UPDATE_EXACT_REFERENCES=1 build/release/tests/rollwear_tests --gtest_filter='WearGolden.PaperWear'\n";
+    std::map<std::string, double> v[3];
+    const int cells[3] = {40, 80, 160};
+    for (int k = 0; k < 3; ++k) {
+      WearCase e = with_scheme(c, "exact");
+      e.contact.solver.nx = e.contact.solver.ny = cells[k];
+      v[k] = wear_values(make_wear_model(e), run_to(e, 1e7));
+      for (const char* key : {"dissipated_J", "worn_volume_m3", "max_depth_m"})
+        out << key << "_" << cells[k] << " " << fmt::format("{:.17g}", v[k].at(key)) << "\n";
+    }
+    for (const char* key : {"dissipated_J", "worn_volume_m3", "max_depth_m"})
+      out << key << "_extrapolated " << fmt::format("{:.17g}", 2 * v[2].at(key) - v[1].at(key)) << "\n";
+  }
+  return stored_values(p);
+}
+
+// Moved when the relaxed model became the default (paper-wear on 80 x 80 after 1e7 revolutions), against the
+// exact theory's (40, 80, 160 cells: 238630, 252235, 259260 J; extrapolated 266286 J, 1.47936e-8 m^3):
+//   dissipated energy  relaxed 249672 J (-6.24 %), consistent (the old golden) 258051 J (-3.09 %)
+//   worn volume        relaxed 1.38707e-8 m^3 (-6.24 %), consistent 1.43361e-8 m^3 (-3.09 %)
+// The relaxed values are 3.25 % below the old ones.
+TEST(WearGolden, PaperWear) {
+  const WearCase c = read_wear_case((kSource / "cases" / "paper-wear.yaml").string());
+  ASSERT_EQ(contact::parse_tangential_scheme(c.contact.solver.tangential), contact::TangentialScheme::Relaxed);
+  const LifeResult life = run_to(c, 1e7);
+  const std::map<std::string, double> v = wear_values(make_wear_model(c), life);
+  check_golden("paper-wear", v);
+  if (std::getenv("ROLLWEAR_UPDATE_GOLDENS")) return;  // being rewritten: the pairing below reads the new one
+  const std::map<std::string, double> exact = paper_wear_exact_reference(c);
+  const std::map<std::string, double> consistent =
+      stored_values(kSource / "tests" / "data" / "golden" / "paper-wear-consistent.txt");
+  std::string table;
+  for (const char* key : {"dissipated_J", "worn_volume_m3"}) {
+    expect_first_order(exact, key);
+    const double ref = exact.at(std::string(key) + "_extrapolated");
+    const double relaxed_error = v.at(key) / ref - 1, consistent_error = consistent.at(key) / ref - 1;
+    table += fmt::format("{}: relaxed {:.6g} ({:+.2f} % from the exact theory's {:.6g}; target {:.0f} %), consistent "
+                         "{:.6g} ({:+.2f} %)\n",
+                         key, v.at(key), 100 * relaxed_error, ref, 100 * kRelaxedWearTarget, consistent.at(key),
+                         100 * consistent_error);
+    EXPECT_NEAR(relaxed_error, -0.0624, kGapTolerance) << table;
+    EXPECT_NEAR(consistent_error, -0.0309, kGapTolerance) << table;
+  }
+  std::cout << table;
+}
+
+TEST(WearGolden, PaperWearConsistent) {  // the simplified theory's golden, as before the default changed
+  const WearCase c = with_scheme(read_wear_case((kSource / "cases" / "paper-wear.yaml").string()), "consistent");
+  const LifeResult life = run_to(c, 1e7);
+  check_golden("paper-wear-consistent", wear_values(make_wear_model(c), life));
+}
+
+// Moved when the relaxed model became the default (start-stop-wear, 40 x 40, after 1e7 revolutions): its duty
+// cycle is steady running but for the start and the stop (0.9 m rolled at 1.8 m/s against start-ups of a few
+// mm), so its wear per revolution is paper-wear's steady one (on 40 x 40 cells), and the same exact reference
+// applies (266286 J, 1.47936e-8 m^3):
+//   dissipated energy  relaxed 249534 J (-6.29 %), consistent (the old golden) 258105 J (-3.07 %)
+//   worn volume        relaxed 1.38630e-8 m^3 (-6.29 %), consistent 1.43392e-8 m^3 (-3.07 %)
 TEST(WearGolden, StartStopWear) {
   const WearCase c = read_wear_case((kSource / "cases" / "start-stop-wear.yaml").string());
+  ASSERT_EQ(contact::parse_tangential_scheme(c.contact.solver.tangential), contact::TangentialScheme::Relaxed);
   const LifeResult life = run_to(c, 1e7);
-  check_golden("start-stop-wear", wear_values(make_wear_model(c), life));
+  const std::map<std::string, double> v = wear_values(make_wear_model(c), life);
+  check_golden("start-stop-wear", v);
+  if (std::getenv("ROLLWEAR_UPDATE_GOLDENS")) return;
+  const std::map<std::string, double> exact =
+      stored_values(kSource / "tests" / "data" / "reference" / "paper-wear-exact.txt");
+  const std::map<std::string, double> consistent =
+      stored_values(kSource / "tests" / "data" / "golden" / "start-stop-wear-consistent.txt");
+  std::string table;
+  for (const char* key : {"dissipated_J", "worn_volume_m3"}) {
+    const double ref = exact.at(std::string(key) + "_extrapolated");
+    const double relaxed_error = v.at(key) / ref - 1, consistent_error = consistent.at(key) / ref - 1;
+    table += fmt::format("{}: relaxed {:.6g} ({:+.2f} % from the exact theory's steady {:.6g}; target {:.0f} %), "
+                         "consistent {:.6g} ({:+.2f} %)\n",
+                         key, v.at(key), 100 * relaxed_error, ref, 100 * kRelaxedWearTarget, consistent.at(key),
+                         100 * consistent_error);
+    EXPECT_NEAR(relaxed_error, -0.0629, kGapTolerance) << table;
+    EXPECT_NEAR(consistent_error, -0.0307, kGapTolerance) << table;
+  }
+  std::cout << table;
+}
+
+TEST(WearGolden, StartStopWearConsistent) {  // the simplified theory's golden, as before the default changed
+  const WearCase c = with_scheme(read_wear_case((kSource / "cases" / "start-stop-wear.yaml").string()), "consistent");
+  const LifeResult life = run_to(c, 1e7);
+  check_golden("start-stop-wear-consistent", wear_values(make_wear_model(c), life));
 }
 
 // ---- the shipped cases' lives against converged references ----
@@ -493,16 +623,17 @@ LifeResult shipped_life(const WearCase& c) {
 // that reached it, 1.2 % long, and did not converge as the tolerance tightened. Now the life converges,
 // as rtol and atol_m tighten together (atol_m = rtol x max_depth_m), to the fixed-depth life, and the
 // shipped tolerances' life agrees with it within 0.3 %. The README quotes that life.
-TEST(WearLife, PaperWearConvergesToTheFixedDepthLife) {
-  const WearCase c = read_wear_case((kSource / "cases" / "paper-wear.yaml").string());
+// The convergence as the tolerance tightens is shown on the simplified theory (tangential: consistent), whose
+// rate is smooth in the worn state; the relaxed model's (the shipped case's) has kinks where the saturation
+// level crosses a row of its table (linear interpolation), and its adaptive lives converge more slowly
+// (measured: 2.4e-3, 2.1e-4, 2.0e-4, 2.9e-5 at rtol 1e-3 ... 1e-6): it is held to the shipped tolerance.
+void expect_life_converges(const WearCase& c, const std::string& label) {
   const double coarse = fixed_depth_life(c, 4e-8), fine = fixed_depth_life(c, 2e-8);
   const double reference = 2 * fine - coarse;
-  std::string table = fmt::format("fixed-depth 4e-8 m: {:.10g}, 2e-8 m: {:.10g}, extrapolated {:.10g} revolutions\n"
+  std::string table = fmt::format("{}: fixed-depth 4e-8 m: {:.10g}, 2e-8 m: {:.10g}, extrapolated {:.10g} revolutions\n"
                                   "rtol, atol_m, steps, life, |life / reference - 1|\n",
-                                  coarse, fine, reference);
-  // the extrapolation's own error: far below the first-order error of the finer run
+                                  label, coarse, fine, reference);
   EXPECT_LT(std::abs(fine - coarse) / reference, 2e-5) << table;
-
   std::vector<double> errors;
   for (double rtol : {1e-3, 1e-4, 1e-5, 1e-6}) {
     WearCase k = c;
@@ -514,13 +645,31 @@ TEST(WearLife, PaperWearConvergesToTheFixedDepthLife) {
     table += fmt::format("{:.0e}, {:.0e}, {}, {:.10g}, {:.2e}\n", rtol, k.wear.stepping.atol_m, life.counters.steps,
                          life.N, errors.back());
   }
+  std::cout << table;
+  for (std::size_t k = 1; k < errors.size(); ++k) EXPECT_LT(errors[k], errors[k - 1]) << table;
+  EXPECT_LT(errors.back(), 1e-5) << table;  // rtol 1e-6
+}
+
+TEST(WearLife, PaperWearConsistentConvergesToTheFixedDepthLife) {
+  expect_life_converges(with_scheme(read_wear_case((kSource / "cases" / "paper-wear.yaml").string()), "consistent"),
+                        "consistent");
+}
+
+TEST(WearLife, PaperWearConvergesToTheFixedDepthLife) {
+  const WearCase c = read_wear_case((kSource / "cases" / "paper-wear.yaml").string());
+  const double coarse = fixed_depth_life(c, 4e-8), fine = fixed_depth_life(c, 2e-8);
+  const double reference = 2 * fine - coarse;
+  std::string table = fmt::format("fixed-depth 4e-8 m: {:.10g}, 2e-8 m: {:.10g}, extrapolated {:.10g} revolutions\n"
+                                  "rtol, atol_m, steps, life, |life / reference - 1|\n",
+                                  coarse, fine, reference);
+  // the extrapolation's own error: far below the first-order error of the finer run
+  EXPECT_LT(std::abs(fine - coarse) / reference, 2e-5) << table;
+
   const LifeResult shipped = shipped_life(c);
   const double shipped_error = std::abs(shipped.N / reference - 1);
   table += fmt::format("shipped (rtol {:.0e}, atol_m {:.0e}): {} steps, {:.10g}, {:.2e}\n", c.wear.stepping.rtol,
                        c.wear.stepping.atol_m, shipped.counters.steps, shipped.N, shipped_error);
   std::cout << table;
-  for (std::size_t k = 1; k < errors.size(); ++k) EXPECT_LT(errors[k], errors[k - 1]) << table;
-  EXPECT_LT(errors.back(), 1e-5) << table;  // rtol 1e-6
   EXPECT_EQ(shipped.ended_by, LifeEnd::Edge) << shipped.message;
   EXPECT_LT(shipped_error, kShippedLifeRtol) << table;
 
@@ -567,37 +716,27 @@ TEST(WearLife, EdgeLimitIsLocatedInBothModes) {
   }
 }
 
-// The start-stop case's life against its stored reference (tests/data/reference/start-stop-wear.txt,
-// fixed-depth 2e-8 and 1e-8 m, extrapolated: 23 s, too slow to run here; regenerate with
-//   ROLLWEAR_UPDATE_REFERENCES=1 build/release/tests/rollwear_tests --gtest_filter='WearLife.StartStop*'
+// The start-stop case's life against its stored reference (tests/data/reference/start-stop-wear.txt for the
+// shipped case, the relaxed model; start-stop-wear-consistent.txt for tangential: consistent): fixed-depth
+// 2e-8 and 1e-8 m, extrapolated (23 s with consistent, about 30 s with relaxed: too slow to run here;
+// regenerate with scripts/update-relaxed-goldens, or for consistent with
+//   ROLLWEAR_UPDATE_REFERENCES=1 build/release/tests/rollwear_tests --gtest_filter='WearLife.StartStop*Consistent*'
 // ). The cheap check made here: a fixed-depth life with 4e-7 m steps, first order with an error below
 // 2e-3 (10 x the error of the 4e-8 m life, 5e-5), agrees with both.
-TEST(WearLife, StartStopWearAgreesWithItsConvergedReference) {
-  const WearCase c = read_wear_case((kSource / "cases" / "start-stop-wear.yaml").string());
-  const fs::path p = kSource / "tests" / "data" / "reference" / "start-stop-wear.txt";
+void check_start_stop_reference(const WearCase& c, const std::string& file) {
+  const fs::path p = kSource / "tests" / "data" / "reference" / file;
   if (std::getenv("ROLLWEAR_UPDATE_REFERENCES")) {
     const double coarse = fixed_depth_life(c, 2e-8), fine = fixed_depth_life(c, 1e-8);
     std::ofstream out(p);
-    out << "# start-stop-wear: the life (revolutions) with fixed-depth steps of 2e-8 and 1e-8 m, and their\n"
+    out << "# start-stop-wear (tangential: " << c.contact.solver.tangential
+        << "): the life (revolutions) with fixed-depth steps of 2e-8 and 1e-8 m, and their\n"
            "# Richardson extrapolation (first order), the reference of WearLife.StartStopWear* in\n"
-           "# tests/wear_loop_test.cpp. Made by\n"
-           "#   ROLLWEAR_UPDATE_REFERENCES=1 build/release/tests/rollwear_tests "
-           "--gtest_filter='WearLife.StartStop*'\n";
+           "# tests/wear_loop_test.cpp (made as said there).\n";
     out << fmt::format("life_fixed_depth_2e-8 {:.17g}\nlife_fixed_depth_1e-8 {:.17g}\nlife_reference {:.17g}\n", coarse,
                        fine, 2 * fine - coarse);
     GTEST_SKIP() << "reference written: " << p;
   }
-  std::ifstream in(p);
-  ASSERT_TRUE(in) << p << " missing: regenerate it (see this test)";
-  std::map<std::string, double> stored;
-  std::string line;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#') continue;
-    std::istringstream words(line);
-    std::string key;
-    double v = 0;
-    if (words >> key >> v) stored[key] = v;
-  }
+  const std::map<std::string, double> stored = stored_values(p);
   ASSERT_TRUE(stored.count("life_reference")) << p;
   const double reference = stored.at("life_reference");
   const LifeResult shipped = shipped_life(c);
@@ -607,9 +746,21 @@ TEST(WearLife, StartStopWearAgreesWithItsConvergedReference) {
   EXPECT_LT(std::abs(shipped.N / reference - 1), kShippedLifeRtol) << shipped.N << " against " << reference;
   EXPECT_LT(std::abs(euler / reference - 1), kEulerError) << euler << " against " << reference;
   EXPECT_LT(std::abs(shipped.N / euler - 1), kShippedLifeRtol + kEulerError) << shipped.N << " against " << euler;
-  std::cout << fmt::format("start-stop-wear: shipped {:.10g} ({:.2e}), fixed-depth 4e-7 m {:.10g} ({:.2e}), "
+  std::cout << fmt::format("start-stop-wear ({}): shipped {:.10g} ({:.2e}), fixed-depth 4e-7 m {:.10g} ({:.2e}), "
                            "reference {:.10g}\n",
-                           shipped.N, shipped.N / reference - 1, euler, euler / reference - 1, reference);
+                           c.contact.solver.tangential, shipped.N, shipped.N / reference - 1, euler,
+                           euler / reference - 1, reference);
+}
+
+TEST(WearLife, StartStopWearAgreesWithItsConvergedReference) {
+  check_start_stop_reference(read_wear_case((kSource / "cases" / "start-stop-wear.yaml").string()),
+                             "start-stop-wear.txt");
+}
+
+TEST(WearLife, StartStopWearConsistentAgreesWithItsConvergedReference) {
+  check_start_stop_reference(
+      with_scheme(read_wear_case((kSource / "cases" / "start-stop-wear.yaml").string()), "consistent"),
+      "start-stop-wear-consistent.txt");
 }
 
 // One struct holds the life's counters, and a resumed life starts from the checkpoint's: stopped at a

@@ -166,7 +166,10 @@ WearModel make_wear_model(const WearCase& c) {
   m.limits = c.wear.limits;
   // the pressure fields on the grid: read by the transient duty cycle (Satran), the per-cell laws and the
   // consistent march; not by the steady pure-xi closed form (solve_steady's skip) with the strip laws
-  const bool closed_form = !m.transient && m.scheme == contact::TangentialScheme::Consistent &&
+  // (the relaxed model's steady solve is that march at scaled creepages: the same closed form)
+  const bool closed_form = !m.transient &&
+                           (m.scheme == contact::TangentialScheme::Consistent ||
+                            m.scheme == contact::TangentialScheme::Relaxed) &&
                            m.creepages.eta == 0 && m.creepages.phi_per_m == 0;
   m.normal_options.pressure_fields = !closed_form || needs_fields(m.law1) || needs_fields(m.law2);
   return m;

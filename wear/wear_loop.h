@@ -48,7 +48,7 @@ struct WearModel {
   bool semi_hertz_always = false;  // solver.normal semi-hertz (else auto: Hertz while curvature is constant)
   double normal_load_N = 0;
   double mu = 0;
-  contact::TangentialScheme scheme = contact::TangentialScheme::Consistent;
+  contact::TangentialScheme scheme = contact::kDefaultTangentialScheme;
   // the duty cycle: steady running at speed and creepages, or the transient history
   double speed_m_per_s = 0;
   contact::Creepages creepages;

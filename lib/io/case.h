@@ -75,7 +75,8 @@ struct ProfilesSection {
 };
 struct SolverSection {
   std::string normal = "auto";            // auto | hertz | semi-hertz | halfspace
-  std::string tangential = "consistent";  // consistent | classic | exact (lib/tangential/exact.h)
+  // relaxed (the default, kDefaultTangentialScheme: lib/tangential/relaxed.h) | consistent | classic | exact
+  std::string tangential = "relaxed";
   int nx = 80, ny = 80;
 };
 struct TransientSection {  // the 'transient' command's run (lib/tangential/satran.h)

@@ -6,7 +6,10 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <string>
+#include <vector>
 
+#include "lib/history.h"
 #include "lib/io/errors.h"
 #include "lib/normal/hertz.h"
 #include "lib/tangential/kalker.h"
@@ -288,19 +291,221 @@ TangentialSolution relaxed_step(const ContactPatch& patch, const ElasticPair& pa
   return steady_at(patch, pair, state.effective, c, mu, speed_m_per_s, fields);
 }
 
+namespace {
+
+// the largest saturation level of the difference between the effective and the imposed creepages at which the
+// relaxed state counts as settled (the steady state to rounding: the forces it moves are below 1e-9 of mu N)
+constexpr double kSettledLevel = 1e-10;
+// ... and at which, when one creepage alone still relaxes, the rest of its exponential tail is summed in
+// closed form, linearised about the steady state: P(c_eff) - P(c) falls by exp(-dx/sigma) a step, a geometric
+// series; the linearisation's error is of the order of the level over the steady one, below 1e-3 of the
+// tail's energy
+constexpr double kTailLevel = 1e-4;
+
+// One step of the roller's spin with the relaxed model, for the trial spin omega_end at the step's end
+// (run_relaxed_inertia): its length, rolled distance, creepage, the relaxed step's solution and state after it.
+struct InertiaTrial {
+  TangentialSolution f;
+  RelaxedState state;
+  double dt_s = 0, dq_m = 0, V_m_per_s = 0, xi = 0;
+  bool shortened = false;
+};
+
+}  // namespace
+
+TransientResult run_relaxed_inertia(const TransientCase& c, const StepObserver& observe) {
+  const RollerInertia& in = *c.inertia;
+  const TransientSettings& set = c.settings;
+  check_transient_inputs(c);
+  check_history(in.path_speed_m_per_s, "path_speed_m_per_s");
+  if (!(in.R1_m > 0) || !(in.J1_kg_m2 > 0)) throw SettingError("", "inertia", "R1_m and J1_kg_m2 must be positive");
+  if (min_value(in.path_speed_m_per_s) < 0 || in.omega1_0_rad_per_s < 0)
+    throw SettingError("", "inertia", "the path speed and the initial spin must be >= 0");
+  if (!(set.dt_s > 0)) throw SettingError("", "dt_s", "an inertia run needs the longest step dt_s > 0");
+  if (set.scheme != TransientScheme::Shift) throw SettingError("", "scheme", "an inertia run uses shift");
+  if (c.patch && !(is_constant(c.inputs.normal_load_N) && c.inputs.normal_load_N.value[0] == c.patch->normal_load_N))
+    throw SettingError("", "normal_load_N", "a run on a given contact patch needs the constant load of the patch, " +
+                                                std::to_string(c.patch->normal_load_N) + " N");
+  TransientResult res;
+  res.grid = shift_run_grid(c);
+  const Grid& g = res.grid;
+  const double dx = g.dx_m, R1 = in.R1_m, J1 = in.J1_kg_m2;
+  res.strip_energy_J_per_m = Eigen::ArrayXd::Zero(g.ny);
+  res.final_state = rest_state(g);  // Satran's node state: not this model's (left at rest)
+  std::vector<double> snaps = set.snapshot_times_s;
+  std::sort(snaps.begin(), snaps.end());
+  std::size_t next_snap = 0;
+  RelaxedState state = relaxed_rest();
+  double t = 0, q = 0, omega = in.omega1_0_rad_per_s, F_patch = std::numeric_limits<double>::quiet_NaN();
+  int step = 0;
+  bool has_whole_step = false, in_contact = false;
+  ContactPatch patch;
+  while (t < set.t_end_s * (1 - 1e-12)) {
+    const double left = set.t_end_s - t, longest = set.dt_s;
+    const double V_now = (omega * R1 + value_at(in.path_speed_m_per_s, t)) / 2;
+    const double dt_guess = std::min({V_now > 0 ? dx / V_now : longest, longest, left});
+    const double V2 = value_at(in.path_speed_m_per_s, t + dt_guess / 2);
+    const double F = value_at(c.inputs.normal_load_N, t + dt_guess / 2);
+    if (!(F == F_patch)) {
+      patch = shift_run_contact(c, g, F);
+      F_patch = F;
+      in_contact = (patch.pressure_Pa > 0).any();
+      if (!in_contact) state = relaxed_rest();  // out of contact: nothing is held
+    }
+    const bool fields = next_snap < snaps.size();
+    // the step from the mean spin; returns the residual of the spin balance
+    auto evaluate = [&](double omega_end, InertiaTrial& out) {
+      const double omega_mid = (omega + omega_end) / 2;
+      const double Vm = std::max(0.0, (omega_mid * R1 + V2) / 2);
+      const double natural = std::min(Vm > 0 ? dx / Vm : longest, longest);
+      out.dt_s = std::min(natural, left);
+      out.dq_m = std::min(dx, Vm * out.dt_s);
+      out.V_m_per_s = Vm;
+      out.xi = Vm > 0 ? (V2 - omega_mid * R1) / Vm : 0;
+      out.shortened = out.dt_s < natural * (1 - 1e-9);
+      out.state = state;
+      out.f = in_contact ? relaxed_step(patch, c.materials, {out.xi, 0, 0}, c.mu, Vm, out.dq_m, out.state, fields)
+                         : no_contact_solution(g);
+      return J1 * (omega_end - omega) - (-R1 * out.f.Fx_N - in.T_res_N_m) * out.dt_s;
+    };
+    // the bracket: the creep force is bounded by mu F
+    InertiaTrial s;
+    const double span = (c.mu * F * R1 + std::abs(in.T_res_N_m)) * longest / J1 * 1.01 + 1e-12;
+    const double lo = std::max(0.0, omega - span), hi = omega + span;
+    const double f_lo = evaluate(lo, s), f_hi = evaluate(hi, s);
+    double omega_end = f_lo > 0 ? lo : hi;  // f_lo > 0: it cannot spin down below 0 within the bracket, it stops
+    if (f_lo <= 0 && f_hi >= 0) {  // the balance is monotone in omega_end
+      const RootResult root = find_root_bracketed([&](double w) { return evaluate(w, s); }, lo, hi, f_lo, f_hi,
+                                                  1e-13 * std::max(1.0, hi));
+      if (!root.converged)
+        throw std::runtime_error("relaxed model: the roller's spin balance at t = " + std::to_string(t) +
+                                 " s did not converge (residual " + std::to_string(root.f) + ")");
+      omega_end = root.x;
+    }
+    evaluate(omega_end, s);
+    state = s.state;
+    omega = omega_end;
+    const TangentialSolution& f = s.f;
+    TransientRecord rec;
+    rec.step = ++step;
+    rec.t_s = t + s.dt_s;  // as run_shift_steps: the step's end
+    rec.q_m = q + s.dq_m;
+    rec.dt_s = s.dt_s;
+    rec.speed_m_per_s = s.V_m_per_s;
+    rec.xi = s.xi;
+    rec.normal_load_N = F;
+    rec.omega1_rad_per_s = omega;
+    rec.Fx_N = f.Fx_N;
+    rec.Fy_N = f.Fy_N;
+    rec.Mz_N_m = f.Mz_N_m;
+    rec.power_W = f.power_W;
+    rec.stick_fraction = f.stick_fraction;
+    rec.balance_residual_W = std::numeric_limits<double>::quiet_NaN();  // a model has no discrete balance
+    rec.cfl = s.dq_m / dx;
+    rec.scheme = s.dq_m == 0 ? StepScheme::Standstill : StepScheme::Shift;  // not an upwind fallback: no nodes
+    rec.shortened = s.shortened;
+    if (!s.shortened || !has_whole_step) {
+      res.end = rec;
+      has_whole_step = !s.shortened;
+    }
+    t += s.dt_s;
+    q += s.dq_m;
+    res.strip_energy_J_per_m += f.strip_power_W_per_m * s.dt_s;
+    res.dissipated_J += f.power_W * s.dt_s;
+    if (observe) observe(rec, f.strip_power_W_per_m);
+    while (next_snap < snaps.size() && snaps[next_snap] <= t * (1 + 1e-12)) {
+      Snapshot sn;
+      sn.t_s = t;
+      sn.pressure_Pa = patch.pressure_Pa;
+      sn.tau_x_Pa = f.tau_x_Pa;
+      sn.tau_y_Pa = f.tau_y_Pa;
+      sn.slip_x_m_per_s = f.slip_x_m_per_s;
+      sn.slip_y_m_per_s = f.slip_y_m_per_s;
+      res.snapshots.push_back(std::move(sn));
+      ++next_snap;
+    }
+    if (!(s.dt_s > 0)) break;  // nothing left to advance
+  }
+  res.steps = step;
+  res.t_end_s = t;
+  res.q_end_m = q;
+  return res;
+}
+
 TransientResult run_relaxed_transient(const TransientCase& c, const StepObserver& observe) {
   const TransientSettings& set = c.settings;
   check_transient_inputs(c);
-  if (c.inertia) throw SettingError("", "inertia", "the relaxed model's run has no roller inertia (Satran's has)");
+  if (c.inertia) return run_relaxed_inertia(c, observe);
   if (set.scheme != TransientScheme::Shift)
-    throw SettingError("", "scheme", "the relaxed model rolls by the shift scheme's steps; use scheme: shift");
+    throw SettingError("", "scheme", "the relaxed model rolls by the shift scheme's steps; use scheme: shift (or "
+                                     "solver.tangential: consistent for Satran's upwind and lax-friedrichs steps)");
   RelaxedState state = relaxed_rest();
+  const ContactPatch* last = nullptr;  // the patch and imposed creepages of the last step
+  Creepages imposed;
+  ShiftSkip skip;
+  // the relaxation lengths of the last step (sigma shrunk with the saturation, as relaxed_step does)
+  auto sigmas = [&] {
+    Creepages sigma = relaxation_lengths_m(last->a_m, last->b_m);
+    const double e = saturation_level(*last, c.materials, state.effective, c.mu);
+    const double p = over_ab(T::kExponent, last->a_m / last->b_m);
+    const double share = std::max(1e-6, std::pow(1 - std::clamp(e, 0.0, 1.0), p));
+    return Creepages{sigma.xi * share, sigma.eta * share, sigma.phi_per_m * share};
+  };
+  auto deviation = [&] {
+    return Creepages{state.effective.xi - imposed.xi, state.effective.eta - imposed.eta,
+                     state.effective.phi_per_m - imposed.phi_per_m};
+  };
+  // the one creepage still relaxing beyond kSettledLevel (0 xi, 1 eta, 2 phi), -1 if none, -2 if more than one
+  auto relaxing = [&] {
+    const Creepages d = deviation();
+    int k = -1;
+    const Creepages parts[3] = {{d.xi, 0, 0}, {0, d.eta, 0}, {0, 0, d.phi_per_m}};
+    for (int i = 0; i < 3; ++i)
+      if (saturation_level(*last, c.materials, parts[i], c.mu) > kSettledLevel) k = k == -1 ? i : -2;
+    return k;
+  };
+  // settled: the effective creepages are the imposed ones to kSettledLevel, or one alone relaxes within kTailLevel
+  skip.settled = [&] {
+    if (!last) return false;
+    const double e = saturation_level(*last, c.materials, deviation(), c.mu);
+    return e >= 0 && (e <= kSettledLevel || (e <= kTailLevel && relaxing() >= 0));
+  };
+  // the stretch's energy: the steady state's, plus the relaxing creepage's tail in closed form
+  skip.energy = [&](double span_s, double rolled_m, const TangentialSolution& f, Eigen::ArrayXd& strip_J, double& J) {
+    const int k = relaxing();
+    if (k < 0 || !(rolled_m > 0)) return;
+    const double V = rolled_m / span_s;
+    const TangentialSolution ss = solve_relaxed_steady(*last, c.materials, imposed, c.mu, V, false);
+    const Creepages sg = sigmas();
+    const double sigma = k == 0 ? sg.xi : k == 1 ? sg.eta : sg.phi_per_m;
+    // the steps' sum the stretch stands for: n whole steps of dx, the deviation falling by r = exp(-dx/sigma) in
+    // each, the power taken at each step's end: sum_{k=1..n} r^k dt (the stepped run's, to the linearisation)
+    const double dx = last->grid.dx_m, n = std::round(rolled_m / dx), r = std::exp(-dx / sigma);
+    const double tail_s = span_s / n * r * (1 - std::pow(r, n)) / (1 - r);
+    strip_J = ss.strip_power_W_per_m * span_s + (f.strip_power_W_per_m - ss.strip_power_W_per_m) * tail_s;
+    J = ss.power_W * span_s + (f.power_W - ss.power_W) * tail_s;
+  };
+  // over the stretch the effective creepages relax on towards the imposed ones, as the steps would (sigma frozen)
+  skip.skipped = [&](double rolled_m) {
+    if (!last) return;
+    const Creepages sigma = sigmas();
+    auto relax = [rolled_m](double& eff, double target, double s) { eff = target + (eff - target) * std::exp(-rolled_m / s); };
+    relax(state.effective.xi, imposed.xi, sigma.xi);
+    relax(state.effective.eta, imposed.eta, sigma.eta);
+    relax(state.effective.phi_per_m, imposed.phi_per_m, sigma.phi_per_m);
+  };
   return run_shift_steps(
       c, observe,
       [&](const ContactPatch& patch, const ShiftStep& s) {
+        last = &patch;
+        imposed = s.creepages;
         return relaxed_step(patch, c.materials, s.creepages, c.mu, s.speed_m_per_s, s.dq_m, state, s.fields);
       },
-      [&](const Grid&) { state = relaxed_rest(); });  // out of contact: nothing is held
+      [&](const Grid&) {  // out of contact: nothing is held
+        state = relaxed_rest();
+        last = nullptr;
+      },
+      skip);
 }
 
 }  // namespace contact

@@ -86,7 +86,17 @@ TangentialSolution relaxed_step(const ContactPatch& patch, const ElasticPair& pa
 // The 'transient' run of a case with the relaxed model: the steps of Satran's shift scheme (dq = dx,
 // shortened to the longest step dt_s or to land on t_end_s; the creepages and speed at mid-step, the
 // contact at the step's end), each one relaxed_step. Hertz contact from the bodies (or c.patch at its
-// constant load). No inertia, scheme shift only (SettingError otherwise). The balance residual is nan.
+// constant load). Scheme shift only (SettingError naming `scheme` otherwise). The balance residual is nan.
+// With settings.skip_steady (the wear loop's duty cycles), once the inputs are constant and the effective
+// creepages are the imposed ones to a saturation level of 1e-10, the rest of the constant stretch is one
+// record (shift_run.h, ShiftSkip). With c.inertia, run_relaxed_inertia.
 TransientResult run_relaxed_transient(const TransientCase& c, const StepObserver& observe = {});
+
+// The roller's inertia (RollerInertia, satran.h) with the relaxed model: steps of at most dt_s and at most
+// dx rolled; each balances the roller's spin implicitly as Satran's inertia step does,
+//   J1 (omega_end - omega1) = (-R1 Fx - T_res) dt,  V = (omega_mid R1 + V2)/2,  xi = (V2 - omega_mid R1)/V,
+// omega_mid = (omega1 + omega_end)/2, V2 at mid-step, Fx that of relaxed_step at xi over dq = V dt. Records are
+// the step's end; steps shorter than dx are not upwind fallbacks here (the model has no nodes to carry).
+TransientResult run_relaxed_inertia(const TransientCase& c, const StepObserver& observe = {});
 
 }  // namespace contact

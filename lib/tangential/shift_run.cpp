@@ -2,6 +2,7 @@
 #include "lib/tangential/shift_run.h"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <string>
 #include <vector>
@@ -41,19 +42,22 @@ ContactPatch contact_at(const TransientCase& c, const Grid& grid, double F) {
 
 }  // namespace
 
+ContactPatch shift_run_contact(const TransientCase& c, const Grid& grid, double F) { return contact_at(c, grid, F); }
+
+Grid shift_run_grid(const TransientCase& c) {
+  if (c.patch) return c.patch->grid;
+  const HertzContact largest = solve_hertz(c.bodies, c.materials, max_value(c.inputs.normal_load_N));
+  return make_grid(largest.a_m, largest.b_m, c.settings.grid);
+}
+
 TransientResult run_shift_steps(const TransientCase& c, const StepObserver& observe, const ShiftStepSolve& solve,
-                                const std::function<void(const Grid&)>& no_contact) {
+                                const std::function<void(const Grid&)>& no_contact, const ShiftSkip& skip) {
   const TransientSettings& set = c.settings;
   if (c.patch && !(is_constant(c.inputs.normal_load_N) && c.inputs.normal_load_N.value[0] == c.patch->normal_load_N))
     throw SettingError("", "normal_load_N", "a run on a given contact patch needs the constant load of the patch, " +
                                                 std::to_string(c.patch->normal_load_N) + " N");
   TransientResult res;
-  if (c.patch) {
-    res.grid = c.patch->grid;
-  } else {
-    const HertzContact largest = solve_hertz(c.bodies, c.materials, max_value(c.inputs.normal_load_N));
-    res.grid = make_grid(largest.a_m, largest.b_m, set.grid);
-  }
+  res.grid = shift_run_grid(c);
   const Grid& g = res.grid;
   const double dx = g.dx_m;
   res.strip_energy_J_per_m = Eigen::ArrayXd::Zero(g.ny);
@@ -139,6 +143,42 @@ TransientResult run_shift_steps(const TransientCase& c, const StepObserver& obse
       sn.slip_y_m_per_s = f.slip_y_m_per_s;
       res.snapshots.push_back(std::move(sn));
       ++next_snap;
+    }
+    if (set.skip_steady && skip.settled && in_contact && dq == dx && !shortened && skip.settled()) {
+      // the inputs constant over the step just taken and the stretch ahead
+      const History* inputs[] = {&c.inputs.speed_m_per_s, &c.inputs.xi, &c.inputs.eta, &c.inputs.phi_per_m,
+                                 &c.inputs.normal_load_N};
+      double since = 0, until = set.t_end_s;
+      for (const History* h : inputs) {
+        since = std::max(since, constant_since(*h, t));
+        until = std::min(until, constant_until(*h, t));
+      }
+      if (next_snap < snaps.size()) until = std::min(until, snaps[next_snap]);
+      // a whole number of steps, so that the steps after the stretch fall where they would without the skip
+      const double whole_steps = std::floor((until - t) / dt) - 1;
+      if (whole_steps >= 2 && since <= t - dt) {
+        const double span = whole_steps * dt;
+        TransientRecord sk = rec;
+        sk.step = ++step;
+        sk.t_s = t + span / 2;
+        sk.q_m = q + whole_steps * dq / 2;
+        sk.dt_s = span;
+        sk.cfl = whole_steps;
+        sk.skipped = true;
+        sk.shortened = false;
+        Eigen::ArrayXd strip_J = f.strip_power_W_per_m * span;
+        double J = f.power_W * span;
+        if (skip.energy) skip.energy(span, whole_steps * dq, f, strip_J, J);
+        sk.power_W = J / span;
+        t += span;
+        q += whole_steps * dq;
+        res.strip_energy_J_per_m += strip_J;
+        res.dissipated_J += J;
+        res.end = sk;
+        has_whole_step = true;
+        if (skip.skipped) skip.skipped(whole_steps * dq);
+        if (observe) observe(sk, Eigen::ArrayXd(strip_J / span));
+      }
     }
   }
   res.steps = step;

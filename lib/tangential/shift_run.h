@@ -27,10 +27,33 @@ struct ShiftStep {
 // the step's solution on a patch with some cell in contact
 using ShiftStepSolve = std::function<TangentialSolution(const ContactPatch& patch, const ShiftStep& step)>;
 
+// Steady running skipped (settings.skip_steady), for a solver whose state settles to a steady one: after a
+// whole step (dq = dx) in contact whose inputs were constant over it, when `settled()` says the solver's state
+// is the steady one of those inputs (to the solver's own tolerance), the rest of the constant stretch (whole
+// steps, up to one step before the next change of an input, snapshot time or t_end_s, as Satran's skip) is one
+// record with the last step's strip powers times its duration; `skipped(rolled_m)` then advances the solver's
+// state over the distance the stretch rolls. Unset: no step is skipped.
+// `energy` (if set) gives the stretch's strip energies (J/m) and energy (J) over span_s rolling rolled_m from the
+// last step's solution, in place of that step's powers times span_s (a solver whose state still relaxes).
+struct ShiftSkip {
+  std::function<bool()> settled;
+  std::function<void(double rolled_m)> skipped;
+  std::function<void(double span_s, double rolled_m, const TangentialSolution& last, Eigen::ArrayXd& strip_J_per_m,
+                     double& J)>
+      energy;
+};
+
 // Runs c by the shift scheme's steps; `solve` is called for every step with contact, `no_contact` (if
 // set) for every step without, with the run's grid (a solver that carries the previous step forgets it there).
 TransientResult run_shift_steps(const TransientCase& c, const StepObserver& observe, const ShiftStepSolve& solve,
-                                const std::function<void(const Grid&)>& no_contact = {});
+                                const std::function<void(const Grid&)>& no_contact = {}, const ShiftSkip& skip = {});
+
+// the contact at load F on the run's grid, as the steps of run_shift_steps see it: c.patch if given, else
+// Hertz's ellipse from the bodies (a patch without pressure at F = 0 or when no strip centre is in contact)
+ContactPatch shift_run_contact(const TransientCase& c, const Grid& grid, double F);
+
+// the run's grid: c.patch's, else the one covering Hertz's contact at the largest load
+Grid shift_run_grid(const TransientCase& c);
 
 // no cell in contact: every field and strip total zero on the grid
 TangentialSolution no_contact_solution(const Grid& g);

@@ -58,6 +58,10 @@ TangentialProblem make_tangential_problem(const ContactPatch& patch, const Elast
 //               forces' work); the commands call it in solve_steady's place, which does not take it.
 enum class TangentialScheme { Classic, Consistent, Exact, Relaxed };
 
+// the scheme of a case without solver.tangential: the relaxed model, matched to the exact theory
+// (docs/accuracy-vs-exact.md); consistent (the simplified theory) and classic stay selectable
+constexpr TangentialScheme kDefaultTangentialScheme = TangentialScheme::Relaxed;
+
 std::string to_string(TangentialScheme scheme);
 
 // Skip for a symmetric case (docs/accuracy-and-speed.md). Without spin the creep rates
