@@ -2,6 +2,7 @@
 #include "lib/tangential/relaxed.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -12,6 +13,7 @@
 #include "lib/io/errors.h"
 #include "lib/normal/hertz.h"
 #include "lib/tangential/kalker.h"
+#include "lib/tangential/relaxed_mix_table.h"
 #include "lib/tangential/relaxed_table.h"
 #include "lib/tangential/shift_run.h"
 #include "lib/tangential/steady.h"
@@ -54,30 +56,160 @@ double factor(const double (&es)[Ne], const double (&g)[T::kNab][Ne], double ab,
   return (1 - w) * over_e(es, g[i], Ne, e) + w * over_e(es, g[i + 1], Ne, e);
 }
 
-// the saturation level e = G a b |(C11 xi, C22 eta, C23 sqrt(ab) phi)| / (3 mu N) (-1: no contact or no friction)
-double saturation_level(const ContactPatch& patch, const ElasticPair& pair, const Creepages& c, double mu) {
-  const double a = patch.a_m, b = patch.b_m, N = patch.normal_load_N;
-  if (!(a > 0 && b > 0 && N > 0 && mu > 0)) return -1;
-  const KalkerCoefficients C = kalker_coefficients(a, b, combined_poisson(pair));
-  const double G = combined_shear_modulus_Pa(pair), scale = G * a * b / (3 * mu * N);
-  const double ex = scale * C.C11 * std::abs(c.xi), ey = scale * C.C22 * std::abs(c.eta),
-               ep = scale * std::sqrt(a * b) * C.C23 * std::abs(c.phi_per_m);
-  return std::sqrt(ex * ex + ey * ey + ep * ep);
-}
-
-// the creepages the simplified theory is solved at, and the factor on the spin's longitudinal rate phi y / L3
-// (the second spin flexibility: L3x = L3 / that factor, with phi the imposed spin)
-struct Corrected {
-  Creepages c;
-  double spin_x = 1;
+// each creepage's contribution to the saturation level, signed: u = G a b (C11 xi, C22 eta, C23 sqrt(ab) phi) / (3 mu N),
+// e = |u| (docs/physics.md §3); none (all zero, valid false) without contact or friction
+struct Levels {
+  double xi = 0, eta = 0, phi = 0;  // u
+  double scale_xi = 0, scale_eta = 0, scale_phi = 0;  // the creepage of level 1 in each direction
+  bool valid = false;
+  double e() const { return std::sqrt(xi * xi + eta * eta + phi * phi); }
 };
 
-Corrected corrected(const ContactPatch& patch, const ElasticPair& pair, const Creepages& c, double mu) {
-  const double e = saturation_level(patch, pair, c, mu), ab = patch.a_m / patch.b_m;
-  if (e < 0) return {c, 1};
-  return {{c.xi * factor(T::kE, T::kGx, ab, e), c.eta * factor(T::kE, T::kGy, ab, e),
-           c.phi_per_m * factor(T::kEPhi, T::kGphi, ab, e)},
-          factor(T::kEPhi, T::kGphiX, ab, e)};
+Levels levels(const ContactPatch& patch, const ElasticPair& pair, const Creepages& c, double mu) {
+  const double a = patch.a_m, b = patch.b_m, N = patch.normal_load_N;
+  Levels l;
+  if (!(a > 0 && b > 0 && N > 0 && mu > 0)) return l;
+  const KalkerCoefficients C = kalker_coefficients(a, b, combined_poisson(pair));
+  const double G = combined_shear_modulus_Pa(pair), scale = 3 * mu * N / (G * a * b);
+  l.scale_xi = scale / C.C11;
+  l.scale_eta = scale / C.C22;
+  l.scale_phi = scale / (std::sqrt(a * b) * C.C23);
+  l.xi = c.xi / l.scale_xi;
+  l.eta = c.eta / l.scale_eta;
+  l.phi = c.phi_per_m / l.scale_phi;
+  l.valid = true;
+  return l;
+}
+
+// the saturation level e = G a b |(C11 xi, C22 eta, C23 sqrt(ab) phi)| / (3 mu N) (-1: no contact or no friction)
+double saturation_level(const ContactPatch& patch, const ElasticPair& pair, const Creepages& c, double mu) {
+  const Levels l = levels(patch, pair, c, mu);
+  return l.valid ? l.e() : -1;
+}
+
+namespace M = relaxed_mix_table;
+
+// the share of the longitudinal spin rate at which a lateral one is set where it has none (relaxed.h: L3x)
+constexpr double kTinyShare = 1e-12;
+
+// the bracket of v in the ascending nodes xs[0..n), clamped at the ends: (node, weight of node + 1)
+std::pair<int, double> bracket(const double* xs, int n, double v) {
+  if (n == 1 || !(v > xs[0])) return {0, 0.0};
+  if (v >= xs[n - 1]) return {n - 2, 1.0};
+  int k = 0;
+  while (v > xs[k + 1]) ++k;
+  return {k, (v - xs[k]) / (xs[k + 1] - xs[k])};
+}
+
+// the table's correction per unit level D at (row ab, theta, psi in [0, 180) deg, e), linear in each; psi is
+// periodic over 180 deg with the eta and phi components' signs flipped (the mirror y -> -y)
+std::array<double, 4> mix_per_level(int iab, double theta_deg, double psi_deg, double e) {
+  const auto [it, wt] = bracket(M::kThetaDeg, M::kNtheta, theta_deg);
+  const auto [ie, we] = bracket(M::kE, M::kNe, e);
+  // psi: the node below and above (above may be node 0 at 180 deg, mirrored)
+  int ip = 0;
+  while (ip + 1 < M::kNpsi && psi_deg >= M::kPsiDeg[ip + 1]) ++ip;
+  const bool wraps = ip + 1 == M::kNpsi;
+  const double upper = wraps ? 180.0 : M::kPsiDeg[ip + 1];
+  const double wp = M::kNpsi == 1 ? 0.0 : std::clamp((psi_deg - M::kPsiDeg[ip]) / (upper - M::kPsiDeg[ip]), 0.0, 1.0);
+  std::array<double, 4> d{0, 0, 0, 0};
+  for (int a = 0; a < 2; ++a) {
+    const double fa = a == 0 ? 1 - wt : wt;
+    if (fa == 0 || it + a >= M::kNtheta) continue;
+    for (int p = 0; p < 2; ++p) {
+      const double fp = p == 0 ? 1 - wp : wp;
+      if (fp == 0) continue;
+      const int jp = p == 0 ? ip : (wraps ? 0 : ip + 1);
+      const double mirror = p == 1 && wraps ? -1.0 : 1.0;
+      for (int q = 0; q < 2; ++q) {
+        const double fq = q == 0 ? 1 - we : we;
+        if (fq == 0 || ie + q >= M::kNe) continue;
+        const double(&v)[4] = M::kD[iab][it + a][jp][ie + q];
+        const double f = fa * fp * fq;
+        d[0] += f * v[0];
+        for (int k = 1; k < 4; ++k) d[k] += f * mirror * v[k];
+      }
+    }
+  }
+  return d;
+}
+
+// the no-spin table's (D_xi, D_eta, D_moment) at (row ab, theta, e), linear in each
+std::array<double, 3> no_spin_at(int iab, double theta_deg, double e) {
+  const auto [it, wt] = bracket(M::kThetaDeg, M::kNtheta, theta_deg);
+  const auto [ie, we] = bracket(M::kE, M::kNe, e);
+  std::array<double, 3> d{0, 0, 0};
+  for (int a = 0; a < 2; ++a)
+    for (int q = 0; q < 2; ++q) {
+      const double f = (a == 0 ? 1 - wt : wt) * (q == 0 ? 1 - we : we);
+      if (f == 0 || it + a >= M::kNtheta || ie + q >= M::kNe) continue;
+      for (int k = 0; k < 3; ++k) d[k] += f * M::kNoSpin[iab][it + a][ie + q][k];
+    }
+  return d;
+}
+
+// the mix correction in levels (relaxed.h, relaxed_mix_correction) of the levels l
+RelaxedMix mix_correction_of(const Levels& l, double ab) {
+  const double e = l.e();
+  if (!l.valid || !(e > 0) || (l.eta == 0 && l.phi == 0)) return {};  // pure xi: none (its factor holds it)
+  // the symmetries of a patch symmetric in y: F(-xi, eta, phi) = (-Fx, Fy, Mz)(xi, eta, phi), and the mirror
+  // F(xi, -eta, -phi) = (Fx, -Fy, -Mz)(xi, eta, phi): the table holds xi >= 0 and psi in [0, 180) deg
+  const double sx = l.xi < 0 ? -1.0 : 1.0;
+  const double theta = std::acos(std::clamp(std::abs(l.xi) / e, 0.0, 1.0)) * 180 / kPi;
+  double psi = std::atan2(l.phi, l.eta) * 180 / kPi, sm = 1;
+  if (psi < 0) psi += 180, sm = -1;
+  if (psi >= 180) psi -= 180, sm = -sm;
+  std::array<double, 4> d{0, 0, 0, 0};
+  // linear in log(a/b) between the table's rows, clamped at its ends
+  int row = 0;
+  double wr = 0;
+  if (M::kNab > 1 && ab > M::kAb[0]) {
+    if (ab >= M::kAb[M::kNab - 1]) {
+      row = M::kNab - 2;
+      wr = 1;
+    } else {
+      while (ab > M::kAb[row + 1]) ++row;
+      wr = std::log(ab / M::kAb[row]) / std::log(M::kAb[row + 1] / M::kAb[row]);
+    }
+  }
+  if (l.phi == 0) {  // without spin: no spin parts, a moment added to Mz (relaxed.h)
+    const std::array<double, 3> n0 = no_spin_at(row, theta, e);
+    const std::array<double, 3> n1 = wr > 0 ? no_spin_at(row + 1, theta, e) : n0;
+    const auto at = [&](int k) { return (1 - wr) * n0[k] + wr * n1[k]; };
+    const double se = l.eta < 0 ? -1.0 : 1.0;
+    return {sx * at(0) * e, se * at(1) * e, 0, 0, se * at(2) * e};
+  }
+  const std::array<double, 4> d0 = mix_per_level(row, theta, psi, e);
+  const std::array<double, 4> d1 = wr > 0 ? mix_per_level(row + 1, theta, psi, e) : d0;
+  for (int k = 0; k < 4; ++k) d[k] = ((1 - wr) * d0[k] + wr * d1[k]) * e;
+  return {sx * d[0], sm * d[1], sm * d[2], sm * d[3]};
+}
+
+// the creepages the simplified theory is solved at, and its spin's longitudinal rate: phi_x y / L3 with
+// phi_x = the imposed phi times its factor (the second spin flexibility; the lateral rate is c.phi x / L3)
+struct Corrected {
+  Creepages c;
+  double phi_x_per_m = 0;
+  double moment = 0;  // added to the march's Mz, times mu N sqrt(ab) (without imposed spin)
+};
+
+// the pure creepages' factors at the level of c, and the mix correction: `mix` (levels) in place of the table's
+// where given
+Corrected corrected(const ContactPatch& patch, const ElasticPair& pair, const Creepages& c, double mu,
+                    const RelaxedMix* mix) {
+  const Levels l = levels(patch, pair, c, mu);
+  if (!l.valid) return {c, c.phi_per_m};
+  const double e = l.e(), ab = patch.a_m / patch.b_m;
+  Corrected r{{c.xi * factor(T::kE, T::kGx, ab, e), c.eta * factor(T::kE, T::kGy, ab, e),
+               c.phi_per_m * factor(T::kEPhi, T::kGphi, ab, e)},
+              c.phi_per_m * factor(T::kEPhi, T::kGphiX, ab, e)};
+  const RelaxedMix d = mix ? *mix : mix_correction_of(l, ab);
+  r.c.xi += d.xi * l.scale_xi;
+  r.c.eta += d.eta * l.scale_eta;
+  r.c.phi_per_m += d.phi_lateral * l.scale_phi;
+  r.phi_x_per_m += d.phi_longitudinal * l.scale_phi;
+  r.moment = d.moment;
+  return r;
 }
 
 double creep_work_W(const TangentialSolution& s, const Creepages& c, double V) {
@@ -86,16 +218,21 @@ double creep_work_W(const TangentialSolution& s, const Creepages& c, double V) {
 
 // the steady model at the creepages c, its power scaled to the creep forces' work at `work_at`
 TangentialSolution steady_at(const ContactPatch& patch, const ElasticPair& pair, const Creepages& c,
-                             const Creepages& work_at, double mu, double V, bool fields) {
+                             const Creepages& work_at, double mu, double V, bool fields,
+                             const RelaxedMix* mix = nullptr) {
   SteadyOptions o;
   o.fields = fields;
-  const Corrected cor = corrected(patch, pair, c, mu);
+  const Corrected cor = corrected(patch, pair, c, mu, mix);
   const Creepages& solved = cor.c;
   TangentialProblem pb = make_tangential_problem(patch, pair, solved, mu, V);
-  // the spin's longitudinal traction rate phi y / L3x with the imposed phi times its own factor (the lateral
-  // one, phi x / L3, takes solved.phi): solved.phi / L3x = c.phi spin_x / L3
-  if (solved.phi_per_m != 0 && c.phi_per_m != 0)
-    pb.L3x_m_per_Pa = pb.flex.L3_m_per_Pa * (solved.phi_per_m / c.phi_per_m) / cor.spin_x;
+  // the spin's longitudinal traction rate phi_x y / L3 (the lateral one, phi x / L3, takes solved.phi):
+  // solved.phi / L3x = phi_x / L3; none (L3x infinite) where the lateral one alone has spin (a mix correction)
+  // (where the lateral rate has none and the longitudinal one has, phi is solved at a tiny value with L3x to match:
+  // its lateral rate is below rounding)
+  if (solved.phi_per_m == 0 && cor.phi_x_per_m != 0) pb.creepages.phi_per_m = kTinyShare * cor.phi_x_per_m;
+  if (pb.creepages.phi_per_m != 0)
+    pb.L3x_m_per_Pa = cor.phi_x_per_m != 0 ? pb.flex.L3_m_per_Pa * pb.creepages.phi_per_m / cor.phi_x_per_m
+                                           : std::numeric_limits<double>::infinity();
   TangentialSolution s = solve_steady(patch, pb, TangentialScheme::Consistent, o);
   // the work of the strips' Heathcote offsets (xi_j - xi, docs/physics.md §2.4), which the solver's creep work
   // holds beside that of the uniform creepages
@@ -108,6 +245,8 @@ TangentialSolution steady_at(const ContactPatch& patch, const ElasticPair& pair,
     s.power_W = target;
   }
   s.creep_work_W = creep_work_W(s, work_at, V) + offsets_W;
+  // without imposed spin, the fitted moment (phi Mz is 0 in the work above)
+  if (cor.moment != 0) s.Mz_N_m += cor.moment * mu * patch.normal_load_N * std::sqrt(patch.a_m * patch.b_m);
   return s;
 }
 
@@ -121,6 +260,17 @@ Creepages relaxation_lengths_m(double a_m, double b_m) {
 TangentialSolution solve_relaxed_steady(const ContactPatch& patch, const ElasticPair& pair, const Creepages& creepages,
                                         double mu, double speed_m_per_s, bool fields) {
   return steady_at(patch, pair, creepages, creepages, mu, speed_m_per_s, fields);
+}
+
+RelaxedMix relaxed_mix_correction(const ContactPatch& patch, const ElasticPair& pair, const Creepages& creepages,
+                                  double mu) {
+  return mix_correction_of(levels(patch, pair, creepages, mu), patch.a_m / patch.b_m);
+}
+
+TangentialSolution solve_relaxed_steady_with_mix(const ContactPatch& patch, const ElasticPair& pair,
+                                                 const Creepages& creepages, const RelaxedMix& mix, double mu, double speed_m_per_s,
+                                                 bool fields) {
+  return steady_at(patch, pair, creepages, creepages, mu, speed_m_per_s, fields, &mix);
 }
 
 TangentialSolution relaxed_step(const ContactPatch& patch, const ElasticPair& pair, const Creepages& c, double mu,

@@ -15,11 +15,23 @@
 //   - spin: two flexibilities: phi scaled by g_phi(a/b, e) (its lateral rate phi x / L3: Fy) and its longitudinal
 //     rate phi y / L3 by g_phix(a/b, e) (L3x = L3 g_phi / g_phix: Mz), fitted together to the exact Fy and Mz under
 //     pure spin (one flexibility cannot hold both: Kalker's C23 and C33);
+//   - mixes: the factors above are fitted on pure creepages; a mix of them adds to the creepages solved at a
+//     correction d(a/b, direction, e) in levels (d_k times the creepage of level 1 in direction k, 3 mu N /
+//     (G a b C_k)), fitted so that the exact Fx, Fy and Mz are met over the direction of the creepage vector
+//     u = G a b (C11 xi, C22 eta, C23 sqrt(ab) phi) / (3 mu N): theta its angle from the xi axis, psi that of
+//     (eta, phi) in their plane. The spin's correction has two parts, one in its lateral rate phi x / L3 and one
+//     in its longitudinal rate phi y / L3: under pure eta they give the moment that the uniform rate eta / L2
+//     lacks (the exact Mz under eta: the lateral traction's shape along x far from saturation, the turn of the
+//     slip's direction across the contact near it). Without imposed spin (phi = 0) the march is kept free of
+//     spin (its mirror skip and the cost of a solve without spin, lib/tangential/steady.h): the correction has
+//     no spin parts there, and Mz is the march's plus a fitted moment (the traction field's own moment is the
+//     march's; Mz does not enter the power when phi = 0). Pure xi: none;
 //   - power: the exact theory's steady frictional power is the creep forces' work -V (xi Fx + eta Fy + phi Mz)
 //     (docs/physics.md §4); the bed of springs with three flexibilities is not (1.5-2.2x with mixes).
 //     The model keeps the strips' distribution of the simplified theory's power and scales it to that work
 //     (with the work of the strips' Heathcote offsets, docs/physics.md §2.4, where the patch has them).
-// The factors s_k and g_k: lib/tangential/relaxed_table.h, fitted to the exact solver by
+// The factors s_k and g_k: lib/tangential/relaxed_table.h, the mix corrections lib/tangential/relaxed_mix_table.h,
+// fitted to the exact solver by
 // scripts/fit-relaxed (fit error in docs/accuracy-vs-exact.md).
 #pragma once
 
@@ -48,6 +60,21 @@ Creepages relaxation_lengths_m(double a_m, double b_m);
 // Throws std::invalid_argument as make_tangential_problem.
 TangentialSolution solve_relaxed_steady(const ContactPatch& patch, const ElasticPair& pair, const Creepages& creepages,
                                         double mu, double speed_m_per_s, bool fields = true);
+
+// A mix correction in levels: added to the creepages solved at, each times the creepage of level 1 in its
+// direction (3 mu N / (G a b C_k)); the spin's in its lateral rate phi x / L3 and its longitudinal one phi y / L3
+// separately
+struct RelaxedMix {
+  double xi = 0, eta = 0, phi_lateral = 0, phi_longitudinal = 0;
+  double moment = 0;  // without imposed spin (the spin's parts 0 then): added to the march's Mz, times mu N sqrt(ab)
+};
+// the mix correction the table gives at the creepages c (zero for pure xi)
+RelaxedMix relaxed_mix_correction(const ContactPatch& patch, const ElasticPair& pair, const Creepages& creepages,
+                                  double mu);
+// the steady model with the mix correction `mix` in place of the table's (for the fit, scripts/fit-relaxed)
+TangentialSolution solve_relaxed_steady_with_mix(const ContactPatch& patch, const ElasticPair& pair,
+                                                 const Creepages& creepages, const RelaxedMix& mix, double mu,
+                                                 double speed_m_per_s, bool fields = false);
 
 // One step rolling dq_m >= 0 with the imposed creepages c (the step's mean): the effective creepages
 // relax, c_eff <- c + (c_eff - c) exp(-dq / sigma) (sigma at the step's start), then the steady model at c_eff. Its power is the

@@ -536,7 +536,7 @@ StripRates strip_rates(const ContactPatch& patch, const TangentialProblem& pb, i
   StripRates r;
   r.a_m = patch.half_length_m(j);
   r.y_m = patch.grid.y_m(j);
-  const double L3x = pb.L3x_m_per_Pa > 0 ? pb.L3x_m_per_Pa : pb.flex.L3_m_per_Pa;
+  const double L3x = pb.L3x_m_per_Pa != 0 ? pb.L3x_m_per_Pa : pb.flex.L3_m_per_Pa;
   r.alpha_Pa_per_m = xi / pb.flex.L1_m_per_Pa - c.phi_per_m * r.y_m / L3x;
   r.eta_L2_Pa_per_m = c.eta / pb.flex.L2_m_per_Pa;
   r.phi_L3_Pa_per_m2 = c.phi_per_m / pb.flex.L3_m_per_Pa;

@@ -31,8 +31,9 @@ struct TangentialProblem {
   KalkerCoefficients C;   // at the patch's a/b and the combined nu (kept for reports)
   Flexibilities flex;
   double L_m_per_Pa = 0;  // mean flexibility
-  // the spin's flexibility in the longitudinal traction (the -phi y term) where > 0, else flex.L3: the relaxed
-  // model's second spin flexibility (lib/tangential/relaxed.h); make_tangential_problem leaves it 0
+  // the spin's flexibility in the longitudinal traction (the -phi y term) where != 0, else flex.L3: the relaxed
+  // model's second spin flexibility (lib/tangential/relaxed.h; negative or infinite where its mix correction
+  // turns or removes the lateral rate's spin); make_tangential_problem leaves it 0
   double L3x_m_per_Pa = 0;
   Creepages creepages;
   double mu = 0;               // Coulomb friction coefficient

@@ -12,9 +12,14 @@
 //   fast_model_report checkspin AB N    the relaxed model's spin between the fitted levels (lines "K")
 //   fast_model_report linear AB N       the linear limit of Fy(phi), Mz(eta), Mz(phi) against Kalker's C23, C33
 //   fast_model_report fitspin AB N      its two spin factors (lines "H", scripts/fit-relaxed --spin-only)
+//   fast_model_report fitmix AB N       its mix corrections over directions and levels (lines "M", scripts/fit-relaxed)
+//   fast_model_report checkmix AB N     the relaxed model at directions and levels between the fitted ones (lines "C")
+//   fast_model_report cost AB N [REPS]  its steady solve and step against the consistent solve and Satran's (lines "X")
 // FAST_MODEL_CASES=xi50,mix50 (say) in the environment: only those steady cases.
 // Lines: "S solver ab n label xi eta phi Fx Fy Mz P W ms" (W = -creep work), "J solver ab n label P_j...",
 // "T solver ab n label q/a Fx Fy Mz P ms".
+#include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -22,6 +27,8 @@
 #include <functional>
 #include <string>
 #include <vector>
+
+#include <Eigen/Dense>
 
 #include "lib/elastic.h"
 #include "lib/grid.h"
@@ -318,6 +325,194 @@ void linear_limit(double ab, int n) {
   row("relaxed", solve_relaxed_steady(p, kPair, ce, kMu, kV), solve_relaxed_steady(p, kPair, cp, kMu, kV));
 }
 
+// The mix corrections' directions (lib/tangential/relaxed_mix_table.h): theta, the angle of the creepage vector in
+// levels u = G a b (C11 xi, C22 eta, C23 sqrt(ab) phi) / (3 mu N) from the xi axis, psi that of (eta, phi) in their
+// plane (0: eta, 90: phi); psi over [0, 180) (the mirror y -> -y gives the rest), xi >= 0 (its sign's symmetry)
+const std::vector<double> kMixTheta = {0, 15, 30, 45, 60, 75, 90};
+const std::vector<double> kMixPsi = {0, 22.5, 45, 67.5, 90, 112.5, 135, 157.5};
+
+// the creepages of level e in the direction (theta, psi) (degrees)
+Creepages in_direction(const ContactPatch& p, double theta_deg, double psi_deg, double e) {
+  const double t = theta_deg * kPi / 180, s = psi_deg * kPi / 180;
+  const Creepages x = at_level(p, 0, 1), y = at_level(p, 1, 1), z = at_level(p, 2, 1);
+  return {e * std::cos(t) * x.xi, e * std::sin(t) * std::cos(s) * y.eta, e * std::sin(t) * std::sin(s) * z.phi_per_m};
+}
+
+// the error of a model's steady solution against the exact one, in units of the targets: Fx and Fy over 2 % of
+// the exact |(Fx, Fy)|, Mz over 5 % of the exact |Mz| (floored at 1e-3 |(Fx, Fy)| sqrt(ab), where Mz vanishes)
+std::array<double, 3> in_targets(const TangentialSolution& m, const TangentialSolution& ex, const ContactPatch& p) {
+  const double Fn = std::hypot(ex.Fx_N, ex.Fy_N);
+  const double Mzs = std::max(std::abs(ex.Mz_N_m), 1e-3 * Fn * std::sqrt(p.a_m * p.b_m));
+  return {(m.Fx_N - ex.Fx_N) / (0.02 * Fn), (m.Fy_N - ex.Fy_N) / (0.02 * Fn), (m.Mz_N_m - ex.Mz_N_m) / (0.05 * Mzs)};
+}
+
+// "M ab theta psi e Dxi Deta Dphi score0 score1 Fx Fy Mz": the relaxed model's mix correction per unit level D (the
+// correction d = D e, lib/tangential/relaxed.h) at each direction and level e that meets the exact Fx, Fy, Mz:
+// Levenberg-Marquardt on the three corrections (a square system), from the previous level's D (continuation in e),
+// with a small pull towards it (smoothness where several fit). score0, score1: the largest error in units of the
+// targets (in_targets) without a correction and with the fitted one; Fx Fy Mz: the exact solver's.
+// Levenberg-Marquardt on the knobs `active` of the mix correction d (levels) from `start` so that resid(d) (errors
+// in target units) vanishes, pulled with weight w towards no correction; returns d
+template <class Resid>
+Eigen::Vector4d fit_knobs(const Resid& resid, const Eigen::Vector4d& start, const Eigen::Vector4d& active, double w,
+                          double step_h) {
+  using V4 = Eigen::Vector4d;
+  const V4 d_prev = V4::Zero();  // the pull is towards no correction: the least one that fits, smooth over directions
+  auto cost = [&](const V4& dd, Eigen::VectorXd& r) {
+    r = resid(dd);
+    return r.squaredNorm() + (w * (dd - d_prev)).squaredNorm();
+  };
+  V4 d = start.cwiseProduct(active);
+  Eigen::VectorXd r;
+  double f = cost(d, r), lambda = 1e-3;
+  for (int it = 0; it < 60 && r.cwiseAbs().maxCoeff() > 0.05; ++it) {
+    Eigen::MatrixXd J(r.size(), 4);
+    for (int k = 0; k < 4; ++k) {
+      V4 dk = d;
+      dk(k) += step_h * active(k);
+      J.col(k) = active(k) != 0 ? Eigen::VectorXd((resid(dk) - r) / step_h) : Eigen::VectorXd::Zero(r.size());
+    }
+    // (J'J + w^2 + lambda diag) step = -(J'r + w^2 (d - d_prev)), on the active knobs
+    Eigen::Matrix4d A = J.transpose() * J + w * w * Eigen::Matrix4d::Identity();
+    const V4 g = (J.transpose() * r + w * w * (d - d_prev)).cwiseProduct(active);
+    bool improved = false;
+    for (int tries = 0; tries < 12 && !improved; ++tries) {
+      Eigen::Matrix4d Md = A;
+      Md.diagonal() *= 1 + lambda;
+      const V4 dn = d + Md.ldlt().solve(-g).cwiseProduct(active);
+      Eigen::VectorXd rn;
+      const double fn = cost(dn, rn);
+      if (fn < f) {
+        d = dn, r = rn, f = fn, lambda = std::max(lambda / 3, 1e-9), improved = true;
+      } else {
+        lambda *= 4;
+      }
+    }
+    if (!improved) break;
+  }
+  return d;
+}
+
+// "M ab theta psi e Dxi Deta Dphi,lat Dphi,long score0 score1 Fx Fy Mz": the relaxed model's mix correction per unit
+// level D (the correction d = D e, lib/tangential/relaxed.h) at each direction and level e that meets the exact Fx,
+// Fy, Mz: Levenberg-Marquardt on the four corrections, from the previous level's D (continuation in e), pulled
+// towards none (among the corrections that fit, a small one: smooth over the directions and levels where it can be). score0, score1: the
+// largest error in units of the targets (in_targets) without a correction and with the fitted one; Fx Fy Mz: the
+// exact solver's. Without spin (psi = 0) also "N ab theta e Dxi Deta Dmoment score": the correction without the
+// spin's parts (so that the march keeps its mirror skip and has no spin: the cost of a solve without spin), fitted
+// to the exact Fx and Fy, and the exact Mz less that march's per unit level, in units of mu N sqrt(ab), which the
+// model adds to its Mz.
+void fit_mix(double ab, int n) {
+  const ContactPatch p = ellipse_patch(ab, n);
+  const double G = combined_shear_modulus_Pa(kPair), nu = combined_poisson(kPair);
+  const double kPull = std::getenv("FIT_PULL") ? std::atof(std::getenv("FIT_PULL")) : 0.1;  // weight of |d - d_prev| / e
+  using V4 = Eigen::Vector4d;
+  for (double theta : kMixTheta)
+    for (double psi : kMixPsi) {
+      if (theta == 0 && psi != 0) continue;  // pure xi: one direction
+      V4 D = V4::Zero(), Dn = V4::Zero();
+      for (double e : kFitE) {
+        const Creepages c = in_direction(p, theta, psi, e);
+        const ExactSolution ex = solve_exact_steady(p, G, nu, c, kMu, kV);
+        auto model = [&](const V4& d) {
+          return solve_relaxed_steady_with_mix(p, kPair, c, {d(0), d(1), d(2), d(3)}, kMu, kV);
+        };
+        auto resid = [&](const V4& d) {
+          const auto r = in_targets(model(d), ex.fields, p);
+          return Eigen::VectorXd(Eigen::Vector3d(r[0], r[1], r[2]));
+        };
+        const double score0 = resid(V4::Zero()).cwiseAbs().maxCoeff();
+        // pure xi and pure spin: none (the pure creepages' factors hold them; the spin's fitted down to its linear
+        // range, below the levels here)
+        const bool pure = theta == 0 || (theta == 90 && psi == 90);
+        const V4 d = pure ? V4::Zero() : fit_knobs(resid, D * e, V4(1, 1, 1, 1), std::sqrt(kPull) / e, 1e-4 * e);
+        D = d / e;
+        std::printf("M %g %g %g %.4f %.5f %.5f %.5f %.5f %.3f %.3f %.6e %.6e %.6e %s\n", ab, theta, psi, e, D(0), D(1),
+                    D(2), D(3), score0, resid(d).cwiseAbs().maxCoeff(), ex.fields.Fx_N, ex.fields.Fy_N, ex.fields.Mz_N_m,
+                    ex.status.converged() ? "" : "unconverged");
+        if (psi == 0) {  // without spin: xi and eta only, to Fx and Fy; then the ratio of the exact Mz to the march's
+          auto resid2 = [&](const V4& dd) {
+            const auto r = in_targets(model(dd), ex.fields, p);
+            return Eigen::VectorXd(Eigen::Vector2d(r[0], r[1]));
+          };
+          const V4 dn = theta > 0 ? fit_knobs(resid2, Dn * e, V4(1, 1, 0, 0), std::sqrt(kPull) / e, 1e-4 * e) : V4::Zero();
+          Dn = dn / e;
+          const TangentialSolution m = model(dn);
+          const double unit = kMu * p.normal_load_N * std::sqrt(p.a_m * p.b_m) * e;  // mu N sqrt(ab) e
+          const double moment = theta > 0 ? (ex.fields.Mz_N_m - m.Mz_N_m) / unit : 0.0;
+          TangentialSolution mr = m;
+          mr.Mz_N_m += moment * unit;
+          const auto r = in_targets(mr, ex.fields, p);
+          std::printf("N %g %g %.4f %.5f %.5f %.5f %.3f\n", ab, theta, e, Dn(0), Dn(1), moment,
+                      std::max({std::abs(r[0]), std::abs(r[1]), std::abs(r[2])}));
+        }
+        std::fflush(stdout);
+      }
+    }
+}
+
+// "C ab theta psi e errFx errFy errMz (simplified) errFx errFy errMz (relaxed)": the relaxed model as compiled at
+// directions and levels between the fitted ones, against the exact solver, in % (Fx, Fy of |(Fx, Fy)|, Mz of |Mz|)
+void check_mix(double ab, int n) {
+  const ContactPatch p = ellipse_patch(ab, n);
+  const double G = combined_shear_modulus_Pa(kPair), nu = combined_poisson(kPair);
+  const double dirs[][2] = {{33, 20}, {60, 110}, {80, 160}, {15, 70}, {54.7356, 45}, {54.7356, 135}, {75, 60}};
+  for (const auto& dir : dirs)
+    for (double e : {0.15, 0.45, 0.65}) {
+      const Creepages c = in_direction(p, dir[0], dir[1], e);
+      const ExactSolution ex = solve_exact_steady(p, G, nu, c, kMu, kV);
+      SteadyOptions o;
+      o.fields = false;
+      const TangentialSolution s = solve_steady(p, make_tangential_problem(p, kPair, c, kMu, kV), TangentialScheme::Consistent, o);
+      const TangentialSolution r = solve_relaxed_steady(p, kPair, c, kMu, kV, false);
+      const auto es = in_targets(s, ex.fields, p), er = in_targets(r, ex.fields, p);
+      std::printf("C %g %g %g %.2f  %+.1f %+.1f %+.1f  %+.1f %+.1f %+.1f %s\n", ab, dir[0], dir[1], e, 2 * es[0], 2 * es[1],
+                  5 * es[2], 2 * er[0], 2 * er[1], 5 * er[2], ex.status.converged() ? "" : "unconverged");
+      std::fflush(stdout);
+    }
+}
+
+// "X ab n case steady_consistent_us steady_relaxed_us ratio step_satran_us step_relaxed_us ratio": the cost of
+// the relaxed model against the consistent steady solve and Satran's shift step (fields off), medians of
+// interleaved repetitions (the machine is shared: the ratios, not the times, are the measure)
+void cost(double ab, int n, int reps) {
+  const ContactPatch p = ellipse_patch(ab, n);
+  const double dx = p.grid.dx_m;
+  for (const Labelled& l : steady_cases(p)) {
+    if (l.label != "xi50" && l.label != "eta50" && l.label != "phi50" && l.label != "mix50" && l.label != "mixneg90")
+      continue;
+    std::vector<double> tc, tr, ts, tq;
+    SteadyOptions o;
+    o.fields = false;
+    const TangentialProblem pr = make_tangential_problem(p, kPair, l.c, kMu, kV);
+    TransientState st = rest_state(p.grid);
+    RelaxedState rs = relaxed_steady_state(l.c);
+    const StepKinematics kin{dx / kV, dx, l.c.xi * dx, l.c.eta * dx, l.c.phi_per_m * dx};
+    double sink = 0;
+    for (int k = 0; k < reps; ++k) {
+      auto t0 = std::chrono::steady_clock::now();
+      sink += solve_steady(p, pr, TangentialScheme::Consistent, o).Fx_N;
+      tc.push_back(ms_since(t0));
+      t0 = std::chrono::steady_clock::now();
+      sink += solve_relaxed_steady(p, kPair, l.c, kMu, kV, false).Fx_N;
+      tr.push_back(ms_since(t0));
+      t0 = std::chrono::steady_clock::now();
+      sink += satran_step(p, pr, kin, TransientScheme::Shift, st).Fx_N;
+      ts.push_back(ms_since(t0));
+      t0 = std::chrono::steady_clock::now();
+      sink += relaxed_step(p, kPair, l.c, kMu, kV, dx, rs, false).Fx_N;
+      tq.push_back(ms_since(t0));
+    }
+    auto med = [](std::vector<double> v) {
+      std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
+      return 1e3 * v[v.size() / 2];
+    };
+    const double c = med(tc), r = med(tr), s = med(ts), q = med(tq);
+    std::printf("X %g %d %s %.1f %.1f %.2f %.1f %.1f %.2f %s\n", ab, n, l.label.c_str(), c, r, r / c, s, q, q / s,
+                sink == 0.123 ? "!" : "");
+  }
+}
+
 // "Z dir ab sigma/a p maxerr unconverged": the relaxation length sigma0 and exponent p (sigma = sigma0 (1 - e_eff)^p)
 // of direction dir that fit the exact start-up from rest at 50 % and 90 % of saturation best: the largest
 // |F_model/F_model,ss - F_exact/F_exact,ss| over q <= 8a, both levels (the shapes: the steady forces are the
@@ -379,6 +574,12 @@ int main(int argc, char** argv) {
   const double G = combined_shear_modulus_Pa(kPair), nu = combined_poisson(kPair);
   if (what == "fit") {
     fit_factors(ab, n);
+  } else if (what == "cost") {
+    cost(ab, n, argc >= 5 ? std::atoi(argv[4]) : 200);
+  } else if (what == "fitmix") {
+    fit_mix(ab, n);
+  } else if (what == "checkmix") {
+    check_mix(ab, n);
   } else if (what == "checkspin") {
     check_spin(ab, n);
   } else if (what == "linear") {
