@@ -1,0 +1,26 @@
+// The relaxed model's correction for contacts that are not elliptic (worn crowns: semi-Hertz and half-space
+// patches), from the thin-contact limit of the exact theory (docs/accuracy-vs-exact.md, "The worn crown").
+//
+// As a/b -> 0 each strip of the exact theory tends to plane strain (Carter's theory, which the exact solver
+// reproduces in its 2-D mode): its linear creep force per unit width is proportional to its own half-length,
+// f_j ~ G a_j c_j. The bed of springs gives f_j = 2 a_j^2 c_j / L with one flexibility L = 8a/(3 C G) taken from
+// the patch's equivalent ellipse (a, b), whose Kalker coefficient holds the strip limit for an elliptic
+// contact only: sum_j a_j^2 / sum_j a_j is fixed by the ellipse. A flatter contact (a worn band: the half-lengths
+// more uniform across y) has a smaller sum of squares for its area, and the springs undercount its force by
+//   S = [sum_j a_j^2 / sum_j a_j] / [sum_j e_j^2 / sum_j e_j],
+// e_j = a sqrt(1 - ((y_j - y_c)/b)^2) the equivalent ellipse on the same strips, y_c the strips' centroid
+// (weights a_j): S = 1 for an elliptic (Hertz) patch, to rounding; the 1e7-revolution worn crown of
+// cases/paper-wear.yaml has S = 0.947. The relaxed model scales its flexibilities by S, i.e. each strip's whole
+// creepage (the uniform ones and the strip's Heathcote offset, docs/physics.md §2.4) by 1/S: the strips' linear
+// forces are then the thin-contact limit's for the patch's own shape. It holds where strip theory holds
+// (a/b well below 1, the worn rollers' contacts); no table and no fit.
+#pragma once
+
+#include "lib/patch.h"
+
+namespace contact {
+
+// S above: 1 for no strip in contact or a degenerate patch (a_m or b_m not positive)
+double relaxed_shape_factor(const ContactPatch& patch);
+
+}  // namespace contact
