@@ -257,6 +257,7 @@ TangentialSolution steady_at(const ContactPatch& patch, const ElasticPair& pair,
     if (fields) s.power_W_per_m2 *= k;
     s.power_W = target;
   }
+  redistribute_strip_power(s, patch);  // the strips' shares of it (relaxed_shape.h)
   s.creep_work_W = creep_work_W(s, work_at, V) + offsets_W;
   // without imposed spin, the fitted moment (phi Mz is 0 in the work above)
   if (cor.moment != 0) s.Mz_N_m += cor.moment * mu * patch.normal_load_N * std::sqrt(patch.a_m * patch.b_m);

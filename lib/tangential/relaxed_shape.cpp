@@ -25,3 +25,26 @@ double relaxed_shape_factor(const ContactPatch& patch) {
 }
 
 }  // namespace contact
+
+#include "lib/tangential/tangential.h"
+
+namespace contact {
+
+double relaxed_strip_power_exponent(double a_over_b) { return std::clamp(1 - a_over_b / 2, 0.0, 1.0); }
+
+void redistribute_strip_power(TangentialSolution& s, const ContactPatch& patch) {
+  if (!(patch.a_m > 0 && patch.b_m > 0)) return;
+  const double p = relaxed_strip_power_exponent(patch.a_m / patch.b_m);
+  Eigen::ArrayXd& P = s.strip_power_W_per_m;
+  const Eigen::ArrayXd& aj = patch.half_length_m;
+  if (p == 0 || P.size() == 0 || P.size() != aj.size()) return;
+  const Eigen::ArrayXd w = (aj > 0).select((patch.a_m / aj).pow(p), 0.0);
+  const double before = P.sum(), after = (P * w).sum();
+  if (!(before > 0 && after > 0)) return;
+  const Eigen::ArrayXd k = w * (before / after);
+  P *= k;
+  if (s.power_W_per_m2.cols() == k.size())
+    for (Eigen::Index j = 0; j < k.size(); ++j) s.power_W_per_m2.col(j) *= k(j);
+}
+
+}  // namespace contact
