@@ -211,6 +211,9 @@ TEST(WearLoop, DepthLimitIsLocated) {
 TEST(WearLoop, ExactTheoryLifeRunsAndAgreesInForce) {
   constexpr double kForceDifference = 0.05;  // the theories' steady Fx differ by 2 to 4 % here (measured above)
   WearCase c = paper_wear(40);
+  // the simplified theory's, as measured above (the shipped default, the relaxed model, is fitted to the exact
+  // theory; its three 1e7-revolution Euler steps leave a crown of up to 8 patches, on which it is not judged here)
+  c.contact.solver.tangential = "consistent";
   c.wear.stepping.method = "fixed-revolutions";
   c.wear.stepping.step_revolutions = 1e7;
   WearCase e = c;
