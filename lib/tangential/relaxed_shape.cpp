@@ -6,26 +6,12 @@
 
 namespace contact {
 
-namespace {
-
-// the strips in contact form one run along y (one patch)
-bool one_run(const Eigen::ArrayXd& aj) {
-  int runs = 0;
-  for (Eigen::Index j = 0; j < aj.size(); ++j)
-    if (aj(j) > 0 && (j == 0 || !(aj(j - 1) > 0))) ++runs;
-  return runs == 1;
-}
-
-}  // namespace
-
 double relaxed_shape_factor(const ContactPatch& patch) {
   const Eigen::ArrayXd& aj = patch.half_length_m;
   const Eigen::ArrayXd& y = patch.grid.y_m;
   if (!(patch.a_m > 0 && patch.b_m > 0) || aj.size() == 0 || aj.size() != y.size()) return 1.0;
   const double sum_a = aj.sum();
   if (!(sum_a > 0)) return 1.0;
-  // one run of strips in contact: the equivalent ellipse of several patches is not the shape of any of them
-  if (!one_run(aj)) return 1.0;
   const double yc = (aj * y).sum() / sum_a;
   double sum_e = 0, sum_e2 = 0;
   for (Eigen::Index j = 0; j < y.size(); ++j) {
@@ -51,7 +37,7 @@ void redistribute_strip_power(TangentialSolution& s, const ContactPatch& patch) 
   const double p = relaxed_strip_power_exponent(patch.a_m / patch.b_m);
   Eigen::ArrayXd& P = s.strip_power_W_per_m;
   const Eigen::ArrayXd& aj = patch.half_length_m;
-  if (p == 0 || P.size() == 0 || P.size() != aj.size() || !one_run(aj)) return;
+  if (p == 0 || P.size() == 0 || P.size() != aj.size()) return;
   const Eigen::ArrayXd w = (aj > 0).select((patch.a_m / aj).pow(p), 0.0);
   const double before = P.sum(), after = (P * w).sum();
   if (!(before > 0 && after > 0)) return;

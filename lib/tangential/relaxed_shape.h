@@ -20,8 +20,10 @@
 
 namespace contact {
 
-// S above: 1 for no strip in contact, a degenerate patch (a_m or b_m not positive), or strips in contact in more than
-// one run (several patches along y: their equivalent ellipse is the shape of none of them; the model as without S)
+// S above: 1 for no strip in contact or a degenerate patch (a_m or b_m not positive). Several patches along y are
+// taken as they come (their strips and the equivalent ellipse of the whole): the factor stays continuous in the
+// geometry as a patch splits, which a wear life's integrator needs (switching it off there made the fixed-depth
+// lives of a spinning roller non-smooth).
 double relaxed_shape_factor(const ContactPatch& patch);
 
 }  // namespace contact
@@ -41,7 +43,6 @@ struct TangentialSolution;
 // distributions normalised to unit total): a/b 0.037 (the crown worn 1e7 revolutions) 6.3 -> 1.5 %, 0.088 (the
 // paper's contact) 14.8 -> 2.8 %, 0.37 13.4 -> 1.5 %, 1.0 6.7 -> 1.6 %, 1.97 4.0 -> 4.2 % (docs/accuracy-vs-exact.md).
 // The forces and the total power do not change; the per-cell power density of strip j is weighted as its strip.
-// Several patches along y (strips in contact in more than one run): unchanged, as relaxed_shape_factor.
 double relaxed_strip_power_exponent(double a_over_b);
 void redistribute_strip_power(TangentialSolution& s, const ContactPatch& patch);
 
