@@ -18,6 +18,7 @@
 #include "lib/io/csv_reader.h"
 #include "lib/normal/hertz.h"
 #include "lib/numeric.h"
+#include "lib/tangential/tangential.h"
 
 namespace contact {
 namespace {
@@ -55,6 +56,42 @@ TEST(RelaxedShape, UniformBandTendsToTheClosedForm) {
   p.grid = make_grid(A, 2 * b, {10, 4000});
   p.half_length_m = (p.grid.y_m > 0).select(Eigen::ArrayXd::Constant(4000, A), 0.0);
   EXPECT_NEAR(relaxed_shape_factor(p), 3 * kPi * kPi / 32, 1e-3);
+}
+
+// The factor is memoised per thread on the patch's values: a patch changed in place (the same object) is seen.
+TEST(RelaxedShape, PatchChangedInPlaceIsSeen) {
+  ContactPatch p;
+  const double b = 1e-3, A = 1e-4;
+  p.b_m = b;
+  p.a_m = 4 * A / kPi;
+  p.grid = make_grid(A, b, {10, 400});
+  p.half_length_m = Eigen::ArrayXd::Constant(400, A);
+  const double band = relaxed_shape_factor(p);
+  p.half_length_m = A * (1 - (p.grid.y_m / b).square()).max(0.0).sqrt();  // an ellipse of semi-axes A, b
+  p.a_m = A;
+  EXPECT_NEAR(relaxed_shape_factor(p), 1.0, 1e-12);
+  EXPECT_NEAR(band, 3 * kPi * kPi / 32, 2e-3);
+}
+
+// The strips' weights move the power among the strips and keep its total; on a thin Hertz contact (p = 1 - (a/b)/2)
+// the strip of half-length a_j gets (a / a_j)^p of the springs' share.
+TEST(RelaxedShape, StripWeightsKeepTheTotal) {
+  HertzContact h;
+  h.b_m = 1e-3;
+  h.a_m = 0.1 * h.b_m;
+  h.p0_Pa = 1e9;
+  h.normal_load_N = 2 * kPi * h.a_m * h.b_m * h.p0_Pa / 3;
+  const ContactPatch patch = hertz_patch(h, make_grid(h.a_m, h.b_m, {20, 40}));
+  TangentialSolution s;
+  s.strip_power_W_per_m = patch.half_length_m.square();  // the springs' linear strip power ~ a_j^2
+  const double total = s.strip_power_W_per_m.sum();
+  redistribute_strip_power(s, patch);
+  EXPECT_NEAR(s.strip_power_W_per_m.sum(), total, 1e-12 * total);
+  const double p = relaxed_strip_power_exponent(0.1);
+  EXPECT_DOUBLE_EQ(p, 0.95);
+  const int mid = 20, off = 35;  // a_j^(2 - p) after the weights
+  EXPECT_NEAR(s.strip_power_W_per_m(off) / s.strip_power_W_per_m(mid),
+              std::pow(patch.half_length_m(off) / patch.half_length_m(mid), 2 - p), 1e-12);
 }
 
 // the exact reference: (heathcote_slip, n) -> Fx, power, creep work; n = 0 the extrapolation
