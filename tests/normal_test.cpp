@@ -136,6 +136,11 @@ constexpr double kLifeTol = 1e-2;
 TEST_P(DefectTwoLives, ConvergeWithoutWarningAndMatchAFineFixedStepRun) {
   const Variant v = GetParam();
   WearCase c = read_wear_case((std::filesystem::path(ROLLWEAR_SOURCE_DIR) / "cases" / "paper-wear.yaml").string());
+  // the worn geometries these defects were found on: the simplified theory's wear (the relaxed model's strip weights,
+  // lib/tangential/relaxed_shape.h, wear the crown otherwise: the lobes no longer merge at 1.76e8 revolutions, and
+  // the Rx1mm life's semi-Hertz solve fails to converge at 3.6e6 revolutions, load residual 1.1e-6 against 1e-6:
+  // a normal-solver defect left open; the life ends there, exit 1)
+  c.contact.solver.tangential = "consistent";
   c.contact.kinematics.xi = contact::constant_history(v.xi);
   c.contact.kinematics.phi_per_m = contact::constant_history(v.phi_per_m);
   c.contact.bodies.body1.Rx_m = v.Rx1_m;
@@ -182,6 +187,11 @@ TEST_P(DefectTwoLives, ConvergeWithoutWarningAndMatchAFineFixedStepRun) {
 TEST(DefectTwoLives, WornRollerWhereLobesMergeConverges) {
   const rollwear_test::ExpectWarnings warnings;
   WearCase c = read_wear_case((std::filesystem::path(ROLLWEAR_SOURCE_DIR) / "cases" / "paper-wear.yaml").string());
+  // the worn geometries these defects were found on: the simplified theory's wear (the relaxed model's strip weights,
+  // lib/tangential/relaxed_shape.h, wear the crown otherwise: the lobes no longer merge at 1.76e8 revolutions, and
+  // the Rx1mm life's semi-Hertz solve fails to converge at 3.6e6 revolutions, load residual 1.1e-6 against 1e-6:
+  // a normal-solver defect left open; the life ends there, exit 1)
+  c.contact.solver.tangential = "consistent";
   c.contact.kinematics.xi = contact::constant_history(0.0);
   c.wear.revolutions = 1.76e8;
   c.wear.snapshots_revolutions.clear();

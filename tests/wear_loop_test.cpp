@@ -211,6 +211,9 @@ TEST(WearLoop, DepthLimitIsLocated) {
 TEST(WearLoop, ExactTheoryLifeRunsAndAgreesInForce) {
   constexpr double kForceDifference = 0.05;  // the theories' steady Fx differ by 2 to 4 % here (measured above)
   WearCase c = paper_wear(40);
+  // the simplified theory's, as measured above (the shipped default, the relaxed model, is fitted to the exact
+  // theory; its three 1e7-revolution Euler steps leave a crown of up to 8 patches, on which it is not judged here)
+  c.contact.solver.tangential = "consistent";
   c.wear.stepping.method = "fixed-revolutions";
   c.wear.stepping.step_revolutions = 1e7;
   WearCase e = c;
@@ -474,13 +477,14 @@ WearCase with_scheme(WearCase c, const std::string& scheme) {
 }
 
 // The relaxed model's wear after 1e7 revolutions against the exact theory's: the goal is the steady-force target
-// (2 %) carried into the energy and the volume worn, which are proportional to the force. It is MISSED: the
-// relaxed goldens are 6.2 % below the exact theory's, the simplified theory's 3.1 % (measured, below). On the
-// unworn crown the relaxed power is within 0.5 % of the exact creep work (the simplified theory +2.8 %); on the
-// crown worn for 1e7 revolutions (a/b = 0.037, below the relaxed table's 0.05, and Heathcote offsets across
-// the wider contact, which the model's xi factor does not scale) its Fx is 4.0 % below the exact theory's (the
-// simplified theory's 0.7 %) (rollwear contact on the worn profile, exact on 80 and 160 cells). The tests hold
-// the measured gaps, so that a change of the model that moves them is seen, and the reference's convergence.
+// (2 %) carried into the energy and the volume worn, which are proportional to the force. It is met: the relaxed
+// goldens are within 0.1 % of the exact theory's, the simplified theory's 3.1 % below (measured, below). It was
+// missed (-6.2 %) until the model took the worn contact's shape (lib/tangential/relaxed_shape.h): on the crown
+// worn for 1e7 revolutions (a/b = 0.037, its band flattened) the springs' one flexibility undercounted the
+// strips' forces (Fx -3.9 % of the exact theory's, tests/relaxed_worn_test.cpp; now +0.5 %), and their
+// distribution of the power over the strips put the wear too near the crown's centre (the exact theory's per-strip
+// power is the springs' times about 1 / a_j on thin contacts): the contact widened more slowly. The tests hold the
+// measured gaps, so that a change of the model that moves them is seen, the target, and the reference's convergence.
 constexpr double kRelaxedWearTarget = 0.02;
 constexpr double kGapTolerance = 5e-4;  // the quoted gaps are rounded to 0.01 %
 
@@ -521,7 +525,8 @@ std::map<std::string, double> paper_wear_exact_reference(const WearCase& c) {
 // exact theory's (40, 80, 160 cells: 238630, 252235, 259260 J; extrapolated 266286 J, 1.47936e-8 m^3):
 //   dissipated energy  relaxed 249672 J (-6.24 %), consistent (the old golden) 258051 J (-3.09 %)
 //   worn volume        relaxed 1.38707e-8 m^3 (-6.24 %), consistent 1.43361e-8 m^3 (-3.09 %)
-// The relaxed values are 3.25 % below the old ones.
+// and again with the worn contact's shape (relaxed_shape.h): relaxed 266375 J and 1.47986e-8 m^3 (+0.03 %); the
+// maximum depth 1.77546e-5 m against the exact 1.81004e-5 m (-1.91 %; it was +1.36 %: the wear less concentrated).
 TEST(WearGolden, PaperWear) {
   const WearCase c = read_wear_case((kSource / "cases" / "paper-wear.yaml").string());
   ASSERT_EQ(contact::parse_tangential_scheme(c.contact.solver.tangential), contact::TangentialScheme::Relaxed);
@@ -541,7 +546,8 @@ TEST(WearGolden, PaperWear) {
                          "{:.6g} ({:+.2f} %)\n",
                          key, v.at(key), 100 * relaxed_error, ref, 100 * kRelaxedWearTarget, consistent.at(key),
                          100 * consistent_error);
-    EXPECT_NEAR(relaxed_error, -0.0624, kGapTolerance) << table;
+    EXPECT_NEAR(relaxed_error, 0.0003, kGapTolerance) << table;
+    EXPECT_LT(std::abs(relaxed_error), kRelaxedWearTarget) << table;
     EXPECT_NEAR(consistent_error, -0.0309, kGapTolerance) << table;
   }
   std::cout << table;
@@ -559,6 +565,7 @@ TEST(WearGolden, PaperWearConsistent) {  // the simplified theory's golden, as b
 // applies (266286 J, 1.47936e-8 m^3):
 //   dissipated energy  relaxed 249534 J (-6.29 %), consistent (the old golden) 258105 J (-3.07 %)
 //   worn volume        relaxed 1.38630e-8 m^3 (-6.29 %), consistent 1.43392e-8 m^3 (-3.07 %)
+// and with the worn contact's shape (relaxed_shape.h): relaxed 266123 J, 1.47846e-8 m^3 (-0.06 %).
 TEST(WearGolden, StartStopWear) {
   const WearCase c = read_wear_case((kSource / "cases" / "start-stop-wear.yaml").string());
   ASSERT_EQ(contact::parse_tangential_scheme(c.contact.solver.tangential), contact::TangentialScheme::Relaxed);
@@ -578,7 +585,8 @@ TEST(WearGolden, StartStopWear) {
                          "consistent {:.6g} ({:+.2f} %)\n",
                          key, v.at(key), 100 * relaxed_error, ref, 100 * kRelaxedWearTarget, consistent.at(key),
                          100 * consistent_error);
-    EXPECT_NEAR(relaxed_error, -0.0629, kGapTolerance) << table;
+    EXPECT_NEAR(relaxed_error, -0.0006, kGapTolerance) << table;
+    EXPECT_LT(std::abs(relaxed_error), kRelaxedWearTarget) << table;
     EXPECT_NEAR(consistent_error, -0.0307, kGapTolerance) << table;
   }
   std::cout << table;
@@ -662,8 +670,10 @@ TEST(WearLife, PaperWearConvergesToTheFixedDepthLife) {
   std::string table = fmt::format("fixed-depth 4e-8 m: {:.10g}, 2e-8 m: {:.10g}, extrapolated {:.10g} revolutions\n"
                                   "rtol, atol_m, steps, life, |life / reference - 1|\n",
                                   coarse, fine, reference);
-  // the extrapolation's own error: far below the first-order error of the finer run
-  EXPECT_LT(std::abs(fine - coarse) / reference, 2e-5) << table;
+  // the extrapolation's own error: far below the first-order error of the finer run (the relaxed model with the
+  // worn contact's shape: L(4e-8), L(2e-8), L(1e-8) = 91730265.6, 91732865.4, 91734199.7, first order; the
+  // extrapolations from (4e-8, 2e-8) and (2e-8, 1e-8) agree within 8e-7): the finer run within 5e-5
+  EXPECT_LT(std::abs(fine - coarse) / reference, 5e-5) << table;
 
   const LifeResult shipped = shipped_life(c);
   const double shipped_error = std::abs(shipped.N / reference - 1);

@@ -14,6 +14,7 @@
 #include "lib/normal/hertz.h"
 #include "lib/tangential/kalker.h"
 #include "lib/tangential/relaxed_mix_table.h"
+#include "lib/tangential/relaxed_shape.h"
 #include "lib/tangential/relaxed_table.h"
 #include "lib/tangential/shift_run.h"
 #include "lib/tangential/steady.h"
@@ -209,6 +210,17 @@ double creep_work_W(const TangentialSolution& s, const Creepages& c, double V) {
   return V * (c.xi * s.Fx_N + c.eta * s.Fy_N + c.phi_per_m * s.Mz_N_m);
 }
 
+// the flexibilities scaled by the patch's shape factor (relaxed_shape.h: the strips' linear forces those of the
+// thin-contact limit for a patch that is not elliptic; S = 1 for Hertz patches)
+void scale_to_shape(TangentialProblem& pb, const ContactPatch& patch) {
+  const double S = relaxed_shape_factor(patch);
+  if (S == 1.0) return;
+  pb.flex.L1_m_per_Pa *= S;
+  pb.flex.L2_m_per_Pa *= S;
+  pb.flex.L3_m_per_Pa *= S;
+  pb.L_m_per_Pa *= S;
+}
+
 // the steady model at the creepages c, its power scaled to the creep forces' work at `work_at`
 TangentialSolution steady_at(const ContactPatch& patch, const ElasticPair& pair, const Creepages& c,
                              const Creepages& work_at, double mu, double V, bool fields,
@@ -218,6 +230,7 @@ TangentialSolution steady_at(const ContactPatch& patch, const ElasticPair& pair,
   const Corrected cor = corrected(patch, pair, c, mu, mix);
   const Creepages& solved = cor.c;
   TangentialProblem pb = make_tangential_problem(patch, pair, solved, mu, V);
+  scale_to_shape(pb, patch);
   // the spin's longitudinal traction rate phi_x y / L3 (the lateral one, phi x / L3, takes solved.phi):
   // solved.phi / L3x = phi_x / L3; none (L3x infinite) where the lateral one alone has spin (a mix correction)
   // (where the lateral rate has none and the longitudinal one has, phi is solved at a tiny value with L3x to match:
@@ -237,6 +250,7 @@ TangentialSolution steady_at(const ContactPatch& patch, const ElasticPair& pair,
     if (fields) s.power_W_per_m2 *= k;
     s.power_W = target;
   }
+  redistribute_strip_power(s, patch);  // the strips' shares of it (relaxed_shape.h)
   s.creep_work_W = creep_work_W(s, work_at, V) + offsets_W;
   // without imposed spin, the fitted moment (phi Mz is 0 in the work above)
   if (cor.moment != 0) s.Mz_N_m += cor.moment * mu * patch.normal_load_N * std::sqrt(patch.a_m * patch.b_m);

@@ -30,6 +30,9 @@
 //     (docs/physics.md §4); the bed of springs with three flexibilities is not (1.5-2.2x with mixes).
 //     The model keeps the strips' distribution of the simplified theory's power and scales it to that work
 //     (with the work of the strips' Heathcote offsets, docs/physics.md §2.4, where the patch has them).
+//   - contacts that are not elliptic (worn crowns): the flexibilities scaled by the patch's shape factor S and the
+//     strips' shares of the power weighted towards the thin-contact limit (lib/tangential/relaxed_shape.h; no fit,
+//     S = 1 on Hertz patches).
 // The factors s_k and g_k: lib/tangential/relaxed_table.h, the mix corrections lib/tangential/relaxed_mix_table.h,
 // fitted to the exact solver by
 // scripts/fit-relaxed (fit error in docs/accuracy-vs-exact.md).
