@@ -137,9 +137,9 @@ TEST_P(DefectTwoLives, ConvergeWithoutWarningAndMatchAFineFixedStepRun) {
   const Variant v = GetParam();
   WearCase c = read_wear_case((std::filesystem::path(ROLLWEAR_SOURCE_DIR) / "cases" / "paper-wear.yaml").string());
   // the worn geometries these defects were found on: the simplified theory's wear (the relaxed model's strip weights,
-  // lib/tangential/relaxed_shape.h, wear the crown otherwise: the lobes no longer merge at 1.76e8 revolutions, and
-  // the Rx1mm life's semi-Hertz solve fails to converge at 3.6e6 revolutions, load residual 1.1e-6 against 1e-6:
-  // a normal-solver defect left open; the life ends there, exit 1)
+  // lib/tangential/relaxed_shape.h, wear the crown otherwise: the lobes no longer merge at 1.76e8 revolutions; the
+  // Rx1mm life on the relaxed model's wear, which stopped at a semi-Hertz solve at 3.6e6 revolutions before its
+  // steep-but-continuous F(delta) was searched in (ln delta, ln F), now runs to its 1.5e7 budget)
   c.contact.solver.tangential = "consistent";
   c.contact.kinematics.xi = contact::constant_history(v.xi);
   c.contact.kinematics.phi_per_m = contact::constant_history(v.phi_per_m);
@@ -188,9 +188,9 @@ TEST(DefectTwoLives, WornRollerWhereLobesMergeConverges) {
   const rollwear_test::ExpectWarnings warnings;
   WearCase c = read_wear_case((std::filesystem::path(ROLLWEAR_SOURCE_DIR) / "cases" / "paper-wear.yaml").string());
   // the worn geometries these defects were found on: the simplified theory's wear (the relaxed model's strip weights,
-  // lib/tangential/relaxed_shape.h, wear the crown otherwise: the lobes no longer merge at 1.76e8 revolutions, and
-  // the Rx1mm life's semi-Hertz solve fails to converge at 3.6e6 revolutions, load residual 1.1e-6 against 1e-6:
-  // a normal-solver defect left open; the life ends there, exit 1)
+  // lib/tangential/relaxed_shape.h, wear the crown otherwise: the lobes no longer merge at 1.76e8 revolutions; the
+  // Rx1mm life on the relaxed model's wear, which stopped at a semi-Hertz solve at 3.6e6 revolutions before its
+  // steep-but-continuous F(delta) was searched in (ln delta, ln F), now runs to its 1.5e7 budget)
   c.contact.solver.tangential = "consistent";
   c.contact.kinematics.xi = contact::constant_history(0.0);
   c.wear.revolutions = 1.76e8;
