@@ -147,7 +147,7 @@ TEST(RelaxedModel, SteadyIsTheFixedPointAndTheStartRelaxes) {
 // a/b, tests/data/fast_model/exact_startup.csv: the relaxed model on the same 40 x 40 grid within 2 % of
 // the exact steady force at every stored rolled distance, at the a/b where the model meets the target:
 // 0.05, 0.1 and 0.3. It misses at a/b = 1 (3.0 % at 50 %, 1.9 % at 90 % on 40 x 40; 2.2 % against the exact
-// solver on 80 x 80) and a/b = 3 (6.5 % at 50 %; the exact start-up at 90 % does not converge there):
+// solver on 80 x 80) and a/b = 3 (4.2 % at 50 %, 2.9 % at 90 %, with the relaxation lengths refitted on converged runs):
 // docs/accuracy-vs-exact.md. Those rows stay in the file, not in the test.
 TEST(RelaxedModel, StartUpsOverAspectRatiosWithinTwoPercentOfTheExactSolver) {
   std::map<std::string, std::vector<std::pair<double, double>>> runs;  // "ab,level" -> (q/a, Fx/Fx_ss)
