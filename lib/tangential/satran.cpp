@@ -82,7 +82,7 @@ void fill_mirrored_strips(TransientState& s) {
   if (!s.mirror_deferred) return;
   const int n = s.nx + 1;
   for (int j = s.ny - s.ny / 2; j < s.ny; ++j)
-    std::copy_n(&s.nodes[static_cast<size_t>(s.ny - 1 - j) * n], n, &s.nodes[static_cast<size_t>(j) * n]);
+    s.nodes.copy(static_cast<size_t>(s.ny - 1 - j) * n, static_cast<size_t>(j) * n, n);
   s.mirror_deferred = false;
 }
 
@@ -223,14 +223,14 @@ bool inside(const ContactPatch& p, int i, int j) {
 
 double node_energy_sum(const TransientState& s) {  // sum of |tau|^2 over all nodes
   double e = 0;
-  for (const StripNode& n : s.nodes) e += n.tx * n.tx + n.ty * n.ty;
+  for (size_t k = 0; k < s.nodes.size(); ++k) e += s.nodes.tx[k] * s.nodes.tx[k] + s.nodes.ty[k] * s.nodes.ty[k];
   return e;
 }
 
 // strip `to` takes the nodes of strip `from`
 void mirror_strip(TransientState& s, int from, int to) {
-  const int n = s.nx + 1;
-  std::copy_n(&s.nodes[from * n], n, &s.nodes[to * n]);
+  const size_t n = s.nx + 1;
+  s.nodes.copy(from * n, to * n, n);
 }
 
 void allocate_fields(StepResult& r, const Grid& g) {
@@ -314,17 +314,24 @@ struct EdgeInterval {
   IntervalGeometry geo;
   StripNode hi, lo;
   IntervalSums cell;
+  // the same node for the kernel: tau and stick, and the direction where it slips (a stick node's is not read)
   static bool same(const StripNode& a, const StripNode& b) {
-    return std::memcmp(&a.tx, &b.tx, 4 * sizeof(double)) == 0 && a.stick == b.stick;
+    return std::memcmp(&a.tx, &b.tx, 2 * sizeof(double)) == 0 && a.stick == b.stick &&
+           (a.stick || std::memcmp(&a.ex, &b.ex, 2 * sizeof(double)) == 0);
   }
   bool holds(const StripRates& rr, const IntervalGeometry& g, const StripNode& h) const {
     return valid && std::memcmp(&r, &rr, sizeof r) == 0 && std::memcmp(&geo, &g, sizeof geo) == 0 && same(hi, h);
   }
 };
-// a node holds the bits (tx, ty, ex, ey, stick) given: what the steady strips' skip asks of every node written
+// a node holds the bits (tx, ty, stick) given, and (ex, ey) where it slips: what the steady strips' skip asks of
+// every node written (a stick node's direction is not read)
 inline bool same_bits(const StripNode& n, double tx, double ty, double ex, double ey, bool stick) {
-  const double a[4] = {n.tx, n.ty, n.ex, n.ey}, b[4] = {tx, ty, ex, ey};
-  return std::memcmp(a, b, sizeof a) == 0 && n.stick == stick;
+  return EdgeInterval::same(n, {tx, ty, ex, ey, stick});
+}
+// the same for a node that sticks: its bits (tx, ty) and stick
+inline bool same_stick_bits(double tx_old, double ty_old, unsigned char stick_old, double tx, double ty) {
+  const double a[2] = {tx_old, ty_old}, b[2] = {tx, ty};
+  return std::memcmp(a, b, sizeof a) == 0 && stick_old == 1;
 }
 
 // A strip whose step left every node as it was (to the bit) is steady: while its rates, the patch, L and the
@@ -362,7 +369,14 @@ class ShiftStrip {
              ShiftScratch& scratch, TransientState& state, StepResult* fields, EdgeInterval* edge, bool track)
       : patch_(patch), r_(r), j_(j), L_(L), k_(k), scratch_(scratch), fields_(fields), edge_(edge), track_(track), a_(r.a_m),
         dx_(patch.grid.dx_m),
-        x_(scratch.x.data()), node_(&state.node(0, j)), edge_p_(&patch.edge_pressure_Pa(0, j)) {}
+        x_(scratch.x.data()), edge_p_(&patch.edge_pressure_Pa(0, j)) {
+    const size_t o = state.index(0, j);
+    tx_ = state.nodes.tx.data() + o;
+    ty_ = state.nodes.ty.data() + o;
+    ex_ = state.nodes.ex.data() + o;
+    ey_ = state.nodes.ey.data() + o;
+    st_ = state.nodes.stick.data() + o;
+  }
 
   // the step of the strip: the trailing edge's intervals, the interior ones (the stick pass in blocks, then
   // those whose stick test failed), the leading edge's; every interval through the whole kernel where the
@@ -404,8 +418,8 @@ class ShiftStrip {
     hi2_ += hi.tx * hi.tx + hi.ty * hi.ty;
     lo2_ += lo.tx * lo.tx + lo.ty * lo.ty;
     if (geo.x_lo > -a_) {
-      if (track_) same_ &= same_bits(node_[i], lo.tx, lo.ty, lo.ex, lo.ey, lo.stick);
-      node_[i] = lo;
+      if (track_) same_ &= same_bits(load(i), lo.tx, lo.ty, lo.ex, lo.ey, lo.stick);
+      store(i, lo);
     } else {
       trail2_ = lo.tx * lo.tx + lo.ty * lo.ty;
     }
@@ -423,7 +437,7 @@ class ShiftStrip {
     const IntervalGeometry geo = geometry(i);
     if (!(geo.x_hi > geo.x_lo)) return;
     const bool leading = !(geo.x_hi < a_);
-    const StripNode hi = leading ? StripNode{} : node_[i + 1];
+    const StripNode hi = leading ? StripNode{} : load(i + 1);
     if (edge_ && (leading || !(geo.x_lo > -a_))) {  // an end interval: the last result, if its inputs are the same
       kept_kernel(edge_[leading ? 0 : 1], i, geo, hi);
       return;
@@ -456,7 +470,9 @@ class ShiftStrip {
     const StripRates& r = r_;
     const double* x = x_;
     const double* edge_p = edge_p_;
-    StripNode* node = node_;
+    double* const TX = tx_;
+    double* const TY = ty_;
+    unsigned char* const ST = st_;
     ShiftScratch& scratch = scratch_;
     // the sums in registers through the pass (a node written may alias a member)
     IntervalSums strip = strip_;
@@ -467,12 +483,15 @@ class ShiftStrip {
     int n_failed = 0;
     for (int from = first; from <= last; from += kBlock) {
       const int b = std::min(from, last - kBlock + 1);  // the block's intervals are b .. b + kBlock - 1
-      Block tx, ty = Block::Zero();  // the old tau at x_hi: nodes b + 1 and up are not written yet
+      // the old tau at x_hi: nodes b + 1 and up are not written yet
+      const Block tx = BlockMap(TX + b + 1);
+      Block ty = Block::Zero();
+      if constexpr (kLateral) ty = BlockMap(TY + b + 1);
       bool slip_node = false;  // one of them slips (asked with spin only)
-      for (int q = 0; q < kBlock; ++q) {
-        tx(q) = node[b + 1 + q].tx;
-        if constexpr (kLateral) ty(q) = node[b + 1 + q].ty;
-        if constexpr (kSpin) slip_node |= !node[b + 1 + q].stick;
+      if constexpr (kSpin) {
+        unsigned char all = 1;
+        for (int q = 0; q < kBlock; ++q) all &= ST[b + 1 + q];
+        slip_node = all == 0;
       }
       auto at = [b](const Eigen::ArrayXd& v) { return BlockMap(v.data() + b); };
       const BlockMap x_hi(x + b + 1), h = at(scratch.t);
@@ -510,7 +529,7 @@ class ShiftStrip {
         clear = hi2_lane.max(lo2_lane) - room * room;
         if (clear.maxCoeff() >= 0) {  // the hull, if a stick node's interval that passes at x_lo needs it
           for (int q = 0; q < kBlock && !hull; ++q)
-            hull = node[b + 1 + q].stick && excess(q) <= 0 && clear(q) >= 0;
+            hull = ST[b + 1 + q] && excess(q) <= 0 && clear(q) >= 0;
         }
         if (hull) {
           inner = detail::hull_excess(detail::stick_excess<Block, BlockMap>(
@@ -518,19 +537,29 @@ class ShiftStrip {
         }
       }
       // the new nodes from the trailing side up, so that node i+1 still holds the old tau when node i is
-      // written; an interval whose test fails keeps its old upstream node for later
+      // written; an interval whose test fails keeps its old upstream node for later. A stick node's direction
+      // is not read (StripNode): it is left as it was.
       auto stick = [&](int q) {
-        const StripNode& hi = node[b + q + 1];
-        StripNode& lo = node[b + q];
-        if (track) same &= same_bits(lo, p.px(q), kLateral ? p.py(q) : 0.0, hi.ex, hi.ey, true);
-        lo.tx = p.px(q);
-        lo.ty = kLateral ? p.py(q) : 0.0;
-        lo.ex = hi.ex;
-        lo.ey = hi.ey;
-        lo.stick = true;
+        const int i = b + q;
+        const double py = kLateral ? p.py(q) : 0.0;
+        if (track) same &= same_stick_bits(TX[i], TY[i], ST[i], p.px(q), py);
+        TX[i] = p.px(q);
+        TY[i] = py;
+        ST[i] = 1;
       };
       if (b == from && excess.maxCoeff() <= 0 &&
           (!kSpin || (!slip_node && (!hull || ((clear < 0) || (inner <= 0)).all())))) {  // the whole block sticks
+        if (track) {
+          for (int q = 0; q < kBlock; ++q) stick(q);
+        } else {
+          Eigen::Map<Block>(TX + b) = p.px;
+          if constexpr (kLateral) {
+            Eigen::Map<Block>(TY + b) = p.py;
+          } else {
+            Eigen::Map<Block>(TY + b).setZero();
+          }
+          for (int q = 0; q < kBlock; ++q) ST[b + q] = 1;
+        }
         strip.Ix += I.Ix.sum();
         if constexpr (kLateral) {
           strip.Iy += I.Iy.sum();
@@ -539,7 +568,6 @@ class ShiftStrip {
         strip.stick_length_m += h.sum();
         hi2 += hi2_lane.sum();
         lo2 += lo2_lane.sum();
-        for (int q = 0; q < kBlock; ++q) stick(q);
         continue;
       }
       for (int q = from - b; q < kBlock; ++q) {
@@ -547,7 +575,7 @@ class ShiftStrip {
         // node what spin_sticks decides (stick, slip on, or the whole kernel where it sticks again)
         bool fails = excess(q) > 0, between = false;
         if constexpr (kSpin) {
-          const StripNode& hi = node[b + q + 1];
+          const StripNode hi = load(b + q + 1);
           if (hi.stick) {
             between = !fails && hull && clear(q) >= 0 && inner(q) > 0;
           } else {
@@ -561,7 +589,7 @@ class ShiftStrip {
         if (fails || between) {
           scratch.failed[n_failed] = b + q;
           if constexpr (kSpin) scratch.failed_between[n_failed] = between;
-          scratch.failed_hi[n_failed++] = node[b + q + 1];
+          scratch.failed_hi[n_failed++] = load(b + q + 1);
           continue;
         }
         strip.Ix += I.Ix(q);
@@ -644,7 +672,17 @@ class ShiftStrip {
  private:
   const double a_, dx_;
   const double* x_;      // the nodes x_edge(i)
-  StripNode* node_;      // node_[i] sits at x_edge(i)
+  // the strip's nodes, one array per quantity: node i sits at x_edge(i)
+  double *tx_, *ty_, *ex_, *ey_;
+  unsigned char* st_;
+  StripNode load(int i) const { return {tx_[i], ty_[i], ex_[i], ey_[i], st_[i] != 0}; }
+  void store(int i, const StripNode& n) {
+    tx_[i] = n.tx;
+    ty_[i] = n.ty;
+    ex_[i] = n.ex;
+    ey_[i] = n.ey;
+    st_[i] = n.stick ? 1 : 0;
+  }
   const double* edge_p_;
   // the integrals add up over the strip (per interval only for the fields)
   IntervalSums strip_;
@@ -713,7 +751,7 @@ StripEnergy explicit_strip(const ContactPatch& patch, const TangentialProblem& p
       nw.tx = bound * nw.ex;
       nw.ty = bound * nw.ey;
     }
-    state.node(i, j) = nw;
+    state.set_node(i, j, nw);
     const double mx = (Tx + nw.tx) / 2, my = (Ty + nw.ty) / 2;
     e.dissipated += -L * dx * (mx * (nw.tx - px) + my * (nw.ty - py));
     e.creep += -L * dx * (mx * incx + my * incy);
@@ -735,7 +773,10 @@ StripEnergy explicit_strip(const ContactPatch& patch, const TangentialProblem& p
   }
   e.transport = L * dx / 2 * (E_old - E_transported);
   e.E_start = E_old;
-  for (int i = 0; i <= g.nx; ++i) e.E_end += state.node(i, j).tx * state.node(i, j).tx + state.node(i, j).ty * state.node(i, j).ty;
+  for (int i = 0; i <= g.nx; ++i) {
+    const size_t n = state.index(i, j);
+    e.E_end += state.nodes.tx[n] * state.nodes.tx[n] + state.nodes.ty[n] * state.nodes.ty[n];
+  }
   return e;
 }
 
@@ -801,17 +842,15 @@ StepResult satran_step(const ContactPatch& patch, const TangentialProblem& probl
   if (rescale) {
     const double before = state.L_m_per_Pa * dx / 2 * node_energy_sum(state) * g.dy_m;
     const double scale = state.L_m_per_Pa / L;
-    for (StripNode& n : state.nodes) {
-      n.tx *= scale;
-      n.ty *= scale;
-    }
+    for (double& t : state.nodes.tx) t *= scale;
+    for (double& t : state.nodes.ty) t *= scale;
     if (scale > 1) {
       for (int j = 0; j < g.ny; ++j) {
         const double a = patch.half_length_m(j);
         for (int i = 0; i <= g.nx; ++i) {
           const double x = g.x_edge(i);
           if (!(x > -a && x < a)) continue;  // released below
-          StripNode& n = state.node(i, j);
+          StripNode n = state.node(i, j);
           const double bound = problem.mu * patch.edge_pressure_Pa(i, j), norm = std::hypot(n.tx, n.ty);
           if (!(norm > bound)) continue;
           n.ex = n.tx / norm;
@@ -819,6 +858,7 @@ StepResult satran_step(const ContactPatch& patch, const TangentialProblem& probl
           n.tx = bound * n.ex;
           n.ty = bound * n.ey;
           n.stick = false;
+          state.set_node(i, j, n);
         }
       }
     }
@@ -832,16 +872,16 @@ StepResult satran_step(const ContactPatch& patch, const TangentialProblem& probl
   for (int j = 0; j < g.ny && !same_patch; ++j) {
     const double a = patch.half_length_m(j);
     for (int i = 0; i <= g.nx; ++i) {
-      StripNode& n = state.node(i, j);
       const double x = g.x_edge(i);
       if (x > -a && x < a) {
         i = std::max(i, static_cast<int>(std::ceil((a + g.half_x_m) / dx)) - 1);  // skip the interior
         continue;
       }
+      const StripNode n = state.node(i, j);
       const double n2 = n.tx * n.tx + n.ty * n.ty;
       if (n2 == 0) continue;
       r.released_J += L * dx / 2 * n2 * g.dy_m;
-      n = StripNode{};
+      state.set_node(i, j, StripNode{});
     }
   }
   w.seen = true;
