@@ -39,6 +39,9 @@
 #include <cstdint>
 #include <mutex>
 #include <thread>
+#if defined(__SSE2__)
+#include <immintrin.h>
+#endif
 
 namespace contact {
 
@@ -260,6 +263,23 @@ constexpr int kBlock = 4;
 using Block = Eigen::Array<double, kBlock, 1>;
 using BlockMap = Eigen::Map<const Block>;  // a block of an array: the per-step geometry, the pressures
 
+// The stick pass without spin (plain_stick_pass) in the compiler's vectors of two lanes (an SSE2 packet: wider
+// ones, split on the project's x86-64 baseline, had their comparisons taken lane by lane), the arithmetic lane
+// by lane as in scalar code (no reordering within a lane)
+constexpr int kLanes = 2;
+typedef double Lanes __attribute__((vector_size(kLanes * sizeof(double))));
+typedef std::int64_t LaneMask __attribute__((vector_size(kLanes * sizeof(double))));
+[[gnu::always_inline]] inline void load_lanes(Lanes& v, const double* p) { std::memcpy(&v, p, sizeof v); }
+[[gnu::always_inline]] inline void store_lanes(double* p, const Lanes& v) { std::memcpy(p, &v, sizeof v); }
+// a lane of m is set (all ones): the sign bits gathered at once where the target has it
+[[gnu::always_inline]] inline bool any_lane(const LaneMask& m) {
+#if defined(__SSE2__)
+  return _mm_movemask_pd(reinterpret_cast<__m128d>(m)) != 0;
+#else
+  return (m[0] | m[1]) != 0;
+#endif
+}
+
 // what the shift step of every strip shares, and room for one strip's, set up once per step from the
 // rates r of any strip (only eta/L2 and phi/L3, the same on every strip, are used)
 struct ShiftScratch {
@@ -393,7 +413,11 @@ class ShiftStrip {
       for (int i = i_bot; i <= i_top; ++i) whole_interval(i);
     } else {
       for (int i = i_bot; i < first; ++i) whole_interval(i);
-      failed_intervals(stick_pass(first, last));
+      if constexpr (kSpin) {
+        failed_intervals(stick_pass(first, last));
+      } else {
+        failed_intervals(plain_stick_pass(first, last));
+      }
       for (int i = last + 1; i <= i_top; ++i) whole_interval(i);
     }
     return energies();
@@ -458,6 +482,152 @@ class ShiftStrip {
       e.valid = true;
     }
     record(i, geo, hi, e.lo, e.cell);
+  }
+
+  // The stick pass without spin over the interior intervals first .. last: what stick_pass does for them, the
+  // same numbers to the bit (the sums too: a block's lanes added as stick_pass adds them), in the compiler's
+  // vectors, a block of kBlock intervals as two packets of kLanes. Without spin gamma = 0 and its terms are
+  // left out (adding +0 changes no value but the sign of a zero). A block whose intervals all stick is written
+  // a packet per quantity; one where an interval fails is taken lane by lane, its failed intervals kept in the
+  // scratch with their old upstream node for failed_intervals.
+  int plain_stick_pass(int first, int last) {
+    static_assert(kBlock == 2 * kLanes, "a block is two packets");
+    const double alpha = r_.alpha_Pa_per_m, mu = r_.mu;
+    const double* const x = x_;
+    const double* const edge_p = edge_p_;
+    double* const TX = tx_;
+    double* const TY = ty_;
+    unsigned char* const ST = st_;
+    ShiftScratch& scratch = scratch_;
+    const double* const t = scratch.t.data();
+    const double* const t2_2 = scratch.t2_2.data();
+    const double* const beta_t = scratch.beta_t.data();
+    const double* const beta_t2_2 = scratch.beta_t2_2.data();
+    const double* const beta_t3_3 = scratch.beta_t3_3.data();
+    const bool track = track_;
+    bool same = true;
+    int n_failed = 0;
+    IntervalSums strip = strip_;  // in registers through the pass
+    double hi2s = hi2_, lo2s = lo2_;
+    // interval i from the old node i + 1 (not written yet), lane by lane: the prediction, the integrals, and
+    // Kalker's test at x_lo (true: it fails)
+    auto one = [&](int i, double& px, double& py, double& Ix, double& Iy, double& Ixy, double& lo2, double& hi2) {
+      const double tx = TX[i + 1], h = t[i];
+      px = tx - alpha * h;
+      Ix = tx * h - alpha * t2_2[i];
+      if constexpr (kLateral) {
+        const double ty = TY[i + 1];
+        py = ty - beta_t[i];
+        Iy = ty * h - beta_t2_2[i];
+        Ixy = x[i + 1] * Iy - (ty * t2_2[i] - beta_t3_3[i]);
+        lo2 = px * px + py * py;
+        hi2 = tx * tx + ty * ty;
+      } else {
+        py = Iy = Ixy = 0;
+        lo2 = px * px;
+        hi2 = tx * tx;
+      }
+      const double bound = mu * edge_p[i];
+      return lo2 - bound * bound > 0;
+    };
+    // the same for the intervals i, i + 1 in a packet; fails: the lanes where the test fails
+    struct Pair {
+      Lanes h, px, py, Ix, Iy, Ixy, lo2, hi2;
+    };
+    auto pair = [&](int i, Pair& o) {
+      Lanes tx, t22, bound;
+      load_lanes(tx, TX + i + 1);
+      load_lanes(o.h, t + i);
+      load_lanes(t22, t2_2 + i);
+      load_lanes(bound, edge_p + i);
+      bound *= mu;
+      o.px = tx - alpha * o.h;
+      o.Ix = tx * o.h - alpha * t22;
+      if constexpr (kLateral) {
+        Lanes ty, bt, bt22, bt33, xh;
+        load_lanes(ty, TY + i + 1);
+        load_lanes(bt, beta_t + i);
+        load_lanes(bt22, beta_t2_2 + i);
+        load_lanes(bt33, beta_t3_3 + i);
+        load_lanes(xh, x + i + 1);
+        o.py = ty - bt;
+        o.Iy = ty * o.h - bt22;
+        o.Ixy = xh * o.Iy - (ty * t22 - bt33);
+        o.lo2 = o.px * o.px + o.py * o.py;
+        o.hi2 = tx * tx + ty * ty;
+      } else {
+        o.py = o.Iy = o.Ixy = Lanes{};
+        o.lo2 = o.px * o.px;
+        o.hi2 = tx * tx;
+      }
+      return o.lo2 - bound * bound > 0;
+    };
+    // a block's sum, in the order of stick_pass's (Eigen's: lanes 0 + 2, 1 + 3, then the two)
+    auto block_sum = [](const Lanes& a, const Lanes& b) {
+      const Lanes s = a + b;
+      return s[0] + s[1];
+    };
+    // the new nodes i, i + 1 of a pair that sticks, with a packet per quantity
+    auto store_pair = [&](int i, const Pair& o) {
+      if (track) {
+        LaneMask ox, oy;
+        std::memcpy(&ox, TX + i, sizeof ox);
+        std::memcpy(&oy, TY + i, sizeof oy);
+        const LaneMask sx = ox == reinterpret_cast<LaneMask>(o.px), sy = oy == reinterpret_cast<LaneMask>(o.py);
+        same &= !any_lane(~(sx & sy)) && (ST[i] & ST[i + 1]) == 1;
+      }
+      store_lanes(TX + i, o.px);
+      store_lanes(TY + i, o.py);
+      ST[i] = 1;
+      ST[i + 1] = 1;
+    };
+    for (int from = first; from <= last; from += kBlock) {
+      const int b = std::min(from, last - kBlock + 1);  // the block's intervals are b .. b + kBlock - 1
+      if (b == from) {
+        Pair A, B;
+        const LaneMask fa = pair(b, A), fb = pair(b + kLanes, B);
+        if (!any_lane(fa | fb)) {  // the whole block sticks
+          store_pair(b, A);
+          store_pair(b + kLanes, B);
+          strip.Ix += block_sum(A.Ix, B.Ix);
+          if constexpr (kLateral) {
+            strip.Iy += block_sum(A.Iy, B.Iy);
+            strip.Ixy += block_sum(A.Ixy, B.Ixy);
+          }
+          strip.stick_length_m += block_sum(A.h, B.h);
+          hi2s += block_sum(A.hi2, B.hi2);
+          lo2s += block_sum(A.lo2, B.lo2);
+          continue;
+        }
+      }
+      // lane by lane from the trailing side up (node i + 1 is not written yet); below `from` the block before
+      // did them
+      for (int i = from; i < b + kBlock; ++i) {
+        double px, py, Ix, Iy, Ixy, lo2, hi2;
+        if (one(i, px, py, Ix, Iy, Ixy, lo2, hi2)) {
+          scratch.failed[n_failed] = i;
+          scratch.failed_hi[n_failed++] = load(i + 1);
+          continue;
+        }
+        if (track) same &= same_stick_bits(TX[i], TY[i], ST[i], px, py);
+        TX[i] = px;
+        TY[i] = py;
+        ST[i] = 1;
+        strip.Ix += Ix;
+        if constexpr (kLateral) {
+          strip.Iy += Iy;
+          strip.Ixy += Ixy;
+        }
+        strip.stick_length_m += t[i];
+        hi2s += hi2;
+        lo2s += lo2;
+      }
+    }
+    strip_ = strip;
+    hi2_ = hi2s;
+    lo2_ = lo2s;
+    same_ &= same;
+    return n_failed;
   }
 
   // The stick pass over the interior intervals first .. last, in blocks from the trailing side up; the last
@@ -932,6 +1102,7 @@ StepResult satran_step(const ContactPatch& patch, const TangentialProblem& probl
     bool* same = steady_skip ? &unchanged : nullptr;
     const StripEnergy e = shift_kinds(j, rj, scratch, same);
     st.unchanged = unchanged;
+    if (!steady_skip) return e;  // nothing else is asked for
     st.serial = ws.patch_serial;
     st.variant = variant;
     st.r = rj;
