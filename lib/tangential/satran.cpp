@@ -327,11 +327,13 @@ struct ShiftScratch {
 // every step, and their inputs seldom change: the leading one takes tau = 0 in, the trailing one a node that
 // slips on the bound (mu p e) once the material slips there, and in a steady stretch the turn to slip stays
 // in one interval with the same stick node upstream. Where the rates, the geometry and the upstream node are
-// the same to the bit, so are the new node and the integrals: kept here from the step that computed them.
+// the same to the bit, so are the new node and the integrals: kept here from the step that computed them. The
+// rates and the geometry are the same while the interval and the workspace's generation of the strips' rates
+// and spans are (SatranWorkspace::Impl::generation: bumped whenever either is computed anew).
 struct EdgeInterval {
   bool valid = false;
-  StripRates r;
-  IntervalGeometry geo;
+  unsigned long generation = 0;
+  int i = -1;
   StripNode hi, lo;
   IntervalSums cell;
   // the same node for the kernel: tau and stick, and the direction where it slips (a stick node's is not read)
@@ -339,8 +341,8 @@ struct EdgeInterval {
     return std::memcmp(&a.tx, &b.tx, 2 * sizeof(double)) == 0 && a.stick == b.stick &&
            (a.stick || std::memcmp(&a.ex, &b.ex, 2 * sizeof(double)) == 0);
   }
-  bool holds(const StripRates& rr, const IntervalGeometry& g, const StripNode& h) const {
-    return valid && std::memcmp(&r, &rr, sizeof r) == 0 && std::memcmp(&geo, &g, sizeof geo) == 0 && same(hi, h);
+  bool holds(unsigned long gen, int ii, const StripNode& h) const {
+    return valid && generation == gen && i == ii && same(hi, h);
   }
 };
 // a node holds the bits (tx, ty, stick) given, and (ex, ey) where it slips: what the steady strips' skip asks of
@@ -371,6 +373,22 @@ struct SteadyStrip {
 
 // per strip: the leading interval, the trailing one, and the last interval where stick turned to slip
 constexpr int kKeptIntervals = 3;
+
+// A strip's intervals on the grid: i_bot .. i_top in contact, first .. last of them strictly inside it (both
+// ends); they depend on the patch alone, and a run keeps them while the patch is the same
+struct StripSpan {
+  int i_bot = 0, first = 0, last = -1, i_top = -1;
+};
+inline StripSpan strip_span(const Grid& g, const double* x, double a) {
+  StripSpan s;
+  s.i_top = std::min(g.nx - 1, static_cast<int>(std::floor((a + g.half_x_m) / g.dx_m)));
+  s.i_bot = std::max(0, static_cast<int>(std::floor((-a + g.half_x_m) / g.dx_m)));
+  s.first = s.i_bot;
+  s.last = s.i_top;
+  while (s.first <= s.last && !(x[s.first] > -a)) ++s.first;
+  while (s.last >= s.first && !(x[s.last + 1] < a)) --s.last;
+  return s;
+}
 static_assert(sizeof(StripRates) == 8 * sizeof(double) && sizeof(IntervalGeometry) == 5 * sizeof(double),
               "EdgeInterval compares them as bytes: no padding");
 
@@ -386,8 +404,11 @@ template <bool kFields, bool kSpin, bool kLateral>
 class ShiftStrip {
  public:
   ShiftStrip(const ContactPatch& patch, const StripRates& r, int j, double L, const StepKinematics& k,
-             ShiftScratch& scratch, TransientState& state, StepResult* fields, EdgeInterval* edge, bool track)
-      : patch_(patch), r_(r), j_(j), L_(L), k_(k), scratch_(scratch), fields_(fields), edge_(edge), track_(track), a_(r.a_m),
+             ShiftScratch& scratch, TransientState& state, StepResult* fields, EdgeInterval* edge, bool track,
+             const StripSpan& span, unsigned long generation)
+      : patch_(patch), r_(r), j_(j), L_(L), k_(k), scratch_(scratch), fields_(fields), edge_(edge), span_(span),
+        generation_(generation),
+        track_(track), a_(r.a_m),
         dx_(patch.grid.dx_m),
         x_(scratch.x.data()), edge_p_(&patch.edge_pressure_Pa(0, j)) {
     const size_t o = state.index(0, j);
@@ -402,13 +423,7 @@ class ShiftStrip {
   // those whose stick test failed), the leading edge's; every interval through the whole kernel where the
   // fields are written or the interior is shorter than a block
   StripEnergy step() {
-    const Grid& g = patch_.grid;
-    const int i_top = std::min(g.nx - 1, static_cast<int>(std::floor((a_ + g.half_x_m) / g.dx_m)));
-    const int i_bot = std::max(0, static_cast<int>(std::floor((-a_ + g.half_x_m) / g.dx_m)));
-    // the interior intervals first .. last (both ends strictly inside the strip)
-    int first = i_bot, last = i_top;
-    while (first <= last && !(x_[first] > -a_)) ++first;
-    while (last >= first && !(x_[last + 1] < a_)) --last;
+    const int i_bot = span_.i_bot, first = span_.first, last = span_.last, i_top = span_.i_top;
     if (kFields || last - first + 1 < kBlock) {
       for (int i = i_bot; i <= i_top; ++i) whole_interval(i);
     } else {
@@ -473,11 +488,11 @@ class ShiftStrip {
 
   // interval i through the whole kernel, or the result kept in e where its inputs are the same to the bit
   void kept_kernel(EdgeInterval& e, int i, const IntervalGeometry& geo, const StripNode& hi) {
-    if (!e.holds(r_, geo, hi)) {
+    if (!e.holds(generation_, i, hi)) {
       e.cell = IntervalSums{};
       e.lo = whole_kernel<kSpin>(r_, hi, geo, e.cell);
-      e.r = r_;
-      e.geo = geo;
+      e.generation = generation_;
+      e.i = i;
       e.hi = hi;
       e.valid = true;
     }
@@ -836,6 +851,8 @@ class ShiftStrip {
   ShiftScratch& scratch_;
   StepResult* fields_;
   EdgeInterval* edge_;  // the strip's kept intervals (kKeptIntervals; null: none kept)
+  const StripSpan& span_;
+  const unsigned long generation_;  // of the strips' rates and spans (EdgeInterval)
  public:
   const bool track_;   // same_ is asked for
   bool same_ = true;   // every node written so far holds the bits it held before the step
@@ -863,8 +880,9 @@ class ShiftStrip {
 template <bool kFields, bool kSpin, bool kLateral>
 StripEnergy shift_strip(const ContactPatch& patch, const StripRates& r, int j, double L, const StepKinematics& k,
                         ShiftScratch& scratch, TransientState& state, StepResult* fields, EdgeInterval* edge,
-                        bool* same) {
-  ShiftStrip<kFields, kSpin, kLateral> strip(patch, r, j, L, k, scratch, state, fields, edge, same != nullptr);
+                        bool* same, const StripSpan& span, unsigned long generation) {
+  ShiftStrip<kFields, kSpin, kLateral> strip(patch, r, j, L, k, scratch, state, fields, edge, same != nullptr, span,
+                                             generation);
   const StripEnergy e = strip.step();
   if (same) *same = strip.same_;
   return e;
@@ -958,6 +976,23 @@ struct SatranWorkspace::Impl {
   std::vector<StripEnergy> energies;             // the strips' totals of a step
   std::vector<SteadyStrip> steady;  // each strip's last shift step: did it change the strip
   std::vector<EdgeInterval> edges;  // each strip's leading and trailing intervals of the last shift step
+  // each strip's intervals on the patch (serial), and its rates for the problem `rates_of` (the fields that
+  // strip_rates reads, compared to the bit)
+  std::vector<StripSpan> spans;
+  std::vector<StripRates> rates;
+  unsigned long generation = 0;  // bumped whenever the spans or the rates are computed anew (EdgeInterval)
+  bool spans_valid = false;
+  unsigned long spans_serial = 0;  // the patch they were computed on
+  int rates_count = 0;  // strips 0 .. rates_count - 1 hold their rates
+  Creepages rates_creepages;
+  Flexibilities rates_flex;
+  double rates_L3x = 0, rates_mu = 0;
+  bool rates_hold(const TangentialProblem& pb) const {
+    return std::memcmp(&rates_creepages, &pb.creepages, sizeof(Creepages)) == 0 &&
+           std::memcmp(&rates_flex, &pb.flex, sizeof(Flexibilities)) == 0 &&
+           std::memcmp(&rates_L3x, &pb.L3x_m_per_Pa, sizeof(double)) == 0 &&
+           std::memcmp(&rates_mu, &pb.mu, sizeof(double)) == 0;
+  }
   // the patch of the last step (its serial): its first mirrored strip, and that the nodes outside its contact
   // hold no traction in the states stepped on it
   bool seen = false;
@@ -1078,24 +1113,47 @@ StepResult satran_step(const ContactPatch& patch, const TangentialProblem& probl
   auto shift_kinds = [&](int j, const StripRates& rj, ShiftScratch& scratch, bool* same) {
     StepResult* out = fields ? &r : nullptr;
     EdgeInterval* edge = &w.edges[kKeptIntervals * static_cast<size_t>(j)];
+    const StripSpan& span = w.spans[j];
+    const unsigned long gen = w.generation;
     if (spin) {
-      return fields ? shift_strip<true, true, true>(patch, rj, j, L, k, scratch, state, out, edge, same)
-                    : shift_strip<false, true, true>(patch, rj, j, L, k, scratch, state, out, edge, same);
+      return fields ? shift_strip<true, true, true>(patch, rj, j, L, k, scratch, state, out, edge, same, span, gen)
+                    : shift_strip<false, true, true>(patch, rj, j, L, k, scratch, state, out, edge, same, span, gen);
     }
     if (lateral_free && skips.lateral) {
-      return fields ? shift_strip<true, false, false>(patch, rj, j, L, k, scratch, state, out, edge, same)
-                    : shift_strip<false, false, false>(patch, rj, j, L, k, scratch, state, out, edge, same);
+      return fields ? shift_strip<true, false, false>(patch, rj, j, L, k, scratch, state, out, edge, same, span, gen)
+                    : shift_strip<false, false, false>(patch, rj, j, L, k, scratch, state, out, edge, same, span, gen);
     }
-    return fields ? shift_strip<true, false, true>(patch, rj, j, L, k, scratch, state, out, edge, same)
-                  : shift_strip<false, false, true>(patch, rj, j, L, k, scratch, state, out, edge, same);
+    return fields ? shift_strip<true, false, true>(patch, rj, j, L, k, scratch, state, out, edge, same, span, gen)
+                  : shift_strip<false, false, true>(patch, rj, j, L, k, scratch, state, out, edge, same, span, gen);
   };
   const bool steady_skip = skips.steady_strips && !fields;
   w.steady.resize(g.ny);
   if (!exact_shift)  // an explicit step changes the nodes without asking
     for (SteadyStrip& st : w.steady) st.unchanged = false;
   const int variant = spin ? 2 : lateral_free && skips.lateral ? 0 : 1;
+  // the strips' spans and rates where the patch or the rates' problem changed (the same numbers as computed
+  // afresh: strip_rates of the same inputs)
+  if (exact_shift) {
+    if (!same_patch || !w.spans_valid || w.spans_serial != ws.patch_serial) {
+      w.spans.resize(g.ny);
+      for (int j = 0; j < g.ny; ++j) w.spans[j] = strip_span(g, w.scratch[0].x.data(), patch.half_length_m(j));
+      w.spans_valid = true;
+      w.spans_serial = ws.patch_serial;
+      w.rates_count = 0;
+    }
+    if (w.rates_count < strips || !w.rates_hold(rates_problem)) {
+      w.rates.resize(g.ny);
+      for (int j = 0; j < strips; ++j) w.rates[j] = strip_rates(patch, rates_problem, j);
+      w.rates_count = strips;
+      w.rates_creepages = rates_problem.creepages;
+      w.rates_flex = rates_problem.flex;
+      w.rates_L3x = rates_problem.L3x_m_per_Pa;
+      w.rates_mu = rates_problem.mu;
+      ++w.generation;
+    }
+  }
   auto shift = [&](int j, ShiftScratch& scratch) {
-    const StripRates rj = strip_rates(patch, rates_problem, j);
+    const StripRates& rj = w.rates[j];
     SteadyStrip& st = w.steady[j];
     if (steady_skip && st.holds(ws.patch_serial, variant, rj, L, k.dq_m)) return st.e;  // nodes as they are
     bool unchanged = false;
@@ -1554,6 +1612,17 @@ TransientResult run_transient(const TransientCase& c, const StepObserver& observ
   SatranWorkspace ws;
   ws.threads = set.threads > 0 ? set.threads : satran_threads();
   ws.defer_mirror = true;  // the mirror images are filled before the state is handed out
+  // the step's problem (Kalker's coefficients: elliptic integrals) kept while its patch and inputs are the same
+  // to the bit
+  struct ProblemCache {
+    bool valid = false;
+    unsigned long serial = 0;
+    TangentialProblem pb;
+    bool holds(unsigned long s, const Creepages& cr, double V) const {
+      return valid && serial == s && std::memcmp(&pb.creepages, &cr, sizeof cr) == 0 &&
+             std::memcmp(&pb.speed_m_per_s, &V, sizeof V) == 0;
+    }
+  } problems;
   RunState run;
   run.tractions = rest_state(g);
   run.snaps = set.snapshot_times_s;
@@ -1568,7 +1637,12 @@ TransientResult run_transient(const TransientCase& c, const StepObserver& observ
       const PrescribedStep s = prescribed_step(c, run.t, dx, substeps);
       const ContactPatch& patch = patches.at(s.F);
       ws.patch_serial = patches.serial();
-      const TangentialProblem pb = make_tangential_problem(patch, c.materials, s.cr, c.mu, s.V);
+      if (!problems.holds(patches.serial(), s.cr, s.V)) {
+        problems.pb = make_tangential_problem(patch, c.materials, s.cr, c.mu, s.V);
+        problems.serial = patches.serial();
+        problems.valid = true;
+      }
+      const TangentialProblem& pb = problems.pb;
       r = satran_step(patch, pb, s.k, set.scheme, run.tractions, reaches_snapshot(run, s.k.dt_s), set.skips, ws);
       k = s.k;
       F = s.F;
