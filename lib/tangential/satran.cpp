@@ -334,6 +334,7 @@ struct EdgeInterval {
   bool valid = false;
   unsigned long generation = 0;
   int i = -1;
+  IntervalGeometry geo;
   StripNode hi, lo;
   IntervalSums cell;
   // the same node for the kernel: tau and stick, and the direction where it slips (a stick node's is not read)
@@ -473,14 +474,23 @@ class ShiftStrip {
 
   // interval i through the whole kernel, from the old node i+1 (tau = 0 enters at the leading edge)
   void whole_interval(int i) {
-    const IntervalGeometry geo = geometry(i);
-    if (!(geo.x_hi > geo.x_lo)) return;
-    const bool leading = !(geo.x_hi < a_);
-    const StripNode hi = leading ? StripNode{} : load(i + 1);
-    if (edge_ && (leading || !(geo.x_lo > -a_))) {  // an end interval: the last result, if its inputs are the same
-      kept_kernel(edge_[leading ? 0 : 1], i, geo, hi);
+    // an end interval: the last result, if its inputs are the same (its geometry too, then)
+    const bool leading = !(x_[i + 1] < a_), trailing = !(x_[i] > -a_);
+    if (edge_ && (leading || trailing)) {
+      const StripNode hi = leading ? StripNode{} : load(i + 1);
+      EdgeInterval& e = edge_[leading ? 0 : 1];
+      if (e.holds(generation_, i, hi)) {
+        record(i, e.geo, hi, e.lo, e.cell);
+        return;
+      }
+      const IntervalGeometry geo = geometry(i);
+      if (!(geo.x_hi > geo.x_lo)) return;
+      kept_kernel(e, i, geo, hi);
       return;
     }
+    const IntervalGeometry geo = geometry(i);
+    if (!(geo.x_hi > geo.x_lo)) return;
+    const StripNode hi = leading ? StripNode{} : load(i + 1);
     IntervalSums cell;
     const StripNode lo = whole_kernel<kSpin>(r_, hi, geo, cell);
     record(i, geo, hi, lo, cell);
@@ -493,6 +503,7 @@ class ShiftStrip {
       e.lo = whole_kernel<kSpin>(r_, hi, geo, e.cell);
       e.generation = generation_;
       e.i = i;
+      e.geo = geo;
       e.hi = hi;
       e.valid = true;
     }
@@ -1097,8 +1108,9 @@ StepResult satran_step(const ContactPatch& patch, const TangentialProblem& probl
   if (exact_shift) rates_problem.creepages = {k.slip_x_m / k.dq_m, k.slip_y_m / k.dq_m, k.spin_rad / k.dq_m};
   // the strips on `threads` threads where the grid is large enough, each with its scratch
   const int threads = g.nx * g.ny >= kSatranParallelCells ? std::max(1, ws.threads) : 1;
+  // any strip's rates: eta/L2 and phi/L3 are the same on every strip
+  const StripRates r0 = exact_shift ? strip_rates(patch, rates_problem, 0) : StripRates{};
   if (exact_shift) {
-    const StripRates r0 = strip_rates(patch, rates_problem, 0);
     if (w.scratch.empty() || !w.scratch[0].built_for(g, r0)) w.scratch.clear();
     while (static_cast<int>(w.scratch.size()) < threads) w.scratch.emplace_back(g, r0);
   } else {
@@ -1107,7 +1119,7 @@ StepResult satran_step(const ContactPatch& patch, const TangentialProblem& probl
   }
   // the shift step compiled with or without spin (phi/L3 is the same on every strip), and without the
   // lateral work where tau_y = 0 stays 0: no lateral creepage or spin from a state without tau_y
-  const bool spin = exact_shift && has_spin(strip_rates(patch, rates_problem, 0));
+  const bool spin = exact_shift && has_spin(r0);
   const bool lateral_free = state.lateral_free && k.slip_y_m == 0 && k.spin_rad == 0;
   if (exact_shift) w.edges.resize(kKeptIntervals * static_cast<size_t>(g.ny));
   auto shift_kinds = [&](int j, const StripRates& rj, ShiftScratch& scratch, bool* same) {
