@@ -323,6 +323,14 @@ struct ShiftScratch {
   }
 };
 
+// two doubles hold the same bits (compared as integers: a call to memcmp per node cost more than the node)
+inline bool same_bits(double a, double b) {
+  std::uint64_t ua, ub;
+  std::memcpy(&ua, &a, sizeof a);
+  std::memcpy(&ub, &b, sizeof b);
+  return ua == ub;
+}
+
 // A strip's two end intervals, and the interval where stick turns to slip, go through the whole kernel at
 // every step, and their inputs seldom change: the leading one takes tau = 0 in, the trailing one a node that
 // slips on the bound (mu p e) once the material slips there, and in a steady stretch the turn to slip stays
@@ -339,8 +347,8 @@ struct EdgeInterval {
   IntervalSums cell;
   // the same node for the kernel: tau and stick, and the direction where it slips (a stick node's is not read)
   static bool same(const StripNode& a, const StripNode& b) {
-    return std::memcmp(&a.tx, &b.tx, 2 * sizeof(double)) == 0 && a.stick == b.stick &&
-           (a.stick || std::memcmp(&a.ex, &b.ex, 2 * sizeof(double)) == 0);
+    return same_bits(a.tx, b.tx) && same_bits(a.ty, b.ty) && a.stick == b.stick &&
+           (a.stick || (same_bits(a.ex, b.ex) && same_bits(a.ey, b.ey)));
   }
   bool holds(unsigned long gen, int ii, const StripNode& h) const {
     return valid && generation == gen && i == ii && same(hi, h);
@@ -353,8 +361,7 @@ inline bool same_bits(const StripNode& n, double tx, double ty, double ex, doubl
 }
 // the same for a node that sticks: its bits (tx, ty) and stick
 inline bool same_stick_bits(double tx_old, double ty_old, unsigned char stick_old, double tx, double ty) {
-  const double a[2] = {tx_old, ty_old}, b[2] = {tx, ty};
-  return std::memcmp(a, b, sizeof a) == 0 && stick_old == 1;
+  return same_bits(tx_old, tx) && same_bits(ty_old, ty) && stick_old == 1;
 }
 
 // A strip whose step left every node as it was (to the bit) is steady: while its rates, the patch, L and the
