@@ -337,11 +337,13 @@ inline bool same_bits(double a, double b) {
 // in one interval with the same stick node upstream. Where the rates, the geometry and the upstream node are
 // the same to the bit, so are the new node and the integrals: kept here from the step that computed them. The
 // rates and the geometry are the same while the interval and the workspace's generation of the strips' rates
-// and spans are (SatranWorkspace::Impl::generation: bumped whenever either is computed anew).
+// and spans are (SatranWorkspace::Impl::generation: bumped whenever either is computed anew); where the
+// generation changed (a new patch, or an inertia run's trial steps), their bytes are compared as well.
 struct EdgeInterval {
   bool valid = false;
   unsigned long generation = 0;
   int i = -1;
+  StripRates r;
   IntervalGeometry geo;
   StripNode hi, lo;
   IntervalSums cell;
@@ -352,6 +354,9 @@ struct EdgeInterval {
   }
   bool holds(unsigned long gen, int ii, const StripNode& h) const {
     return valid && generation == gen && i == ii && same(hi, h);
+  }
+  bool holds_bytes(const StripRates& rr, const IntervalGeometry& g, const StripNode& h) const {
+    return valid && std::memcmp(&r, &rr, sizeof r) == 0 && std::memcmp(&geo, &g, sizeof geo) == 0 && same(hi, h);
   }
 };
 // a node holds the bits (tx, ty, stick) given, and (ex, ey) where it slips: what the steady strips' skip asks of
@@ -506,13 +511,16 @@ class ShiftStrip {
   // interval i through the whole kernel, or the result kept in e where its inputs are the same to the bit
   void kept_kernel(EdgeInterval& e, int i, const IntervalGeometry& geo, const StripNode& hi) {
     if (!e.holds(generation_, i, hi)) {
-      e.cell = IntervalSums{};
-      e.lo = whole_kernel<kSpin>(r_, hi, geo, e.cell);
+      if (!e.holds_bytes(r_, geo, hi)) {
+        e.cell = IntervalSums{};
+        e.lo = whole_kernel<kSpin>(r_, hi, geo, e.cell);
+        e.r = r_;
+        e.geo = geo;
+        e.hi = hi;
+        e.valid = true;
+      }
       e.generation = generation_;
       e.i = i;
-      e.geo = geo;
-      e.hi = hi;
-      e.valid = true;
     }
     record(i, geo, hi, e.lo, e.cell);
   }
