@@ -39,6 +39,9 @@
 #include <cstdint>
 #include <mutex>
 #include <thread>
+#if defined(__SSE2__)
+#include <immintrin.h>
+#endif
 
 namespace contact {
 
@@ -82,7 +85,7 @@ void fill_mirrored_strips(TransientState& s) {
   if (!s.mirror_deferred) return;
   const int n = s.nx + 1;
   for (int j = s.ny - s.ny / 2; j < s.ny; ++j)
-    std::copy_n(&s.nodes[static_cast<size_t>(s.ny - 1 - j) * n], n, &s.nodes[static_cast<size_t>(j) * n]);
+    s.nodes.copy(static_cast<size_t>(s.ny - 1 - j) * n, static_cast<size_t>(j) * n, n);
   s.mirror_deferred = false;
 }
 
@@ -223,14 +226,14 @@ bool inside(const ContactPatch& p, int i, int j) {
 
 double node_energy_sum(const TransientState& s) {  // sum of |tau|^2 over all nodes
   double e = 0;
-  for (const StripNode& n : s.nodes) e += n.tx * n.tx + n.ty * n.ty;
+  for (size_t k = 0; k < s.nodes.size(); ++k) e += s.nodes.tx[k] * s.nodes.tx[k] + s.nodes.ty[k] * s.nodes.ty[k];
   return e;
 }
 
 // strip `to` takes the nodes of strip `from`
 void mirror_strip(TransientState& s, int from, int to) {
-  const int n = s.nx + 1;
-  std::copy_n(&s.nodes[from * n], n, &s.nodes[to * n]);
+  const size_t n = s.nx + 1;
+  s.nodes.copy(from * n, to * n, n);
 }
 
 void allocate_fields(StepResult& r, const Grid& g) {
@@ -259,6 +262,23 @@ template <bool kSpin>
 constexpr int kBlock = 4;
 using Block = Eigen::Array<double, kBlock, 1>;
 using BlockMap = Eigen::Map<const Block>;  // a block of an array: the per-step geometry, the pressures
+
+// The stick pass without spin (plain_stick_pass) in the compiler's vectors of two lanes (an SSE2 packet: wider
+// ones, split on the project's x86-64 baseline, had their comparisons taken lane by lane), the arithmetic lane
+// by lane as in scalar code (no reordering within a lane)
+constexpr int kLanes = 2;
+typedef double Lanes __attribute__((vector_size(kLanes * sizeof(double))));
+typedef std::int64_t LaneMask __attribute__((vector_size(kLanes * sizeof(double))));
+[[gnu::always_inline]] inline void load_lanes(Lanes& v, const double* p) { std::memcpy(&v, p, sizeof v); }
+[[gnu::always_inline]] inline void store_lanes(double* p, const Lanes& v) { std::memcpy(p, &v, sizeof v); }
+// a lane of m is set (all ones): the sign bits gathered at once where the target has it
+[[gnu::always_inline]] inline bool any_lane(const LaneMask& m) {
+#if defined(__SSE2__)
+  return _mm_movemask_pd(reinterpret_cast<__m128d>(m)) != 0;
+#else
+  return (m[0] | m[1]) != 0;
+#endif
+}
 
 // what the shift step of every strip shares, and room for one strip's, set up once per step from the
 // rates r of any strip (only eta/L2 and phi/L3, the same on every strip, are used)
@@ -303,28 +323,50 @@ struct ShiftScratch {
   }
 };
 
+// two doubles hold the same bits (compared as integers: a call to memcmp per node cost more than the node)
+inline bool same_bits(double a, double b) {
+  std::uint64_t ua, ub;
+  std::memcpy(&ua, &a, sizeof a);
+  std::memcpy(&ub, &b, sizeof b);
+  return ua == ub;
+}
+
 // A strip's two end intervals, and the interval where stick turns to slip, go through the whole kernel at
 // every step, and their inputs seldom change: the leading one takes tau = 0 in, the trailing one a node that
 // slips on the bound (mu p e) once the material slips there, and in a steady stretch the turn to slip stays
 // in one interval with the same stick node upstream. Where the rates, the geometry and the upstream node are
-// the same to the bit, so are the new node and the integrals: kept here from the step that computed them.
+// the same to the bit, so are the new node and the integrals: kept here from the step that computed them. The
+// rates and the geometry are the same while the interval and the workspace's generation of the strips' rates
+// and spans are (SatranWorkspace::Impl::generation: bumped whenever either is computed anew); where the
+// generation changed (a new patch, or an inertia run's trial steps), their bytes are compared as well.
 struct EdgeInterval {
   bool valid = false;
+  unsigned long generation = 0;
+  int i = -1;
   StripRates r;
   IntervalGeometry geo;
   StripNode hi, lo;
   IntervalSums cell;
+  // the same node for the kernel: tau and stick, and the direction where it slips (a stick node's is not read)
   static bool same(const StripNode& a, const StripNode& b) {
-    return std::memcmp(&a.tx, &b.tx, 4 * sizeof(double)) == 0 && a.stick == b.stick;
+    return same_bits(a.tx, b.tx) && same_bits(a.ty, b.ty) && a.stick == b.stick &&
+           (a.stick || (same_bits(a.ex, b.ex) && same_bits(a.ey, b.ey)));
   }
-  bool holds(const StripRates& rr, const IntervalGeometry& g, const StripNode& h) const {
+  bool holds(unsigned long gen, int ii, const StripNode& h) const {
+    return valid && generation == gen && i == ii && same(hi, h);
+  }
+  bool holds_bytes(const StripRates& rr, const IntervalGeometry& g, const StripNode& h) const {
     return valid && std::memcmp(&r, &rr, sizeof r) == 0 && std::memcmp(&geo, &g, sizeof geo) == 0 && same(hi, h);
   }
 };
-// a node holds the bits (tx, ty, ex, ey, stick) given: what the steady strips' skip asks of every node written
+// a node holds the bits (tx, ty, stick) given, and (ex, ey) where it slips: what the steady strips' skip asks of
+// every node written (a stick node's direction is not read)
 inline bool same_bits(const StripNode& n, double tx, double ty, double ex, double ey, bool stick) {
-  const double a[4] = {n.tx, n.ty, n.ex, n.ey}, b[4] = {tx, ty, ex, ey};
-  return std::memcmp(a, b, sizeof a) == 0 && n.stick == stick;
+  return EdgeInterval::same(n, {tx, ty, ex, ey, stick});
+}
+// the same for a node that sticks: its bits (tx, ty) and stick
+inline bool same_stick_bits(double tx_old, double ty_old, unsigned char stick_old, double tx, double ty) {
+  return same_bits(tx_old, tx) && same_bits(ty_old, ty) && stick_old == 1;
 }
 
 // A strip whose step left every node as it was (to the bit) is steady: while its rates, the patch, L and the
@@ -344,6 +386,22 @@ struct SteadyStrip {
 
 // per strip: the leading interval, the trailing one, and the last interval where stick turned to slip
 constexpr int kKeptIntervals = 3;
+
+// A strip's intervals on the grid: i_bot .. i_top in contact, first .. last of them strictly inside it (both
+// ends); they depend on the patch alone, and a run keeps them while the patch is the same
+struct StripSpan {
+  int i_bot = 0, first = 0, last = -1, i_top = -1;
+};
+inline StripSpan strip_span(const Grid& g, const double* x, double a) {
+  StripSpan s;
+  s.i_top = std::min(g.nx - 1, static_cast<int>(std::floor((a + g.half_x_m) / g.dx_m)));
+  s.i_bot = std::max(0, static_cast<int>(std::floor((-a + g.half_x_m) / g.dx_m)));
+  s.first = s.i_bot;
+  s.last = s.i_top;
+  while (s.first <= s.last && !(x[s.first] > -a)) ++s.first;
+  while (s.last >= s.first && !(x[s.last + 1] < a)) --s.last;
+  return s;
+}
 static_assert(sizeof(StripRates) == 8 * sizeof(double) && sizeof(IntervalGeometry) == 5 * sizeof(double),
               "EdgeInterval compares them as bytes: no padding");
 
@@ -359,27 +417,35 @@ template <bool kFields, bool kSpin, bool kLateral>
 class ShiftStrip {
  public:
   ShiftStrip(const ContactPatch& patch, const StripRates& r, int j, double L, const StepKinematics& k,
-             ShiftScratch& scratch, TransientState& state, StepResult* fields, EdgeInterval* edge, bool track)
-      : patch_(patch), r_(r), j_(j), L_(L), k_(k), scratch_(scratch), fields_(fields), edge_(edge), track_(track), a_(r.a_m),
+             ShiftScratch& scratch, TransientState& state, StepResult* fields, EdgeInterval* edge, bool track,
+             const StripSpan& span, unsigned long generation)
+      : patch_(patch), r_(r), j_(j), L_(L), k_(k), scratch_(scratch), fields_(fields), edge_(edge), span_(span),
+        generation_(generation),
+        track_(track), a_(r.a_m),
         dx_(patch.grid.dx_m),
-        x_(scratch.x.data()), node_(&state.node(0, j)), edge_p_(&patch.edge_pressure_Pa(0, j)) {}
+        x_(scratch.x.data()), edge_p_(&patch.edge_pressure_Pa(0, j)) {
+    const size_t o = state.index(0, j);
+    tx_ = state.nodes.tx.data() + o;
+    ty_ = state.nodes.ty.data() + o;
+    ex_ = state.nodes.ex.data() + o;
+    ey_ = state.nodes.ey.data() + o;
+    st_ = state.nodes.stick.data() + o;
+  }
 
   // the step of the strip: the trailing edge's intervals, the interior ones (the stick pass in blocks, then
   // those whose stick test failed), the leading edge's; every interval through the whole kernel where the
   // fields are written or the interior is shorter than a block
   StripEnergy step() {
-    const Grid& g = patch_.grid;
-    const int i_top = std::min(g.nx - 1, static_cast<int>(std::floor((a_ + g.half_x_m) / g.dx_m)));
-    const int i_bot = std::max(0, static_cast<int>(std::floor((-a_ + g.half_x_m) / g.dx_m)));
-    // the interior intervals first .. last (both ends strictly inside the strip)
-    int first = i_bot, last = i_top;
-    while (first <= last && !(x_[first] > -a_)) ++first;
-    while (last >= first && !(x_[last + 1] < a_)) --last;
+    const int i_bot = span_.i_bot, first = span_.first, last = span_.last, i_top = span_.i_top;
     if (kFields || last - first + 1 < kBlock) {
       for (int i = i_bot; i <= i_top; ++i) whole_interval(i);
     } else {
       for (int i = i_bot; i < first; ++i) whole_interval(i);
-      failed_intervals(stick_pass(first, last));
+      if constexpr (kSpin) {
+        failed_intervals(stick_pass(first, last));
+      } else {
+        failed_intervals(plain_stick_pass(first, last));
+      }
       for (int i = last + 1; i <= i_top; ++i) whole_interval(i);
     }
     return energies();
@@ -404,8 +470,8 @@ class ShiftStrip {
     hi2_ += hi.tx * hi.tx + hi.ty * hi.ty;
     lo2_ += lo.tx * lo.tx + lo.ty * lo.ty;
     if (geo.x_lo > -a_) {
-      if (track_) same_ &= same_bits(node_[i], lo.tx, lo.ty, lo.ex, lo.ey, lo.stick);
-      node_[i] = lo;
+      if (track_) same_ &= same_bits(load(i), lo.tx, lo.ty, lo.ex, lo.ey, lo.stick);
+      store(i, lo);
     } else {
       trail2_ = lo.tx * lo.tx + lo.ty * lo.ty;
     }
@@ -420,14 +486,23 @@ class ShiftStrip {
 
   // interval i through the whole kernel, from the old node i+1 (tau = 0 enters at the leading edge)
   void whole_interval(int i) {
-    const IntervalGeometry geo = geometry(i);
-    if (!(geo.x_hi > geo.x_lo)) return;
-    const bool leading = !(geo.x_hi < a_);
-    const StripNode hi = leading ? StripNode{} : node_[i + 1];
-    if (edge_ && (leading || !(geo.x_lo > -a_))) {  // an end interval: the last result, if its inputs are the same
-      kept_kernel(edge_[leading ? 0 : 1], i, geo, hi);
+    // an end interval: the last result, if its inputs are the same (its geometry too, then)
+    const bool leading = !(x_[i + 1] < a_), trailing = !(x_[i] > -a_);
+    if (edge_ && (leading || trailing)) {
+      const StripNode hi = leading ? StripNode{} : load(i + 1);
+      EdgeInterval& e = edge_[leading ? 0 : 1];
+      if (e.holds(generation_, i, hi)) {
+        record(i, e.geo, hi, e.lo, e.cell);
+        return;
+      }
+      const IntervalGeometry geo = geometry(i);
+      if (!(geo.x_hi > geo.x_lo)) return;
+      kept_kernel(e, i, geo, hi);
       return;
     }
+    const IntervalGeometry geo = geometry(i);
+    if (!(geo.x_hi > geo.x_lo)) return;
+    const StripNode hi = leading ? StripNode{} : load(i + 1);
     IntervalSums cell;
     const StripNode lo = whole_kernel<kSpin>(r_, hi, geo, cell);
     record(i, geo, hi, lo, cell);
@@ -435,15 +510,165 @@ class ShiftStrip {
 
   // interval i through the whole kernel, or the result kept in e where its inputs are the same to the bit
   void kept_kernel(EdgeInterval& e, int i, const IntervalGeometry& geo, const StripNode& hi) {
-    if (!e.holds(r_, geo, hi)) {
-      e.cell = IntervalSums{};
-      e.lo = whole_kernel<kSpin>(r_, hi, geo, e.cell);
-      e.r = r_;
-      e.geo = geo;
-      e.hi = hi;
-      e.valid = true;
+    if (!e.holds(generation_, i, hi)) {
+      if (!e.holds_bytes(r_, geo, hi)) {
+        e.cell = IntervalSums{};
+        e.lo = whole_kernel<kSpin>(r_, hi, geo, e.cell);
+        e.r = r_;
+        e.geo = geo;
+        e.hi = hi;
+        e.valid = true;
+      }
+      e.generation = generation_;
+      e.i = i;
     }
     record(i, geo, hi, e.lo, e.cell);
+  }
+
+  // The stick pass without spin over the interior intervals first .. last: what stick_pass does for them, the
+  // same numbers to the bit (the sums too: a block's lanes added as stick_pass adds them), in the compiler's
+  // vectors, a block of kBlock intervals as two packets of kLanes. Without spin gamma = 0 and its terms are
+  // left out (adding +0 changes no value but the sign of a zero). A block whose intervals all stick is written
+  // a packet per quantity; one where an interval fails is taken lane by lane, its failed intervals kept in the
+  // scratch with their old upstream node for failed_intervals.
+  int plain_stick_pass(int first, int last) {
+    static_assert(kBlock == 2 * kLanes, "a block is two packets");
+    const double alpha = r_.alpha_Pa_per_m, mu = r_.mu;
+    const double* const x = x_;
+    const double* const edge_p = edge_p_;
+    double* const TX = tx_;
+    double* const TY = ty_;
+    unsigned char* const ST = st_;
+    ShiftScratch& scratch = scratch_;
+    const double* const t = scratch.t.data();
+    const double* const t2_2 = scratch.t2_2.data();
+    const double* const beta_t = scratch.beta_t.data();
+    const double* const beta_t2_2 = scratch.beta_t2_2.data();
+    const double* const beta_t3_3 = scratch.beta_t3_3.data();
+    const bool track = track_;
+    bool same = true;
+    int n_failed = 0;
+    IntervalSums strip = strip_;  // in registers through the pass
+    double hi2s = hi2_, lo2s = lo2_;
+    // interval i from the old node i + 1 (not written yet), lane by lane: the prediction, the integrals, and
+    // Kalker's test at x_lo (true: it fails)
+    auto one = [&](int i, double& px, double& py, double& Ix, double& Iy, double& Ixy, double& lo2, double& hi2) {
+      const double tx = TX[i + 1], h = t[i];
+      px = tx - alpha * h;
+      Ix = tx * h - alpha * t2_2[i];
+      if constexpr (kLateral) {
+        const double ty = TY[i + 1];
+        py = ty - beta_t[i];
+        Iy = ty * h - beta_t2_2[i];
+        Ixy = x[i + 1] * Iy - (ty * t2_2[i] - beta_t3_3[i]);
+        lo2 = px * px + py * py;
+        hi2 = tx * tx + ty * ty;
+      } else {
+        py = Iy = Ixy = 0;
+        lo2 = px * px;
+        hi2 = tx * tx;
+      }
+      const double bound = mu * edge_p[i];
+      return lo2 - bound * bound > 0;
+    };
+    // the same for the intervals i, i + 1 in a packet; fails: the lanes where the test fails
+    struct Pair {
+      Lanes h, px, py, Ix, Iy, Ixy, lo2, hi2;
+    };
+    auto pair = [&](int i, Pair& o) {
+      Lanes tx, t22, bound;
+      load_lanes(tx, TX + i + 1);
+      load_lanes(o.h, t + i);
+      load_lanes(t22, t2_2 + i);
+      load_lanes(bound, edge_p + i);
+      bound *= mu;
+      o.px = tx - alpha * o.h;
+      o.Ix = tx * o.h - alpha * t22;
+      if constexpr (kLateral) {
+        Lanes ty, bt, bt22, bt33, xh;
+        load_lanes(ty, TY + i + 1);
+        load_lanes(bt, beta_t + i);
+        load_lanes(bt22, beta_t2_2 + i);
+        load_lanes(bt33, beta_t3_3 + i);
+        load_lanes(xh, x + i + 1);
+        o.py = ty - bt;
+        o.Iy = ty * o.h - bt22;
+        o.Ixy = xh * o.Iy - (ty * t22 - bt33);
+        o.lo2 = o.px * o.px + o.py * o.py;
+        o.hi2 = tx * tx + ty * ty;
+      } else {
+        o.py = o.Iy = o.Ixy = Lanes{};
+        o.lo2 = o.px * o.px;
+        o.hi2 = tx * tx;
+      }
+      return o.lo2 - bound * bound > 0;
+    };
+    // a block's sum, in the order of stick_pass's (Eigen's: lanes 0 + 2, 1 + 3, then the two)
+    auto block_sum = [](const Lanes& a, const Lanes& b) {
+      const Lanes s = a + b;
+      return s[0] + s[1];
+    };
+    // the new nodes i, i + 1 of a pair that sticks, with a packet per quantity
+    auto store_pair = [&](int i, const Pair& o) {
+      if (track) {
+        LaneMask ox, oy;
+        std::memcpy(&ox, TX + i, sizeof ox);
+        std::memcpy(&oy, TY + i, sizeof oy);
+        const LaneMask sx = ox == reinterpret_cast<LaneMask>(o.px), sy = oy == reinterpret_cast<LaneMask>(o.py);
+        same &= !any_lane(~(sx & sy)) && (ST[i] & ST[i + 1]) == 1;
+      }
+      store_lanes(TX + i, o.px);
+      store_lanes(TY + i, o.py);
+      ST[i] = 1;
+      ST[i + 1] = 1;
+    };
+    for (int from = first; from <= last; from += kBlock) {
+      const int b = std::min(from, last - kBlock + 1);  // the block's intervals are b .. b + kBlock - 1
+      if (b == from) {
+        Pair A, B;
+        const LaneMask fa = pair(b, A), fb = pair(b + kLanes, B);
+        if (!any_lane(fa | fb)) {  // the whole block sticks
+          store_pair(b, A);
+          store_pair(b + kLanes, B);
+          strip.Ix += block_sum(A.Ix, B.Ix);
+          if constexpr (kLateral) {
+            strip.Iy += block_sum(A.Iy, B.Iy);
+            strip.Ixy += block_sum(A.Ixy, B.Ixy);
+          }
+          strip.stick_length_m += block_sum(A.h, B.h);
+          hi2s += block_sum(A.hi2, B.hi2);
+          lo2s += block_sum(A.lo2, B.lo2);
+          continue;
+        }
+      }
+      // lane by lane from the trailing side up (node i + 1 is not written yet); below `from` the block before
+      // did them
+      for (int i = from; i < b + kBlock; ++i) {
+        double px, py, Ix, Iy, Ixy, lo2, hi2;
+        if (one(i, px, py, Ix, Iy, Ixy, lo2, hi2)) {
+          scratch.failed[n_failed] = i;
+          scratch.failed_hi[n_failed++] = load(i + 1);
+          continue;
+        }
+        if (track) same &= same_stick_bits(TX[i], TY[i], ST[i], px, py);
+        TX[i] = px;
+        TY[i] = py;
+        ST[i] = 1;
+        strip.Ix += Ix;
+        if constexpr (kLateral) {
+          strip.Iy += Iy;
+          strip.Ixy += Ixy;
+        }
+        strip.stick_length_m += t[i];
+        hi2s += hi2;
+        lo2s += lo2;
+      }
+    }
+    strip_ = strip;
+    hi2_ = hi2s;
+    lo2_ = lo2s;
+    same_ &= same;
+    return n_failed;
   }
 
   // The stick pass over the interior intervals first .. last, in blocks from the trailing side up; the last
@@ -456,7 +681,9 @@ class ShiftStrip {
     const StripRates& r = r_;
     const double* x = x_;
     const double* edge_p = edge_p_;
-    StripNode* node = node_;
+    double* const TX = tx_;
+    double* const TY = ty_;
+    unsigned char* const ST = st_;
     ShiftScratch& scratch = scratch_;
     // the sums in registers through the pass (a node written may alias a member)
     IntervalSums strip = strip_;
@@ -467,12 +694,15 @@ class ShiftStrip {
     int n_failed = 0;
     for (int from = first; from <= last; from += kBlock) {
       const int b = std::min(from, last - kBlock + 1);  // the block's intervals are b .. b + kBlock - 1
-      Block tx, ty = Block::Zero();  // the old tau at x_hi: nodes b + 1 and up are not written yet
+      // the old tau at x_hi: nodes b + 1 and up are not written yet
+      const Block tx = BlockMap(TX + b + 1);
+      Block ty = Block::Zero();
+      if constexpr (kLateral) ty = BlockMap(TY + b + 1);
       bool slip_node = false;  // one of them slips (asked with spin only)
-      for (int q = 0; q < kBlock; ++q) {
-        tx(q) = node[b + 1 + q].tx;
-        if constexpr (kLateral) ty(q) = node[b + 1 + q].ty;
-        if constexpr (kSpin) slip_node |= !node[b + 1 + q].stick;
+      if constexpr (kSpin) {
+        unsigned char all = 1;
+        for (int q = 0; q < kBlock; ++q) all &= ST[b + 1 + q];
+        slip_node = all == 0;
       }
       auto at = [b](const Eigen::ArrayXd& v) { return BlockMap(v.data() + b); };
       const BlockMap x_hi(x + b + 1), h = at(scratch.t);
@@ -510,7 +740,7 @@ class ShiftStrip {
         clear = hi2_lane.max(lo2_lane) - room * room;
         if (clear.maxCoeff() >= 0) {  // the hull, if a stick node's interval that passes at x_lo needs it
           for (int q = 0; q < kBlock && !hull; ++q)
-            hull = node[b + 1 + q].stick && excess(q) <= 0 && clear(q) >= 0;
+            hull = ST[b + 1 + q] && excess(q) <= 0 && clear(q) >= 0;
         }
         if (hull) {
           inner = detail::hull_excess(detail::stick_excess<Block, BlockMap>(
@@ -518,19 +748,29 @@ class ShiftStrip {
         }
       }
       // the new nodes from the trailing side up, so that node i+1 still holds the old tau when node i is
-      // written; an interval whose test fails keeps its old upstream node for later
+      // written; an interval whose test fails keeps its old upstream node for later. A stick node's direction
+      // is not read (StripNode): it is left as it was.
       auto stick = [&](int q) {
-        const StripNode& hi = node[b + q + 1];
-        StripNode& lo = node[b + q];
-        if (track) same &= same_bits(lo, p.px(q), kLateral ? p.py(q) : 0.0, hi.ex, hi.ey, true);
-        lo.tx = p.px(q);
-        lo.ty = kLateral ? p.py(q) : 0.0;
-        lo.ex = hi.ex;
-        lo.ey = hi.ey;
-        lo.stick = true;
+        const int i = b + q;
+        const double py = kLateral ? p.py(q) : 0.0;
+        if (track) same &= same_stick_bits(TX[i], TY[i], ST[i], p.px(q), py);
+        TX[i] = p.px(q);
+        TY[i] = py;
+        ST[i] = 1;
       };
       if (b == from && excess.maxCoeff() <= 0 &&
           (!kSpin || (!slip_node && (!hull || ((clear < 0) || (inner <= 0)).all())))) {  // the whole block sticks
+        if (track) {
+          for (int q = 0; q < kBlock; ++q) stick(q);
+        } else {
+          Eigen::Map<Block>(TX + b) = p.px;
+          if constexpr (kLateral) {
+            Eigen::Map<Block>(TY + b) = p.py;
+          } else {
+            Eigen::Map<Block>(TY + b).setZero();
+          }
+          for (int q = 0; q < kBlock; ++q) ST[b + q] = 1;
+        }
         strip.Ix += I.Ix.sum();
         if constexpr (kLateral) {
           strip.Iy += I.Iy.sum();
@@ -539,7 +779,6 @@ class ShiftStrip {
         strip.stick_length_m += h.sum();
         hi2 += hi2_lane.sum();
         lo2 += lo2_lane.sum();
-        for (int q = 0; q < kBlock; ++q) stick(q);
         continue;
       }
       for (int q = from - b; q < kBlock; ++q) {
@@ -547,7 +786,7 @@ class ShiftStrip {
         // node what spin_sticks decides (stick, slip on, or the whole kernel where it sticks again)
         bool fails = excess(q) > 0, between = false;
         if constexpr (kSpin) {
-          const StripNode& hi = node[b + q + 1];
+          const StripNode hi = load(b + q + 1);
           if (hi.stick) {
             between = !fails && hull && clear(q) >= 0 && inner(q) > 0;
           } else {
@@ -561,7 +800,7 @@ class ShiftStrip {
         if (fails || between) {
           scratch.failed[n_failed] = b + q;
           if constexpr (kSpin) scratch.failed_between[n_failed] = between;
-          scratch.failed_hi[n_failed++] = node[b + q + 1];
+          scratch.failed_hi[n_failed++] = load(b + q + 1);
           continue;
         }
         strip.Ix += I.Ix(q);
@@ -638,13 +877,25 @@ class ShiftStrip {
   ShiftScratch& scratch_;
   StepResult* fields_;
   EdgeInterval* edge_;  // the strip's kept intervals (kKeptIntervals; null: none kept)
+  const StripSpan& span_;
+  const unsigned long generation_;  // of the strips' rates and spans (EdgeInterval)
  public:
   const bool track_;   // same_ is asked for
   bool same_ = true;   // every node written so far holds the bits it held before the step
  private:
   const double a_, dx_;
   const double* x_;      // the nodes x_edge(i)
-  StripNode* node_;      // node_[i] sits at x_edge(i)
+  // the strip's nodes, one array per quantity: node i sits at x_edge(i)
+  double *tx_, *ty_, *ex_, *ey_;
+  unsigned char* st_;
+  StripNode load(int i) const { return {tx_[i], ty_[i], ex_[i], ey_[i], st_[i] != 0}; }
+  void store(int i, const StripNode& n) {
+    tx_[i] = n.tx;
+    ty_[i] = n.ty;
+    ex_[i] = n.ex;
+    ey_[i] = n.ey;
+    st_[i] = n.stick ? 1 : 0;
+  }
   const double* edge_p_;
   // the integrals add up over the strip (per interval only for the fields)
   IntervalSums strip_;
@@ -655,8 +906,9 @@ class ShiftStrip {
 template <bool kFields, bool kSpin, bool kLateral>
 StripEnergy shift_strip(const ContactPatch& patch, const StripRates& r, int j, double L, const StepKinematics& k,
                         ShiftScratch& scratch, TransientState& state, StepResult* fields, EdgeInterval* edge,
-                        bool* same) {
-  ShiftStrip<kFields, kSpin, kLateral> strip(patch, r, j, L, k, scratch, state, fields, edge, same != nullptr);
+                        bool* same, const StripSpan& span, unsigned long generation) {
+  ShiftStrip<kFields, kSpin, kLateral> strip(patch, r, j, L, k, scratch, state, fields, edge, same != nullptr, span,
+                                             generation);
   const StripEnergy e = strip.step();
   if (same) *same = strip.same_;
   return e;
@@ -713,7 +965,7 @@ StripEnergy explicit_strip(const ContactPatch& patch, const TangentialProblem& p
       nw.tx = bound * nw.ex;
       nw.ty = bound * nw.ey;
     }
-    state.node(i, j) = nw;
+    state.set_node(i, j, nw);
     const double mx = (Tx + nw.tx) / 2, my = (Ty + nw.ty) / 2;
     e.dissipated += -L * dx * (mx * (nw.tx - px) + my * (nw.ty - py));
     e.creep += -L * dx * (mx * incx + my * incy);
@@ -735,7 +987,10 @@ StripEnergy explicit_strip(const ContactPatch& patch, const TangentialProblem& p
   }
   e.transport = L * dx / 2 * (E_old - E_transported);
   e.E_start = E_old;
-  for (int i = 0; i <= g.nx; ++i) e.E_end += state.node(i, j).tx * state.node(i, j).tx + state.node(i, j).ty * state.node(i, j).ty;
+  for (int i = 0; i <= g.nx; ++i) {
+    const size_t n = state.index(i, j);
+    e.E_end += state.nodes.tx[n] * state.nodes.tx[n] + state.nodes.ty[n] * state.nodes.ty[n];
+  }
   return e;
 }
 
@@ -747,6 +1002,23 @@ struct SatranWorkspace::Impl {
   std::vector<StripEnergy> energies;             // the strips' totals of a step
   std::vector<SteadyStrip> steady;  // each strip's last shift step: did it change the strip
   std::vector<EdgeInterval> edges;  // each strip's leading and trailing intervals of the last shift step
+  // each strip's intervals on the patch (serial), and its rates for the problem `rates_of` (the fields that
+  // strip_rates reads, compared to the bit)
+  std::vector<StripSpan> spans;
+  std::vector<StripRates> rates;
+  unsigned long generation = 0;  // bumped whenever the spans or the rates are computed anew (EdgeInterval)
+  bool spans_valid = false;
+  unsigned long spans_serial = 0;  // the patch they were computed on
+  int rates_count = 0;  // strips 0 .. rates_count - 1 hold their rates
+  Creepages rates_creepages;
+  Flexibilities rates_flex;
+  double rates_L3x = 0, rates_mu = 0;
+  bool rates_hold(const TangentialProblem& pb) const {
+    return std::memcmp(&rates_creepages, &pb.creepages, sizeof(Creepages)) == 0 &&
+           std::memcmp(&rates_flex, &pb.flex, sizeof(Flexibilities)) == 0 &&
+           std::memcmp(&rates_L3x, &pb.L3x_m_per_Pa, sizeof(double)) == 0 &&
+           std::memcmp(&rates_mu, &pb.mu, sizeof(double)) == 0;
+  }
   // the patch of the last step (its serial): its first mirrored strip, and that the nodes outside its contact
   // hold no traction in the states stepped on it
   bool seen = false;
@@ -801,17 +1073,15 @@ StepResult satran_step(const ContactPatch& patch, const TangentialProblem& probl
   if (rescale) {
     const double before = state.L_m_per_Pa * dx / 2 * node_energy_sum(state) * g.dy_m;
     const double scale = state.L_m_per_Pa / L;
-    for (StripNode& n : state.nodes) {
-      n.tx *= scale;
-      n.ty *= scale;
-    }
+    for (double& t : state.nodes.tx) t *= scale;
+    for (double& t : state.nodes.ty) t *= scale;
     if (scale > 1) {
       for (int j = 0; j < g.ny; ++j) {
         const double a = patch.half_length_m(j);
         for (int i = 0; i <= g.nx; ++i) {
           const double x = g.x_edge(i);
           if (!(x > -a && x < a)) continue;  // released below
-          StripNode& n = state.node(i, j);
+          StripNode n = state.node(i, j);
           const double bound = problem.mu * patch.edge_pressure_Pa(i, j), norm = std::hypot(n.tx, n.ty);
           if (!(norm > bound)) continue;
           n.ex = n.tx / norm;
@@ -819,6 +1089,7 @@ StepResult satran_step(const ContactPatch& patch, const TangentialProblem& probl
           n.tx = bound * n.ex;
           n.ty = bound * n.ey;
           n.stick = false;
+          state.set_node(i, j, n);
         }
       }
     }
@@ -832,16 +1103,16 @@ StepResult satran_step(const ContactPatch& patch, const TangentialProblem& probl
   for (int j = 0; j < g.ny && !same_patch; ++j) {
     const double a = patch.half_length_m(j);
     for (int i = 0; i <= g.nx; ++i) {
-      StripNode& n = state.node(i, j);
       const double x = g.x_edge(i);
       if (x > -a && x < a) {
         i = std::max(i, static_cast<int>(std::ceil((a + g.half_x_m) / dx)) - 1);  // skip the interior
         continue;
       }
+      const StripNode n = state.node(i, j);
       const double n2 = n.tx * n.tx + n.ty * n.ty;
       if (n2 == 0) continue;
       r.released_J += L * dx / 2 * n2 * g.dy_m;
-      n = StripNode{};
+      state.set_node(i, j, StripNode{});
     }
   }
   w.seen = true;
@@ -852,8 +1123,9 @@ StepResult satran_step(const ContactPatch& patch, const TangentialProblem& probl
   if (exact_shift) rates_problem.creepages = {k.slip_x_m / k.dq_m, k.slip_y_m / k.dq_m, k.spin_rad / k.dq_m};
   // the strips on `threads` threads where the grid is large enough, each with its scratch
   const int threads = g.nx * g.ny >= kSatranParallelCells ? std::max(1, ws.threads) : 1;
+  // any strip's rates: eta/L2 and phi/L3 are the same on every strip
+  const StripRates r0 = exact_shift ? strip_rates(patch, rates_problem, 0) : StripRates{};
   if (exact_shift) {
-    const StripRates r0 = strip_rates(patch, rates_problem, 0);
     if (w.scratch.empty() || !w.scratch[0].built_for(g, r0)) w.scratch.clear();
     while (static_cast<int>(w.scratch.size()) < threads) w.scratch.emplace_back(g, r0);
   } else {
@@ -862,36 +1134,60 @@ StepResult satran_step(const ContactPatch& patch, const TangentialProblem& probl
   }
   // the shift step compiled with or without spin (phi/L3 is the same on every strip), and without the
   // lateral work where tau_y = 0 stays 0: no lateral creepage or spin from a state without tau_y
-  const bool spin = exact_shift && has_spin(strip_rates(patch, rates_problem, 0));
+  const bool spin = exact_shift && has_spin(r0);
   const bool lateral_free = state.lateral_free && k.slip_y_m == 0 && k.spin_rad == 0;
   if (exact_shift) w.edges.resize(kKeptIntervals * static_cast<size_t>(g.ny));
   auto shift_kinds = [&](int j, const StripRates& rj, ShiftScratch& scratch, bool* same) {
     StepResult* out = fields ? &r : nullptr;
     EdgeInterval* edge = &w.edges[kKeptIntervals * static_cast<size_t>(j)];
+    const StripSpan& span = w.spans[j];
+    const unsigned long gen = w.generation;
     if (spin) {
-      return fields ? shift_strip<true, true, true>(patch, rj, j, L, k, scratch, state, out, edge, same)
-                    : shift_strip<false, true, true>(patch, rj, j, L, k, scratch, state, out, edge, same);
+      return fields ? shift_strip<true, true, true>(patch, rj, j, L, k, scratch, state, out, edge, same, span, gen)
+                    : shift_strip<false, true, true>(patch, rj, j, L, k, scratch, state, out, edge, same, span, gen);
     }
     if (lateral_free && skips.lateral) {
-      return fields ? shift_strip<true, false, false>(patch, rj, j, L, k, scratch, state, out, edge, same)
-                    : shift_strip<false, false, false>(patch, rj, j, L, k, scratch, state, out, edge, same);
+      return fields ? shift_strip<true, false, false>(patch, rj, j, L, k, scratch, state, out, edge, same, span, gen)
+                    : shift_strip<false, false, false>(patch, rj, j, L, k, scratch, state, out, edge, same, span, gen);
     }
-    return fields ? shift_strip<true, false, true>(patch, rj, j, L, k, scratch, state, out, edge, same)
-                  : shift_strip<false, false, true>(patch, rj, j, L, k, scratch, state, out, edge, same);
+    return fields ? shift_strip<true, false, true>(patch, rj, j, L, k, scratch, state, out, edge, same, span, gen)
+                  : shift_strip<false, false, true>(patch, rj, j, L, k, scratch, state, out, edge, same, span, gen);
   };
   const bool steady_skip = skips.steady_strips && !fields;
   w.steady.resize(g.ny);
   if (!exact_shift)  // an explicit step changes the nodes without asking
     for (SteadyStrip& st : w.steady) st.unchanged = false;
   const int variant = spin ? 2 : lateral_free && skips.lateral ? 0 : 1;
+  // the strips' spans and rates where the patch or the rates' problem changed (the same numbers as computed
+  // afresh: strip_rates of the same inputs)
+  if (exact_shift) {
+    if (!same_patch || !w.spans_valid || w.spans_serial != ws.patch_serial) {
+      w.spans.resize(g.ny);
+      for (int j = 0; j < g.ny; ++j) w.spans[j] = strip_span(g, w.scratch[0].x.data(), patch.half_length_m(j));
+      w.spans_valid = true;
+      w.spans_serial = ws.patch_serial;
+      w.rates_count = 0;
+    }
+    if (w.rates_count < strips || !w.rates_hold(rates_problem)) {
+      w.rates.resize(g.ny);
+      for (int j = 0; j < strips; ++j) w.rates[j] = strip_rates(patch, rates_problem, j);
+      w.rates_count = strips;
+      w.rates_creepages = rates_problem.creepages;
+      w.rates_flex = rates_problem.flex;
+      w.rates_L3x = rates_problem.L3x_m_per_Pa;
+      w.rates_mu = rates_problem.mu;
+      ++w.generation;
+    }
+  }
   auto shift = [&](int j, ShiftScratch& scratch) {
-    const StripRates rj = strip_rates(patch, rates_problem, j);
+    const StripRates& rj = w.rates[j];
     SteadyStrip& st = w.steady[j];
     if (steady_skip && st.holds(ws.patch_serial, variant, rj, L, k.dq_m)) return st.e;  // nodes as they are
     bool unchanged = false;
     bool* same = steady_skip ? &unchanged : nullptr;
     const StripEnergy e = shift_kinds(j, rj, scratch, same);
     st.unchanged = unchanged;
+    if (!steady_skip) return e;  // nothing else is asked for
     st.serial = ws.patch_serial;
     st.variant = variant;
     st.r = rj;
@@ -1343,6 +1639,17 @@ TransientResult run_transient(const TransientCase& c, const StepObserver& observ
   SatranWorkspace ws;
   ws.threads = set.threads > 0 ? set.threads : satran_threads();
   ws.defer_mirror = true;  // the mirror images are filled before the state is handed out
+  // the step's problem (Kalker's coefficients: elliptic integrals) kept while its patch and inputs are the same
+  // to the bit
+  struct ProblemCache {
+    bool valid = false;
+    unsigned long serial = 0;
+    TangentialProblem pb;
+    bool holds(unsigned long s, const Creepages& cr, double V) const {
+      return valid && serial == s && std::memcmp(&pb.creepages, &cr, sizeof cr) == 0 &&
+             std::memcmp(&pb.speed_m_per_s, &V, sizeof V) == 0;
+    }
+  } problems;
   RunState run;
   run.tractions = rest_state(g);
   run.snaps = set.snapshot_times_s;
@@ -1357,7 +1664,12 @@ TransientResult run_transient(const TransientCase& c, const StepObserver& observ
       const PrescribedStep s = prescribed_step(c, run.t, dx, substeps);
       const ContactPatch& patch = patches.at(s.F);
       ws.patch_serial = patches.serial();
-      const TangentialProblem pb = make_tangential_problem(patch, c.materials, s.cr, c.mu, s.V);
+      if (!problems.holds(patches.serial(), s.cr, s.V)) {
+        problems.pb = make_tangential_problem(patch, c.materials, s.cr, c.mu, s.V);
+        problems.serial = patches.serial();
+        problems.valid = true;
+      }
+      const TangentialProblem& pb = problems.pb;
       r = satran_step(patch, pb, s.k, set.scheme, run.tractions, reaches_snapshot(run, s.k.dt_s), set.skips, ws);
       k = s.k;
       F = s.F;

@@ -70,7 +70,7 @@ struct StepKinematics {
 // tractions at the nodes; lives across steps, owned by the caller
 struct TransientState {
   int nx = 0, ny = 0;
-  std::vector<StripNode> nodes;  // (nx+1) x ny: node i of strip j sits at x_edge(i), index i + j (nx+1)
+  StripNodes nodes;  // (nx+1) x ny, one array per quantity: node i of strip j sits at x_edge(i), index i + j (nx+1)
   double L_m_per_Pa = 0;         // the flexibility the tractions refer to (u = L tau); 0 = not set yet
   double normal_load_N = 0;      // the contact's load at the last step (0 = none yet)
   // strips j and ny - 1 - j hold the same nodes, bit for bit: true at rest and after a step that
@@ -84,8 +84,9 @@ struct TransientState {
   // copies them. false for every state a public function hands out.
   bool mirror_deferred = false;
 
-  StripNode& node(int i, int j) { return nodes[i + j * (nx + 1)]; }
-  const StripNode& node(int i, int j) const { return nodes[i + j * (nx + 1)]; }
+  std::size_t index(int i, int j) const { return static_cast<std::size_t>(i) + static_cast<std::size_t>(j) * (nx + 1); }
+  StripNode node(int i, int j) const { return nodes[index(i, j)]; }
+  void set_node(int i, int j, const StripNode& n) { nodes.set(index(i, j), n); }
 };
 
 // the unloaded state (u = 0) on a grid

@@ -47,14 +47,24 @@ TransientCase paper_startup(int n, bool all_creepages) {
 // args: n, all creepages, the skips as bits (TransientSkips): 1 the mirror images (pure xi on the paper's
 // symmetric patch steps half the strips), 2 the lateral work (pure xi: no tau_y in the stick pass), 4 the
 // steady strips (a strip the last step left as it was is not stepped again on the same inputs); the
-// threads (TransientSettings::threads, 1 unless given). ns_per_cell_step: the time over steps x nx x ny.
-void BM_SatranShift(benchmark::State& st) {
+// threads (TransientSettings::threads, 1 unless given). ns_per_cell_step: the time over steps x nx x ny;
+// stick: the mean stick fraction over the steps (a run untimed before the timed ones), which says how much of
+// the work is the stick pass. rolled80: the rolled distance in dx of the 80 x 80 grid (0: kSteps of the run's
+// own dx, so that the same 200 steps roll 5 contact lengths at 40 x 40 and 0.6 at 320 x 320).
+void satran_shift(benchmark::State& st, int rolled80) {
   const int n = static_cast<int>(st.range(0));
   TransientCase c = paper_startup(n, st.range(1) != 0);
+  if (rolled80 > 0) c.settings.t_end_s *= static_cast<double>(rolled80) * n / (80.0 * kSteps);
   c.settings.skips.mirrored = (st.range(2) & 1) != 0;
   c.settings.skips.lateral = (st.range(2) & 2) != 0;
   c.settings.skips.steady_strips = (st.range(2) & 4) != 0;
   c.settings.threads = st.range(3) > 0 ? static_cast<int>(st.range(3)) : 1;
+  double stick = 0;
+  int records = 0;
+  run_transient(c, [&](const TransientRecord& rec, const Eigen::ArrayXd&) {
+    stick += rec.stick_fraction;
+    ++records;
+  });
   double sink = 0;
   int steps = 0;
   for (auto _ : st) {
@@ -64,9 +74,13 @@ void BM_SatranShift(benchmark::State& st) {
   }
   benchmark::DoNotOptimize(sink);
   st.counters["steps"] = steps;
+  st.counters["stick"] = records > 0 ? stick / records : 0;
   st.counters["ns_per_cell_step"] =
       benchmark::Counter(1e-9 * steps * n * n, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
 }
+void BM_SatranShift(benchmark::State& st) { satran_shift(st, 0); }
+// the same rolled distance at every grid: the paper run's 200 dx of the 80 x 80 grid (2.5 contact lengths)
+void BM_SatranShiftSameRolling(benchmark::State& st) { satran_shift(st, kSteps); }
 BENCHMARK(BM_SatranShift)
     ->Args({80, 0, 7, 1})
     ->Args({80, 0, 3, 1})
@@ -87,6 +101,13 @@ BENCHMARK(BM_SatranShift)
     ->Args({40, 0, 0, 1})
     ->Args({320, 0, 0, 1})
     ->Name("BM_SatranShiftPerCell")
+    ->Unit(benchmark::kMillisecond);
+// the cost per cell-step over the same rolled distance (the same share of stick and slip at both grids)
+BENCHMARK(BM_SatranShiftSameRolling)
+    ->Args({40, 0, 3, 1})
+    ->Args({320, 0, 3, 1})
+    ->Args({40, 0, 0, 1})
+    ->Args({320, 0, 0, 1})
     ->Unit(benchmark::kMillisecond);
 // the strips of a large grid on one and two threads: wall time (UseRealTime), the steady strips' skip off
 BENCHMARK(BM_SatranShift)
