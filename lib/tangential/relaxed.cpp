@@ -280,8 +280,11 @@ TangentialSolution solve_relaxed_steady_with_mix(const ContactPatch& patch, cons
   return steady_at(patch, pair, creepages, creepages, mu, speed_m_per_s, fields, &mix);
 }
 
-TangentialSolution relaxed_step(const ContactPatch& patch, const ElasticPair& pair, const Creepages& c, double mu,
-                                double speed_m_per_s, double dq_m, RelaxedState& state, bool fields) {
+namespace {
+
+// relaxed_step's relaxation of the effective creepages over dq_m (sigma at the step's start)
+void relax_effective(const ContactPatch& patch, const ElasticPair& pair, const Creepages& c, double mu, double dq_m,
+                     RelaxedState& state) {
   if (!(dq_m >= 0) || !std::isfinite(dq_m))
     throw std::invalid_argument("relaxed step: rolled distance must be >= 0 and finite");
   if (patch.a_m > 0 && patch.b_m > 0) {
@@ -302,6 +305,13 @@ TangentialSolution relaxed_step(const ContactPatch& patch, const ElasticPair& pa
     relax(state.effective.eta, c.eta, sigma.eta);
     relax(state.effective.phi_per_m, c.phi_per_m, sigma.phi_per_m);
   }
+}
+
+}  // namespace
+
+TangentialSolution relaxed_step(const ContactPatch& patch, const ElasticPair& pair, const Creepages& c, double mu,
+                                double speed_m_per_s, double dq_m, RelaxedState& state, bool fields) {
+  relax_effective(patch, pair, c, mu, dq_m, state);
   return steady_at(patch, pair, state.effective, c, mu, speed_m_per_s, fields);
 }
 
@@ -448,6 +458,28 @@ TransientResult run_relaxed_inertia(const TransientCase& c, const StepObserver& 
   return res;
 }
 
+namespace {
+
+bool same_creepages(const Creepages& a, const Creepages& b) {
+  return a.xi == b.xi && a.eta == b.eta && a.phi_per_m == b.phi_per_m;
+}
+
+// the solution f at the speed times k: slip velocities and powers scale, forces and tractions stay
+TangentialSolution scaled_by_speed(const TangentialSolution& f, double k) {
+  TangentialSolution s = f;
+  s.slip_x_m_per_s *= k;
+  s.slip_y_m_per_s *= k;
+  s.power_W_per_m2 *= k;
+  s.strip_power_W_per_m *= k;
+  s.strip_creep_power_W_per_m *= k;
+  s.strip_trailing_W_per_m *= k;
+  s.power_W *= k;
+  s.creep_work_W *= k;
+  return s;
+}
+
+}  // namespace
+
 TransientResult run_relaxed_transient(const TransientCase& c, const StepObserver& observe) {
   const TransientSettings& set = c.settings;
   check_transient_inputs(c);
@@ -456,6 +488,15 @@ TransientResult run_relaxed_transient(const TransientCase& c, const StepObserver
     throw SettingError("", "scheme", "the relaxed model rolls by the shift scheme's steps; use scheme: shift (or "
                                      "solver.tangential: consistent for Satran's upwind and lax-friedrichs steps)");
   RelaxedState state = relaxed_rest();
+  // the last solve of a duty cycle (skip_steady), its contact (the patch run_shift_steps keeps, and its load)
+  struct Memo {
+    bool valid = false;
+    const ContactPatch* patch = nullptr;
+    double load_N = 0;
+    Creepages effective, imposed;
+    double V = 0;
+    TangentialSolution f;
+  } memo;
   const ContactPatch* last = nullptr;  // the patch and imposed creepages of the last step
   Creepages imposed;
   ShiftSkip skip;
@@ -563,11 +604,23 @@ TransientResult run_relaxed_transient(const TransientCase& c, const StepObserver
       [&](const ContactPatch& patch, const ShiftStep& s) {
         last = &patch;
         imposed = s.creepages;
-        return relaxed_step(patch, c.materials, s.creepages, c.mu, s.speed_m_per_s, s.dq_m, state, s.fields);
+        if (!set.skip_steady) return relaxed_step(patch, c.materials, s.creepages, c.mu, s.speed_m_per_s, s.dq_m, state, s.fields);
+        // duty cycles (skip_steady): a step at the last solve's contact, effective and imposed creepages (a speed
+        // ramp once settled) is that solve with the powers scaled by the speed: the model's forces do not depend
+        // on V, its slip velocities and powers are proportional to it
+        relax_effective(patch, c.materials, s.creepages, c.mu, s.dq_m, state);
+        const bool same = memo.valid && memo.patch == &patch && memo.load_N == s.normal_load_N &&
+                          same_creepages(memo.effective, state.effective) && same_creepages(memo.imposed, s.creepages) &&
+                          !s.fields && memo.V > 0 && s.speed_m_per_s > 0;
+        if (same) return scaled_by_speed(memo.f, s.speed_m_per_s / memo.V);
+        TangentialSolution f = steady_at(patch, c.materials, state.effective, s.creepages, c.mu, s.speed_m_per_s, s.fields);
+        memo = {true, &patch, s.normal_load_N, state.effective, s.creepages, s.speed_m_per_s, f};
+        return f;
       },
       [&](const Grid&) {  // out of contact: nothing is held
         state = relaxed_rest();
         last = nullptr;
+        memo.valid = false;
       },
       skip);
 }
