@@ -126,6 +126,47 @@ TEST(RelaxedSkip, SteadyRunningSkippedChangesTheEnergiesBelowTenPerBillion) {
             << stepped.dissipated_J << " J, difference " << skipped.dissipated_J / stepped.dissipated_J - 1 << "\n";
 }
 
+// A duty cycle's stop (the speed ramped down at a constant creepage, the effective creepage settled) reuses the
+// last solve with its powers scaled by the speed (the model's forces do not depend on V): each step of the ramp
+// is the stepped run's (no reuse) to rounding, forces and per-strip powers alike.
+TEST(RelaxedSkip, SettledSpeedRampIsTheSteppedRunsToRounding) {
+  TransientCase c;
+  c.bodies = kPaperBodies;
+  c.materials = kSteel;
+  c.mu = kMu;
+  c.inputs.normal_load_N = constant_history(kLoad);
+  c.inputs.xi = constant_history(1e-3);
+  c.inputs.speed_m_per_s = History{{0, 1e-3, 0.05, 0.051}, {0, 1.8, 1.8, 0}};
+  c.settings.t_end_s = 0.052;
+  c.settings.grid = {20, 20};
+  struct Step {
+    double t, V, Fx, P;
+    Eigen::ArrayXd strips;
+  };
+  auto ramp_down = [&](bool skip) {
+    c.settings.skip_steady = skip;
+    std::vector<Step> steps;
+    run_relaxed_transient(c, [&](const TransientRecord& r, const Eigen::ArrayXd& strip_W) {
+      if (r.t_s > 0.05 && r.speed_m_per_s > 0 && !r.skipped) steps.push_back({r.t_s, r.speed_m_per_s, r.Fx_N, r.power_W, strip_W});
+    });
+    return steps;
+  };
+  const std::vector<Step> stepped = ramp_down(false), reused = ramp_down(true);
+  ASSERT_EQ(stepped.size(), reused.size());
+  ASSERT_GT(stepped.size(), 20u);
+  // rounding: the stepped run's solver takes the speed into its slip and power sums at every step (4e-12 of the
+  // strip powers measured at full speed, 4e-10 at the ramp's slowest step), the reuse scales by the speeds' ratio
+  constexpr double kRoundingTol = 1e-9;
+  for (std::size_t k = 0; k < stepped.size(); ++k) {
+    EXPECT_NEAR(reused[k].t, stepped[k].t, 1e-12);  // the skip adds its span in one sum
+    EXPECT_NEAR(reused[k].Fx, stepped[k].Fx, kRoundingTol * std::abs(stepped[k].Fx)) << "step " << k;
+    EXPECT_NEAR(reused[k].P, stepped[k].P, kRoundingTol * stepped[k].P) << "step " << k;
+    EXPECT_LT((reused[k].strips - stepped[k].strips).abs().maxCoeff(), kRoundingTol * stepped[k].strips.abs().maxCoeff())
+        << "step " << k;
+  }
+  EXPECT_LT(stepped.back().V, stepped.front().V / 5);  // the ramp itself, down to an eighth of the speed
+}
+
 // V = 0 (a standstill after rolling): nothing rolls, so the effective creepage and the force are held and
 // nothing is dissipated (the model's power is -V xi_eff Fx).
 TEST(RelaxedSkip, StandstillHoldsTheForceAndDissipatesNothing) {
