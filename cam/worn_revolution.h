@@ -76,6 +76,7 @@ class WornRevolution {
     double wa = 0;
     bool same_inputs_as_previous = false;  // kinematics and motion equal to step k-1's (kSameInputRtol)
     double approach_m = 0;                 // the last evaluation's (0: none yet)
+    double approach_slope = 0;             // d ln F / d ln delta there (SemiHertzResult::approach_slope)
     double xi = 0;                         // the last evaluation's creepage
     bool xi_known = false;
   };

@@ -31,17 +31,29 @@ double median(std::vector<double> v) {
   return v.empty() ? 0 : v[v.size() / 2];
 }
 
+// an angle whose contact is another one than the reference's (another root of the semi-Hertzian load
+// equation, docs/cam-follower.md §15): its strip pressures differ by more than this of the largest, some
+// thousand times what the solves' tolerances (load_rtol 1e-6, shared contacts 4e-5) leave
+constexpr double kOtherContactRtol = 1e-3;
+
 struct Difference {
   double power = 0, energy = 0;
+  int other_contacts = 0;  // angles whose contact differs from the reference's by more than kOtherContactRtol
 };
 Difference difference(const cam::RevolutionDissipation& a, const cam::RevolutionDissipation& ref) {
-  double pmax = 0, dmax = 0;
+  double pmax = 0, dmax = 0, qmax = 0;
   for (std::size_t k = 0; k < ref.size(); ++k) {
     pmax = std::max(pmax, ref[k].power_W_per_m.abs().maxCoeff());
     dmax = std::max(dmax, (a[k].power_W_per_m - ref[k].power_W_per_m).abs().maxCoeff());
+    qmax = std::max(qmax, ref[k].mean_pressure_Pa.abs().maxCoeff());
   }
+  int other = 0;
+  for (std::size_t k = 0; k < ref.size(); ++k)
+    if (a[k].mean_pressure_Pa.size() != ref[k].mean_pressure_Pa.size() ||
+        (a[k].mean_pressure_Pa - ref[k].mean_pressure_Pa).abs().maxCoeff() > kOtherContactRtol * qmax)
+      ++other;
   const double e = cam::dissipation_totals(a).energy_J, e_ref = cam::dissipation_totals(ref).energy_J;
-  return {dmax / pmax, std::abs(e / e_ref - 1)};
+  return {dmax / pmax, std::abs(e / e_ref - 1), other};
 }
 
 }  // namespace
@@ -162,10 +174,11 @@ int main(int argc, char** argv) {
     const cam::WornRevolutionStats& st = ev.stats();
     if (v.o.share_contacts) std::printf("angle steps with the inputs of the step before: %ld\n", st.same_input_angles);
     std::printf("%-34s %8.1f ms/revolution  solves %ld, F(delta) %ld, creep law %ld per revolution;"
-                " against the reference: power %.2e, energy %.2e (on s), %.2e, %.2e (on s2)\n",
+                " against the reference: power %.2e, energy %.2e, %d other contacts (on s), %.2e, %.2e, %d (on s2);"
+                " %ld cold retries\n",
                 v.name, 1e3 * median(tw), st.contacts_solved - before.contacts_solved,
                 st.approach_evaluations - before.approach_evaluations, st.creep_evaluations - before.creep_evaluations,
-                d1.power, d1.energy, d2.power, d2.energy);
+                d1.power, d1.energy, d1.other_contacts, d2.power, d2.energy, d2.other_contacts, st.cold_retries);
   }
   {
     // the warm start's floor: the same state twice, each angle's search starting at its own root
