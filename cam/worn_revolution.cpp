@@ -171,30 +171,6 @@ RevolutionDissipation WornRevolution::operator()(const CamWearState& s) {
     }
     ++stats_.contacts_solved;
     stats_.approach_evaluations += c.normal.status.iterations;
-    bool cold_root = !(law.initial_approach_m > 0);
-    if (!cold_root && i > 0 && a.cold_log_ratio_known &&
-        std::abs(std::log(c.normal.patch.approach_m / angles_[i - 1].approach_m) - a.cold_log_ratio) >
-            kRootCheckLogJump) {
-      // the approach jumped against its neighbour's since that ratio was last taken from a cold solve: where
-      // F(delta) crosses the load more than once, the warm search may have followed another root than the
-      // cold one (a result that would depend on the life's history); solved again cold, the cold root kept
-      ++stats_.root_checks;
-      CreepLawSettings cold = law;
-      cold.initial_approach_m = 0;
-      cold.initial_slope = 0;
-      AngleContact cc = angle_contact(model_.bodies, worn, model_.geometry.roller_radius_m, a.row.kin,
-                                      a.roller.normal_N, model_.mu, cold);
-      stats_.approach_evaluations += cc.normal.status.iterations;
-      if (std::abs(cc.normal.patch.approach_m / c.normal.patch.approach_m - 1) > kOtherRootRtol) {
-        ++stats_.other_roots;
-        c = std::move(cc);
-      }
-      cold_root = true;
-    }
-    if (cold_root && i > 0) {
-      a.cold_log_ratio = std::log(c.normal.patch.approach_m / angles_[i - 1].approach_m);
-      a.cold_log_ratio_known = true;
-    }
     previous_approach = a.approach_m;
     a.approach_m = c.normal.patch.approach_m;
     a.approach_slope = c.normal.on_profiles.approach_slope;

@@ -49,18 +49,8 @@ struct WornRevolutionStats {
   long approach_evaluations = 0;   // F(delta) evaluations of the semi-Hertzian searches
   long creep_evaluations = 0;      // steady solves of the creep law's inversions
   long cold_retries = 0;           // warm-started normal solves that did not converge, solved again cold
-  long root_checks = 0;            // warm-started solves whose approach jumped against the neighbour's: solved cold too
-  long other_roots = 0;            // ... whose cold root was another one (the cold one kept)
 };
 
-// A warm-started approach whose ratio to the step before's departs from that ratio at the step's last cold
-// solve by more than this (in ln delta) is checked against a cold solve. Where F(delta) crosses the load more
-// than once, the roots of one angle lie 10-20 % apart in delta (docs/cam-follower.md §15) while neighbouring
-// steps' approaches change smoothly with the angle and slowly with the wear; a false alarm costs one cold solve.
-constexpr double kRootCheckLogJump = 0.02;
-// ... and the cold root is another root when the approaches differ by more than this: a hundred times what
-// the solves' load tolerance leaves on delta (2/3 of load_rtol 1e-6)
-constexpr double kOtherRootRtol = 1e-4;
 struct WornRevolutionOptions {
   bool share_contacts = true;  // solve angles that share a contact once
   bool warm_start = true;      // start each angle's searches from its last evaluation's
@@ -87,9 +77,6 @@ class WornRevolution {
     bool same_inputs_as_previous = false;  // kinematics and motion equal to step k-1's (kSameInputRtol)
     double approach_m = 0;                 // the last evaluation's (0: none yet)
     double approach_slope = 0;             // d ln F / d ln delta there (SemiHertzResult::approach_slope)
-    // ln(approach / step k-1's approach) when this step was last solved cold (or checked against a cold solve)
-    double cold_log_ratio = 0;
-    bool cold_log_ratio_known = false;
     double xi = 0;                         // the last evaluation's creepage
     bool xi_known = false;
   };

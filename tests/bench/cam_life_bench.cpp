@@ -1,8 +1,7 @@
 // The cost of a cam's worn revolution and of its life (docs/cam-follower.md §15). A plain program:
 //   cam_life_bench CASE.yaml [worn_depth_m = 8e-6] [repeats = 5] [life-only]
-//   cam_life_bench CASE.yaml life [variants = all [load_rtol|default [check_every]]]   the case's whole life (its own
-//       stepping) with each of the savings on or off: life, evaluations, CPU; with check_every, every check_every-th
-//       evaluation compared with the cold revolution on the same state (angles on another root counted)
+//   cam_life_bench CASE.yaml life [variants = all [load_rtol]]   the case's whole life (its own stepping) with each of
+//                                                      the savings on or off: life, evaluations, CPU
 // 1. sets up the case's life (the unworn periodic revolution), CPU timed;
 // 2. wears the case to worn_depth_m (fixed-depth steps of 1e-6 m, the fast producer): a worn state;
 // 3. on that state, CPU per revolution (median of the repeats) of worn_revolution_dissipation (cold: every
@@ -85,11 +84,7 @@ int main(int argc, char** argv) {
 
   if (whole_life) {
     const std::string which = argc > 3 ? argv[3] : "all";
-    if (argc > 4 && std::string(argv[4]) != "default")
-      setup->dynamics.law.normal_load_rtol = std::stod(argv[4]);  // the worn solves' load tolerance
-    // every check_every-th worn evaluation also solved cold (worn_revolution_dissipation, history-free): the
-    // angles whose contact is another root than the cold one's, counted (0: no check)
-    const long check_every = argc > 5 ? std::stol(argv[5]) : 0;
+    if (argc > 4) setup->dynamics.law.normal_load_rtol = std::stod(argv[4]);  // the worn solves' load tolerance
     const struct {
       const char* name;
       cam::WornRevolutionOptions o;
@@ -99,43 +94,21 @@ int main(int argc, char** argv) {
       if (which != "all" && which != v.name) continue;
       cam::WornRevolution ev(setup->model, setup->revolution, setup->motion.motion, setup->unworn_profiles,
                              setup->life.grid, setup->dynamics.law, v.o);
-      long checks = 0, checks_differing = 0, other_total = 0;
-      int other_max = 0;
-      double power_max = 0, energy_max = 0;
       const cam::DissipationOf producer = [&](const cam::CamWearState& st) {
         if ((st.cam_depth_m == 0).all() && (st.roller_depth_m == 0).all()) return setup->unworn;
-        cam::RevolutionDissipation d = ev(st);
-        if (check_every > 0 && ev.stats().evaluations % check_every == 0) {
-          const cam::RevolutionDissipation cold =
-              cam::worn_revolution_dissipation(setup->model, setup->revolution, setup->motion.motion,
-                                               setup->unworn_profiles, setup->life.grid, st, setup->dynamics.law);
-          const Difference diff = difference(d, cold);
-          ++checks;
-          if (diff.other_contacts > 0) ++checks_differing;
-          other_total += diff.other_contacts;
-          other_max = std::max(other_max, diff.other_contacts);
-          power_max = std::max(power_max, diff.power);
-          energy_max = std::max(energy_max, diff.energy);
-        }
-        return d;
+        return ev(st);
       };
       t0 = cpu_s();
       const cam::CamLifeResult life = cam::run_cam_life(setup->life, producer);
       const double cpu = cpu_s() - t0;
       const cam::WornRevolutionStats& st = ev.stats();
       std::printf("%-8s life %.6g revolutions (%s), %ld steps, %ld evaluations, %.2f s CPU, %.1f ms/revolution; "
-                  "per revolution %.1f normal solves, %.1f F(delta), %.1f creep law; %ld cold retries, %ld root checks, "
-                  "%ld other roots\n",
+                  "per revolution %.1f normal solves, %.1f F(delta), %.1f creep law; %ld cold retries\n",
                   v.name, life.N, cam::to_string(life.ended_by).c_str(), life.steps, life.revolutions_solved, cpu,
                   1e3 * cpu / std::max<long>(1, life.revolutions_solved),
                   static_cast<double>(st.contacts_solved) / std::max<long>(1, st.evaluations),
                   static_cast<double>(st.approach_evaluations) / std::max<long>(1, st.evaluations),
-                  static_cast<double>(st.creep_evaluations) / std::max<long>(1, st.evaluations), st.cold_retries,
-                  st.root_checks, st.other_roots);
-      if (checks > 0)
-        std::printf("  against the cold revolution at %ld evaluations (CPU above includes them): %ld with other contacts,"
-                    " %ld angles in all, at most %d in one; largest power difference %.2e, energy %.2e\n",
-                    checks, checks_differing, other_total, other_max, power_max, energy_max);
+                  static_cast<double>(st.creep_evaluations) / std::max<long>(1, st.evaluations), st.cold_retries);
     }
     return 0;
   }
@@ -202,11 +175,10 @@ int main(int argc, char** argv) {
     if (v.o.share_contacts) std::printf("angle steps with the inputs of the step before: %ld\n", st.same_input_angles);
     std::printf("%-34s %8.1f ms/revolution  solves %ld, F(delta) %ld, creep law %ld per revolution;"
                 " against the reference: power %.2e, energy %.2e, %d other contacts (on s), %.2e, %.2e, %d (on s2);"
-                " %ld cold retries, %ld root checks, %ld other roots\n",
+                " %ld cold retries\n",
                 v.name, 1e3 * median(tw), st.contacts_solved - before.contacts_solved,
                 st.approach_evaluations - before.approach_evaluations, st.creep_evaluations - before.creep_evaluations,
-                d1.power, d1.energy, d1.other_contacts, d2.power, d2.energy, d2.other_contacts, st.cold_retries,
-                st.root_checks, st.other_roots);
+                d1.power, d1.energy, d1.other_contacts, d2.power, d2.energy, d2.other_contacts, st.cold_retries);
   }
   {
     // the warm start's floor: the same state twice, each angle's search starting at its own root
