@@ -1,7 +1,8 @@
 // The cost of a cam's worn revolution and of its life (docs/cam-follower.md §15). A plain program:
 //   cam_life_bench CASE.yaml [worn_depth_m = 8e-6] [repeats = 5] [life-only]
-//   cam_life_bench CASE.yaml life [variants = all [load_rtol]]   the case's whole life (its own stepping) with each of
-//                                                      the savings on or off: life, evaluations, CPU
+//   cam_life_bench CASE.yaml life [variants = all [load_rtol|default [check_every]]]   the case's whole life (its own
+//       stepping) with each of the savings on or off: life, evaluations, CPU; with check_every, every check_every-th
+//       evaluation compared with the cold revolution on the same state (angles on another root counted)
 // 1. sets up the case's life (the unworn periodic revolution), CPU timed;
 // 2. wears the case to worn_depth_m (fixed-depth steps of 1e-6 m, the fast producer): a worn state;
 // 3. on that state, CPU per revolution (median of the repeats) of worn_revolution_dissipation (cold: every
@@ -84,7 +85,11 @@ int main(int argc, char** argv) {
 
   if (whole_life) {
     const std::string which = argc > 3 ? argv[3] : "all";
-    if (argc > 4) setup->dynamics.law.normal_load_rtol = std::stod(argv[4]);  // the worn solves' load tolerance
+    if (argc > 4 && std::string(argv[4]) != "default")
+      setup->dynamics.law.normal_load_rtol = std::stod(argv[4]);  // the worn solves' load tolerance
+    // every check_every-th worn evaluation also solved cold (worn_revolution_dissipation, history-free): the
+    // angles whose contact is another root than the cold one's, counted (0: no check)
+    const long check_every = argc > 5 ? std::stol(argv[5]) : 0;
     const struct {
       const char* name;
       cam::WornRevolutionOptions o;
@@ -94,9 +99,25 @@ int main(int argc, char** argv) {
       if (which != "all" && which != v.name) continue;
       cam::WornRevolution ev(setup->model, setup->revolution, setup->motion.motion, setup->unworn_profiles,
                              setup->life.grid, setup->dynamics.law, v.o);
+      long checks = 0, checks_differing = 0, other_total = 0;
+      int other_max = 0;
+      double power_max = 0, energy_max = 0;
       const cam::DissipationOf producer = [&](const cam::CamWearState& st) {
         if ((st.cam_depth_m == 0).all() && (st.roller_depth_m == 0).all()) return setup->unworn;
-        return ev(st);
+        cam::RevolutionDissipation d = ev(st);
+        if (check_every > 0 && ev.stats().evaluations % check_every == 0) {
+          const cam::RevolutionDissipation cold =
+              cam::worn_revolution_dissipation(setup->model, setup->revolution, setup->motion.motion,
+                                               setup->unworn_profiles, setup->life.grid, st, setup->dynamics.law);
+          const Difference diff = difference(d, cold);
+          ++checks;
+          if (diff.other_contacts > 0) ++checks_differing;
+          other_total += diff.other_contacts;
+          other_max = std::max(other_max, diff.other_contacts);
+          power_max = std::max(power_max, diff.power);
+          energy_max = std::max(energy_max, diff.energy);
+        }
+        return d;
       };
       t0 = cpu_s();
       const cam::CamLifeResult life = cam::run_cam_life(setup->life, producer);
@@ -109,6 +130,10 @@ int main(int argc, char** argv) {
                   static_cast<double>(st.contacts_solved) / std::max<long>(1, st.evaluations),
                   static_cast<double>(st.approach_evaluations) / std::max<long>(1, st.evaluations),
                   static_cast<double>(st.creep_evaluations) / std::max<long>(1, st.evaluations), st.cold_retries);
+      if (checks > 0)
+        std::printf("  against the cold revolution at %ld evaluations (CPU above includes them): %ld with other contacts,"
+                    " %ld angles in all, at most %d in one; largest power difference %.2e, energy %.2e\n",
+                    checks, checks_differing, other_total, other_max, power_max, energy_max);
     }
     return 0;
   }
