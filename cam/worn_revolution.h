@@ -14,9 +14,12 @@
 //     solve resolves.
 //   - Warm starts: each angle's semi-Hertzian search starts from its approach at the last evaluation, and
 //     the creep law's inversion searches around its last creepage: fewer evaluations of F(delta) and of
-//     the steady law for the same tolerances (SemiHertzOptions::load_rtol, kCreepForceRtol), so the
-//     result differs from a cold start only within those tolerances. A warm-started solve that does not
-//     converge is solved again from the solver's own start.
+//     the steady law for the same tolerances (SemiHertzOptions::load_rtol, kCreepForceRtol); the search's
+//     first step takes the angle's last slope d ln F / d ln delta (SemiHertzOptions::initial_slope). Where
+//     F(delta) crosses the load once, the result differs from a cold start only within those tolerances;
+//     where it crosses more than once (worn gaps), the warm search may keep another root than the cold one
+//     (measured in docs/cam-follower.md §15). A warm-started solve that does not converge is solved again
+//     from the solver's own start.
 // Not thread-safe (the warm starts are state); one per life.
 #pragma once
 
