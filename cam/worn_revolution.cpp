@@ -153,7 +153,7 @@ RevolutionDissipation WornRevolution::operator()(const CamWearState& s) {
       law.initial_approach_m = a.approach_m;
       if (a.approach_m > 0 && i > 0 && previous_approach > 0 && angles_[solved].approach_m > 0)
         law.initial_approach_m = a.approach_m * (angles_[solved].approach_m / previous_approach);
-      law.initial_slope = a.approach_slope;
+      if (options_.warm_slope) law.initial_slope = a.approach_slope;
     }
     AngleContact c;
     try {

@@ -57,6 +57,7 @@ struct WornRevolutionStats {
 struct WornRevolutionOptions {
   bool share_contacts = true;  // solve angles that share a contact once
   bool warm_start = true;      // start each angle's searches from its last evaluation's
+  bool warm_slope = true;      // ... the semi-Hertzian one's first step with its last slope (false: Hertz's 3/2)
 };
 
 class WornRevolution {
