@@ -28,6 +28,7 @@ AngleContact angle_contact(const RollerAndTrack& bodies, const contact::Profiles
   np.semi_hertz.fixed_grid_y_lo_m = s.fixed_grid_y_lo_m;
   np.semi_hertz.fixed_grid_y_hi_m = s.fixed_grid_y_hi_m;
   np.semi_hertz.initial_approach_m = s.initial_approach_m;
+  np.semi_hertz.initial_slope = s.initial_slope;
   np.semi_hertz.load_rtol = s.normal_load_rtol;
   np.worn = s.worn;
   AngleContact c;

@@ -26,6 +26,8 @@ struct CreepLawSettings {
   // the semi-Hertzian search's first approach (SemiHertzOptions::initial_approach_m): 0 = its own estimate;
   // cam/worn_revolution.h passes an angle's approach at the life's last evaluation
   double initial_approach_m = 0;
+  // with it, d ln F / d ln delta there (SemiHertzOptions::initial_slope; the last solve's approach_slope): 0 = 3/2
+  double initial_slope = 0;
   // worn profiles: never Hertz's closed form (NormalProblem::worn), even where a worn profile still fits a
   // constant curvature: the switch between the two would be a jump of the life's rate (they agree to 2e-3)
   bool worn = false;

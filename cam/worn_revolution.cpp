@@ -140,6 +140,7 @@ RevolutionDissipation WornRevolution::operator()(const CamWearState& s) {
       d.cam_arc_m = a.row.contact_arc_m;
       out.push_back(std::move(d));
       a.approach_m = angles_[solved].approach_m;
+      a.approach_slope = angles_[solved].approach_slope;
       a.xi = angles_[solved].xi;
       a.xi_known = angles_[solved].xi_known;
       continue;
@@ -152,6 +153,7 @@ RevolutionDissipation WornRevolution::operator()(const CamWearState& s) {
       law.initial_approach_m = a.approach_m;
       if (a.approach_m > 0 && i > 0 && previous_approach > 0 && angles_[solved].approach_m > 0)
         law.initial_approach_m = a.approach_m * (angles_[solved].approach_m / previous_approach);
+      if (options_.warm_slope) law.initial_slope = a.approach_slope;
     }
     AngleContact c;
     try {
@@ -163,6 +165,7 @@ RevolutionDissipation WornRevolution::operator()(const CamWearState& s) {
       if (!(law.initial_approach_m > 0)) throw;
       ++stats_.cold_retries;
       law.initial_approach_m = 0;
+      law.initial_slope = 0;
       c = angle_contact(model_.bodies, worn, model_.geometry.roller_radius_m, a.row.kin, a.roller.normal_N, model_.mu,
                         law);
     }
@@ -170,6 +173,7 @@ RevolutionDissipation WornRevolution::operator()(const CamWearState& s) {
     stats_.approach_evaluations += c.normal.status.iterations;
     previous_approach = a.approach_m;
     a.approach_m = c.normal.patch.approach_m;
+    a.approach_slope = c.normal.on_profiles.approach_slope;
     RollerAngle roller = a.roller;
     const CreepageForForce xi = options_.warm_start && a.xi_known ? creepage_for_force(c, roller.tangential_N, a.xi)
                                                                   : creepage_for_force(c, roller.tangential_N);

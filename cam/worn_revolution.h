@@ -14,9 +14,12 @@
 //     solve resolves.
 //   - Warm starts: each angle's semi-Hertzian search starts from its approach at the last evaluation, and
 //     the creep law's inversion searches around its last creepage: fewer evaluations of F(delta) and of
-//     the steady law for the same tolerances (SemiHertzOptions::load_rtol, kCreepForceRtol), so the
-//     result differs from a cold start only within those tolerances. A warm-started solve that does not
-//     converge is solved again from the solver's own start.
+//     the steady law for the same tolerances (SemiHertzOptions::load_rtol, kCreepForceRtol); the search's
+//     first step takes the angle's last slope d ln F / d ln delta (SemiHertzOptions::initial_slope). Where
+//     F(delta) crosses the load once, the result differs from a cold start only within those tolerances;
+//     where it crosses more than once (worn gaps), the warm search may keep another root than the cold one
+//     (measured in docs/cam-follower.md §15). A warm-started solve that does not converge is solved again
+//     from the solver's own start.
 // Not thread-safe (the warm starts are state); one per life.
 #pragma once
 
@@ -54,6 +57,7 @@ struct WornRevolutionStats {
 struct WornRevolutionOptions {
   bool share_contacts = true;  // solve angles that share a contact once
   bool warm_start = true;      // start each angle's searches from its last evaluation's
+  bool warm_slope = true;      // ... the semi-Hertzian one's first step with its last slope (false: Hertz's 3/2)
 };
 
 class WornRevolution {
@@ -76,6 +80,7 @@ class WornRevolution {
     double wa = 0;
     bool same_inputs_as_previous = false;  // kinematics and motion equal to step k-1's (kSameInputRtol)
     double approach_m = 0;                 // the last evaluation's (0: none yet)
+    double approach_slope = 0;             // d ln F / d ln delta there (SemiHertzResult::approach_slope)
     double xi = 0;                         // the last evaluation's creepage
     bool xi_known = false;
   };

@@ -421,6 +421,31 @@ TEST(WornRevolution, SharedContactsAndWarmStartsAgreeWithTheColdRevolution) {
   (void)u;
 }
 
+// The warm start's slope (SemiHertzOptions::initial_slope, the angle's last d ln F / d ln delta) saves F(delta)
+// evaluations against the same warm start stepping with Hertz's 3/2, and changes the result only within the
+// solves' tolerance (the same kSolveTolerancePower as above). Measured on this coarse case: 72 angles.
+TEST(WornRevolution, WarmSlopeSavesApproachEvaluations) {
+  const CoarseShipped& c = coarse_shipped();
+  cam::CamWearState next = c.worn;
+  next.cam_depth_m *= 1.001;
+  next.roller_depth_m *= 1.001;
+  cam::WornRevolution cold = worn_revolution(c, {false, false});
+  const RevolutionDissipation ref = cold(next);
+  long count[2] = {0, 0};
+  for (int with_slope = 0; with_slope < 2; ++with_slope) {
+    cam::WornRevolution ev = worn_revolution(c, {true, true, with_slope == 1});
+    ev(c.worn);
+    const long before = ev.stats().approach_evaluations;
+    const RevolutionDissipation second = ev(next);
+    count[with_slope] = ev.stats().approach_evaluations - before;
+    constexpr double kSolveTolerancePower = 1e-4;
+    EXPECT_LT(power_difference(second, ref), kSolveTolerancePower);
+  }
+  std::cout << fmt::format("F(delta) evaluations on the second state: {} with the slope, {} without\n", count[1],
+                           count[0]);
+  EXPECT_LT(count[1], count[0]);
+}
+
 // The life's lift-loss probe (made once, probed at every step and root iteration) is max_lift_loss to the
 // bit, on a worn state and on one worn unevenly along the arc.
 TEST(WornRevolution, LiftLossProbeIsMaxLiftLossToTheBit) {

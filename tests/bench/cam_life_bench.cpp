@@ -1,7 +1,8 @@
 // The cost of a cam's worn revolution and of its life (docs/cam-follower.md §15). A plain program:
 //   cam_life_bench CASE.yaml [worn_depth_m = 8e-6] [repeats = 5] [life-only]
-//   cam_life_bench CASE.yaml life [variants = all [load_rtol]]   the case's whole life (its own stepping) with each of
-//                                                      the savings on or off: life, evaluations, CPU
+//   cam_life_bench CASE.yaml life [variants = all [load_rtol|default [check_every]]]   the case's whole life (its own
+//       stepping) with each of the savings on or off: life, evaluations, CPU; with check_every, every check_every-th
+//       evaluation compared with the cold revolution on the same state (angles on another root counted)
 // 1. sets up the case's life (the unworn periodic revolution), CPU timed;
 // 2. wears the case to worn_depth_m (fixed-depth steps of 1e-6 m, the fast producer): a worn state;
 // 3. on that state, CPU per revolution (median of the repeats) of worn_revolution_dissipation (cold: every
@@ -31,17 +32,29 @@ double median(std::vector<double> v) {
   return v.empty() ? 0 : v[v.size() / 2];
 }
 
+// an angle whose contact is another one than the reference's (another root of the semi-Hertzian load
+// equation, docs/cam-follower.md §15): its strip pressures differ by more than this of the largest, some
+// thousand times what the solves' tolerances (load_rtol 1e-6, shared contacts 4e-5) leave
+constexpr double kOtherContactRtol = 1e-3;
+
 struct Difference {
   double power = 0, energy = 0;
+  int other_contacts = 0;  // angles whose contact differs from the reference's by more than kOtherContactRtol
 };
 Difference difference(const cam::RevolutionDissipation& a, const cam::RevolutionDissipation& ref) {
-  double pmax = 0, dmax = 0;
+  double pmax = 0, dmax = 0, qmax = 0;
   for (std::size_t k = 0; k < ref.size(); ++k) {
     pmax = std::max(pmax, ref[k].power_W_per_m.abs().maxCoeff());
     dmax = std::max(dmax, (a[k].power_W_per_m - ref[k].power_W_per_m).abs().maxCoeff());
+    qmax = std::max(qmax, ref[k].mean_pressure_Pa.abs().maxCoeff());
   }
+  int other = 0;
+  for (std::size_t k = 0; k < ref.size(); ++k)
+    if (a[k].mean_pressure_Pa.size() != ref[k].mean_pressure_Pa.size() ||
+        (a[k].mean_pressure_Pa - ref[k].mean_pressure_Pa).abs().maxCoeff() > kOtherContactRtol * qmax)
+      ++other;
   const double e = cam::dissipation_totals(a).energy_J, e_ref = cam::dissipation_totals(ref).energy_J;
-  return {dmax / pmax, std::abs(e / e_ref - 1)};
+  return {dmax / pmax, std::abs(e / e_ref - 1), other};
 }
 
 }  // namespace
@@ -72,7 +85,11 @@ int main(int argc, char** argv) {
 
   if (whole_life) {
     const std::string which = argc > 3 ? argv[3] : "all";
-    if (argc > 4) setup->dynamics.law.normal_load_rtol = std::stod(argv[4]);  // the worn solves' load tolerance
+    if (argc > 4 && std::string(argv[4]) != "default")
+      setup->dynamics.law.normal_load_rtol = std::stod(argv[4]);  // the worn solves' load tolerance
+    // every check_every-th worn evaluation also solved cold (worn_revolution_dissipation, history-free): the
+    // angles whose contact is another root than the cold one's, counted (0: no check)
+    const long check_every = argc > 5 ? std::stol(argv[5]) : 0;
     const struct {
       const char* name;
       cam::WornRevolutionOptions o;
@@ -82,9 +99,25 @@ int main(int argc, char** argv) {
       if (which != "all" && which != v.name) continue;
       cam::WornRevolution ev(setup->model, setup->revolution, setup->motion.motion, setup->unworn_profiles,
                              setup->life.grid, setup->dynamics.law, v.o);
+      long checks = 0, checks_differing = 0, other_total = 0;
+      int other_max = 0;
+      double power_max = 0, energy_max = 0;
       const cam::DissipationOf producer = [&](const cam::CamWearState& st) {
         if ((st.cam_depth_m == 0).all() && (st.roller_depth_m == 0).all()) return setup->unworn;
-        return ev(st);
+        cam::RevolutionDissipation d = ev(st);
+        if (check_every > 0 && ev.stats().evaluations % check_every == 0) {
+          const cam::RevolutionDissipation cold =
+              cam::worn_revolution_dissipation(setup->model, setup->revolution, setup->motion.motion,
+                                               setup->unworn_profiles, setup->life.grid, st, setup->dynamics.law);
+          const Difference diff = difference(d, cold);
+          ++checks;
+          if (diff.other_contacts > 0) ++checks_differing;
+          other_total += diff.other_contacts;
+          other_max = std::max(other_max, diff.other_contacts);
+          power_max = std::max(power_max, diff.power);
+          energy_max = std::max(energy_max, diff.energy);
+        }
+        return d;
       };
       t0 = cpu_s();
       const cam::CamLifeResult life = cam::run_cam_life(setup->life, producer);
@@ -97,6 +130,10 @@ int main(int argc, char** argv) {
                   static_cast<double>(st.contacts_solved) / std::max<long>(1, st.evaluations),
                   static_cast<double>(st.approach_evaluations) / std::max<long>(1, st.evaluations),
                   static_cast<double>(st.creep_evaluations) / std::max<long>(1, st.evaluations), st.cold_retries);
+      if (checks > 0)
+        std::printf("  against the cold revolution at %ld evaluations (CPU above includes them): %ld with other contacts,"
+                    " %ld angles in all, at most %d in one; largest power difference %.2e, energy %.2e\n",
+                    checks, checks_differing, other_total, other_max, power_max, energy_max);
     }
     return 0;
   }
@@ -162,10 +199,11 @@ int main(int argc, char** argv) {
     const cam::WornRevolutionStats& st = ev.stats();
     if (v.o.share_contacts) std::printf("angle steps with the inputs of the step before: %ld\n", st.same_input_angles);
     std::printf("%-34s %8.1f ms/revolution  solves %ld, F(delta) %ld, creep law %ld per revolution;"
-                " against the reference: power %.2e, energy %.2e (on s), %.2e, %.2e (on s2)\n",
+                " against the reference: power %.2e, energy %.2e, %d other contacts (on s), %.2e, %.2e, %d (on s2);"
+                " %ld cold retries\n",
                 v.name, 1e3 * median(tw), st.contacts_solved - before.contacts_solved,
                 st.approach_evaluations - before.approach_evaluations, st.creep_evaluations - before.creep_evaluations,
-                d1.power, d1.energy, d2.power, d2.energy);
+                d1.power, d1.energy, d1.other_contacts, d2.power, d2.energy, d2.other_contacts, st.cold_retries);
   }
   {
     // the warm start's floor: the same state twice, each angle's search starting at its own root
