@@ -11,7 +11,8 @@
 //   checkpoint.txt                      while running: the state to resume from (removed at the end)
 // A new run removes the previous run's snapshot files of these names, its report and its temporaries
 // (NAME.tmp.PID of these names, PID gone), nothing else. A run killed part-way continues with resume
-// (docs/cam-follower.md §15); a folder holding an unfinished run is not started afresh without restart.
+// (docs/cam-follower.md §13, "Checkpoint and resume"); a folder holding an unfinished run is not started
+// afresh without restart.
 #pragma once
 
 #include <string>

@@ -485,7 +485,7 @@ TEST(WornRevolution, WornContactsNeverTakeHertzsClosedForm) {
   EXPECT_EQ(by_default.normal.solver, contact::NormalSolverKind::Hertz) << "the profile no longer fits a curvature";
 }
 
-// ---- a life interrupted and resumed (CamLifeStart, docs/cam-follower.md §15) ----
+// ---- a life interrupted and resumed (CamLifeStart, docs/cam-follower.md §13, "Checkpoint and resume") ----
 
 // The coarse shipped set-up's life to a 2 um depth limit in fixed steps of at most 0.5 um (5 steps), on a
 // producer of its own: a new WornRevolution, as a new process has. warm_start false: every evaluation is the
@@ -573,7 +573,7 @@ TEST(CamLifeResume, AColdLifeStoppedAndResumedIsTheUninterruptedOneToTheBit) {
 // The life's own producer warm-starts each angle's searches from its last evaluation, which a resumed
 // process does not have; the searches converge to their tolerances from either start, so the resumed life
 // agrees with the uninterrupted one to within kResumeTol of the life and of the deepest wear (measured:
-// see docs/cam-follower.md §15), not to the bit.
+// see docs/cam-follower.md §13, "Checkpoint and resume"), not to the bit.
 TEST(CamLifeResume, AWarmStartedLifeResumedAgreesWithTheUninterruptedOneToTheSolveTolerance) {
   // measured 5.7e-12 (life) and 1.5e-10 (depths) on this set-up: the warm and the cold searches meet the
   // same tolerances (the semi-Hertzian approach within 1e-12 of the load, the creepage's root); 60x margin
