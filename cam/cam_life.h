@@ -130,9 +130,9 @@ std::string to_string(CamLifeEnd e);
 
 // Where a life starts: the unworn state (x empty, the default), or an accepted step's end saved by a
 // checkpoint (CamLifeStep::resume; docs/cam-follower.md §13, "Checkpoint and resume"). It holds everything
-// run_cam_life carries from step to step, so a fixed-stepping life resumed repeats the uninterrupted one's arithmetic, except the
-// producer's own memory (WornRevolution's per-angle warm starts, which a new process does not have: they
-// move the rates at the contact solves' tolerance).
+// run_cam_life carries from step to step, so a fixed-stepping life resumed repeats the uninterrupted one's
+// arithmetic, except the producer's own memory (WornRevolution's per-angle warm starts, which a new process
+// does not have: they move the rates at the contact solves' tolerance).
 struct CamLifeStart {
   double N = 0;
   Eigen::VectorXd x;          // the integrated state: track map (column-major) | roller | scaled energy
