@@ -1,11 +1,19 @@
 // `rollwear run` on a cam case (app/cam_run.h).
 #include "app/cam_run.h"
 
+#include <signal.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
 #include <ctime>
 #include <filesystem>
+#include <fstream>
 #include <regex>
+#include <sstream>
 #include <stdexcept>
 
 #include <spdlog/fmt/fmt.h>
@@ -17,7 +25,9 @@
 #include "cam/revolution_dissipation.h"
 #include "lib/io/csv.h"
 #include "lib/io/errors.h"
+#include "lib/normal/profile.h"
 #include "lib/numeric.h"
+#include "wear/wear_output.h"
 
 namespace app {
 
@@ -64,11 +74,80 @@ std::string dissipation_csv(const cam::Revolution& r, const cam::RevolutionDissi
 
 double cpu_seconds() { return static_cast<double>(std::clock()) / CLOCKS_PER_SEC; }
 
+// The files this command writes in the folder (and snapshots/): what it may delete, nothing else.
+const std::regex& own_name() {
+  static const std::regex kNames(
+      "(revolution\\.csv|dissipation\\.csv|life\\.csv|report\\.txt|checkpoint\\.txt|"
+      "(wear_map|roller_wear)_[0-9]{4}\\.csv)");
+  return kNames;
+}
+
+// a killed run's temporaries (OWN_NAME.tmp.PID, lib/io/csv.h) whose process is gone
+void remove_stale_temporaries(const fs::path& dir) {
+  static const std::regex kTemporary("(.+)\\.tmp\\.([0-9]{1,10})");
+  for (const fs::path& d : {dir, dir / "snapshots"}) {
+    std::error_code ec;
+    for (const auto& entry : fs::directory_iterator(d, ec)) {
+      const std::string name = entry.path().filename().string();
+      std::smatch m;
+      if (!std::regex_match(name, m, kTemporary) || !std::regex_match(m[1].str(), own_name())) continue;
+      const long pid = std::strtol(m[2].str().c_str(), nullptr, 10);
+      if (pid > 0 && pid != ::getpid() && ::kill(static_cast<pid_t>(pid), 0) != 0 && errno == ESRCH)
+        fs::remove(entry.path(), ec);
+    }
+  }
+}
+
+// The case's fingerprint for its checkpoint: the case file's text (every key of the model, the wear and the
+// grid is in it; a cam case reads no other file), tagged so that a wear case's checkpoint never matches.
+std::uint64_t cam_case_fingerprint(const std::string& case_path) {
+  std::ifstream in(case_path, std::ios::binary);
+  std::ostringstream text;
+  text << "rollwear cam life\n" << in.rdbuf();
+  const std::string t = text.str();
+  return contact::hash_words(t.data(), t.size());
+}
+
+// The cam life's state in the wear loop's checkpoint (wear/wear_output.h, hexadecimal floats: bit-exact):
+// its state is the integrated state followed by the energy scale; rate_evaluations holds revolutions_solved
+// and wall_s the CPU seconds so far.
+wear::Checkpoint to_checkpoint(std::uint64_t hash, const cam::CamLifeStart& s, int snapshots, double cpu_s) {
+  wear::Checkpoint c;
+  c.case_hash = hash;
+  c.start.N = s.N;
+  c.start.state.resize(s.x.size() + 1);
+  c.start.state.head(s.x.size()) = s.x;
+  c.start.state(s.x.size()) = s.energy_scale;
+  c.start.next_step = s.next_step;
+  c.start.counters.steps = s.steps;
+  c.start.counters.rejected = s.rejected;
+  c.start.counters.rhs_evals = s.rhs_evals;
+  c.start.counters.rate_evaluations = s.revolutions_solved;
+  c.snapshots_written = snapshots;
+  c.wall_s = cpu_s;
+  return c;
+}
+cam::CamLifeStart from_checkpoint(const wear::Checkpoint& c) {
+  cam::CamLifeStart s;
+  const Eigen::Index n = c.start.state.size() - 1;
+  s.N = c.start.N;
+  s.x = c.start.state.head(n);
+  s.energy_scale = c.start.state(n);
+  s.next_step = c.start.next_step;
+  s.steps = c.start.counters.steps;
+  s.rejected = c.start.counters.rejected;
+  s.rhs_evals = c.start.counters.rhs_evals;
+  s.revolutions_solved = c.start.counters.rate_evaluations;
+  return s;
+}
+
 }  // namespace
 
-int run_cam_life_command(const std::string& case_path, const std::string& output_option, bool quiet) {
+int run_cam_life_command(const std::string& case_path, const std::string& output_option, bool quiet, bool resume,
+                         bool restart) {
   const double cpu0 = cpu_seconds();
   const cam::CamCase c = cam::read_cam_case(case_path);
+  if (resume && restart) throw contact::CaseError("--resume and --restart exclude each other");
   if (!c.wear) {
     const auto it = c.locations.find("cam");
     throw contact::CaseError((it != c.locations.end() ? it->second : case_path) +
@@ -79,6 +158,25 @@ int run_cam_life_command(const std::string& case_path, const std::string& output
   const fs::path dir = !output_option.empty()           ? fs::path(output_option)
                        : !c.output_directory.empty()    ? fs::path(c.output_directory)
                                                         : fs::path("out") / c.name;
+
+  // where the life starts: a checkpoint (refused unless it is this case's), or the unworn state; checked
+  // before the revolution is set up, so that a refusal costs nothing
+  const fs::path checkpoint_path = dir / "checkpoint.txt", life_path = dir / "life.csv";
+  const std::uint64_t fingerprint = cam_case_fingerprint(case_path);
+  wear::Checkpoint cp;
+  if (resume) {
+    if (!fs::exists(checkpoint_path))
+      throw contact::CaseError(checkpoint_path.string() +
+                               ": no checkpoint to resume from (the run finished, or never passed its first step: run "
+                               "without --resume)");
+    cp = wear::read_checkpoint(checkpoint_path);
+    if (cp.case_hash != fingerprint)
+      throw contact::CaseError(checkpoint_path.string() + ": the checkpoint belongs to another case, or " + case_path +
+                               " changed since; run with --restart to start afresh");
+  } else if (fs::exists(checkpoint_path) && !restart) {
+    throw contact::CaseError(dir.string() + " holds an unfinished run (checkpoint.txt): continue it with --resume, "
+                             "or start afresh with --restart");
+  }
 
   // the unworn periodic revolution: kinematics, loads, the roller's motion, the dissipation
   std::unique_ptr<cam::CamLifeSetup> setup;
@@ -111,31 +209,73 @@ int run_cam_life_command(const std::string& case_path, const std::string& output
              totals.max_power_theta_rad * cam::kDegPerRad);
 
   fs::create_directories(dir / "snapshots");
-  remove_previous_snapshots(dir);
-  fs::create_directories(dir / "snapshots");
+  remove_stale_temporaries(dir);
+  std::string life_csv;
+  cam::CamLifeStart start;
+  if (resume) {
+    start = from_checkpoint(cp);
+    life_csv = wear::summary_up_to(life_path, start.steps);  // rows after the checkpoint are written again
+    spdlog::info("run: resuming at cam revolution {:.6g} (step {}) from {}", start.N, start.steps,
+                 checkpoint_path.string());
+  } else {
+    remove_previous_snapshots(dir);
+    fs::create_directories(dir / "snapshots");
+    fs::remove(dir / "report.txt");
+    fs::remove(checkpoint_path);  // --restart: the unfinished run's
+    life_csv = "# case: " + c.name +
+               "\nstep,revolutions,max_depth_m,lift_loss_m,lift_loss_at_deg,energy_J\n"
+               "0,0,0,0,0,0\n";
+  }
   contact::write_files_atomic({{dir / "revolution.csv", cam::revolution_csv(r)},
                                {dir / "dissipation.csv", dissipation_csv(r, unworn_rev)}});
 
-  std::string life_csv = "# case: " + c.name +
-                         "\nstep,revolutions,max_depth_m,lift_loss_m,lift_loss_at_deg,energy_J\n"
-                         "0,0,0,0,0,0\n";
-  int snapshots = 0;
+  // life.csv and the checkpoint are written together, life.csv renamed first: it never lags the checkpoint
+  int snapshots = resume ? cp.snapshots_written : 0;
+  const double earlier_cpu_s = resume ? cp.wall_s : 0;
+  cam::CamLifeStart last;  // the last accepted step's end (x empty: none yet, nothing to checkpoint)
+  const auto save = [&](std::vector<contact::OutputFile> files) {
+    files.push_back({life_path, life_csv});
+    if (last.x.size() > 0)
+      files.push_back({checkpoint_path, wear::checkpoint_text(to_checkpoint(fingerprint, last, snapshots,
+                                                                      earlier_cpu_s + cpu_seconds() - cpu0))});
+    contact::write_files_atomic(files);
+  };
+  const auto is_snapshot_revolution = [&](double N) {
+    return std::find(life_model.snapshots_revolutions.begin(), life_model.snapshots_revolutions.end(), N) !=
+           life_model.snapshots_revolutions.end();
+  };
+  using Clock = std::chrono::steady_clock;
+  Clock::time_point last_save = Clock::now();
   cam::CamLifeHooks hooks;
   hooks.on_snapshot = [&](double N, const cam::CamWearState& s) {
-    contact::write_files_atomic(
-        {{dir / snapshot_path("wear_map", snapshots), cam::wear_map_csv(life_model.grid, s, N, c.name)},
-         {dir / snapshot_path("roller_wear", snapshots), cam::roller_wear_csv(life_model.grid, s, N, c.name)}});
+    std::vector<contact::OutputFile> files = {
+        {dir / snapshot_path("wear_map", snapshots), cam::wear_map_csv(life_model.grid, s, N, c.name)},
+        {dir / snapshot_path("roller_wear", snapshots), cam::roller_wear_csv(life_model.grid, s, N, c.name)}};
     ++snapshots;
+    // a snapshot at a step's end (a snapshot revolution) goes with its checkpoint, which counts it; the
+    // life's last one goes with the report
+    if (N > 0 && last.x.size() > 0 && N == last.N && is_snapshot_revolution(N)) {
+      save(std::move(files));
+      last_save = Clock::now();
+    } else {
+      contact::write_files_atomic(files);
+    }
   };
   hooks.on_step = [&](const cam::CamLifeStep& step) {
     fmt::format_to(std::back_inserter(life_csv), "{},{:.10g},{:.10g},{:.10g},{:.6g},{:.10g}\n", step.step, step.N,
                    step.max_depth_m, step.lift_loss.max_m, step.lift_loss.at_theta_rad * cam::kDegPerRad,
                    step.energy_J);
+    last = step.resume;
+    if (std::chrono::duration<double>(Clock::now() - last_save).count() >= c.wear->checkpoint_interval_s &&
+        !is_snapshot_revolution(step.N)) {  // at a snapshot revolution the snapshot's save follows
+      save({});
+      last_save = Clock::now();
+    }
     if (!quiet) spdlog::info("step {}: N {:.6g}, max depth {:.4g} m, lift loss {:.4g} m", step.step, step.N,
                              step.max_depth_m, step.lift_loss.max_m);
   };
-  const cam::CamLifeResult life = cam::run_cam_life(life_model, producer, hooks);
-  const double cpu = cpu_seconds() - cpu0;
+  const cam::CamLifeResult life = cam::run_cam_life(life_model, producer, hooks, start);
+  const double cpu = earlier_cpu_s + cpu_seconds() - cpu0;
 
   const double hours = life.N * 2 * contact::kPi / m.omega_rad_per_s / 3600;
   std::string report = fmt::format(
@@ -144,13 +284,18 @@ int run_cam_life_command(const std::string& case_path, const std::string& output
       "worn volume: track {:.6g} m^3, roller {:.6g} m^3\ndissipated: {:.6g} J\n"
       "steps: {} ({} rejected), evaluations of the wear rate: {}, revolutions solved: {}\n"
       "worn revolutions: {} angle steps, {} normal solves (the rest shared a contact), {} F(delta) and {} creep-law "
-      "evaluations, {} warm starts retried cold\ncpu: {:.3g} s\n",
+      "evaluations, {} warm starts retried cold\nresumed: {}\ncpu: {:.3g} s\n",
       c.name, life.N, hours, m.omega_rad_per_s, cam::to_string(life.ended_by), life.message, life.max_depth_m,
       life.lift_loss.max_m, life.lift_loss.at_theta_rad * cam::kDegPerRad, life.cam_volume_m3, life.roller_volume_m3,
       life.energy_J, life.steps, life.rejected, life.rhs_evals, life.revolutions_solved, setup->worn->stats().angles,
       setup->worn->stats().contacts_solved, setup->worn->stats().approach_evaluations,
-      setup->worn->stats().creep_evaluations, setup->worn->stats().cold_retries, cpu);
-  contact::write_files_atomic({{dir / "life.csv", life_csv}, {dir / "report.txt", report}});
+      setup->worn->stats().creep_evaluations, setup->worn->stats().cold_retries, resume ? "true" : "false", cpu);
+  if (life.ended_by == cam::CamLifeEnd::Failed && life.steps > 0 && last.x.size() > 0) {
+    save({});  // the last accepted step: --resume continues from there (e.g. with other settings)
+    spdlog::error("run: the life failed after step {}; its state is saved in {}", last.steps, checkpoint_path.string());
+  }
+  contact::write_files_atomic({{life_path, life_csv}, {dir / "report.txt", report}});
+  if (life.ended_by != cam::CamLifeEnd::Failed) fs::remove(checkpoint_path);  // the run is complete
   fmt::print("{}", report);
   fmt::print("wrote {} (revolution.csv, dissipation.csv, life.csv, report.txt, {} wear maps in snapshots/)\n",
              dir.string(), snapshots);

@@ -8,7 +8,11 @@
 //   snapshots/wear_map_KKKK.csv         the track's wear map (cam/cam_wear.h) at the start, each snapshot, the end
 //   snapshots/roller_wear_KKKK.csv      the roller's worn depth there
 //   report.txt                          the life and what ended it
-// A new run removes the previous run's snapshot files of these names, nothing else.
+//   checkpoint.txt                      while running: the state to resume from (removed at the end)
+// A new run removes the previous run's snapshot files of these names, its report and its temporaries
+// (NAME.tmp.PID of these names, PID gone), nothing else. A run killed part-way continues with resume
+// (docs/cam-follower.md §13, "Checkpoint and resume"); a folder holding an unfinished run is not started
+// afresh without restart.
 #pragma once
 
 #include <string>
@@ -21,6 +25,9 @@ bool is_cam_case(const std::string& path);
 
 // returns the exit status: 0 whatever limit ended the life; 1 a failure (the revolution's jump, the
 // roller's motion not periodic, a solve failing); throws contact::CaseError for bad input (exit 2)
-int run_cam_life_command(const std::string& case_path, const std::string& output_option, bool quiet);
+// (exit 2 also for --resume without a checkpoint, a checkpoint of another or a changed case, or an
+// unfinished run's folder without --restart)
+int run_cam_life_command(const std::string& case_path, const std::string& output_option, bool quiet,
+                         bool resume = false, bool restart = false);
 
 }  // namespace app

@@ -627,7 +627,8 @@ void remove_previous_snapshots(const std::filesystem::path& dir) {
 }
 
 int run_run_command(const RunOptions& opt) {
-  if (app::is_cam_case(opt.case_path)) return app::run_cam_life_command(opt.case_path, opt.output_directory, opt.quiet);
+  if (app::is_cam_case(opt.case_path))
+    return app::run_cam_life_command(opt.case_path, opt.output_directory, opt.quiet, opt.resume, opt.restart);
   using namespace wear;
   using Clock = std::chrono::steady_clock;
   const Clock::time_point started = Clock::now();

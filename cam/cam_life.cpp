@@ -21,12 +21,13 @@ namespace cam {
 
 namespace {
 
-constexpr contact::EnumTable<CamLifeEnd, 6> kCamLifeEndWords = {{{CamLifeEnd::NotRun, "not_run"},
+constexpr contact::EnumTable<CamLifeEnd, 7> kCamLifeEndWords = {{{CamLifeEnd::NotRun, "not_run"},
                                                                  {CamLifeEnd::MaxDepth, "max_depth"},
                                                                  {CamLifeEnd::LiftLoss, "lift_loss"},
                                                                  {CamLifeEnd::Revolutions, "revolutions"},
                                                                  {CamLifeEnd::MaxSteps, "max_steps"},
-                                                                 {CamLifeEnd::Failed, "failed"}}};
+                                                                 {CamLifeEnd::Failed, "failed"},
+                                                                 {CamLifeEnd::Stopped, "stopped"}}};
 
 constexpr int kLimits = 2;  // g_0 the depth limit, g_1 the lift-loss limit
 constexpr CamLifeEnd kLimitEnds[kLimits] = {CamLifeEnd::MaxDepth, CamLifeEnd::LiftLoss};
@@ -279,7 +280,8 @@ CamLifeModel make_cam_life_model(const std::string& name, const CamWearSpec& spe
   return m;
 }
 
-CamLifeResult run_cam_life(const CamLifeModel& m, const DissipationOf& dissipation, const CamLifeHooks& hooks) {
+CamLifeResult run_cam_life(const CamLifeModel& m, const DissipationOf& dissipation, const CamLifeHooks& hooks,
+                           const CamLifeStart& start) {
   check_grid(m.grid);
   if (!(m.revolutions > 0)) throw std::invalid_argument("cam life: the budget of revolutions must be > 0");
   if (!m.laws.cam && !m.laws.roller) throw std::invalid_argument("cam life: nothing wears");
@@ -339,6 +341,7 @@ CamLifeResult run_cam_life(const CamLifeModel& m, const DissipationOf& dissipati
     if (m.max_lift_loss_m > 0) g(1) = lift_loss(s).max_m - m.max_lift_loss_m;
   };
   const auto finish = [&](CamLifeEnd end, std::string message) -> CamLifeResult& {
+    const bool snapshot = end != CamLifeEnd::Stopped;
     life.ended_by = end;
     life.message = std::move(message);
     life.state = state_of(m.grid, x);
@@ -347,35 +350,57 @@ CamLifeResult run_cam_life(const CamLifeModel& m, const DissipationOf& dissipati
     life.energy_J = energy_scale > 0 ? x(lay.energy()) / energy_scale : 0;
     life.cam_volume_m3 = cam_worn_volume_m3(m.grid, life.state);
     life.roller_volume_m3 = roller_worn_volume_m3(m.grid, life.state);
-    if (hooks.on_snapshot) hooks.on_snapshot(life.N, life.state);
+    if (snapshot && hooks.on_snapshot) hooks.on_snapshot(life.N, life.state);
     return life;
   };
 
-  if (hooks.on_snapshot) hooks.on_snapshot(0, life.state);
-  try {
-    rate(x);  // the unworn revolution: fixes the energy's scale, and fails early on a bad producer
-  } catch (const std::exception& e) {
-    return finish(CamLifeEnd::Failed, fmt::format("the unworn revolution failed: {}", e.what()));
+  const bool resumed = start.x.size() > 0;
+  if (resumed) {
+    if (start.x.size() != lay.size() || !(start.energy_scale > 0) || !(start.N >= 0) || !(start.N <= m.revolutions))
+      throw std::invalid_argument(fmt::format("cam life: the start (state of {} values at N {:.10g}, energy scale "
+                                              "{:.3g}) is not one of this model (state of {} values)",
+                                              start.x.size(), start.N, start.energy_scale, lay.size()));
+    x = start.x;
+    life.N = start.N;
+    energy_scale = start.energy_scale;
+    life.steps = start.steps;
+    life.rejected = start.rejected;
+    // the integrator's first evaluation, at the start, is the last step's end's, counted already (as in the
+    // wear loop's continuations, docs/wear-loop.md "Counters"); the producer is called there again
+    life.rhs_evals = std::max(0L, start.rhs_evals - 1);
+    life.revolutions_solved = start.revolutions_solved;
+  } else {
+    if (hooks.on_snapshot) hooks.on_snapshot(0, life.state);
+    try {
+      rate(x);  // the unworn revolution: fixes the energy's scale, and fails early on a bad producer
+    } catch (const std::exception& e) {
+      return finish(CamLifeEnd::Failed, fmt::format("the unworn revolution failed: {}", e.what()));
+    }
   }
 
-  std::vector<double> ends;
+  std::vector<double> ends;  // the segments still ahead of the start
   for (double N : m.snapshots_revolutions)
-    if (N > 0 && N < m.revolutions) ends.push_back(N);
+    if (N > life.N && N < m.revolutions) ends.push_back(N);
   ends.push_back(m.revolutions);
+  bool stopped = false;
+  double next_step = resumed ? start.next_step : 0;
 
   const wear::Rhs f = [&](double, const Eigen::VectorXd& h, Eigen::VectorXd& dhdN) { dhdN = rate(h); };
   const wear::Roots roots = [&](double, const Eigen::VectorXd& h, Eigen::VectorXd& g) { limits(h, g); };
   for (const double N_end : ends) {
+    if (N_end <= life.N) continue;  // a start at the budget's end (a checkpoint of its last step)
     wear::IntegratorOptions options = options0;
+    if (next_step > 0 && options.method == wear::IntegratorOptions::Method::Adaptive) options.initial_step = next_step;
+    next_step = 0;  // later segments start as the uninterrupted life's do: from ARKODE's estimate
     options.max_steps = m.stepping.max_steps - life.steps;
     if (options.max_steps <= 0) return finish(CamLifeEnd::MaxSteps, fmt::format("max_steps {} reached", m.stepping.max_steps));
     Eigen::VectorXd last_accepted = x;
     double last_N = life.N;
-    const long steps_before = life.steps;
+    const long steps_before = life.steps, rejected_before = life.rejected, rhs_evals_before = life.rhs_evals;
     const wear::OnStep on_step = [&](const wear::StepInfo& info, const Eigen::VectorXd& h) {
       last_accepted = h;
       last_N = info.N;
-      if (hooks.on_step) {
+      if (hooks.on_step || hooks.stop_after) {
         const CamWearState s = state_of(m.grid, h);
         CamLifeStep step;
         step.step = steps_before + info.steps;
@@ -384,7 +409,19 @@ CamLifeResult run_cam_life(const CamLifeModel& m, const DissipationOf& dissipati
         step.max_depth_m = max_depth_of(s);
         step.lift_loss = lift_loss(s);
         step.energy_J = h(lay.energy()) / energy_scale;
-        hooks.on_step(step);
+        step.resume.N = info.N;
+        step.resume.x = h;
+        step.resume.energy_scale = energy_scale;
+        step.resume.next_step = info.next_step;
+        step.resume.steps = step.step;
+        step.resume.rejected = rejected_before + info.rejected;
+        step.resume.rhs_evals = rhs_evals_before + info.rhs_evals;
+        step.resume.revolutions_solved = life.revolutions_solved;
+        if (hooks.on_step) hooks.on_step(step);
+        if (hooks.stop_after && hooks.stop_after(step)) {
+          stopped = true;
+          return false;
+        }
       }
       return true;
     };
@@ -418,6 +455,9 @@ CamLifeResult run_cam_life(const CamLifeModel& m, const DissipationOf& dissipati
       }
       case Kind::MaxSteps: return finish(CamLifeEnd::MaxSteps, r.status.message);
       case Kind::Stopped:
+        if (stopped)
+          return finish(CamLifeEnd::Stopped, fmt::format("stopped after step {} at N {:.10g}", life.steps, life.N));
+        return finish(CamLifeEnd::Failed, r.status.message);
       case Kind::Failed: return finish(CamLifeEnd::Failed, r.status.message);
     }
   }

@@ -124,9 +124,22 @@ CamLifeModel make_cam_life_model(const std::string& name, const CamWearSpec& spe
                                  double circumference_m, const RevolutionDissipation& rev,
                                  std::vector<LiftLossSample> samples);
 
-enum class CamLifeEnd { NotRun, MaxDepth, LiftLoss, Revolutions, MaxSteps, Failed };
-// max_depth, lift_loss, revolutions, max_steps, failed, not_run
+enum class CamLifeEnd { NotRun, MaxDepth, LiftLoss, Revolutions, MaxSteps, Failed, Stopped };
+// max_depth, lift_loss, revolutions, max_steps, failed, not_run, stopped (CamLifeHooks::stop_after)
 std::string to_string(CamLifeEnd e);
+
+// Where a life starts: the unworn state (x empty, the default), or an accepted step's end saved by a
+// checkpoint (CamLifeStep::resume; docs/cam-follower.md §13, "Checkpoint and resume"). It holds everything
+// run_cam_life carries from step to step, so a fixed-stepping life resumed repeats the uninterrupted one's
+// arithmetic, except the producer's own memory (WornRevolution's per-angle warm starts, which a new process
+// does not have: they move the rates at the contact solves' tolerance).
+struct CamLifeStart {
+  double N = 0;
+  Eigen::VectorXd x;          // the integrated state: track map (column-major) | roller | scaled energy
+  double energy_scale = 0;    // e = E energy_scale, fixed by the unworn revolution's rate
+  double next_step = 0;       // adaptive: the step ARKODE would have tried next (0: its estimate)
+  long steps = 0, rejected = 0, rhs_evals = 0, revolutions_solved = 0;  // the life's so far
+};
 
 struct CamLifeStep {
   long step = 0;
@@ -135,11 +148,14 @@ struct CamLifeStep {
   double max_depth_m = 0;
   LiftLoss lift_loss;
   double energy_J = 0;  // dissipated since N = 0
+  CamLifeStart resume;  // the start that continues the life from this step's end (a checkpoint's content)
 };
 
 struct CamLifeHooks {
   std::function<void(const CamLifeStep&)> on_step;                          // after each accepted step
   std::function<void(double N, const CamWearState& state)> on_snapshot;     // at 0, each snapshot, the end
+  // after on_step: true ends the life there, CamLifeEnd::Stopped, with no end snapshot (a kill's state)
+  std::function<bool(const CamLifeStep&)> stop_after;
 };
 
 struct CamLifeResult {
@@ -156,10 +172,12 @@ struct CamLifeResult {
   long revolutions_solved = 0;     // calls of the dissipation producer
 };
 
-// Integrates from the unworn state to the first limit (located) or the budget. Throws std::invalid_argument
-// for a bad model; an exception of the producer or the integrator's failure ends the life Failed with its
-// message (the state the last accepted step's).
-CamLifeResult run_cam_life(const CamLifeModel& m, const DissipationOf& dissipation, const CamLifeHooks& hooks = {});
+// Integrates from the unworn state (or start: no snapshot at 0 then, the snapshots after start.N only) to the
+// first limit (located) or the budget. Throws std::invalid_argument for a bad model or a start of another
+// size; an exception of the producer or the integrator's failure ends the life Failed with its message (the
+// state the last accepted step's).
+CamLifeResult run_cam_life(const CamLifeModel& m, const DissipationOf& dissipation, const CamLifeHooks& hooks = {},
+                           const CamLifeStart& start = {});
 
 // A case's life, set up: the unworn revolution (status Jump: nothing else is set), the roller's periodic
 // motion, the unworn quasi-steady dissipation (the same producer as on the worn geometry, so that the rate

@@ -318,6 +318,7 @@ void read_cam_wear(contact::YamlMap& m, CamWearSpec& spec) {
   m.optional("lateral_cells", spec.lateral_cells,
              [](int v) { return v >= 2 && v <= 10000 ? "" : "must be in [2, 10000]"; });
   m.optional("smoothing_wavelength_m", spec.smoothing_wavelength_m, contact::in_closed(0, 0.1));
+  m.optional("checkpoint_interval_s", spec.checkpoint_interval_s, contact::nonnegative_finite);
   m.optional_value("snapshots_revolutions", [&](const contact::YamlValue& v) {
     const std::vector<contact::YamlValue> e = v.elements("a list of revolutions, e.g. [1.0e7, 2.0e7]");
     for (std::size_t k = 0; k < e.size(); ++k) {

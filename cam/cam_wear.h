@@ -148,6 +148,7 @@ std::string roller_wear_csv(const CamWearGrid& g, const CamWearState& s, double 
 //     lateral_cells: 56             # across the track (and across the roller)
 //     smoothing_wavelength_m: 5.0e-4   # cut-off of the rate's lateral Gaussian filter (as a wear case's)
 //     snapshots_revolutions: [1.0e8, 1.0e9]   # wear maps written there (and at the start and end)
+//     checkpoint_interval_s: 10     # wall time between checkpoints of `rollwear run` (0: every step)
 struct CamWearSpec {
   CamWearLaws laws;  // mu is the case's cam.mu
   double revolutions = 0;
@@ -158,6 +159,7 @@ struct CamWearSpec {
   int lateral_cells = 28;
   double smoothing_wavelength_m = 5e-4;  // the wear rate's lateral filter (wear/profile_update.h), 0 = none
   std::vector<double> snapshots_revolutions;
+  double checkpoint_interval_s = 10;  // `rollwear run`: wall time between checkpoints (a wear case's default)
 };
 
 // reads the wear: section under cam: (the wear laws and the stepping with the keys of a wear case);

@@ -3,7 +3,9 @@
 // (docs/cam-follower.md §12).
 #include <gtest/gtest.h>
 
+#include <signal.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
@@ -508,6 +510,128 @@ TEST(WornRevolution, WornContactsNeverTakeHertzsClosedForm) {
   EXPECT_EQ(by_default.normal.solver, contact::NormalSolverKind::Hertz) << "the profile no longer fits a curvature";
 }
 
+// ---- a life interrupted and resumed (CamLifeStart, docs/cam-follower.md §13, "Checkpoint and resume") ----
+
+// The coarse shipped set-up's life to a 2 um depth limit in fixed steps of at most 0.5 um (5 steps), on a
+// producer of its own: a new WornRevolution, as a new process has. warm_start false: every evaluation is the
+// cold one, a function of the state alone (WornRevolution.WithoutSavingsIsTheColdRevolutionToTheBit).
+struct ResumableLife {
+  cam::CamLifeModel model;
+  std::shared_ptr<cam::WornRevolution> worn;
+  cam::DissipationOf producer() const {
+    const cam::CamLifeSetup* u = coarse_shipped().setup.get();
+    return [u, w = worn](const cam::CamWearState& s) {
+      if ((s.cam_depth_m == 0).all() && (s.roller_depth_m == 0).all()) return u->unworn;
+      return (*w)(s);
+    };
+  }
+};
+ResumableLife resumable_life(bool warm_start) {
+  const cam::CamLifeSetup& u = *coarse_shipped().setup;
+  ResumableLife l;
+  l.model = u.life;
+  l.model.max_depth_m = 2e-6;
+  l.model.max_lift_loss_m = 0;
+  l.model.stepping.method = "fixed-depth";
+  l.model.stepping.max_depth_step_m = 0.5e-6;
+  l.model.snapshots_revolutions.clear();
+  l.worn = std::make_shared<cam::WornRevolution>(worn_revolution(coarse_shipped(), {true, warm_start}));
+  return l;
+}
+
+// the life run from the unworn state, stopped after k steps, and continued from that step's CamLifeStart
+// on a new producer (a resumed process); the snapshots each made
+struct Interrupted {
+  cam::CamLifeResult whole, first, resumed;
+  std::vector<double> whole_snapshots, resumed_snapshots;
+};
+Interrupted interrupt_and_resume(bool warm_start, long k) {
+  Interrupted out;
+  cam::CamLifeHooks whole_hooks;
+  whole_hooks.on_snapshot = [&](double N, const cam::CamWearState&) { out.whole_snapshots.push_back(N); };
+  {
+    const ResumableLife l = resumable_life(warm_start);
+    out.whole = cam::run_cam_life(l.model, l.producer(), whole_hooks);
+  }
+  cam::CamLifeStart saved;
+  {
+    const ResumableLife l = resumable_life(warm_start);
+    cam::CamLifeHooks hooks;
+    hooks.stop_after = [&](const cam::CamLifeStep& s) {
+      saved = s.resume;
+      return s.step == k;
+    };
+    out.first = cam::run_cam_life(l.model, l.producer(), hooks);
+  }
+  {
+    const ResumableLife l = resumable_life(warm_start);
+    cam::CamLifeHooks hooks;
+    hooks.on_snapshot = [&](double N, const cam::CamWearState&) { out.resumed_snapshots.push_back(N); };
+    out.resumed = cam::run_cam_life(l.model, l.producer(), hooks, saved);
+  }
+  return out;
+}
+
+// Complete state: with cold evaluations the resumed life is the uninterrupted one to the bit (the state, N,
+// the energy, the counters but the one evaluation the resumed process makes again at its start).
+TEST(CamLifeResume, AColdLifeStoppedAndResumedIsTheUninterruptedOneToTheBit) {
+  const Interrupted r = interrupt_and_resume(false, 2);
+  ASSERT_EQ(r.whole.ended_by, cam::CamLifeEnd::MaxDepth) << r.whole.message;
+  ASSERT_GT(r.whole.steps, 3);  // the interruption falls inside the life
+  EXPECT_EQ(r.first.ended_by, cam::CamLifeEnd::Stopped) << r.first.message;
+  EXPECT_EQ(r.first.steps, 2);
+  EXPECT_EQ(r.resumed.ended_by, r.whole.ended_by) << r.resumed.message;
+  EXPECT_EQ(r.resumed.N, r.whole.N);
+  EXPECT_TRUE((r.resumed.state.cam_depth_m == r.whole.state.cam_depth_m).all());
+  EXPECT_TRUE((r.resumed.state.roller_depth_m == r.whole.state.roller_depth_m).all());
+  EXPECT_EQ(r.resumed.energy_J, r.whole.energy_J);
+  EXPECT_EQ(r.resumed.lift_loss.max_m, r.whole.lift_loss.max_m);
+  EXPECT_EQ(r.resumed.steps, r.whole.steps);
+  EXPECT_EQ(r.resumed.rejected, r.whole.rejected);
+  EXPECT_EQ(r.resumed.rhs_evals, r.whole.rhs_evals);
+  EXPECT_EQ(r.resumed.revolutions_solved, r.whole.revolutions_solved + 1);  // its start's state, solved again
+  // no snapshot at 0 again: only the end's
+  ASSERT_EQ(r.resumed_snapshots.size(), 1u);
+  EXPECT_EQ(r.resumed_snapshots.back(), r.whole_snapshots.back());
+}
+
+// The life's own producer warm-starts each angle's searches from its last evaluation, which a resumed
+// process does not have; the searches converge to their tolerances from either start, so the resumed life
+// agrees with the uninterrupted one to within kResumeTol of the life and of the deepest wear (measured:
+// see docs/cam-follower.md §13, "Checkpoint and resume"), not to the bit.
+TEST(CamLifeResume, AWarmStartedLifeResumedAgreesWithTheUninterruptedOneToTheSolveTolerance) {
+  // measured 5.7e-12 (life) and 1.5e-10 (depths) on this set-up: the warm and the cold searches meet the
+  // same tolerances (the semi-Hertzian approach within 1e-12 of the load, the creepage's root); 60x margin
+  constexpr double kResumeTol = 1e-8;
+  const Interrupted r = interrupt_and_resume(true, 2);
+  ASSERT_EQ(r.whole.ended_by, cam::CamLifeEnd::MaxDepth) << r.whole.message;
+  EXPECT_EQ(r.first.ended_by, cam::CamLifeEnd::Stopped);
+  EXPECT_EQ(r.resumed.ended_by, r.whole.ended_by) << r.resumed.message;
+  EXPECT_EQ(r.resumed.steps, r.whole.steps);
+  const double deepest = std::max(r.whole.state.cam_depth_m.maxCoeff(), r.whole.state.roller_depth_m.maxCoeff());
+  const double dN = std::abs(r.resumed.N - r.whole.N) / r.whole.N;
+  const double dh = std::max((r.resumed.state.cam_depth_m - r.whole.state.cam_depth_m).abs().maxCoeff(),
+                             (r.resumed.state.roller_depth_m - r.whole.state.roller_depth_m).abs().maxCoeff()) /
+                    deepest;
+  std::cout << "[ resumed ] life " << dN << ", depths " << dh << " of the uninterrupted life's\n";
+  EXPECT_LT(dN, kResumeTol);
+  EXPECT_LT(dh, kResumeTol);
+}
+
+// A start that is not this model's is refused, naming the sizes.
+TEST(CamLifeResume, AStartOfAnotherModelIsRefused) {
+  const ResumableLife l = resumable_life(false);
+  cam::CamLifeStart start;
+  start.x = Eigen::VectorXd::Zero(7);
+  start.energy_scale = 1;
+  try {
+    cam::run_cam_life(l.model, l.producer(), {}, start);
+    FAIL() << "accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("state of 7 values"), std::string::npos) << e.what();
+  }
+}
+
 // ---- the case's wear section ----
 
 class CamWearCase : public rollwear_test::TempDirTest {
@@ -634,6 +758,114 @@ TEST_F(CamWearCase, RunWritesTheLifeAndPlotDrawsIt) {
   const CliRun bad = rollwear("run '" + text + "' -o '" + (dir_ / "out2").string() + "' -q", dir_);
   EXPECT_EQ(bad.exit_code, 2);
   EXPECT_NE(bad.err.find("cam.wear: missing"), std::string::npos) << bad.err;
+}
+
+}  // namespace
+
+namespace {
+
+// the text of a file, "" when there is none
+std::string text_of(const fs::path& p) {
+  std::stringstream s;
+  s << std::ifstream(p).rdbuf();
+  return s.str();
+}
+
+// the line of text starting with key
+std::string line_of(const std::string& text, const std::string& key) {
+  const std::size_t at = text.find("\n" + key);
+  return at == std::string::npos ? "" : text.substr(at + 1, text.find('\n', at + 1) - at - 1);
+}
+
+// A coarse copy of the shipped case (72 angle steps, 72 x 28 cells) worn 20 fixed steps of 0.1 um to a 2 um
+// depth, killed (SIGKILL) at its first checkpoint (written every step), resumed with --resume: the same
+// life as the uninterrupted run in another folder; a changed case refuses the checkpoint, a new run
+// without --restart refuses the unfinished folder, and a file the program did not write stays. About 1 s:
+// the kill needs a life long enough to be caught running.
+TEST_F(CamWearCase, RunKilledAndResumedEndsWithTheUninterruptedLife) {
+  std::string text = with_wear(
+      "  wear:\n    cam: { law: archard, archard_k: 1.0e-6, hardness_Pa: 6.9e9 }\n"
+      "    roller: { law: archard, archard_k: 1.0e-6, hardness_Pa: 6.9e9 }\n    revolutions: 1.0e12\n"
+      "    limits: { max_depth_m: 2.0e-6 }\n    stepping: { method: fixed-depth, max_depth_step_m: 1.0e-7 }\n"
+      "    arc_cells: 72\n    lateral_cells: 28\n    checkpoint_interval_s: 0\n");
+  {
+    std::string b = text_of(text);
+    const std::size_t at = b.find("angle_steps: 720");
+    ASSERT_NE(at, std::string::npos);
+    b.replace(at, 16, "angle_steps: 72");
+    std::ofstream(text) << b;
+  }
+  const fs::path whole = dir_ / "whole", out = dir_ / "out";
+  const CliRun w = rollwear("run '" + text + "' -o '" + whole.string() + "' -q", dir_);
+  ASSERT_EQ(w.exit_code, 0) << w.out << w.err;
+  EXPECT_FALSE(fs::exists(whole / "checkpoint.txt"));
+
+  // the run, killed as soon as its first checkpoint is there
+  fs::create_directories(out);
+  std::ofstream(out / "notes.txt") << "mine\n";
+  const pid_t pid = fork();
+  ASSERT_GE(pid, 0);
+  if (pid == 0) {
+    const std::string log = (dir_ / "killed.txt").string();
+    std::freopen(log.c_str(), "w", stdout);
+    std::freopen(log.c_str(), "a", stderr);
+    execl(ROLLWEAR_EXE, ROLLWEAR_EXE, "run", text.c_str(), "-o", out.c_str(), "-q", static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  int status = 0;
+  bool killed = false;
+  for (int i = 0; i < 20000 && !killed; ++i) {
+    if (fs::exists(out / "checkpoint.txt")) {
+      kill(pid, SIGKILL);
+      killed = true;
+    } else if (waitpid(pid, &status, WNOHANG) == pid) {
+      break;  // it ended before a checkpoint was seen
+    } else {
+      usleep(500);
+    }
+  }
+  if (killed) waitpid(pid, &status, 0);
+  ASSERT_TRUE(killed && WIFSIGNALED(status)) << "the run ended before it could be killed: " << text_of(dir_ / "killed.txt");
+  EXPECT_FALSE(fs::exists(out / "report.txt"));
+
+  // a new run does not overwrite the unfinished one
+  const CliRun again = rollwear("run '" + text + "' -o '" + out.string() + "' -q", dir_);
+  EXPECT_EQ(again.exit_code, 2);
+  EXPECT_NE(again.err.find("holds an unfinished run"), std::string::npos) << again.err;
+  // a changed case refuses the checkpoint
+  const std::string original = text_of(text);
+  std::ofstream(text) << original << "# changed\n";
+  const CliRun changed = rollwear("run '" + text + "' -o '" + out.string() + "' -q --resume", dir_);
+  EXPECT_EQ(changed.exit_code, 2);
+  EXPECT_NE(changed.err.find("the checkpoint belongs to another case"), std::string::npos) << changed.err;
+  std::ofstream(text) << original;
+
+  const CliRun resumed = rollwear("run '" + text + "' -o '" + out.string() + "' -q --resume", dir_);
+  ASSERT_EQ(resumed.exit_code, 0) << resumed.out << resumed.err;
+  EXPECT_FALSE(fs::exists(out / "checkpoint.txt"));
+  const std::string a = text_of(whole / "report.txt"), b = text_of(out / "report.txt");
+  for (const char* key : {"life:", "ended by:", "max depth:"}) EXPECT_EQ(line_of(b, key), line_of(a, key)) << key;
+  // the steps and the evaluations the same; the resumed process solves its start's revolution once more
+  const std::string steps_a = line_of(a, "steps:"), steps_b = line_of(b, "steps:");
+  const std::size_t cut = steps_a.find(", revolutions solved:");
+  ASSERT_NE(cut, std::string::npos) << steps_a;
+  EXPECT_EQ(steps_b.substr(0, cut), steps_a.substr(0, cut));
+  EXPECT_EQ(std::stol(steps_b.substr(cut + 22)), std::stol(steps_a.substr(cut + 22)) + 1) << steps_b;
+  EXPECT_EQ(line_of(b, "resumed:"), "resumed: true");
+  // life.csv: the same rows (to the 10 digits written, the warm starts' 1e-10 aside: the same count of lines)
+  const std::string la = text_of(whole / "life.csv"), lb = text_of(out / "life.csv");
+  EXPECT_EQ(std::count(lb.begin(), lb.end(), '\n'), std::count(la.begin(), la.end(), '\n'));
+  EXPECT_EQ(la.substr(0, la.find('\n', la.find('\n') + 1)), lb.substr(0, lb.find('\n', lb.find('\n') + 1)));
+  for (const char* f : {"snapshots/wear_map_0000.csv", "snapshots/wear_map_0001.csv", "snapshots/roller_wear_0001.csv"})
+    EXPECT_TRUE(fs::exists(out / f)) << f;
+  EXPECT_FALSE(fs::exists(out / "snapshots" / "wear_map_0002.csv"));
+  EXPECT_EQ(text_of(out / "notes.txt"), "mine\n");
+  for (const auto& e : fs::recursive_directory_iterator(out))
+    EXPECT_EQ(e.path().filename().string().find(".tmp."), std::string::npos) << e.path();
+  // --resume with nothing to resume: bad input
+  const CliRun none = rollwear("run '" + text + "' -o '" + out.string() + "' -q --resume", dir_);
+  EXPECT_EQ(none.exit_code, 2);
+  EXPECT_NE(none.err.find("no checkpoint to resume from"), std::string::npos) << none.err;
 }
 
 }  // namespace
