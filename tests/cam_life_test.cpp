@@ -607,7 +607,9 @@ TEST(CamLifeResume, AWarmStartedLifeResumedAgreesWithTheUninterruptedOneToTheSol
   ASSERT_EQ(r.whole.ended_by, cam::CamLifeEnd::MaxDepth) << r.whole.message;
   EXPECT_EQ(r.first.ended_by, cam::CamLifeEnd::Stopped);
   EXPECT_EQ(r.resumed.ended_by, r.whole.ended_by) << r.resumed.message;
-  EXPECT_EQ(r.resumed.steps, r.whole.steps);
+  // the depth limit falls on a fixed-depth step's end: depths 1e-10 apart may end it on that step or on a
+  // sliver after it (with the semi-Hertz slope in the warm start: 5 steps against 4), so one step either way
+  EXPECT_LE(std::abs(r.resumed.steps - r.whole.steps), 1);
   const double deepest = std::max(r.whole.state.cam_depth_m.maxCoeff(), r.whole.state.roller_depth_m.maxCoeff());
   const double dN = std::abs(r.resumed.N - r.whole.N) / r.whole.N;
   const double dh = std::max((r.resumed.state.cam_depth_m - r.whole.state.cam_depth_m).abs().maxCoeff(),
