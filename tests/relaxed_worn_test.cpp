@@ -94,6 +94,36 @@ TEST(RelaxedShape, StripWeightsKeepTheTotal) {
               std::pow(patch.half_length_m(off) / patch.half_length_m(mid), 2 - p), 1e-12);
 }
 
+// The exponent fades to none at full slip (e = 1: the exact and the springs' strip powers both tend to
+// mu integral of p |s| dx) and under pure spin, continuously (relaxed_shape.h: p0 (1 - e^3) (1 - s)).
+TEST(RelaxedShape, StripExponentFadesWithLevelAndSpin) {
+  const double p0 = relaxed_strip_power_exponent(0.1);
+  EXPECT_DOUBLE_EQ(relaxed_strip_power_exponent(0.1, 0, 0), p0);
+  EXPECT_DOUBLE_EQ(relaxed_strip_power_exponent(0.1, 1, 0), 0.0);
+  EXPECT_DOUBLE_EQ(relaxed_strip_power_exponent(0.1, 0, 1), 0.0);
+  EXPECT_DOUBLE_EQ(relaxed_strip_power_exponent(0.1, 0.5, 0.5), p0 * (1 - 0.125) * 0.5);
+  EXPECT_DOUBLE_EQ(relaxed_strip_power_exponent(0.1, 1.5, -0.5), 0.0);  // clamped to [0, 1]
+  constexpr double kStep = 1e-6;  // continuity: a small change of e or s moves p by at most about 3 p0 times it
+  for (double e = 0; e < 1; e += 0.05) {
+    EXPECT_LE(std::abs(relaxed_strip_power_exponent(0.1, e + kStep, 0.2) - relaxed_strip_power_exponent(0.1, e, 0.2)),
+              3 * p0 * kStep * 1.0001);
+    EXPECT_LE(std::abs(relaxed_strip_power_exponent(0.1, 0.3, e + kStep) - relaxed_strip_power_exponent(0.1, 0.3, e)),
+              p0 * kStep * 1.0001);
+  }
+  // on a thin Hertz patch at full slip the springs' distribution is left as it is
+  HertzContact h;
+  h.b_m = 1e-3;
+  h.a_m = 0.1 * h.b_m;
+  h.p0_Pa = 1e9;
+  h.normal_load_N = 2 * kPi * h.a_m * h.b_m * h.p0_Pa / 3;
+  const ContactPatch patch = hertz_patch(h, make_grid(h.a_m, h.b_m, {20, 40}));
+  TangentialSolution s;
+  s.strip_power_W_per_m = patch.half_length_m.square();
+  const Eigen::ArrayXd before = s.strip_power_W_per_m;
+  redistribute_strip_power(s, patch, 1.0, 0.0);
+  EXPECT_TRUE((s.strip_power_W_per_m == before).all());
+}
+
 // the exact reference: (heathcote_slip, n) -> Fx, power, creep work; n = 0 the extrapolation
 std::map<std::string, std::array<double, 3>> exact_worn_crown() {
   std::map<std::string, std::array<double, 3>> m;

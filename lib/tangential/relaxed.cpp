@@ -250,7 +250,13 @@ TangentialSolution steady_at(const ContactPatch& patch, const ElasticPair& pair,
     if (fields) s.power_W_per_m2 *= k;
     s.power_W = target;
   }
-  redistribute_strip_power(s, patch);  // the strips' shares of it (relaxed_shape.h)
+  {  // the strips' shares of it (relaxed_shape.h): the saturation level and spin's share of the creep work
+    const double muN = mu * patch.normal_load_N;
+    const double level = muN > 0 ? std::hypot(s.Fx_N, s.Fy_N) / muN : 0.0;
+    const double wx = std::abs(c.xi * s.Fx_N), wy = std::abs(c.eta * s.Fy_N), wphi = std::abs(c.phi_per_m * s.Mz_N_m);
+    const double spin_share = wx + wy + wphi > 0 ? wphi / (wx + wy + wphi) : 0.0;
+    redistribute_strip_power(s, patch, level, spin_share);
+  }
   s.creep_work_W = creep_work_W(s, work_at, V) + offsets_W;
   // without imposed spin, the fitted moment (phi Mz is 0 in the work above)
   if (cor.moment != 0) s.Mz_N_m += cor.moment * mu * patch.normal_load_N * std::sqrt(patch.a_m * patch.b_m);

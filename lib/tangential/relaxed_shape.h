@@ -35,15 +35,20 @@ struct TangentialSolution;
 // The strips' share of the power. In the same thin-contact limit the exact theory's strip force per unit width is
 // proportional to the strip's half-length, the springs' to its square (at the same saturation level of the
 // strips: p_j / a_j is the same across a Hertz contact, so Carter's and the springs' levels are), so the exact
-// strip's power is the springs' times 1 / a_j. Away from that limit the half-space couples the strips and the
-// springs' own distribution is the closer one; the model weights each strip's power by
-//   w_j = (a / a_j)^p,   p = clamp(1 - (a/b) / 2, 0, 1)
-// (the strip limit at a/b -> 0, none from a/b = 2 on: a law, not a fit), keeping the total. Against the exact
-// theory's per-strip power on 80 x 80 cells, pure xi = 1e-3 on the paper's bodies (relative L1 of the
-// distributions normalised to unit total): a/b 0.037 (the crown worn 1e7 revolutions) 6.3 -> 1.5 %, 0.088 (the
-// paper's contact) 14.8 -> 2.8 %, 0.37 13.4 -> 1.5 %, 1.0 6.7 -> 1.6 %, 1.97 4.0 -> 4.2 % (docs/accuracy-vs-exact.md).
+// strip's linear power is the springs' times 1 / a_j. Away from that limit the half-space couples the strips and
+// the springs' own distribution is the closer one; the model weights each strip's power by
+//   w_j = (a / a_j)^p,   p = p0(a/b) f(e) g(s),   p0 = clamp(1 - (a/b) / 2, 0, 1),
+//   f(e) = 1 - e^3,      g(s) = 1 - s,
+// keeping the total. p0: the strip limit at a/b -> 0, none from a/b = 2 on. f: e = |F| / (mu N) the saturation
+// level; at full slip both the exact and the springs' strip powers tend to mu integral of p |s| dx, the weight to 1.
+// g: s = |phi Mz| / (|xi Fx| + |eta Fy| + |phi Mz|) spin's share of the creep work; spin's power grows towards the
+// outer strips (its slip grows with |y|), which the 1 / a_j law of the uniform creepages does not describe. All
+// three continuous (the wear integrator needs it); laws, not fits (the exponent 3 of f chosen on the exact
+// per-strip data of tests/data/fast_model/exact_strips.csv, docs/accuracy-vs-exact.md "The shape of a worn contact").
 // The forces and the total power do not change; the per-cell power density of strip j is weighted as its strip.
-double relaxed_strip_power_exponent(double a_over_b);
-void redistribute_strip_power(TangentialSolution& s, const ContactPatch& patch);
+double relaxed_strip_power_exponent(double a_over_b, double level = 0, double spin_share = 0);
+// level e and spin share s as above (relaxed.cpp takes them from the solution's forces and creepages)
+void redistribute_strip_power(TangentialSolution& s, const ContactPatch& patch, double level = 0,
+                              double spin_share = 0);
 
 }  // namespace contact
