@@ -84,37 +84,12 @@ LiftLoss max_lift_loss(const contact::Profiles& unworn, const CamWearGrid& g, co
   return out;
 }
 
-namespace {
-// cam_wear.cpp's interpolation between cell centres (periodic along the arc, clamped across)
-void centre_weights(double x, double dx, int n, bool periodic, int& c0, int& c1, double& w1) {
-  double u = x / dx - 0.5;
-  c0 = c1 = 0;
-  w1 = 0;
-  if (n == 1) return;
-  if (periodic) {
-    u -= std::floor(u / n) * n;
-    c0 = std::min(static_cast<int>(std::floor(u)), n - 1);
-    c1 = (c0 + 1) % n;
-    w1 = u - c0;
-    return;
-  }
-  if (u <= 0) return;
-  if (u >= n - 1) {
-    c0 = c1 = n - 1;
-    return;
-  }
-  c0 = static_cast<int>(std::floor(u));
-  c1 = c0 + 1;
-  w1 = u - c0;
-}
-}  // namespace
-
 LiftLossProbe::LiftLossProbe(const contact::Profiles& unworn, const CamWearGrid& g, std::vector<LiftLossSample> samples)
     : grid_(g), samples_(std::move(samples)) {
   check_grid(g);
   for (const LiftLossSample& x : samples_) {
     Weights w;
-    centre_weights(x.arc_m, g.arc_cell_m(), g.arc_cells, true, w.c0, w.c1, w.w1);
+    cell_weights(x.arc_m, g.arc_cell_m(), g.arc_cells, true, w.c0, w.c1, w.w1);
     sample_arc_.push_back(w);
   }
   const contact::Profile& roller = unworn.body1;
@@ -128,8 +103,8 @@ LiftLossProbe::LiftLossProbe(const contact::Profiles& unworn, const CamWearGrid&
     gap0_.push_back(roller.z_m(i) + contact::profile_z(track, y));
     gap0_min_ = std::min(gap0_min_, gap0_.back());
     Weights r, t;
-    centre_weights(y + 0.5 * g.roller_width_m, g.roller_cell_m(), g.roller_cells, false, r.c0, r.c1, r.w1);
-    centre_weights(y + 0.5 * g.track_width_m, g.track_cell_m(), g.track_cells, false, t.c0, t.c1, t.w1);
+    cell_weights(y + 0.5 * g.roller_width_m, g.roller_cell_m(), g.roller_cells, false, r.c0, r.c1, r.w1);
+    cell_weights(y + 0.5 * g.track_width_m, g.track_cell_m(), g.track_cells, false, t.c0, t.c1, t.w1);
     roller_lat_.push_back(r);
     track_lat_.push_back(t);
   }

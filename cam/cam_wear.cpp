@@ -72,8 +72,8 @@ Eigen::ArrayXd law_depth(const wear::WearLaw& law, double mu, const Eigen::Array
   return wear::depth_per_duty_cycle(law, duty);
 }
 
-// linear interpolation weights between cell centres x_c = (c + 0.5) dx of n cells: (c0, c1, w1);
-// periodic wraps, otherwise constant beyond the outer centres
+}  // namespace
+
 void cell_weights(double x, double dx, int n, bool periodic, int& c0, int& c1, double& w1) {
   double u = x / dx - 0.5;
   if (n == 1) {
@@ -102,8 +102,6 @@ void cell_weights(double x, double dx, int n, bool periodic, int& c0, int& c1, d
   c1 = c0 + 1;
   w1 = u - c0;
 }
-
-}  // namespace
 
 void check_grid(const CamWearGrid& g) {
   if (!positive_finite(g.circumference_m) || !positive_finite(g.track_width_m) || !positive_finite(g.roller_width_m) ||

@@ -108,6 +108,10 @@ CamWearRate wear_per_revolution(const RevolutionDissipation& rev, const CamWearG
 
 // ---- the worn geometry ----
 
+// linear interpolation weights between cell centres x_c = (c + 0.5) dx of n cells: x lies between cells c0 and c1,
+// with weight w1 on c1; periodic wraps (the arc), otherwise constant beyond the outer centres (across)
+void cell_weights(double x, double dx, int n, bool periodic, int& c0, int& c1, double& w1);
+
 // the cam's worn depth at arc sigma (periodic, linear between arc cell centres) and lateral y (linear
 // between lateral cell centres, constant beyond the outer ones)
 double cam_depth_at(const CamWearGrid& g, const CamWearState& s, double arc_m, double y_m);

@@ -19,30 +19,6 @@ bool same(double a, double b) {
   return std::abs(a - b) <= kSameInputRtol * std::max(std::abs(a), std::abs(b));
 }
 
-// the interpolation cam_depth_at and roller_depth_at use: between cell centres x_c = (c + 0.5) dx of n
-// cells, periodic (the arc) or constant beyond the outer centres (across)
-void weights(double x, double dx, int n, bool periodic, int& c0, int& c1, double& w1) {
-  double u = x / dx - 0.5;
-  c0 = c1 = 0;
-  w1 = 0;
-  if (n == 1) return;
-  if (periodic) {
-    u -= std::floor(u / n) * n;
-    c0 = std::min(static_cast<int>(std::floor(u)), n - 1);
-    c1 = (c0 + 1) % n;
-    w1 = u - c0;
-    return;
-  }
-  if (u <= 0) return;
-  if (u >= n - 1) {
-    c0 = c1 = n - 1;
-    return;
-  }
-  c0 = static_cast<int>(std::floor(u));
-  c1 = c0 + 1;
-  w1 = u - c0;
-}
-
 }  // namespace
 
 WornRevolution::WornRevolution(const CamModel& m, const Revolution& r, const RollerMotion& motion,
@@ -65,7 +41,7 @@ WornRevolution::WornRevolution(const CamModel& m, const Revolution& r, const Rol
     a.row = r.rows[i];
     a.roller = motion.angles[i];
     a.cam_radius_m = cam_radius_m(a.row.kin);
-    weights(a.row.contact_arc_m, g.arc_cell_m(), g.arc_cells, true, a.a0, a.a1, a.wa);
+    cell_weights(a.row.contact_arc_m, g.arc_cell_m(), g.arc_cells, true, a.a0, a.a1, a.wa);
     if (i > 0) {
       const Angle& p = angles_[i - 1];
       const RollerAngle &x = a.roller, &y = p.roller;
@@ -83,7 +59,7 @@ WornRevolution::WornRevolution(const CamModel& m, const Revolution& r, const Rol
     w.l1.resize(y.size());
     w.wl.resize(y.size());
     for (Eigen::Index i = 0; i < y.size(); ++i)
-      weights(y(i) + 0.5 * width_m, cell_m, cells, false, w.l0(i), w.l1(i), w.wl(i));
+      cell_weights(y(i) + 0.5 * width_m, cell_m, cells, false, w.l0(i), w.l1(i), w.wl(i));
     return w;
   };
   roller_nodes_ = node_weights(unworn.body1.y_m, g.roller_width_m, g.roller_cell_m(), g.roller_cells);
