@@ -442,20 +442,7 @@ TransientResult run_relaxed_inertia(const TransientCase& c, const StepObserver& 
     }
     t += s.dt_s;
     q += s.dq_m;
-    res.strip_energy_J_per_m += f.strip_power_W_per_m * s.dt_s;
-    res.dissipated_J += f.power_W * s.dt_s;
-    if (observe) observe(rec, f.strip_power_W_per_m);
-    while (next_snap < snaps.size() && snaps[next_snap] <= t * (1 + 1e-12)) {
-      Snapshot sn;
-      sn.t_s = t;
-      sn.pressure_Pa = patch.pressure_Pa;
-      sn.tau_x_Pa = f.tau_x_Pa;
-      sn.tau_y_Pa = f.tau_y_Pa;
-      sn.slip_x_m_per_s = f.slip_x_m_per_s;
-      sn.slip_y_m_per_s = f.slip_y_m_per_s;
-      res.snapshots.push_back(std::move(sn));
-      ++next_snap;
-    }
+    add_shift_step(res, rec, f, patch, s.dt_s, t, snaps, next_snap, observe);
     if (!(s.dt_s > 0)) break;  // nothing left to advance
   }
   res.steps = step;

@@ -50,6 +50,25 @@ Grid shift_run_grid(const TransientCase& c) {
   return make_grid(largest.a_m, largest.b_m, c.settings.grid);
 }
 
+void add_shift_step(TransientResult& res, const TransientRecord& rec, const TangentialSolution& f,
+                    const ContactPatch& patch, double dt_s, double t_s, const std::vector<double>& snapshots_s,
+                    std::size_t& next_snap, const StepObserver& observe) {
+  res.strip_energy_J_per_m += f.strip_power_W_per_m * dt_s;
+  res.dissipated_J += f.power_W * dt_s;
+  if (observe) observe(rec, f.strip_power_W_per_m);
+  while (next_snap < snapshots_s.size() && snapshots_s[next_snap] <= t_s * (1 + 1e-12)) {
+    Snapshot sn;
+    sn.t_s = t_s;
+    sn.pressure_Pa = patch.pressure_Pa;
+    sn.tau_x_Pa = f.tau_x_Pa;
+    sn.tau_y_Pa = f.tau_y_Pa;
+    sn.slip_x_m_per_s = f.slip_x_m_per_s;
+    sn.slip_y_m_per_s = f.slip_y_m_per_s;
+    res.snapshots.push_back(std::move(sn));
+    ++next_snap;
+  }
+}
+
 TransientResult run_shift_steps(const TransientCase& c, const StepObserver& observe, const ShiftStepSolve& solve,
                                 const std::function<void(const Grid&)>& no_contact, const ShiftSkip& skip) {
   const TransientSettings& set = c.settings;
@@ -130,20 +149,7 @@ TransientResult run_shift_steps(const TransientCase& c, const StepObserver& obse
     }
     t += dt;
     q += dq;
-    res.strip_energy_J_per_m += f.strip_power_W_per_m * dt;
-    res.dissipated_J += f.power_W * dt;
-    if (observe) observe(rec, f.strip_power_W_per_m);
-    while (next_snap < snaps.size() && snaps[next_snap] <= t * (1 + 1e-12)) {
-      Snapshot sn;
-      sn.t_s = t;
-      sn.pressure_Pa = patch.pressure_Pa;
-      sn.tau_x_Pa = f.tau_x_Pa;
-      sn.tau_y_Pa = f.tau_y_Pa;
-      sn.slip_x_m_per_s = f.slip_x_m_per_s;
-      sn.slip_y_m_per_s = f.slip_y_m_per_s;
-      res.snapshots.push_back(std::move(sn));
-      ++next_snap;
-    }
+    add_shift_step(res, rec, f, patch, dt, t, snaps, next_snap, observe);
     if (set.skip_steady && skip.settled && in_contact && dq == dx && !shortened && skip.settled()) {
       // the inputs constant over the step just taken and the stretch ahead
       const History* inputs[] = {&c.inputs.speed_m_per_s, &c.inputs.xi, &c.inputs.eta, &c.inputs.phi_per_m,

@@ -48,6 +48,13 @@ struct ShiftSkip {
 TransientResult run_shift_steps(const TransientCase& c, const StepObserver& observe, const ShiftStepSolve& solve,
                                 const std::function<void(const Grid&)>& no_contact = {}, const ShiftSkip& skip = {});
 
+// Adds a step's solution f, which ended at t_s after dt_s, to the run's result as run_shift_steps does: the strip
+// energies and the energy, the observer's call with rec, and the snapshots (sorted times) due by t_s, from
+// next_snap on (advanced past them). Shared with the relaxed model's inertia run (relaxed.h).
+void add_shift_step(TransientResult& res, const TransientRecord& rec, const TangentialSolution& f,
+                    const ContactPatch& patch, double dt_s, double t_s, const std::vector<double>& snapshots_s,
+                    std::size_t& next_snap, const StepObserver& observe);
+
 // the contact at load F on the run's grid, as the steps of run_shift_steps see it: c.patch if given, else
 // Hertz's ellipse from the bodies (a patch without pressure at F = 0 or when no strip centre is in contact)
 ContactPatch shift_run_contact(const TransientCase& c, const Grid& grid, double F);
