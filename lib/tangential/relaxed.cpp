@@ -403,17 +403,8 @@ TransientResult run_relaxed_inertia(const TransientCase& c, const StepObserver& 
     // the bracket: the creep force is bounded by mu F
     InertiaTrial s;
     const double span = (c.mu * F * R1 + std::abs(in.T_res_N_m)) * longest / J1 * 1.01 + 1e-12;
-    const double lo = std::max(0.0, omega - span), hi = omega + span;
-    const double f_lo = evaluate(lo, s), f_hi = evaluate(hi, s);
-    double omega_end = f_lo > 0 ? lo : hi;  // f_lo > 0: it cannot spin down below 0 within the bracket, it stops
-    if (f_lo <= 0 && f_hi >= 0) {  // the balance is monotone in omega_end
-      const RootResult root = find_root_bracketed([&](double w) { return evaluate(w, s); }, lo, hi, f_lo, f_hi,
-                                                  1e-13 * std::max(1.0, hi));
-      if (!root.converged)
-        throw std::runtime_error("relaxed model: the roller's spin balance at t = " + std::to_string(t) +
-                                 " s did not converge (residual " + std::to_string(root.f) + ")");
-      omega_end = root.x;
-    }
+    const double omega_end =
+        implicit_roller_speed_rad_per_s([&](double w) { return evaluate(w, s); }, omega, span, t, "relaxed model");
     evaluate(omega_end, s);
     state = s.state;
     omega = omega_end;

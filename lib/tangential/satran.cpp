@@ -1480,18 +1480,8 @@ InertiaStep inertia_step(const TransientCase& c, PatchCache& patches, SatranWork
   };
   // the bracket: the creep force is bounded by mu F
   const double span = (c.mu * s.F * in.R1_m + std::abs(in.T_res_N_m)) * longest / in.J1_kg_m2 * 1.01 + 1e-12;
-  const double lo = std::max(0.0, omega1 - span), hi = omega1 + span;
-  const double f_lo = evaluate(lo, s), f_hi = evaluate(hi, s);
-  double omega_end = f_lo > 0 ? lo : hi;  // f_lo > 0: it cannot spin down below 0 within the bracket, it stops
-  if (f_lo <= 0 && f_hi >= 0) {  // the balance is monotone in omega_end
-    const RootResult root = find_root_bracketed([&](double w) { return evaluate(w, s); }, lo, hi, f_lo, f_hi,
-                                                1e-13 * std::max(1.0, hi));
-    if (!root.converged)
-      throw std::runtime_error(fmt::format("satran: the roller's spin balance at t = {:.6g} s did not converge "
-                                           "(residual {:.3g} after {} iterations)",
-                                           t, root.f, root.iterations));
-    omega_end = root.x;
-  }
+  const double omega_end = implicit_roller_speed_rad_per_s([&](double w) { return evaluate(w, s); }, omega1, span, t,
+                                                          "satran");
   evaluate(omega_end, s);
   s.omega_end = omega_end;
   s.V = s.k.dt_s > 0 ? s.k.dq_m / s.k.dt_s : 0;
@@ -1700,6 +1690,20 @@ TransientResult run_transient(const TransientCase& c, const StepObserver& observ
   spdlog::debug("satran ({}): {} steps to t {:.6e} s, q {:.6e} m, dissipated {:.6e} J, {} upwind fallback steps",
                 to_string(set.scheme), run.step, run.t, run.q, res.dissipated_J, res.fallback_steps);
   return res;
+}
+
+double implicit_roller_speed_rad_per_s(const std::function<double(double)>& balance, double omega1_rad_per_s,
+                                       double span_rad_per_s, double t_s, const char* who) {
+  const double lo = std::max(0.0, omega1_rad_per_s - span_rad_per_s), hi = omega1_rad_per_s + span_rad_per_s;
+  const double f_lo = balance(lo), f_hi = balance(hi);
+  // f_lo > 0: it cannot spin down below 0 within the bracket, it stops; otherwise the balance is monotone in omega_end
+  if (!(f_lo <= 0 && f_hi >= 0)) return f_lo > 0 ? lo : hi;
+  const RootResult root = find_root_bracketed(balance, lo, hi, f_lo, f_hi, 1e-13 * std::max(1.0, hi));
+  if (!root.converged)
+    throw std::runtime_error(fmt::format("{}: the roller's spin balance at t = {:.6g} s did not converge "
+                                         "(residual {:.3g} after {} iterations)",
+                                         who, t_s, root.f, root.iterations));
+  return root.x;
 }
 
 }  // namespace contact

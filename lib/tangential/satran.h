@@ -190,6 +190,14 @@ struct TransientInputs {
   History normal_load_N = constant_history(0.0);
 };
 
+// The roller's speed at the end of an implicit inertia step: the root of the spin balance
+// balance(omega_end) = J1 (omega_end - omega1) - (-R1 Fx - T_res) dt, monotone in omega_end, within omega1 +- span
+// (span from the creep force's bound mu F), never below 0 (where the balance stays positive the roller stops at the
+// bracket's low end). Shared by Satran's inertia step and the relaxed model's (lib/tangential/relaxed.h); `who` names
+// the solver in the error thrown (std::runtime_error) when the root does not converge at time t_s.
+double implicit_roller_speed_rad_per_s(const std::function<double(double)>& balance, double omega1_rad_per_s,
+                                       double span_rad_per_s, double t_s, const char* who);
+
 // The roller's inertia (beyond the paper): the path's surface speed V2(t) is prescribed; the roller
 // (radius R1, polar moment J1, resisting torque T_res) spins up under the creep force,
 //   J1 d omega1/dt = -R1 Fx - T_res,  w_x = V2 - omega1 R1,  V = (omega1 R1 + V2)/2 (docs/physics.md §5).
