@@ -12,7 +12,8 @@
 // A new run removes the previous run's snapshot files of these names, its report and its temporaries
 // (NAME.tmp.PID of these names, PID gone), nothing else. A run killed part-way continues with resume
 // (docs/cam-follower.md §13, "Checkpoint and resume"); a folder holding an unfinished run is not started
-// afresh without restart.
+// afresh without restart. The folder is locked while the run owns it, and SIGINT or SIGTERM during the life
+// stops it after its current step, saved, with the --resume command printed (app/output_folder.h).
 #pragma once
 
 #include <string>
