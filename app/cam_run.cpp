@@ -187,7 +187,8 @@ int run_cam_life_command(const std::string& case_path, const std::string& output
       checkpoint_path.string(), case_path, dir.string());
   interrupted::say_on_signal(resume ? resume_line
                                     : fmt::format("\nrollwear: interrupted before the life's first step; nothing to "
-                                                  "resume: run rollwear run {} -o {} again\n", case_path, dir.string()));
+                                                  "resume: run rollwear run {} -o {}{} again\n", case_path, dir.string(),
+                                                  restart ? " --restart" : ""));
 
   // the unworn periodic revolution: kinematics, loads, the roller's motion, the dissipation
   std::unique_ptr<cam::CamLifeSetup> setup;
