@@ -96,12 +96,12 @@ TEST_F(CamRunCommand, RefusesAFolderAnotherRunHolds) {
 
 // SIGINT (Ctrl-C) and SIGTERM during a cam life: the life stops after its current step, writes that step's
 // checkpoint (none would be due for 1000 s), prints the --resume command, removes the lock file and ends by
-// the signal; --resume then ends the life as an uninterrupted run does. About 0.5 s per signal.
+// the signal; --resume then continues the life to its limit. About 0.5 s per signal at load 7.5.
 class CamRunSignal : public CamRunCommand, public testing::WithParamInterface<int> {};
 
 TEST_P(CamRunSignal, StopsAfterItsStepSavesItAndSaysResume) {
   const int sig = GetParam();
-  const fs::path c = coarse_case("1.0e-7", "1000");
+  const fs::path c = coarse_case("5.0e-8", "1000");
   const fs::path out = dir_ / "out", log = dir_ / "run.log";
   const pid_t pid = ::fork();
   ASSERT_GE(pid, 0);
@@ -143,26 +143,17 @@ TEST_P(CamRunSignal, StopsAfterItsStepSavesItAndSaysResume) {
   const std::size_t last_row = life.rfind('\n', life.size() - 2) + 1;
   EXPECT_EQ(std::stol(life.substr(last_row)), steps) << life;
 
-  // resumed: the uninterrupted run's life, end and steps (fixed steps: the same; the printed 6 digits are far
-  // coarser than the warm starts' 1e-10, docs/cam-follower.md §13 "How close")
+  // resumed: the life goes on from there to its limit (that a resumed life is the uninterrupted one:
+  // CamWearCase.RunKilledAndResumedEndsWithTheUninterruptedLife)
   const Ran resumed = rollwear("run -q " + quoted(c) + " -o " + quoted(out) + " --resume", dir_);
   ASSERT_EQ(resumed.exit_code, 0) << resumed.out << resumed.err;
+  EXPECT_NE(resumed.err.find("resuming at cam revolution"), std::string::npos) << resumed.err;
+  EXPECT_NE(resumed.out.find("ended by: max_depth"), std::string::npos) << resumed.out;
   EXPECT_NE(resumed.out.find("resumed: true"), std::string::npos) << resumed.out;
   EXPECT_FALSE(fs::exists(out / "checkpoint.txt"));
-  const Ran whole = rollwear("run -q " + quoted(c) + " -o " + quoted(dir_ / "whole"), dir_);
-  ASSERT_EQ(whole.exit_code, 0) << whole.out << whole.err;
-  const auto line_of = [](const std::string& text, const std::string& key) {
-    const std::size_t i = text.find("\n" + key);
-    return i == std::string::npos ? std::string("(none)") : text.substr(i + 1, text.find('\n', i + 1) - i - 1);
-  };
-  for (const char* key : {"life:", "ended by:", "max depth:"})
-    EXPECT_EQ(line_of(resumed.out, key), line_of(whole.out, key)) << key;
-  EXPECT_EQ(line_of(whole.out, "ended by:"), "ended by: max_depth") << whole.out;
-  // the steps and evaluations the same (the resumed process solves its start's revolution once more)
-  const std::string steps_whole = line_of(whole.out, "steps:"), steps_resumed = line_of(resumed.out, "steps:");
-  const std::size_t cut = steps_whole.find(", revolutions solved:");
-  ASSERT_NE(cut, std::string::npos) << steps_whole;
-  EXPECT_EQ(steps_resumed.substr(0, cut), steps_whole.substr(0, cut));
+  const std::string rows = text_of(out / "life.csv");
+  EXPECT_NE(rows.find("\n" + std::to_string(steps) + ","), std::string::npos);
+  EXPECT_NE(rows.find("\n" + std::to_string(steps + 1) + ","), std::string::npos) << "no step after the stop";
 }
 
 INSTANTIATE_TEST_SUITE_P(CtrlCAndTerm, CamRunSignal, testing::Values(SIGINT, SIGTERM),
