@@ -57,18 +57,24 @@ void remove_previous_snapshots(const fs::path& dir) {
   if (fs::is_empty(dir / "snapshots", ec)) fs::remove(dir / "snapshots", ec);
 }
 
-// per angle step: the power and energy, and where the contact sits on the cam (its polar angle and radius
-// in the cam's frame: the plot's outline of the cam)
-std::string dissipation_csv(const cam::Revolution& r, const cam::RevolutionDissipation& rev) {
-  std::string out = "# the unworn periodic revolution's dissipation per angle step\n"
-                    "cam_angle_deg,cam_arc_m,rolling_speed_m_per_s,power_W,energy_J,contact_angle_deg,contact_radius_m\n";
+// per angle step: the power and energy, where the contact sits on the cam (its polar angle and radius in the
+// cam's frame: the plot's outline of the cam), and the roller's periodic motion the life holds (its loads,
+// creepage and spin: revolution.csv's are the kinematic roller's)
+std::string dissipation_csv(const cam::Revolution& r, const cam::RevolutionDissipation& rev,
+                            const cam::RollerMotion& motion) {
+  std::string out = "# the unworn periodic revolution's dissipation per angle step, and the roller's periodic motion\n"
+                    "cam_angle_deg,cam_arc_m,rolling_speed_m_per_s,power_W,energy_J,contact_angle_deg,contact_radius_m,"
+                    "normal_load_N,tangential_load_N,xi,slip_speed_m_per_s,roller_omega_rad_per_s\n";
   for (std::size_t k = 0; k < rev.size(); ++k) {
     const cam::AngleDissipation& a = rev[k];
     const cam::CamKinematics& kin = r.rows[k].kin;
+    const cam::RollerAngle& m = motion.angles[k];
     const double P = cam::total_power_W(a);
-    fmt::format_to(std::back_inserter(out), "{:.8g},{:.10g},{:.10g},{:.10g},{:.10g},{:.8g},{:.10g}\n",
+    fmt::format_to(std::back_inserter(out), "{:.8g},{:.10g},{:.10g},{:.10g},{:.10g},{:.8g},{:.10g},{:.10g},{:.10g},{:.10g},"
+                   "{:.10g},{:.10g}\n",
                    a.theta_rad * cam::kDegPerRad, a.cam_arc_m, a.rolling_speed_m_per_s, P, P * a.duration_s,
-                   kin.contact_angle_rad * cam::kDegPerRad, std::hypot(kin.contact_x_m, kin.contact_y_m));
+                   kin.contact_angle_rad * cam::kDegPerRad, std::hypot(kin.contact_x_m, kin.contact_y_m), m.normal_N,
+                   m.tangential_N, m.xi, m.slip_speed_m_per_s, m.omega_r_rad_per_s);
   }
   return out;
 }
@@ -239,7 +245,7 @@ int run_cam_life_command(const std::string& case_path, const std::string& output
                "0,0,0,0,0,0\n";
   }
   contact::write_files_atomic({{dir / "revolution.csv", cam::revolution_csv(r)},
-                               {dir / "dissipation.csv", dissipation_csv(r, unworn_rev)}});
+                               {dir / "dissipation.csv", dissipation_csv(r, unworn_rev, motion.motion)}});
 
   // life.csv and the checkpoint are written together, life.csv renamed first: it never lags the checkpoint
   int snapshots = resume ? cp.snapshots_written : 0;

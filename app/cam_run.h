@@ -3,7 +3,8 @@
 // over cam revolutions until a limit of cam.wear ends the life (cam/cam_life.h). Writes into the output
 // folder, each file atomically:
 //   revolution.csv                      the unworn revolution, per angle (cam/revolution.h)
-//   dissipation.csv                     per angle: cam_angle_deg, cam_arc_m, the step's power (W) and energy (J)
+//   dissipation.csv                     per angle: cam_angle_deg, cam_arc_m, the step's power (W) and energy (J),
+//                                       the roller's periodic motion (F_n, F_t, xi, slip speed, spin)
 //   life.csv                            per accepted step: revolutions, max_depth_m, lift_loss_m, ...
 //   snapshots/wear_map_KKKK.csv         the track's wear map (cam/cam_wear.h) at the start, each snapshot, the end
 //   snapshots/roller_wear_KKKK.csv      the roller's worn depth there

@@ -14,6 +14,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "tests/temp_dir.h"
 
@@ -92,6 +93,40 @@ TEST_F(CamRunCommand, RefusesAFolderAnotherRunHolds) {
   EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
   EXPECT_TRUE(fs::exists(out / "report.txt"));
   EXPECT_FALSE(fs::exists(out / ".rollwear.lock"));
+}
+
+// dissipation.csv carries the roller's periodic motion the life holds, per angle step. Checked on the base
+// circle's dwell (300 deg) against its closed forms (docs/cam-follower.md §3, §7): phi = 0 and s = s'' = 0, so
+// F_n = F_0 (150 N); the roller rolls at omega_r = -omega r_b / R_r to its creep (xi ~ 1e-5: 1e-4 allowed);
+// F_t = T_b(omega_r) / R_r, T_b = T_0 sign + c_b omega_r, to the strips' depth moment M_z (some 1e-4 of the
+// torque, §7: 1e-3 allowed).
+TEST_F(CamRunCommand, DissipationTableHoldsThePeriodicMotion) {
+  const fs::path c = coarse_case("1.0e-6", "10");
+  const fs::path out = dir_ / "out";
+  const Ran r = rollwear("run -q " + quoted(c) + " -o " + quoted(out), dir_);
+  ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+  std::ifstream in(out / "dissipation.csv");
+  std::string line, header;
+  while (std::getline(in, line) && line.rfind("#", 0) == 0) {
+  }
+  header = line;
+  EXPECT_EQ(header, "cam_angle_deg,cam_arc_m,rolling_speed_m_per_s,power_W,energy_J,contact_angle_deg,contact_radius_m,"
+                    "normal_load_N,tangential_load_N,xi,slip_speed_m_per_s,roller_omega_rad_per_s");
+  std::vector<double> row;
+  while (std::getline(in, line))
+    if (line.rfind("300,", 0) == 0) {
+      std::stringstream cells(line);
+      std::string cell;
+      while (std::getline(cells, cell, ',')) row.push_back(std::stod(cell));
+    }
+  ASSERT_EQ(row.size(), 12u) << "no row at 300 deg";
+  const double omega = 62.83185307179586, r_b = 0.040, R_r = 0.013, T0 = 0.004, c_b = 1.0e-5;  // the shipped case
+  const double omega_r = -omega * r_b / R_r;
+  EXPECT_NEAR(row[7], 150.0, 150.0 * 1e-9);
+  EXPECT_NEAR(row[11], omega_r, std::abs(omega_r) * 1e-4);
+  const double F_t = (-T0 + c_b * omega_r) / R_r;
+  EXPECT_NEAR(row[8], F_t, std::abs(F_t) * 1e-3);
+  EXPECT_LT(std::abs(row[9]), 1e-4);
 }
 
 // SIGINT (Ctrl-C) and SIGTERM during a cam life: the life stops after its current step, writes that step's
