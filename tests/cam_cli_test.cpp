@@ -3,9 +3,7 @@
 // or SIGTERM saved at its last step, with the --resume command printed.
 #include <gtest/gtest.h>
 
-#include <fcntl.h>
 #include <signal.h>
-#include <sys/file.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -16,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "tests/held_lock.h"
 #include "tests/temp_dir.h"
 
 namespace {
@@ -73,12 +72,9 @@ TEST_F(CamRunCommand, RefusesAFolderAnotherRunHolds) {
   const fs::path c = coarse_case("1.0e-6", "10");
   const fs::path out = dir_ / "out";
   fs::create_directories(out);
-  // this test process plays the other run: it holds the lock with its PID in the file
-  const int fd = ::open((out / ".rollwear.lock").c_str(), O_RDWR | O_CREAT, 0644);
-  ASSERT_GE(fd, 0);
-  ASSERT_EQ(::flock(fd, LOCK_EX | LOCK_NB), 0);
-  const std::string pid = std::to_string(::getpid());
-  ASSERT_EQ(::write(fd, pid.data(), pid.size()), static_cast<ssize_t>(pid.size()));
+  rollwear_test::HeldLock other(out);  // this test process plays the other run
+  ASSERT_TRUE(other.held());
+  const std::string pid = other.pid();
   for (const std::string& command : {std::string("run -q"), std::string("run -q --restart")}) {
     const Ran r = rollwear(command + " " + quoted(c) + " -o " + quoted(out), dir_);
     EXPECT_EQ(r.exit_code, 1) << command << ": " << r.out << r.err;
@@ -88,7 +84,7 @@ TEST_F(CamRunCommand, RefusesAFolderAnotherRunHolds) {
     for (const char* f : {"revolution.csv", "life.csv", "checkpoint.txt", "report.txt"})
       EXPECT_FALSE(fs::exists(out / f)) << f;
   }
-  ::close(fd);
+  other.release();
   const Ran r = rollwear("run -q " + quoted(c) + " -o " + quoted(out), dir_);
   EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
   EXPECT_TRUE(fs::exists(out / "report.txt"));
