@@ -1,6 +1,9 @@
 // What holding the roller's motion, the loads and the kinematics at the unworn revolution costs at the end of
 // a cam's life (docs/cam-follower.md, "What is outside the model"). A plain program:
 //   cam_held_motion CASE.yaml [DIR [TABLE.csv]]
+//   cam_held_motion CASE.yaml life     two whole lives (fixed depth steps of 1e-6 m, cold evaluations): the
+//       life's, the motion held, and one that solves the revolution and the roller's motion on the worn lift
+//       (3. and 4. below) at every evaluation
 // 1. sets up the case's life (the unworn periodic revolution and the roller's motion: what the life holds);
 // 2. the worn state at the end of the life: the last wear map of DIR/snapshots (a `rollwear run CASE -o DIR`
 //    folder), else the case's life run here with fixed depth steps of 1e-6 m (its limits; docs §15);
@@ -166,11 +169,43 @@ void compare_dissipation(const char* what, const cam::RevolutionDissipation& a, 
               what, Eb, Ea, 100 * (Eb / Ea - 1), dP / P_max, at_P * kDeg);
 }
 
+// the lift at the angle steps through a periodic quintic spline (make_table_law, not refused: the fit's
+// departure from the lift's central differences, of their largest, is returned in fit), and its revolution and
+// roller's periodic motion; throws std::runtime_error on a jump or a motion that is not periodic
+Lift lift_through_spline(const char* name, const cam::CamModel& base, const std::vector<double>& lift,
+                         const cam::RollerDynamicsSettings& dynamics, double& fit) {
+  Lift l{name, base, {}, {}, {}};
+  l.model.law = cam::make_table_law(lift, std::numeric_limits<double>::max());
+  const double h = 2 * contact::kPi / static_cast<double>(lift.size());
+  const std::size_t n = lift.size();
+  double dev = 0, cd_max = 0;
+  for (std::size_t k = 0; k < n; ++k) {
+    const double cd = (lift[(k + 1) % n] - 2 * lift[k] + lift[(k + n - 1) % n]) / (h * h);
+    cd_max = std::max(cd_max, std::abs(cd));
+    dev = std::max(dev, std::abs(cam::lift_at(l.model.law, static_cast<double>(k) * h).d2s_m_per_rad2 - cd));
+  }
+  fit = dev / cd_max;
+  l.revolution = cam::run_revolution(l.model);
+  if (l.revolution.status != cam::RevolutionStatus::Complete) throw std::runtime_error(std::string(name) + ": the follower jumps");
+  l.motion = cam::periodic_motion(l.model, l.revolution, dynamics);
+  if (!l.motion.converged) throw std::runtime_error(std::string(name) + ": the roller's motion is not periodic");
+  return l;
+}
+
+// the worn cam's lift on state s: the unworn revolution's lift less the lift loss at each angle step
+std::vector<double> worn_lift_of(const cam::CamLifeSetup& u, const cam::CamWearState& s) {
+  const cam::Revolution& r = u.revolution;
+  const Eigen::ArrayXd loss = cam::lift_loss_m(u.unworn_profiles, u.life.grid, s, cam::lift_loss_samples(r));
+  std::vector<double> lift(r.rows.size());
+  for (std::size_t k = 0; k < r.rows.size(); ++k) lift[k] = r.rows[k].kin.lift.s_m - loss(static_cast<Eigen::Index>(k));
+  return lift;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   if (argc < 2) {
-    std::fprintf(stderr, "usage: cam_held_motion CASE.yaml [DIR]\n");
+    std::fprintf(stderr, "usage: cam_held_motion CASE.yaml [DIR [TABLE.csv] | life]\n");
     return 2;
   }
   spdlog::set_level(spdlog::level::warn);
@@ -189,6 +224,47 @@ int main(int argc, char** argv) {
     const cam::CamWearGrid& g = setup->life.grid;
     std::printf("set-up (unworn periodic revolution): %.2f s CPU\n", cpu_s() - t0);
 
+    // the strips of the held revolution (the life's), for every dissipation below
+    double b_min = std::numeric_limits<double>::infinity();
+    for (const cam::RevolutionRow& row : setup->revolution.rows) b_min = std::min(b_min, row.contact.b_m);
+    const cam::CreepLawSettings fixed =
+        cam::worn_contact_settings(setup->unworn_profiles, g, dynamics.law, 2 * b_min / dynamics.law.grid.ny);
+
+    if (argc > 2 && std::string(argv[2]) == "life") {
+      // two whole lives, fixed depth steps of 1e-6 m, cold evaluations: the life's (the motion held) and one
+      // whose every evaluation solves the revolution and the roller's motion on the worn lift again
+      cam::CamLifeModel model = setup->life;
+      model.stepping.method = "fixed-depth";
+      model.stepping.max_depth_step_m = 1e-6;
+      model.snapshots_revolutions.clear();
+      const auto unworn = [](const cam::CamWearState& st) {
+        return (st.cam_depth_m == 0).all() && (st.roller_depth_m == 0).all();
+      };
+      const cam::DissipationOf held_rate = [&](const cam::CamWearState& st) {
+        if (unworn(st)) return setup->unworn;
+        return dissipation(setup->model, setup->revolution, setup->motion.motion, setup->unworn_profiles, g, st, fixed);
+      };
+      const cam::DissipationOf resolved_rate = [&](const cam::CamWearState& st) {
+        if (unworn(st)) return setup->unworn;
+        double fit = 0;
+        const Lift l = lift_through_spline("worn lift", setup->model, worn_lift_of(*setup, st), dynamics, fit);
+        return dissipation(l.model, l.revolution, l.motion.motion, setup->unworn_profiles, g, st, fixed);
+      };
+      double N_held = 0;
+      for (const auto& [name, rate] : {std::pair<const char*, const cam::DissipationOf*>{"motion held", &held_rate},
+                                       {"motion on the worn lift", &resolved_rate}}) {
+        t0 = cpu_s();
+        const cam::CamLifeResult life = cam::run_cam_life(model, *rate);
+        if (N_held == 0) N_held = life.N;
+        std::printf("%-24s life %.6g revolutions (%+.2f %%), ended by %s, %ld steps, %ld evaluations, dissipated %.6g "
+                    "J, max depth %.4g m; %.1f s CPU\n",
+                    name, life.N, 100 * (life.N / N_held - 1), cam::to_string(life.ended_by).c_str(), life.steps,
+                    life.revolutions_solved, life.energy_J, life.max_depth_m, cpu_s() - t0);
+        if (life.ended_by == cam::CamLifeEnd::Failed) std::printf("  %s\n", life.message.c_str());
+      }
+      return 0;
+    }
+
     // the worn state at the end of the life
     cam::CamWearState s;
     if (argc > 2) {
@@ -196,12 +272,12 @@ int main(int argc, char** argv) {
       s = state_of_folder(argv[2], g, which);
       std::printf("worn state: %s\n", which.c_str());
     } else {
-      cam::CamLifeModel fixed = setup->life;
-      fixed.stepping.method = "fixed-depth";
-      fixed.stepping.max_depth_step_m = 1e-6;
-      fixed.snapshots_revolutions.clear();
+      cam::CamLifeModel model = setup->life;
+      model.stepping.method = "fixed-depth";
+      model.stepping.max_depth_step_m = 1e-6;
+      model.snapshots_revolutions.clear();
       t0 = cpu_s();
-      const cam::CamLifeResult life = cam::run_cam_life(fixed, setup->producer());
+      const cam::CamLifeResult life = cam::run_cam_life(model, setup->producer());
       if (life.ended_by == cam::CamLifeEnd::Failed || life.ended_by == cam::CamLifeEnd::NotRun) {
         std::fprintf(stderr, "the life failed: %s\n", life.message.c_str());
         return 1;
@@ -217,52 +293,23 @@ int main(int argc, char** argv) {
 
     // the unworn and the worn lift at the angle steps, each through a periodic quintic spline
     const Eigen::ArrayXd loss = cam::lift_loss_m(setup->unworn_profiles, g, s, cam::lift_loss_samples(r));
-    std::vector<double> unworn_lift(r.rows.size()), worn_lift(r.rows.size());
-    for (std::size_t k = 0; k < r.rows.size(); ++k) {
-      unworn_lift[k] = r.rows[k].kin.lift.s_m;
-      worn_lift[k] = unworn_lift[k] - loss(static_cast<Eigen::Index>(k));
-    }
-    const double no_refusal = std::numeric_limits<double>::max();  // the fit is reported below, not refused
+    std::vector<double> unworn_lift(r.rows.size());
+    for (std::size_t k = 0; k < r.rows.size(); ++k) unworn_lift[k] = r.rows[k].kin.lift.s_m;
     Lift held{"held (the life's)", setup->model, r, setup->motion, {}};
-    Lift spline{"unworn lift, spline", setup->model, {}, {}, {}};
-    Lift worn{"worn lift, spline", setup->model, {}, {}, {}};
-    spline.model.law = cam::make_table_law(unworn_lift, no_refusal);
-    worn.model.law = cam::make_table_law(worn_lift, no_refusal);
-    for (Lift* l : {&spline, &worn}) {
-      // the spline's s'' at the nodes against the lift's central differences (what make_table_law checks)
-      const double h = 2 * contact::kPi / static_cast<double>(r.rows.size());
-      const std::vector<double>& v = l == &worn ? worn_lift : unworn_lift;
-      const std::size_t n = v.size();
-      double dev = 0, cd_max = 0;
-      for (std::size_t k = 0; k < n; ++k) {
-        const double cd = (v[(k + 1) % n] - 2 * v[k] + v[(k + n - 1) % n]) / (h * h);
-        cd_max = std::max(cd_max, std::abs(cd));
-        dev = std::max(dev, std::abs(cam::lift_at(l->model.law, static_cast<double>(k) * h).d2s_m_per_rad2 - cd));
-      }
-      l->revolution = cam::run_revolution(l->model);
-      if (l->revolution.status != cam::RevolutionStatus::Complete) {
-        std::fprintf(stderr, "%s: the follower jumps\n", l->name);
-        return 1;
-      }
-      l->motion = cam::periodic_motion(l->model, l->revolution, dynamics);
-      if (!l->motion.converged) {
-        std::fprintf(stderr, "%s: the roller's motion is not periodic\n", l->name);
-        return 1;
-      }
+    double fit_unworn = 0, fit_worn = 0;
+    Lift spline = lift_through_spline("unworn lift, spline", setup->model, unworn_lift, dynamics, fit_unworn);
+    Lift worn = lift_through_spline("worn lift, spline", setup->model, worn_lift_of(*setup, s), dynamics, fit_worn);
+    for (const Lift* l : {&spline, &worn})
       std::printf("%s: the spline's s'' departs from the central differences by %.3g of their largest; "
                   "periodic after %d revolutions, sliding at %d of %zu steps\n",
-                  l->name, dev / cd_max, l->motion.revolutions, l->motion.sliding_steps, l->revolution.rows.size());
-    }
+                  l->name, l == &worn ? fit_worn : fit_unworn, l->motion.revolutions, l->motion.sliding_steps,
+                  l->revolution.rows.size());
 
     compare_loads(spline, worn);  // the wear's effect on the kinematics and loads
     compare_loads(held, spline);  // the spline's own error
 
     // the dissipation on each, on the strips of the held revolution (as the life's): on the worn state, and on
     // the unworn surfaces (s = 0, where the semi-Hertzian load equation has one root)
-    double b_min = std::numeric_limits<double>::infinity();
-    for (const cam::RevolutionRow& row : r.rows) b_min = std::min(b_min, row.contact.b_m);
-    const cam::CreepLawSettings fixed =
-        cam::worn_contact_settings(setup->unworn_profiles, g, dynamics.law, 2 * b_min / dynamics.law.grid.ny);
     const cam::CamWearState unworn_surfaces = cam::unworn_state(g);
     for (const cam::CamWearState* state : {static_cast<const cam::CamWearState*>(&s), &unworn_surfaces}) {
       t0 = cpu_s();
