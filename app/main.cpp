@@ -476,6 +476,7 @@ CLI::App* add_run_command(CLI::App& app, RunOptions& opt, CommonOptions& common)
       "holding an unfinished run is not overwritten unless --restart is given. Ctrl-C prints the --resume\n"
       "command. The folder is locked while the run owns it (.rollwear.lock): a second run there exits 1,\n"
       "naming the PID that holds it. A new run removes the previous run's snapshots and report, nothing else.\n"
+      "On a cam case (a cam: section) Ctrl-C or SIGTERM lets the life's current step finish and saves it first.\n"
       "Exit status: 0 success (whatever limit ended the life), 2 bad input, 1 any other failure.");
   sub->add_option("case", opt.case_path, "Case file (YAML) with a wear: section, e.g. cases/paper-wear.yaml")
       ->required();
