@@ -1,5 +1,6 @@
 // `rollwear run` on a cam case (app/cam_run.h).
 #include "app/cam_run.h"
+#include "app/output_folder.h"
 
 #include <signal.h>
 #include <unistd.h>
@@ -56,18 +57,24 @@ void remove_previous_snapshots(const fs::path& dir) {
   if (fs::is_empty(dir / "snapshots", ec)) fs::remove(dir / "snapshots", ec);
 }
 
-// per angle step: the power and energy, and where the contact sits on the cam (its polar angle and radius
-// in the cam's frame: the plot's outline of the cam)
-std::string dissipation_csv(const cam::Revolution& r, const cam::RevolutionDissipation& rev) {
-  std::string out = "# the unworn periodic revolution's dissipation per angle step\n"
-                    "cam_angle_deg,cam_arc_m,rolling_speed_m_per_s,power_W,energy_J,contact_angle_deg,contact_radius_m\n";
+// per angle step: the power and energy, where the contact sits on the cam (its polar angle and radius in the
+// cam's frame: the plot's outline of the cam), and the roller's periodic motion the life holds (its loads,
+// creepage and spin: revolution.csv's are the kinematic roller's)
+std::string dissipation_csv(const cam::Revolution& r, const cam::RevolutionDissipation& rev,
+                            const cam::RollerMotion& motion) {
+  std::string out = "# the unworn periodic revolution's dissipation per angle step, and the roller's periodic motion\n"
+                    "cam_angle_deg,cam_arc_m,rolling_speed_m_per_s,power_W,energy_J,contact_angle_deg,contact_radius_m,"
+                    "normal_load_N,tangential_load_N,xi,slip_speed_m_per_s,roller_omega_rad_per_s\n";
   for (std::size_t k = 0; k < rev.size(); ++k) {
     const cam::AngleDissipation& a = rev[k];
     const cam::CamKinematics& kin = r.rows[k].kin;
+    const cam::RollerAngle& m = motion.angles[k];
     const double P = cam::total_power_W(a);
-    fmt::format_to(std::back_inserter(out), "{:.8g},{:.10g},{:.10g},{:.10g},{:.10g},{:.8g},{:.10g}\n",
+    fmt::format_to(std::back_inserter(out), "{:.8g},{:.10g},{:.10g},{:.10g},{:.10g},{:.8g},{:.10g},{:.10g},{:.10g},{:.10g},"
+                   "{:.10g},{:.10g}\n",
                    a.theta_rad * cam::kDegPerRad, a.cam_arc_m, a.rolling_speed_m_per_s, P, P * a.duration_s,
-                   kin.contact_angle_rad * cam::kDegPerRad, std::hypot(kin.contact_x_m, kin.contact_y_m));
+                   kin.contact_angle_rad * cam::kDegPerRad, std::hypot(kin.contact_x_m, kin.contact_y_m), m.normal_N,
+                   m.tangential_N, m.xi, m.slip_speed_m_per_s, m.omega_r_rad_per_s);
   }
   return out;
 }
@@ -159,6 +166,8 @@ int run_cam_life_command(const std::string& case_path, const std::string& output
                        : !c.output_directory.empty()    ? fs::path(c.output_directory)
                                                         : fs::path("out") / c.name;
 
+  const OutputLock lock(dir);  // one run in the folder at a time, as a wear case's (app/output_folder.h)
+
   // where the life starts: a checkpoint (refused unless it is this case's), or the unworn state; checked
   // before the revolution is set up, so that a refusal costs nothing
   const fs::path checkpoint_path = dir / "checkpoint.txt", life_path = dir / "life.csv";
@@ -177,6 +186,15 @@ int run_cam_life_command(const std::string& case_path, const std::string& output
     throw contact::CaseError(dir.string() + " holds an unfinished run (checkpoint.txt): continue it with --resume, "
                              "or start afresh with --restart");
   }
+
+  // a signal before the life's first accepted step ends the process at once (a resumed run's checkpoint stays)
+  const std::string resume_line = fmt::format(
+      "\nrollwear: interrupted; the run continues from its last checkpoint ({}) with: rollwear run {} -o {} --resume\n",
+      checkpoint_path.string(), case_path, dir.string());
+  interrupted::say_on_signal(resume ? resume_line
+                                    : fmt::format("\nrollwear: interrupted before the life's first step; nothing to "
+                                                  "resume: run rollwear run {} -o {}{} again\n", case_path, dir.string(),
+                                                  restart ? " --restart" : ""));
 
   // the unworn periodic revolution: kinematics, loads, the roller's motion, the dissipation
   std::unique_ptr<cam::CamLifeSetup> setup;
@@ -227,7 +245,7 @@ int run_cam_life_command(const std::string& case_path, const std::string& output
                "0,0,0,0,0,0\n";
   }
   contact::write_files_atomic({{dir / "revolution.csv", cam::revolution_csv(r)},
-                               {dir / "dissipation.csv", dissipation_csv(r, unworn_rev)}});
+                               {dir / "dissipation.csv", dissipation_csv(r, unworn_rev, motion.motion)}});
 
   // life.csv and the checkpoint are written together, life.csv renamed first: it never lags the checkpoint
   int snapshots = resume ? cp.snapshots_written : 0;
@@ -239,6 +257,7 @@ int run_cam_life_command(const std::string& case_path, const std::string& output
       files.push_back({checkpoint_path, wear::checkpoint_text(to_checkpoint(fingerprint, last, snapshots,
                                                                       earlier_cpu_s + cpu_seconds() - cpu0))});
     contact::write_files_atomic(files);
+    if (last.x.size() > 0) interrupted::say_on_signal(resume_line);  // a second signal: resume from here
   };
   const auto is_snapshot_revolution = [&](double N) {
     return std::find(life_model.snapshots_revolutions.begin(), life_model.snapshots_revolutions.end(), N) !=
@@ -274,7 +293,22 @@ int run_cam_life_command(const std::string& case_path, const std::string& output
     if (!quiet) spdlog::info("step {}: N {:.6g}, max depth {:.4g} m, lift loss {:.4g} m", step.step, step.N,
                              step.max_depth_m, step.lift_loss.max_m);
   };
+  // Ctrl-C or SIGTERM during the life: the life stops after its current step (not at a snapshot revolution,
+  // whose snapshot goes with that step's checkpoint), saves it, and the process ends as the wear run's does
+  // on a signal, printing the --resume command; a second signal ends it at once
+  hooks.stop_after = [&](const cam::CamLifeStep& step) {
+    return interrupted::requested_signal() != 0 && !is_snapshot_revolution(step.N);
+  };
+  interrupted::defer_next_signal(
+      "\nrollwear: interrupted; the life stops after its current step and saves it (a second signal stops at once)\n");
   const cam::CamLifeResult life = cam::run_cam_life(life_model, producer, hooks, start);
+  interrupted::stop_deferring();
+  if (life.ended_by == cam::CamLifeEnd::Stopped) {
+    save({});
+    spdlog::info("run: stopped after step {} at cam revolution {:.6g}; its state is saved in {}", last.steps, last.N,
+                 checkpoint_path.string());
+    interrupted::end_by(interrupted::requested_signal());
+  }
   const double cpu = earlier_cpu_s + cpu_seconds() - cpu0;
 
   const double hours = life.N * 2 * contact::kPi / m.omega_rad_per_s / 3600;

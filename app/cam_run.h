@@ -3,7 +3,8 @@
 // over cam revolutions until a limit of cam.wear ends the life (cam/cam_life.h). Writes into the output
 // folder, each file atomically:
 //   revolution.csv                      the unworn revolution, per angle (cam/revolution.h)
-//   dissipation.csv                     per angle: cam_angle_deg, cam_arc_m, the step's power (W) and energy (J)
+//   dissipation.csv                     per angle: cam_angle_deg, cam_arc_m, the step's power (W) and energy (J),
+//                                       the roller's periodic motion (F_n, F_t, xi, slip speed, spin)
 //   life.csv                            per accepted step: revolutions, max_depth_m, lift_loss_m, ...
 //   snapshots/wear_map_KKKK.csv         the track's wear map (cam/cam_wear.h) at the start, each snapshot, the end
 //   snapshots/roller_wear_KKKK.csv      the roller's worn depth there
@@ -12,7 +13,8 @@
 // A new run removes the previous run's snapshot files of these names, its report and its temporaries
 // (NAME.tmp.PID of these names, PID gone), nothing else. A run killed part-way continues with resume
 // (docs/cam-follower.md §13, "Checkpoint and resume"); a folder holding an unfinished run is not started
-// afresh without restart.
+// afresh without restart. The folder is locked while the run owns it, and SIGINT or SIGTERM during the life
+// stops it after its current step, saved, with the --resume command printed (app/output_folder.h).
 #pragma once
 
 #include <string>

@@ -41,6 +41,7 @@
 #include "app/plot.h"
 #include "app/sweep_command.h"
 #include "app/cam_run.h"
+#include "app/output_folder.h"
 #include "cam/cam_case.h"
 #include "cam/cam_run.h"
 #include "cam/revolution.h"
@@ -114,128 +115,8 @@ std::filesystem::path output_directory(const std::string& option, const ContactC
   return std::filesystem::path("out") / c.name;
 }
 
-// Temporary files of the streamed output, removed if the run is interrupted (SIGINT, SIGTERM,
-// SIGHUP); the handler only unlinks (async-signal-safe) and re-raises the signal.
-// A message may go with them (the wear run's "continue with --resume"); the handler writes it with
-// write(2), also async-signal-safe.
-namespace interrupted {
-constexpr int kMaxFiles = 4;
-char g_paths[kMaxFiles][4096];
-volatile std::sig_atomic_t g_count = 0;
-char g_lock[4096];  // the output folder's lock file (OutputLock), "" when none
-char g_message[8192];
-volatile std::sig_atomic_t g_message_size = 0;
-
-void on_signal(int sig) {
-  for (int k = 0; k < g_count; ++k) ::unlink(g_paths[k]);
-  if (g_lock[0] != '\0') ::unlink(g_lock);
-  if (g_message_size > 0 && ::write(STDERR_FILENO, g_message, static_cast<std::size_t>(g_message_size)) < 0) {
-  }
-  std::signal(sig, SIG_DFL);
-  std::raise(sig);
-}
-
-void install() {
-  static bool installed = false;
-  if (installed) return;
-  for (const int sig : {SIGINT, SIGTERM, SIGHUP}) std::signal(sig, on_signal);
-  installed = true;
-}
-
-void remove_on_signal(const std::filesystem::path& tmp) {
-  const std::string p = tmp.string();
-  if (g_count >= kMaxFiles || p.size() >= sizeof g_paths[0]) return;
-  std::memcpy(g_paths[g_count], p.c_str(), p.size() + 1);
-  install();
-  g_count = g_count + 1;
-}
-
-// the line printed on stderr when a signal ends the process (cut to the buffer)
-void say_on_signal(const std::string& line) {
-  const std::size_t n = std::min(line.size(), sizeof g_message);
-  g_message_size = 0;
-  std::memcpy(g_message, line.data(), n);
-  g_message_size = static_cast<std::sig_atomic_t>(n);
-  install();
-}
-
-// the lock file, removed on a signal too (the lock itself goes with the process)
-void remove_lock_on_signal(const std::filesystem::path& lock) {
-  const std::string p = lock.string();
-  if (p.size() >= sizeof g_lock) return;
-  std::memcpy(g_lock, p.c_str(), p.size() + 1);
-  install();
-}
-void forget_lock() { g_lock[0] = '\0'; }
-
-void forget() { g_count = 0; }  // the files were renamed into place
-}  // namespace interrupted
-
-// ---- the output folder: one run at a time, and only the program's own files removed -------------------
-
-// The folder locked while a command writes into it: flock on DIR/.rollwear.lock, which holds the owner's
-// PID. A second command on the same folder fails (exit 1) naming the folder and that PID. The lock goes
-// with the process however it ends; the file is removed when the command ends normally or by an error.
-class OutputLock {
- public:
-  explicit OutputLock(const std::filesystem::path& dir) : path_(dir / ".rollwear.lock") {
-    std::error_code ec;
-    created_ = !std::filesystem::exists(dir, ec);
-    std::filesystem::create_directories(dir, ec);
-    if (ec) throw std::runtime_error(fmt::format("cannot create the output folder {}: {}", dir.string(), ec.message()));
-    dir_ = dir;
-    for (int attempt = 0; attempt < 100; ++attempt) {
-      fd_ = ::open(path_.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
-      if (fd_ < 0) throw std::runtime_error(fmt::format("{}: cannot create the lock file: {}", path_.string(), std::strerror(errno)));
-      if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
-        const int err = errno;
-        const std::string holder = holder_pid();
-        ::close(fd_);
-        fd_ = -1;
-        if (err == EWOULDBLOCK)
-          throw std::runtime_error(fmt::format(
-              "{} is in use by another rollwear run (PID {}, lock file {}); wait for it to end, or give another "
-              "output folder with -o", dir.string(), holder.empty() ? "unknown" : holder, path_.string()));
-        throw std::runtime_error(fmt::format("{}: cannot lock: {}", path_.string(), std::strerror(err)));
-      }
-      // the file locked must still be the one at the path (a finishing run removes it after unlocking)
-      struct stat held {}, named {};
-      if (::fstat(fd_, &held) == 0 && ::stat(path_.c_str(), &named) == 0 && held.st_ino == named.st_ino &&
-          held.st_dev == named.st_dev) {
-        const std::string pid = std::to_string(::getpid()) + "\n";
-        if (::ftruncate(fd_, 0) != 0 || ::pwrite(fd_, pid.data(), pid.size(), 0) != static_cast<ssize_t>(pid.size()))
-          spdlog::debug("{}: cannot write the PID", path_.string());
-        interrupted::remove_lock_on_signal(path_);
-        return;
-      }
-      ::close(fd_);
-      fd_ = -1;
-    }
-    throw std::runtime_error(fmt::format("{}: cannot lock (the lock file keeps being replaced)", path_.string()));
-  }
-  OutputLock(const OutputLock&) = delete;
-  OutputLock& operator=(const OutputLock&) = delete;
-  ~OutputLock() {
-    if (fd_ < 0) return;
-    std::error_code ec;
-    interrupted::forget_lock();
-    std::filesystem::remove(path_, ec);  // while still locked: a waiting run then retries on a new file
-    ::close(fd_);
-    if (created_ && std::filesystem::is_empty(dir_, ec)) std::filesystem::remove(dir_, ec);  // refused before writing
-  }
-
- private:
-  std::string holder_pid() const {
-    std::ifstream in(path_);
-    std::string pid;
-    in >> pid;
-    return pid.size() <= 20 && pid.find_first_not_of("0123456789") == std::string::npos ? pid : std::string();
-  }
-
-  std::filesystem::path path_, dir_;
-  int fd_ = -1;
-  bool created_ = false;
-};
+using app::OutputLock;  // app/output_folder.h
+namespace interrupted = app::interrupted;
 
 // The program's own file names in an output folder: what it may delete there, and nothing else.
 const std::regex& own_output_name() {
@@ -595,6 +476,7 @@ CLI::App* add_run_command(CLI::App& app, RunOptions& opt, CommonOptions& common)
       "holding an unfinished run is not overwritten unless --restart is given. Ctrl-C prints the --resume\n"
       "command. The folder is locked while the run owns it (.rollwear.lock): a second run there exits 1,\n"
       "naming the PID that holds it. A new run removes the previous run's snapshots and report, nothing else.\n"
+      "On a cam case (a cam: section) Ctrl-C or SIGTERM lets the life's current step finish and saves it first.\n"
       "Exit status: 0 success (whatever limit ended the life), 2 bad input, 1 any other failure.");
   sub->add_option("case", opt.case_path, "Case file (YAML) with a wear: section, e.g. cases/paper-wear.yaml")
       ->required();

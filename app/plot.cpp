@@ -942,7 +942,7 @@ std::vector<fs::path> draw_cam(const fs::path& dir, const fs::path& plots, std::
                          fmt::format("{}: the cam track's wear depth (µm) at {}", name, revolutions_label(map_revolutions))) +
             "set view map\nset pm3d map corners2color c1\nset palette defined (0 '#ffffff', 1 '#e9a03b', 2 '#c0392b', 3 '#3b0f0f')\n"
             "set xlabel 'cam angle at which the contact passes (deg)'\nset ylabel 'across the track y (mm)'\n"
-            "set xrange [0:360]\nset xtics 60\nset autoscale yfix\nset cblabel 'depth (µm)'\nunset key\nunset grid\n"
+            "set xrange [0:360]\nset xtics 60\nset autoscale yfix\nset cbrange [0:*]\nset cblabel 'depth (µm)'\nunset key\nunset grid\n"
             "splot $map using 1:2:3 with pm3d\n" +
             kFigureEnd;
   script += figure_start(picture("cam_worn.png"),

@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/held_lock.h"
 #include "tests/temp_dir.h"
 #include <fcntl.h>
 #include <sys/file.h>
@@ -1081,12 +1082,9 @@ TEST_F(CommandLine, RunRefusesAFolderAnotherRunHolds) {
   const fs::path c = small_wear_case(dir_, "small.yaml");
   const fs::path out = dir_ / "w";
   fs::create_directories(out);
-  // this test process plays the other run: it holds the lock with its PID in the file
-  const int fd = ::open((out / ".rollwear.lock").c_str(), O_RDWR | O_CREAT, 0644);
-  ASSERT_GE(fd, 0);
-  ASSERT_EQ(::flock(fd, LOCK_EX | LOCK_NB), 0);
-  const std::string pid = std::to_string(::getpid());
-  ASSERT_EQ(::write(fd, pid.data(), pid.size()), static_cast<ssize_t>(pid.size()));
+  rollwear_test::HeldLock other(out);  // this test process plays the other run
+  ASSERT_TRUE(other.held());
+  const std::string pid = other.pid();
   for (const std::string& command : {std::string("run"), std::string("run --restart")}) {
     const ProcessResult r = rollwear(command + " " + quoted(c) + " -o " + quoted(out), dir_);
     EXPECT_NE(r.exit_code, 0) << command;
@@ -1100,7 +1098,7 @@ TEST_F(CommandLine, RunRefusesAFolderAnotherRunHolds) {
   const ProcessResult t = rollwear("transient " + quoted(startup) + " -o " + quoted(out), dir_);
   EXPECT_NE(t.exit_code, 0);
   EXPECT_NE(t.err.find("(PID " + pid + ","), std::string::npos) << t.err;
-  ::close(fd);
+  other.release();
   // released: the folder is free again
   EXPECT_EQ(rollwear("run " + quoted(c) + " -o " + quoted(out) + " --log-level error", dir_).exit_code, 0);
 }

@@ -1,0 +1,52 @@
+// The output folder of a command that writes one: one run at a time (OutputLock), and what a signal
+// (SIGINT, SIGTERM, SIGHUP) leaves there (interrupted::). Shared by the wear run (app/main.cpp) and the
+// cam run (app/cam_run.cpp), so that both hold the folder and end on a signal the same way.
+#pragma once
+
+#include <filesystem>
+#include <string>
+
+namespace app {
+
+// Temporary files of the streamed output, removed if the run is interrupted (SIGINT, SIGTERM, SIGHUP); the
+// handler only unlinks (async-signal-safe) and re-raises the signal. A message may go with them (the wear
+// run's "continue with --resume"); the handler writes it with write(2), also async-signal-safe.
+namespace interrupted {
+void remove_on_signal(const std::filesystem::path& tmp);  // at most 4 files
+void forget();                                            // the files were renamed into place
+// the line printed on stderr when a signal ends the process (cut to 8 kB)
+void say_on_signal(const std::string& line);
+// the lock file, removed on a signal too (the lock itself goes with the process)
+void remove_lock_on_signal(const std::filesystem::path& lock);
+void forget_lock();
+
+// A run that can stop cleanly between steps (the cam life): after defer_next_signal the next signal only
+// writes note on stderr and is recorded (requested_signal); a second one ends the process at once as
+// above. The run then saves its state and calls end_by(requested_signal()), which ends the process as the
+// signal would have (temporaries and lock file removed, the message printed, killed by that signal).
+void defer_next_signal(const std::string& note);
+void stop_deferring();      // signals end the process at once again (a recorded one stays recorded)
+int requested_signal();     // the signal recorded while deferring, 0 when none
+[[noreturn]] void end_by(int sig);
+}  // namespace interrupted
+
+// The folder locked while a command writes into it: flock on DIR/.rollwear.lock, which holds the owner's
+// PID. A second command on the same folder fails (std::runtime_error: exit 1) naming the folder and that
+// PID. The folder is created if missing (and removed again, if still empty, when the lock goes). The lock
+// goes with the process however it ends; the file is removed when the command ends normally or by an error.
+class OutputLock {
+ public:
+  explicit OutputLock(const std::filesystem::path& dir);
+  OutputLock(const OutputLock&) = delete;
+  OutputLock& operator=(const OutputLock&) = delete;
+  ~OutputLock();
+
+ private:
+  std::string holder_pid() const;
+
+  std::filesystem::path path_, dir_;
+  int fd_ = -1;
+  bool created_ = false;
+};
+
+}  // namespace app
