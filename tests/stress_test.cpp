@@ -1158,7 +1158,7 @@ LifeCheck run_checked_life(const wear::WearCase& c, const std::string& what, Wea
                            bool continuous_rule = false) {
   LifeCheck out;
   wear::WearModel m = wear::make_wear_model(c);
-  m.normal_options.continuous_rule = continuous_rule;
+  if (continuous_rule) m.normal_options.continuous_rule = true;  // else the model's own choice
   const double kE = k_E_of(m);
   wear::WearCache cache;
   wear::LifeHooks hooks;
