@@ -1116,6 +1116,10 @@ struct LifeCheck {
   int worst_curvature_changes = 0;  // the old metric, printed for comparison
   double worst_volume = 0;
   double effective_rtol = 0;      // rtol + atol / max depth at the end (adaptive); inf for the fixed modes
+  // the largest change of the contact's dissipated power between consecutive accepted steps whose worn depths
+  // differ by at most kNearbyStateFraction of the largest depth, relative to the larger of the two (finding 14)
+  double worst_power_jump = 0;
+  double power_jump_N = 0;        // where it was
 };
 
 // sign changes of the worn depth's curvature (the slopes' differences), counting curvatures above 1e-3
@@ -1137,25 +1141,47 @@ int curvature_sign_changes(const Eigen::ArrayXd& y, const Eigen::ArrayXd& h) {
   return changes;
 }
 
+// Finding 14's measure: the dissipated power is a continuous function of the worn profile (the half-space's
+// contact moved by 1.5e-5 of its approach between two states 1.2e-8 m apart in life 18, the semi-Hertzian one
+// by 5 %), so between two accepted states this close (a thousandth of the largest depth) it changes by little:
+// at most 2.9 % in life 18 with the continuous rule, 2.8-fold and 13-fold with the rule chosen per solve.
+constexpr double kNearbyStateFraction = 1e-3;
+constexpr double kMaxPowerJump = 0.1;  // between 2.9 % (continuous rule) and 65 % (a rule switch, life 18)
+
 // Runs a life and checks every step: finite, non-negative depths, volume = k_E x energy. A life ended by
 // a contact the strips cannot resolve (finding 7) must end with status failed, its message naming the
 // cause, at its last accepted step, with a warning; it is counted, not failed. The roughness is checked
 // by the caller (check_roughness).
-LifeCheck run_checked_life(const wear::WearCase& c, const std::string& what, WearFindings& found) {
+// continuous_rule: every semi-Hertzian solve by its continuous rule (SemiHertzOptions::continuous_rule), the
+// remedy finding 14 measures.
+LifeCheck run_checked_life(const wear::WearCase& c, const std::string& what, WearFindings& found,
+                           bool continuous_rule = false) {
   LifeCheck out;
-  const wear::WearModel m = wear::make_wear_model(c);
+  wear::WearModel m = wear::make_wear_model(c);
+  if (continuous_rule) m.normal_options.continuous_rule = true;  // else the model's own choice
   const double kE = k_E_of(m);
   wear::WearCache cache;
   wear::LifeHooks hooks;
   std::string bad;
   double last_N = 0;
   Eigen::VectorXd last_state = wear::initial_state(m);
+  double last_power_W = -1;
   hooks.on_step = [&](const wear::LifeStep& s) {
     ++out.steps;
     const Eigen::VectorXd& state = *s.state;
+    const Eigen::ArrayXd h = state.head(m.n1).array();
+    if (last_power_W >= 0 && h.size() > 0 &&
+        (h - last_state.head(m.n1).array()).abs().maxCoeff() <= kNearbyStateFraction * h.abs().maxCoeff()) {
+      const double larger = std::max(s.contact.power_W, last_power_W);
+      const double jump = larger > 0 ? std::abs(s.contact.power_W - last_power_W) / larger : 0.0;
+      if (jump > out.worst_power_jump) {
+        out.worst_power_jump = jump;
+        out.power_jump_N = s.N;
+      }
+    }
+    last_power_W = s.contact.power_W;
     last_N = s.N;
     last_state = state;
-    const Eigen::ArrayXd h = state.head(m.n1).array();
     if (!state.allFinite()) {
       bad = fmt::format("step {} at N {:.6g}: the state is not finite", s.step, s.N);
       return false;
@@ -1236,16 +1262,19 @@ void check_roughness(const LifeCheck& lc, const std::string& what, WearFindings&
 }
 
 // Finding 14, kept until fixed (StressWear.DISABLED_HeavySpinLifeCase18StaysSmooth): with the default seed, life 18
-// (a crowned roller under 134 kN with spin, 24 x 16 cells, rtol 1.8e-4) had 5 reversals of its depth by a tenth of its
-// largest (the limit) before the semi-Hertzian approach search polished its roots to 1e-12 of ln F, and has 7 since
-// with tangential: consistent and 9 with the default relaxed model; counted and printed as a finding here, not failed.
+// (a crowned roller under 134 kN with spin, 24 x 16 cells, rtol 1.8e-4) has 9 reversals of its depth by a tenth of its
+// largest (7 with tangential: consistent; limit 5): its wear rate jumps where the semi-Hertzian solve switches between
+// its self-consistent and continuous rules (docs/stress-suite.md, finding 14; not the root polish: 9 and 7 with it
+// undone too); counted and printed as a finding here, not failed.
 constexpr std::uint64_t kOpenRoughTightLife = 5818732027616048381ull;
 
 TEST(StressWear, RandomLivesConserveVolumeAndKeepDepthsSmooth) {
   CaseLoop loop(24);
   WearFindings found;
   double worst_volume = 0;
-  int worst_reversals = 0, worst_changes = 0, smooth_asserted = 0;
+  int worst_reversals = 0, worst_changes = 0, smooth_asserted = 0, power_jumps = 0;
+  double worst_power_jump = 0;
+  std::string worst_power_jump_life;
   long steps = 0;
   std::map<std::string, int> ended;
   loop.run([&](Rng& r, const std::string& tag) {
@@ -1258,6 +1287,16 @@ TEST(StressWear, RandomLivesConserveVolumeAndKeepDepthsSmooth) {
     ++ended[wear::to_string(lc.life.ended_by)];
     worst_volume = std::max(worst_volume, lc.worst_volume);
     worst_changes = std::max(worst_changes, lc.worst_curvature_changes);
+    if (lc.worst_power_jump > worst_power_jump) {
+      worst_power_jump = lc.worst_power_jump;
+      worst_power_jump_life = tag.substr(0, tag.find(']') + 1);
+    }
+    if (lc.worst_power_jump > kMaxPowerJump) {
+      ++power_jumps;
+      std::printf("    finding 14 (power jump), %.3g of the power at N %.6g, %d reversals, ended by %s: %s\n",
+                  lc.worst_power_jump, lc.power_jump_N, lc.worst_reversals, wear::to_string(lc.life.ended_by).c_str(),
+                  what.substr(0, what.find(']') + 1).c_str());
+    }
     // max_steps is a budget the case sets (2000 here), an honest end: counted in 'ended by'
     if (r.seed == kOpenRoughTightLife && lc.worst_reversals > kMaxDepthReversals) {
       std::printf("    finding 14 (rough tight life), %d reversals at effective rtol %.3g: %s\n", lc.worst_reversals,
@@ -1276,6 +1315,9 @@ TEST(StressWear, RandomLivesConserveVolumeAndKeepDepthsSmooth) {
               steps, endings.c_str(), worst_volume, worst_changes);
   std::printf("  %d lives at an effective rtol <= %.0e: most depth reversals %d (limit %d)\n", smooth_asserted,
               kSmoothEffectiveRtol, worst_reversals, kMaxDepthReversals);
+  std::printf("  %d lives whose dissipated power jumps by more than %.0f %% between accepted states within %.0e of the "
+              "depth (finding 14); the largest jump %.3g, %s\n",
+              power_jumps, 100 * kMaxPowerJump, kNearbyStateFraction, worst_power_jump, worst_power_jump_life.c_str());
   print_wear_findings(found);
 }
 
@@ -1424,14 +1466,44 @@ TEST(StressWear, DISABLED_WornProfilesStaySmooth) {
   }
 }
 
+void print_life_summary(const LifeCheck& lc) {
+  std::printf("  %d reversals, largest power jump %.3g (at N %.6g), ended by %s at N %.6g after %ld steps\n",
+              lc.worst_reversals, lc.worst_power_jump, lc.power_jump_N, wear::to_string(lc.life.ended_by).c_str(),
+              lc.life.N, lc.steps);
+}
+
 // Finding 14, kept until fixed (--gtest_also_run_disabled_tests): life 18 of
-// StressWear.RandomLivesConserveVolumeAndKeepDepthsSmooth (default seed) at its own tolerances.
+// StressWear.RandomLivesConserveVolumeAndKeepDepthsSmooth (default seed) at its own tolerances. The semi-Hertzian
+// solve takes its self-consistent rule unless that rule's F(delta) jumps across the load, then its continuous
+// rule; from 2e6 revolutions on, accepted states 1e-8 m apart take different rules, whose contacts differ (a
+// 2.12 against 1.56 mm, extent +-6.53 against +-7.48 mm) and dissipate 2.8 to 13 times apart. The rate jumps
+// back and forth, the step control chatters (576 rule switches in 2000 steps), the life stops at max_steps
+// after 1.5e7 of its 1e9 revolutions, rough (9 reversals; 7 or 9 as load_rtol, rtol or the tangential model
+// change, 3 to 9 with the grid). Fixed when the life is smooth, its power continuous, and it ends before max_steps.
 TEST(StressWear, DISABLED_HeavySpinLifeCase18StaysSmooth) {
   std::string what;
   const wear::WearCase c = random_life_of_seed(kOpenRoughTightLife, what);
   WearFindings found;
   const LifeCheck lc = run_checked_life(c, what, found);
   EXPECT_LE(lc.worst_reversals, kMaxDepthReversals) << what;
+  EXPECT_LE(lc.worst_power_jump, kMaxPowerJump) << what << ": at N " << lc.power_jump_N;
+  EXPECT_NE(lc.life.ended_by, wear::LifeEnd::MaxSteps) << what << ": " << lc.life.message;
+  print_life_summary(lc);
+}
+
+// Finding 14's remedy, measured: the same life with every semi-Hertzian solve by the continuous rule
+// (SemiHertzOptions::continuous_rule, as the cam's life takes it) is smooth (3 reversals: a band worn at both
+// edges), its power changes by at most 2.9 % between nearby accepted states, and it runs to its edge limit
+// (1.25e8 revolutions, 1232 steps). 3.1 s of CPU.
+TEST(StressWear, HeavySpinLifeCase18IsSmoothByTheContinuousRule) {
+  std::string what;
+  const wear::WearCase c = random_life_of_seed(kOpenRoughTightLife, what);
+  WearFindings found;
+  const LifeCheck lc = run_checked_life(c, what + ", continuous rule", found, true);
+  EXPECT_LE(lc.worst_reversals, kMaxDepthReversals) << what;
+  EXPECT_LE(lc.worst_power_jump, kMaxPowerJump) << what << ": at N " << lc.power_jump_N;
+  EXPECT_EQ(lc.life.ended_by, wear::LifeEnd::Edge) << what << ": " << lc.life.message;
+  print_life_summary(lc);
 }
 
 // Finding 13's open part, kept until fixed (--gtest_also_run_disabled_tests): with seed 31415, case 3 of
