@@ -261,10 +261,10 @@ int main(int argc, char** argv) {
                   {"warm starts", {false, true}},
                   {"both (the life's)", {true, true}},
                   {"both, skip 2 (0.01)", {true, true, true, 2, 0.01}},
-                  {"both, skip 2 (0.1)", {true, true, true, 2, 0.1}},
                   {"both, skip 2 (0.2)", {true, true, true, 2, 0.2}},
-                  {"both, skip 2 (0.5)", {true, true, true, 2, 0.5}},
                   {"both, skip 2 (1: always)", {true, true, true, 2, 1}},
+                  {"both, skip 4 (0.2)", {true, true, true, 4, 0.2}},
+                  {"both, skip 4 (0.5)", {true, true, true, 4, 0.5}},
                   {"both, skip 4 (1: always)", {true, true, true, 4, 1}}};
   for (const auto& v : variants) {
     if (life_only && !(v.o.share_contacts && v.o.warm_start && v.o.skip_stride == 1)) continue;
