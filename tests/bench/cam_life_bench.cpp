@@ -1,10 +1,13 @@
 // The cost of a cam's worn revolution and of its life (docs/cam-follower.md §15). A plain program:
 //   cam_life_bench CASE.yaml [worn_depth_m = 8e-6] [repeats = 5] [life-only]
+//   cam_life_bench CASE.yaml map REFERENCE.csv ANGLE_STEPS STRIDE POWER_RTOL [ARC_CELLS]   a map's error (below)
 //   cam_life_bench CASE.yaml life [variants = all [load_rtol|default [check_every]]]   the case's whole life (its own
-//       stepping) with each of the savings on or off: life, evaluations, CPU; with check_every, every check_every-th
+//       stepping) with each of the savings on or off ("skip": both and the case's skip): life, evaluations, CPU; with
+//       check_every, every check_every-th
 //       evaluation compared with the cold revolution on the same state (angles on another root counted)
 // 1. sets up the case's life (the unworn periodic revolution), CPU timed;
-// 2. wears the case to worn_depth_m (fixed-depth steps of 1e-6 m, the fast producer): a worn state;
+// 2. wears the case to worn_depth_m (Euler's fixed-depth steps of 1e-6 m, the producer with shared contacts and
+//    warm starts, no skip, whatever the case's stepping and skip): a worn state;
 // 3. on that state, CPU per revolution (median of the repeats) of worn_revolution_dissipation (cold: every
 //    angle solved from scratch, the reference) and of WornRevolution with each saving on or off, a warm
 //    evaluation taken on the state scaled by 1 + 1e-3 after one on the state itself (as the life's next
@@ -171,8 +174,11 @@ int main(int argc, char** argv) {
     const struct {
       const char* name;
       cam::WornRevolutionOptions o;
-    } variants[] = {
-        {"neither", {false, false}}, {"shared", {true, false}}, {"warm", {false, true}}, {"both", {true, true}}};
+    } variants[] = {{"neither", {false, false}},
+                    {"shared", {true, false}},
+                    {"warm", {false, true}},
+                    {"both", {true, true}},
+                    {"skip", {true, true, true, c.wear->skip_stride, c.wear->skip_power_rtol}}};  // the case's skip
     for (const auto& v : variants) {
       if (which != "all" && which != v.name) continue;
       cam::WornRevolution ev(setup->model, setup->revolution, setup->motion.motion, setup->unworn_profiles,
@@ -221,9 +227,15 @@ int main(int argc, char** argv) {
   to_depth.max_lift_loss_m = 0;
   to_depth.stepping.method = "fixed-depth";
   to_depth.stepping.max_depth_step_m = 1e-6;
+  to_depth.scheme = wear::IntegratorOptions::Scheme::Euler;  // the bench's state whatever the case's stepping and skip
   to_depth.snapshots_revolutions.clear();
+  cam::WornRevolution to_depth_evaluator(setup->model, setup->revolution, setup->motion.motion, setup->unworn_profiles,
+                                         setup->life.grid, setup->dynamics.law);
   t0 = cpu_s();
-  const cam::CamLifeResult worn = cam::run_cam_life(to_depth, setup->producer());
+  const cam::CamLifeResult worn = cam::run_cam_life(to_depth, [&](const cam::CamWearState& st) {
+    if ((st.cam_depth_m == 0).all() && (st.roller_depth_m == 0).all()) return setup->unworn;
+    return to_depth_evaluator(st);
+  });
   std::printf("worn to %.3g m in %ld steps (%ld revolutions solved): %.3f s CPU\n", worn.max_depth_m, worn.steps,
               worn.revolutions_solved, cpu_s() - t0);
   const cam::CamWearState& s = worn.state;
