@@ -186,9 +186,12 @@ int main(int argc, char** argv) {
       long checks = 0, checks_differing = 0, other_total = 0;
       int other_max = 0;
       double power_max = 0, energy_max = 0;
+      double revolution_cpu = 0;  // in the worn revolutions themselves
       const cam::DissipationOf producer = [&](const cam::CamWearState& st) {
         if ((st.cam_depth_m == 0).all() && (st.roller_depth_m == 0).all()) return setup->unworn;
+        const double t_rev = cpu_s();
         cam::RevolutionDissipation d = ev(st);
+        revolution_cpu += cpu_s() - t_rev;
         if (check_every > 0 && ev.stats().evaluations % check_every == 0) {
           const cam::RevolutionDissipation cold =
               cam::worn_revolution_dissipation(setup->model, setup->revolution, setup->motion.motion,
@@ -208,9 +211,11 @@ int main(int argc, char** argv) {
       const double cpu = cpu_s() - t0;
       const cam::WornRevolutionStats& st = ev.stats();
       std::printf("%-8s life %.6g revolutions (%s), %ld steps, %ld evaluations, %.2f s CPU, %.1f ms/revolution; "
-                  "per revolution %.1f normal solves, %.1f F(delta), %.1f creep law; %ld cold retries\n",
+                  "%.1f ms of it in the worn revolution; per revolution %.1f normal solves, %.1f F(delta), %.1f creep law; "
+                  "%ld cold retries\n",
                   v.name, life.N, cam::to_string(life.ended_by).c_str(), life.steps, life.revolutions_solved, cpu,
                   1e3 * cpu / std::max<long>(1, life.revolutions_solved),
+                  1e3 * revolution_cpu / std::max<long>(1, st.evaluations),
                   static_cast<double>(st.contacts_solved) / std::max<long>(1, st.evaluations),
                   static_cast<double>(st.approach_evaluations) / std::max<long>(1, st.evaluations),
                   static_cast<double>(st.creep_evaluations) / std::max<long>(1, st.evaluations), st.cold_retries);
