@@ -20,6 +20,11 @@
 //     where it crosses more than once (worn gaps), the warm search may keep another root than the cold one
 //     (measured in docs/cam-follower.md §15). A warm-started solve that does not converge is solved again
 //     from the solver's own start.
+//   - The skip (WornRevolutionOptions::skip_stride > 1; cam.wear.skip): only every stride-th angle step is
+//     computed at first; the steps between two computed ones are interpolated (strip powers, pressures and
+//     the next evaluation's warm starts linear in the angle step) where the two's strip powers agree to
+//     skip_power_rtol of the largest, otherwise the middle step is computed and each half looked at again.
+//     Its error against every step solved is measured in docs/cam-follower.md §15.
 // Not thread-safe (the warm starts are state); one per life.
 #pragma once
 
