@@ -216,8 +216,11 @@ std::unique_ptr<CamLifeSetup> set_up_cam_life(const std::string& name, const Cam
   u.unworn_profiles = roller_and_track_profiles(u.model.bodies);
   u.life = make_cam_life_model(name, spec, u.model.mu, u.unworn_profiles, u.model.geometry.roller_radius_m,
                                u.revolution.cam_circumference_m, u.unworn, lift_loss_samples(u.revolution));
+  WornRevolutionOptions worn_options;
+  worn_options.skip_stride = spec.skip_stride;
+  worn_options.skip_power_rtol = spec.skip_power_rtol;
   u.worn = std::make_shared<WornRevolution>(u.model, u.revolution, u.motion.motion, u.unworn_profiles, u.life.grid,
-                                            u.dynamics.law);
+                                            u.dynamics.law, worn_options);
   return setup;
 }
 
@@ -250,6 +253,7 @@ CamLifeModel make_cam_life_model(const std::string& name, const CamWearSpec& spe
   m.max_depth_m = spec.max_depth_m;
   m.max_lift_loss_m = spec.max_lift_loss_m;
   m.stepping = spec.stepping;
+  m.scheme = spec.scheme;
   m.smoothing_wavelength_m = spec.smoothing_wavelength_m;
   m.snapshots_revolutions = spec.snapshots_revolutions;
   return m;
@@ -261,7 +265,8 @@ CamLifeResult run_cam_life(const CamLifeModel& m, const DissipationOf& dissipati
   if (!(m.revolutions > 0)) throw std::invalid_argument("cam life: the budget of revolutions must be > 0");
   if (!m.laws.cam && !m.laws.roller) throw std::invalid_argument("cam life: nothing wears");
   const Layout lay = layout(m.grid);
-  const wear::IntegratorOptions options0 = wear::integrator_options(m.stepping);
+  wear::IntegratorOptions options0 = wear::integrator_options(m.stepping);
+  options0.scheme = m.scheme;
 
   CamLifeResult life;
   life.state = unworn_state(m.grid);

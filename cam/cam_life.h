@@ -35,6 +35,7 @@
 #include "cam/roller_dynamics.h"
 #include "cam/worn_revolution.h"
 #include "lib/normal/profile.h"
+#include "wear/integrator.h"
 #include "wear/wear_case.h"
 
 namespace cam {
@@ -113,6 +114,7 @@ struct CamLifeModel {
   double max_depth_m = 0;                  // 0 = no such limit
   double max_lift_loss_m = 0;              // 0 = no such limit
   wear::WearStepping stepping;
+  wear::IntegratorOptions::Scheme scheme = wear::IntegratorOptions::Scheme::Euler;  // the fixed steps' update
   double smoothing_wavelength_m = 0;       // the rate's lateral filter on each arc cell's row and the roller's
   std::vector<double> snapshots_revolutions;  // increasing, in (0, revolutions]
 };

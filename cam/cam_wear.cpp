@@ -9,6 +9,7 @@
 #include <spdlog/fmt/fmt.h>
 
 #include "cam/cam_error.h"
+#include "lib/io/enum_names.h"
 #include "lib/io/number.h"
 #include "lib/io/yaml_reader.h"
 #include "lib/numeric.h"
@@ -290,6 +291,12 @@ std::string roller_wear_csv(const CamWearGrid& g, const CamWearState& s, double 
   return out;
 }
 
+namespace {
+// cam.wear.stepping.scheme's names
+using Scheme = wear::IntegratorOptions::Scheme;
+constexpr contact::EnumTable<Scheme, 2> kSchemes = {{{Scheme::Euler, "euler"}, {Scheme::Heun, "heun"}}};
+}  // namespace
+
 void read_cam_wear(contact::YamlMap& m, CamWearSpec& spec) {
   m.optional_section("cam", [&](contact::YamlMap& s) { wear::read_wear_law(s, spec.laws.cam.emplace()); });
   m.optional_section("roller", [&](contact::YamlMap& s) { wear::read_wear_law(s, spec.laws.roller.emplace()); });
@@ -311,7 +318,22 @@ void read_cam_wear(contact::YamlMap& m, CamWearSpec& spec) {
   });
   if (!(spec.max_depth_m > 0) && !(spec.max_lift_loss_m > 0))
     m.fail_here("give limits: { max_depth_m: ..., max_lift_loss_m: ... } (one at least > 0): they end the life");
-  m.optional_section("stepping", [&](contact::YamlMap& s) { wear::read_wear_stepping(s, spec.stepping); });
+  m.optional_section("stepping", [&](contact::YamlMap& s) {
+    wear::read_wear_stepping(s, spec.stepping);
+    std::string scheme;
+    s.optional("scheme", scheme, [](const std::string& v) -> std::string {
+      return contact::enum_from_name(kSchemes, v) ? "" : "must be " + contact::enum_names_list(kSchemes);
+    });
+    if (!scheme.empty()) {
+      if (spec.stepping.method == "adaptive")
+        s.fail("scheme", "the fixed steps' update: give it with method: fixed-depth or fixed-revolutions");
+      spec.scheme = *contact::enum_from_name(kSchemes, scheme);
+    }
+  });
+  m.optional_section("skip", [&](contact::YamlMap& s) {
+    s.optional("stride", spec.skip_stride, [](int v) { return v >= 1 && v <= 64 ? "" : "must be in [1, 64]"; });
+    s.optional("power_rtol", spec.skip_power_rtol, contact::in_closed(0, 1));
+  });
   m.optional("arc_cells", spec.arc_cells, [](int v) { return v >= 8 && v <= 100000 ? "" : "must be in [8, 100000]"; });
   m.optional("lateral_cells", spec.lateral_cells,
              [](int v) { return v >= 2 && v <= 10000 ? "" : "must be in [2, 10000]"; });

@@ -159,6 +159,12 @@ struct CamWearSpec {
   double max_depth_m = 0;      // the life ends where the deepest wear of either body reaches it; 0 = none
   double max_lift_loss_m = 0;  // ... where the follower's lift has dropped by this much anywhere; 0 = none
   wear::WearStepping stepping;
+  // stepping.scheme: the fixed steps' update (Euler's, or a second-order one: wear/integrator.h; §15)
+  wear::IntegratorOptions::Scheme scheme = wear::IntegratorOptions::Scheme::Euler;
+  // skip: the worn revolution's skip (cam/worn_revolution.h, WornRevolutionOptions; §15): every
+  // skip_stride-th angle step solved, the steps between interpolated where the strip powers allow
+  int skip_stride = 1;
+  double skip_power_rtol = 0.01;
   int arc_cells = 720;
   int lateral_cells = 28;
   double smoothing_wavelength_m = 5e-4;  // the wear rate's lateral filter (wear/profile_update.h), 0 = none

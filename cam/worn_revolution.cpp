@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <stdexcept>
 
@@ -66,6 +67,9 @@ WornRevolution::WornRevolution(const CamModel& m, const Revolution& r, const Rol
   track_nodes_ = node_weights(unworn.body2.y_m, g.track_width_m, g.track_cell_m(), g.track_cells);
   track_rows_.resize(static_cast<std::size_t>(g.arc_cells));
   track_row_made_.assign(static_cast<std::size_t>(g.arc_cells), -1);
+  solved_track_z_.resize(angles_.size());
+  if (options_.skip_stride < 1 || !(options_.skip_power_rtol >= 0))
+    throw std::invalid_argument("WornRevolution: skip_stride must be >= 1 and skip_power_rtol >= 0");
 }
 
 const Eigen::ArrayXd& WornRevolution::track_row_at_nodes(int arc_cell, const CamWearState& s) {
@@ -93,33 +97,39 @@ RevolutionDissipation WornRevolution::operator()(const CamWearState& s) {
       worn.body1.z_m(i) += (1 - w.wl(i)) * s.roller_depth_m(w.l0(i)) + w.wl(i) * s.roller_depth_m(w.l1(i));
   }
   const double load_rtol = law_.normal_load_rtol;
-  Eigen::ArrayXd solved_track_z;  // the worn track profile of the last angle solved
-  std::size_t solved = 0;         // that angle
-  double previous_approach = 0;   // its approach at the last evaluation
-  RevolutionDissipation out;
-  out.reserve(angles_.size());
-  for (std::size_t i = 0; i < angles_.size(); ++i) {
+  const std::size_t n = angles_.size();
+  constexpr std::size_t kNone = static_cast<std::size_t>(-1);
+  RevolutionDissipation out(n);
+  // per angle: the angle whose solved contact its record is (itself when solved; kNone: interpolated)
+  std::vector<std::size_t> source(n, kNone);
+  std::size_t last_solved = kNone;  // the angle solved last, in the order solved
+  double previous_approach = 0;     // its approach at the last evaluation
+
+  // angle i solved, or given the contact of ref's source (an angle before i with a solved or shared record)
+  // where every step from that source to i has the same inputs and the same track
+  const auto compute = [&](std::size_t i, std::size_t ref) {
     Angle& a = angles_[i];
     ++stats_.angles;
     const Eigen::ArrayXd& r0 = track_row_at_nodes(a.a0, s);
     const Eigen::ArrayXd& r1 = track_row_at_nodes(a.a1, s);
     worn.body2.z_m = unworn_.body2.z_m + ((1 - a.wa) * r0 + a.wa * r1);
 
-    // shares the last solved angle's contact: every step since has had the same inputs, and the same track
-    bool share = options_.share_contacts && i > 0 && solved_track_z.size() == worn.body2.z_m.size();
-    for (std::size_t k = solved + 1; share && k <= i; ++k) share = angles_[k].same_inputs_as_previous;
+    const std::size_t src = ref == kNone ? kNone : source[ref];
+    bool share = options_.share_contacts && src != kNone && solved_track_z_[src].size() == worn.body2.z_m.size();
+    for (std::size_t k = src + 1; share && k <= i; ++k) share = angles_[k].same_inputs_as_previous;
     if (share)
-      share = (worn.body2.z_m - solved_track_z).abs().maxCoeff() <= load_rtol * angles_[solved].approach_m;
+      share = (worn.body2.z_m - solved_track_z_[src]).abs().maxCoeff() <= load_rtol * angles_[src].approach_m;
     if (share) {
-      AngleDissipation d = out[solved];
+      AngleDissipation d = out[src];
       d.theta_rad = a.row.kin.theta_rad;
       d.cam_arc_m = a.row.contact_arc_m;
-      out.push_back(std::move(d));
-      a.approach_m = angles_[solved].approach_m;
-      a.approach_slope = angles_[solved].approach_slope;
-      a.xi = angles_[solved].xi;
-      a.xi_known = angles_[solved].xi_known;
-      continue;
+      out[i] = std::move(d);
+      source[i] = src;
+      a.approach_m = angles_[src].approach_m;
+      a.approach_slope = angles_[src].approach_slope;
+      a.xi = angles_[src].xi;
+      a.xi_known = angles_[src].xi_known;
+      return;
     }
 
     CreepLawSettings law = law_;
@@ -127,8 +137,8 @@ RevolutionDissipation WornRevolution::operator()(const CamWearState& s) {
       // this angle's last approach, scaled as the angle solved before it changed since the last evaluation
       // (what wear did to every angle alike, e.g. the roller's wear)
       law.initial_approach_m = a.approach_m;
-      if (a.approach_m > 0 && i > 0 && previous_approach > 0 && angles_[solved].approach_m > 0)
-        law.initial_approach_m = a.approach_m * (angles_[solved].approach_m / previous_approach);
+      if (a.approach_m > 0 && last_solved != kNone && previous_approach > 0 && angles_[last_solved].approach_m > 0)
+        law.initial_approach_m = a.approach_m * (angles_[last_solved].approach_m / previous_approach);
       if (options_.warm_slope) law.initial_slope = a.approach_slope;
     }
     AngleContact c;
@@ -160,10 +170,67 @@ RevolutionDissipation WornRevolution::operator()(const CamWearState& s) {
       a.xi = xi.xi;
       a.xi_known = true;
     }
-    out.push_back(angle_dissipation(c, a.row, roller, duration_s_));
-    solved_track_z = worn.body2.z_m;
-    solved = i;
-  }
+    out[i] = angle_dissipation(c, a.row, roller, duration_s_);
+    solved_track_z_[i] = worn.body2.z_m;
+    source[i] = i;
+    last_solved = i;
+  };
+
+  // every stride-th angle (all of them without the skip), in order
+  const std::size_t stride = static_cast<std::size_t>(options_.skip_stride);
+  for (std::size_t i = 0; i < n; i += stride) compute(i, i == 0 ? kNone : i - stride);
+  if (stride == 1) return out;
+
+  // The skip: between two computed angles l < r (r == n is angle 0 of the next revolution, the revolution
+  // being periodic) whose strip powers differ by at most skip_power_rtol of the largest strip power of the
+  // computed angles, the angles are interpolated, linearly in the angle step; otherwise the middle one is
+  // computed and both halves looked at again.
+  double p_max = 0;
+  for (std::size_t i = 0; i < n; i += stride) p_max = std::max(p_max, out[i].power_W_per_m.abs().maxCoeff());
+  const double tol = options_.skip_power_rtol * p_max;
+  const auto interpolate = [&](std::size_t k, std::size_t l, std::size_t r) {
+    const AngleDissipation &A = out[l], &B = out[r % n];
+    const Angle &al = angles_[l], &ar = angles_[r % n];
+    Angle& a = angles_[k];
+    const double w = static_cast<double>(k - l) / static_cast<double>(r - l);
+    ++stats_.angles;
+    ++stats_.interpolated_angles;
+    const double xi = al.xi_known && ar.xi_known ? (1 - w) * al.xi + w * ar.xi : a.roller.xi;
+    AngleDissipation d;
+    d.theta_rad = a.row.kin.theta_rad;
+    d.duration_s = duration_s_;
+    d.cam_arc_m = a.row.contact_arc_m;
+    d.rolling_speed_m_per_s = a.row.kin.rolling_speed_m_per_s;
+    d.roller_surface_speed_m_per_s =
+        roller_surface_speed_m_per_s(a.row.kin.rolling_speed_m_per_s, xi * a.roller.speed_m_per_s);
+    d.y_m = A.y_m;
+    d.power_W_per_m = (1 - w) * A.power_W_per_m + w * B.power_W_per_m;
+    d.mean_pressure_Pa = (1 - w) * A.mean_pressure_Pa + w * B.mean_pressure_Pa;
+    out[k] = std::move(d);
+    // the next evaluation's warm start: between the neighbours'
+    a.approach_m = (1 - w) * al.approach_m + w * ar.approach_m;
+    a.approach_slope = (1 - w) * al.approach_slope + w * ar.approach_slope;
+    if (al.xi_known && ar.xi_known) {
+      a.xi = xi;
+      a.xi_known = true;
+    }
+  };
+  const std::function<void(std::size_t, std::size_t)> refine = [&](std::size_t l, std::size_t r) {
+    if (r - l < 2) return;
+    const AngleDissipation &A = out[l], &B = out[r % n];
+    const bool close = A.power_W_per_m.size() == B.power_W_per_m.size() && A.y_m.size() == B.y_m.size() &&
+                       (A.y_m - B.y_m).abs().maxCoeff() <= kSameInputRtol * A.y_m.abs().maxCoeff() &&
+                       (A.power_W_per_m - B.power_W_per_m).abs().maxCoeff() <= tol;
+    if (close) {
+      for (std::size_t k = l + 1; k < r; ++k) interpolate(k, l, r);
+      return;
+    }
+    const std::size_t m = (l + r) / 2;
+    compute(m, l);
+    refine(l, m);
+    refine(m, r);
+  };
+  for (std::size_t l = 0; l < n; l += stride) refine(l, std::min(l + stride, n));
   return out;
 }
 

@@ -20,6 +20,11 @@
 //     where it crosses more than once (worn gaps), the warm search may keep another root than the cold one
 //     (measured in docs/cam-follower.md §15). A warm-started solve that does not converge is solved again
 //     from the solver's own start.
+//   - The skip (WornRevolutionOptions::skip_stride > 1; cam.wear.skip): only every stride-th angle step is
+//     computed at first; the steps between two computed ones are interpolated (strip powers, pressures and
+//     the next evaluation's warm starts linear in the angle step) where the two's strip powers agree to
+//     skip_power_rtol of the largest, otherwise the middle step is computed and each half looked at again.
+//     Its error against every step solved is measured in docs/cam-follower.md §15.
 // Not thread-safe (the warm starts are state); one per life.
 #pragma once
 
@@ -52,12 +57,19 @@ struct WornRevolutionStats {
   long approach_evaluations = 0;   // F(delta) evaluations of the semi-Hertzian searches
   long creep_evaluations = 0;      // steady solves of the creep law's inversions
   long cold_retries = 0;           // warm-started normal solves that did not converge, solved again cold
+  long interpolated_angles = 0;    // angle steps the skip interpolated (of `angles`)
 };
 
 struct WornRevolutionOptions {
   bool share_contacts = true;  // solve angles that share a contact once
   bool warm_start = true;      // start each angle's searches from its last evaluation's
   bool warm_slope = true;      // ... the semi-Hertzian one's first step with its last slope (false: Hertz's 3/2)
+  // The skip (docs/cam-follower.md §15): every skip_stride-th angle step computed (solved or shared); between
+  // two computed steps whose strip powers differ by at most skip_power_rtol of the revolution's largest strip
+  // power the steps are interpolated (strip powers and pressures linear in the angle step), otherwise the
+  // middle step is computed and each half looked at again. 1: every angle step computed.
+  int skip_stride = 1;
+  double skip_power_rtol = 0.01;
 };
 
 class WornRevolution {
@@ -102,6 +114,8 @@ class WornRevolution {
   // per arc cell, its row of depths at the track's nodes, made at most once per evaluation
   std::vector<Eigen::ArrayXd> track_rows_;
   std::vector<long> track_row_made_;
+  // per angle, the worn track profile at its nodes when it was last solved (what shares compare with)
+  std::vector<Eigen::ArrayXd> solved_track_z_;
   WornRevolutionStats stats_;
 };
 

@@ -30,6 +30,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <exception>
+#include <functional>
 #include <limits>
 #include <memory>
 #include <stdexcept>
@@ -396,17 +397,19 @@ IntegratorResult integrate_adaptive(const Rhs& f, const Roots& roots, int n_root
 // ---------------------------------------------------------------------------------------------
 // fixed: explicit Euler
 
-// the earliest event on the Euler line h(s) = h + s dN rate, s in [0, 1], given g at both ends;
+// the step's continuous solution h(s), s in [0, 1] (Euler's line, or a second-order scheme's extension)
+using StepPoint = std::function<void(double s, Eigen::VectorXd& hs)>;
+
+// the earliest event on the step's solution point(s), s in [0, 1], given g at both ends;
 // returns s (the end where the event has happened) and the events there
-std::pair<double, std::vector<int>> locate_on_line(const Roots& roots, int n_roots, double N, const Eigen::VectorXd& h,
-                                                   const Eigen::VectorXd& rate, double dN, Eigen::VectorXd ga,
-                                                   Eigen::VectorXd gb) {
+std::pair<double, std::vector<int>> locate_on_line(const Roots& roots, int n_roots, double N, const StepPoint& point,
+                                                   Eigen::Index n, double dN, Eigen::VectorXd ga, Eigen::VectorXd gb) {
   double a = 0, b = 1;
   double wa = 1, wb = 1;  // Illinois weights: an end kept twice in a row has its g halved
   int kept = 0;           // +1: a was kept last time, -1: b was kept
   double width_two_ago = std::numeric_limits<double>::infinity(), width_one_ago = width_two_ago;
   const double tol_s = kRootTol * (std::abs(N) + std::abs(dN)) / std::abs(dN);
-  Eigen::VectorXd hs(h.size()), gs(n_roots);
+  Eigen::VectorXd hs(n), gs(n_roots);
   auto events = [&](const Eigen::VectorXd& g0, const Eigen::VectorXd& g1) {
     std::vector<int> ks;
     for (int k = 0; k < n_roots; ++k)
@@ -429,7 +432,7 @@ std::pair<double, std::vector<int>> locate_on_line(const Roots& roots, int n_roo
     width_one_ago = b - a;
 
     // g on the line at s
-    hs = h + (s * dN) * rate;
+    point(s, hs);
     evaluate_roots(roots, n_roots, N + s * dN, hs, gs);
     if (!events(ga, gs).empty()) {
       b = s;
@@ -450,17 +453,26 @@ std::pair<double, std::vector<int>> locate_on_line(const Roots& roots, int n_roo
 
 IntegratorResult integrate_fixed(const Rhs& f, const Roots& roots, int n_roots, double N0, const Eigen::VectorXd& h0,
                                  double N_end, const IntegratorOptions& o, const OnStep& on_step) {
+  using Scheme = IntegratorOptions::Scheme;
   const bool by_depth = o.method == IntegratorOptions::Method::FixedDepth;
   IntegratorResult r;
   r.N = N0;
   r.h_m = h0;
 
   // the state and the rate at the start of the step
-  Eigen::VectorXd rate(h0.size()), h_next(h0.size()), rate_next(h0.size());
+  const Eigen::Index n = h0.size();
+  Eigen::VectorXd rate(n), h_next(n), rate_next(n);
   evaluate_rate(f, N0, h0, rate);
   r.rhs_evals = 1;
   Eigen::VectorXd g(n_roots), g_next(n_roots);
   if (n_roots > 0) evaluate_roots(roots, n_roots, N0, h0, g);
+  // Heun: the step's solution is h(s) = h + dN (s rate + s^2 curve), s in [0, 1]
+  Eigen::VectorXd curve = Eigen::VectorXd::Zero(n);
+  Eigen::VectorXd predicted(n);  // Heun: the rate at Euler's predictor
+  // the rate's change over a step is at most the larger of its sizes at the two ends (the stability test)
+  const auto stable_between = [](const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
+    return (b - a).cwiseAbs().maxCoeff() <= std::max(a.cwiseAbs().maxCoeff(), b.cwiseAbs().maxCoeff());
+  };
 
   long targets = 0;  // FixedStep: multiples of fixed_step reached; N counts from N0 on them
   while (r.N < N_end) {
@@ -486,18 +498,35 @@ IntegratorResult integrate_fixed(const Rhs& f, const Roots& roots, int n_roots, 
     // start by at most the larger of the two rates' sizes. For a decaying mode dh/dN = lambda h that is
     // lambda dN >= -1: Euler's factor 1 + lambda dN stays in [0, 1], so the profile cannot oscillate;
     // a growing mode or a rate rising from 0 passes. A halved FixedStep goes on towards the same
-    // multiple of fixed_step.
+    // multiple of fixed_step. (Heun: the rate at Euler's predictor is tested, then its corrector's end
+    // evaluated.)
     for (int halvings = 0;; ++halvings) {
       dN = N_next - r.N;
-      h_next = r.h_m + dN * rate;
       bool stable = false;
       try {
-        ++r.rhs_evals;
-        evaluate_rate(f, N_next, h_next, rate_next);
-        stable = (rate_next - rate).cwiseAbs().maxCoeff() <=
-                 std::max(rate.cwiseAbs().maxCoeff(), rate_next.cwiseAbs().maxCoeff());
+        switch (o.scheme) {
+          case Scheme::Euler:
+            h_next = r.h_m + dN * rate;
+            ++r.rhs_evals;
+            evaluate_rate(f, N_next, h_next, rate_next);
+            stable = stable_between(rate, rate_next);
+            break;
+          case Scheme::Heun:
+            h_next = r.h_m + dN * rate;
+            ++r.rhs_evals;
+            evaluate_rate(f, N_next, h_next, predicted);
+            stable = stable_between(rate, predicted);
+            if (stable || halvings == kMaxHalvings) {
+              curve = 0.5 * (predicted - rate);
+              h_next = r.h_m + dN * (rate + curve);
+              ++r.rhs_evals;
+              evaluate_rate(f, N_next, h_next, rate_next);
+            }
+            break;
+        }
       } catch (const std::exception&) {
         if (halvings == kMaxHalvings) throw;
+        stable = false;
       }
       if (stable) break;
       if (halvings == kMaxHalvings) {  // a jump of f itself, not the step's doing
@@ -511,15 +540,30 @@ IntegratorResult integrate_fixed(const Rhs& f, const Roots& roots, int n_roots, 
     }
     if (!by_depth && N_next == N_target) ++targets;
 
-    // a lifetime limit inside the step: located on the Euler line
+    // a lifetime limit inside the step: located on the step's solution (Euler's line, exactly)
     if (n_roots > 0) {
       evaluate_roots(roots, n_roots, N_next, h_next, g_next);
       bool event = false;
       for (int k = 0; k < n_roots; ++k) event = event || crosses(g[k], g_next[k]);
       if (event) {
-        auto [s, found] = locate_on_line(roots, n_roots, r.N, r.h_m, rate, dN, g, g_next);
+        const Eigen::VectorXd& h = r.h_m;
+        const StepPoint point = [&](double s, Eigen::VectorXd& hs) {
+          if (o.scheme == Scheme::Euler)
+            hs = h + (s * dN) * rate;
+          else
+            hs = h + dN * (s * rate + (s * s) * curve);
+        };
+        auto [s, found] = locate_on_line(roots, n_roots, r.N, point, n, dN, g, g_next);
         r.N = s == 1 ? N_next : r.N + s * dN;
-        r.h_m += (s * dN) * rate;
+        if (o.scheme == Scheme::Euler) {
+          r.h_m += (s * dN) * rate;
+        } else if (s == 1) {
+          r.h_m = h_next;
+        } else {
+          Eigen::VectorXd hs(n);
+          point(s, hs);
+          r.h_m = hs;
+        }
         ++r.steps;  // the step the root cut short counts, as in ARKODE
         r.status.kind = IntegratorStatus::Kind::RootFound;
         r.status.roots = std::move(found);
@@ -531,8 +575,11 @@ IntegratorResult integrate_fixed(const Rhs& f, const Roots& roots, int n_roots, 
     }
 
     // the rate at the step's end (evaluated above): the next step's slope and this step's error estimate
+    // (Euler's: trapezoid minus Euler; Heun's: its update minus Euler's)
     ++r.steps;
-    const Eigen::ArrayXd e = (0.5 * dN) * (rate_next - rate).array();
+    const Eigen::ArrayXd e = o.scheme == Scheme::Euler || curve.isZero(0)
+                                 ? Eigen::ArrayXd(((0.5 * dN) * (rate_next - rate)).array())
+                                 : Eigen::ArrayXd((dN * curve).array());
     const Eigen::ArrayXd w = 1.0 / (o.rtol * r.h_m.array().abs() + o.atol);
     StepInfo info;
     info.N = N_next;
@@ -547,7 +594,7 @@ IntegratorResult integrate_fixed(const Rhs& f, const Roots& roots, int n_roots, 
     r.h_m.swap(h_next);
     rate.swap(rate_next);
     r.last_step = r.next_step = dN;
-    SPDLOG_TRACE("wear::integrate: Euler step {} to N {:.10g}, dN {:.4g}", r.steps, r.N, dN);
+    SPDLOG_TRACE("wear::integrate: fixed step {} to N {:.10g}, dN {:.4g}", r.steps, r.N, dN);
     const bool go_on = on_step ? on_step(info, r.h_m) : true;
     if (!go_on && r.N < N_end) {
       r.status.kind = IntegratorStatus::Kind::Stopped;
@@ -557,10 +604,10 @@ IntegratorResult integrate_fixed(const Rhs& f, const Roots& roots, int n_roots, 
     }
   }
   r.status.kind = IntegratorStatus::Kind::ReachedEnd;
-  r.status.message = fmt::format("reached N_end {:.10g} after {} Euler steps", N_end, r.steps);
+  r.status.message = fmt::format("reached N_end {:.10g} after {} {} steps", N_end, r.steps,
+                                 o.scheme == Scheme::Euler ? "Euler" : "Heun");
   return r;
 }
-
 }  // namespace
 
 IntegratorResult integrate(const Rhs& f, const Roots& roots, int n_roots, double N0, const Eigen::VectorXd& h0_m,

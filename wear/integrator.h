@@ -43,6 +43,13 @@ struct IntegratorOptions {
   double rtol = 1e-3;             // Adaptive: relative tolerance
   double atol = 1e-9;             // Adaptive: absolute tolerance, m (> 0: h starts at 0). The fixed
                                   // modes use rtol and atol only to weigh their error estimate
+  // FixedDepth and FixedStep: the update. Euler is the wear loop's (and the default); Heun's is offered for
+  // the cam's life (cam.wear.stepping.scheme, docs/cam-follower.md §15), whose Euler steps converge slowly:
+  //   Heun  explicit trapezoid, h + (dN/2) (f(h) + f(h + dN f(h))): second order for a smooth rate, two
+  //         evaluations per step, no history. It keeps the step control and its stability test (on the
+  //         rate at Euler's predictor) and locates a root on its quadratic continuous extension
+  //         h + dN (s f(h) + (s^2/2) (f(h + dN f(h)) - f(h))), s in [0, 1].
+  enum class Scheme { Euler, Heun } scheme = Scheme::Euler;
   double max_depth_step = 1e-4;   // FixedDepth: max |dh| per update, m
   double fixed_step = 0;          // FixedStep: revolutions per update
   double initial_step = 0;        // Adaptive: first step, revolutions; 0 = ARKODE's estimate. On

@@ -1,10 +1,13 @@
 // The cost of a cam's worn revolution and of its life (docs/cam-follower.md §15). A plain program:
 //   cam_life_bench CASE.yaml [worn_depth_m = 8e-6] [repeats = 5] [life-only]
+//   cam_life_bench CASE.yaml map REFERENCE.csv ANGLE_STEPS STRIDE POWER_RTOL [ARC_CELLS]   a map's error (below)
 //   cam_life_bench CASE.yaml life [variants = all [load_rtol|default [check_every]]]   the case's whole life (its own
-//       stepping) with each of the savings on or off: life, evaluations, CPU; with check_every, every check_every-th
+//       stepping) with each of the savings on or off ("skip": both and the case's skip): life, evaluations, CPU; with
+//       check_every, every check_every-th
 //       evaluation compared with the cold revolution on the same state (angles on another root counted)
 // 1. sets up the case's life (the unworn periodic revolution), CPU timed;
-// 2. wears the case to worn_depth_m (fixed-depth steps of 1e-6 m, the fast producer): a worn state;
+// 2. wears the case to worn_depth_m (Euler's fixed-depth steps of 1e-6 m, the producer with shared contacts and
+//    warm starts, no skip, whatever the case's stepping and skip): a worn state;
 // 3. on that state, CPU per revolution (median of the repeats) of worn_revolution_dissipation (cold: every
 //    angle solved from scratch, the reference) and of WornRevolution with each saving on or off, a warm
 //    evaluation taken on the state scaled by 1 + 1e-3 after one on the state itself (as the life's next
@@ -12,6 +15,7 @@
 //    largest difference of a strip power (of the largest strip power) and of the energy against the reference.
 #include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <ctime>
 #include <string>
 #include <vector>
@@ -66,8 +70,9 @@ int main(int argc, char** argv) {
   }
   spdlog::set_level(spdlog::level::warn);
   const bool whole_life = argc > 2 && std::string(argv[2]) == "life";
-  const double worn_depth = argc > 2 && !whole_life ? std::stod(argv[2]) : 8e-6;
-  const int repeats = argc > 3 && !whole_life ? std::stoi(argv[3]) : 5;
+  const bool map_mode = argc > 2 && std::string(argv[2]) == "map";
+  const double worn_depth = argc > 2 && !whole_life && !map_mode ? std::stod(argv[2]) : 8e-6;
+  const int repeats = argc > 3 && !whole_life && !map_mode ? std::stoi(argv[3]) : 5;
   const bool life_only = argc > 4 && std::string(argv[4]) == "life-only";  // the life's evaluator alone (to profile)
   const cam::CamCase c = cam::read_cam_case(argv[1]);
   if (!c.wear) {
@@ -78,6 +83,82 @@ int main(int argc, char** argv) {
   dynamics.law.grid = {c.solver.nx, c.solver.ny};
   dynamics.periodicity_rtol = c.solver.periodic_rtol;
   dynamics.max_revolutions = c.solver.max_revolutions;
+
+  if (map_mode) {
+    // cam_life_bench CASE map REFERENCE.csv ANGLE_STEPS STRIDE POWER_RTOL: the wear map after 4e9 revolutions
+    // on 180 x 56 cells, Euler's 32 and 64 steps of revolutions extrapolated, as the converged reference
+    // tests/data/reference/cam-wear-map.csv is made (at 1440 angle steps, every angle solved), against it:
+    // the largest error of each body's map, of its deepest wear
+    if (argc < 7) {
+      std::fprintf(stderr, "usage: cam_life_bench CASE map REFERENCE.csv ANGLE_STEPS STRIDE POWER_RTOL\n");
+      return 2;
+    }
+    const int angle_steps = std::stoi(argv[4]);
+    // ARC_CELLS (optional, 180 by default): on another map than the reference's, the skip's map is compared
+    // with the map of every angle solved (stride 1), at 4e9 revolutions in 64 steps, on ARC_CELLS x 112 cells
+    const int arc_cells = argc > 7 ? std::stoi(argv[7]) : 180;
+    const auto map = [&](int steps, int stride = -1) {
+      cam::CamModel model = c.model;
+      model.angle_steps = angle_steps;
+      cam::CamWearSpec spec = *c.wear;
+      spec.arc_cells = arc_cells;
+      spec.lateral_cells = arc_cells == 180 ? 56 : 112;
+      spec.revolutions = 4e9;
+      spec.max_depth_m = 1e-3;
+      spec.max_lift_loss_m = 0;
+      spec.stepping.method = "fixed-revolutions";
+      spec.stepping.step_revolutions = 4e9 / steps;
+      spec.skip_stride = stride > 0 ? stride : std::stoi(argv[5]);
+      spec.skip_power_rtol = std::stod(argv[6]);
+      const std::unique_ptr<cam::CamLifeSetup> u = cam::set_up_cam_life(c.name, model, spec, dynamics);
+      const cam::CamLifeResult life = cam::run_cam_life(u->life, u->producer());
+      return life.state;
+    };
+    if (arc_cells != 180) {
+      double t1 = cpu_s();
+      const cam::CamWearState all = map(64, 1);
+      const double cpu_all = cpu_s() - t1;
+      t1 = cpu_s();
+      const cam::CamWearState skip = map(64);
+      std::printf("map at %d angle steps on %d x 112 cells, 4e9 revolutions in 64 steps: skip stride %s (power_rtol %s) "
+                  "against every angle solved: largest difference %.4f of the track's deepest wear, %.4f of the "
+                  "roller's (%.1f s CPU against %.1f s)\n",
+                  angle_steps, arc_cells, argv[5], argv[6],
+                  (skip.cam_depth_m - all.cam_depth_m).abs().maxCoeff() / all.cam_depth_m.maxCoeff(),
+                  (skip.roller_depth_m - all.roller_depth_m).abs().maxCoeff() / all.roller_depth_m.maxCoeff(),
+                  cpu_s() - t1, cpu_all);
+      return 0;
+    }
+    const double t_map = cpu_s();
+    const cam::CamWearState coarse = map(32), fine = map(64);
+    const double cpu = cpu_s() - t_map;
+    Eigen::ArrayXXd cam_ref(180, 56);
+    Eigen::ArrayXd roller_ref(56);
+    {
+      std::FILE* in = std::fopen(argv[3], "r");
+      if (!in) {
+        std::fprintf(stderr, "cannot read %s\n", argv[3]);
+        return 2;
+      }
+      char line[65536];
+      int row = 0;
+      while (std::fgets(line, sizeof line, in)) {
+        if (line[0] == '#' || line[0] == '\n') continue;
+        const bool is_cam = line[0] == 'c';
+        char* p = line + (is_cam ? 3 : 6);
+        for (int j = 0; j < 56; ++j) (is_cam ? cam_ref(row, j) : roller_ref(j)) = std::strtod(p, &p);
+        if (is_cam) ++row;
+      }
+      std::fclose(in);
+    }
+    const Eigen::ArrayXXd cam = 2 * fine.cam_depth_m - coarse.cam_depth_m;
+    const Eigen::ArrayXd roller = 2 * fine.roller_depth_m - coarse.roller_depth_m;
+    std::printf("map at %d angle steps, skip stride %s (power_rtol %s), 4e9 revolutions: largest error %.4f of the "
+                "track's deepest wear, %.4f of the roller's (Euler 32 and 64 steps extrapolated: %.1f s CPU)\n",
+                angle_steps, argv[5], argv[6], (cam - cam_ref).abs().maxCoeff() / cam_ref.maxCoeff(),
+                (roller - roller_ref).abs().maxCoeff() / roller_ref.maxCoeff(), cpu);
+    return 0;
+  }
 
   double t0 = cpu_s();
   const std::unique_ptr<cam::CamLifeSetup> setup = cam::set_up_cam_life(c.name, c.model, *c.wear, dynamics);
@@ -93,8 +174,11 @@ int main(int argc, char** argv) {
     const struct {
       const char* name;
       cam::WornRevolutionOptions o;
-    } variants[] = {
-        {"neither", {false, false}}, {"shared", {true, false}}, {"warm", {false, true}}, {"both", {true, true}}};
+    } variants[] = {{"neither", {false, false}},
+                    {"shared", {true, false}},
+                    {"warm", {false, true}},
+                    {"both", {true, true}},
+                    {"skip", {true, true, true, c.wear->skip_stride, c.wear->skip_power_rtol}}};  // the case's skip
     for (const auto& v : variants) {
       if (which != "all" && which != v.name) continue;
       cam::WornRevolution ev(setup->model, setup->revolution, setup->motion.motion, setup->unworn_profiles,
@@ -102,9 +186,12 @@ int main(int argc, char** argv) {
       long checks = 0, checks_differing = 0, other_total = 0;
       int other_max = 0;
       double power_max = 0, energy_max = 0;
+      double revolution_cpu = 0;  // in the worn revolutions themselves
       const cam::DissipationOf producer = [&](const cam::CamWearState& st) {
         if ((st.cam_depth_m == 0).all() && (st.roller_depth_m == 0).all()) return setup->unworn;
+        const double t_rev = cpu_s();
         cam::RevolutionDissipation d = ev(st);
+        revolution_cpu += cpu_s() - t_rev;
         if (check_every > 0 && ev.stats().evaluations % check_every == 0) {
           const cam::RevolutionDissipation cold =
               cam::worn_revolution_dissipation(setup->model, setup->revolution, setup->motion.motion,
@@ -124,9 +211,11 @@ int main(int argc, char** argv) {
       const double cpu = cpu_s() - t0;
       const cam::WornRevolutionStats& st = ev.stats();
       std::printf("%-8s life %.6g revolutions (%s), %ld steps, %ld evaluations, %.2f s CPU, %.1f ms/revolution; "
-                  "per revolution %.1f normal solves, %.1f F(delta), %.1f creep law; %ld cold retries\n",
+                  "%.1f ms of it in the worn revolution; per revolution %.1f normal solves, %.1f F(delta), %.1f creep law; "
+                  "%ld cold retries\n",
                   v.name, life.N, cam::to_string(life.ended_by).c_str(), life.steps, life.revolutions_solved, cpu,
                   1e3 * cpu / std::max<long>(1, life.revolutions_solved),
+                  1e3 * revolution_cpu / std::max<long>(1, st.evaluations),
                   static_cast<double>(st.contacts_solved) / std::max<long>(1, st.evaluations),
                   static_cast<double>(st.approach_evaluations) / std::max<long>(1, st.evaluations),
                   static_cast<double>(st.creep_evaluations) / std::max<long>(1, st.evaluations), st.cold_retries);
@@ -143,9 +232,15 @@ int main(int argc, char** argv) {
   to_depth.max_lift_loss_m = 0;
   to_depth.stepping.method = "fixed-depth";
   to_depth.stepping.max_depth_step_m = 1e-6;
+  to_depth.scheme = wear::IntegratorOptions::Scheme::Euler;  // the bench's state whatever the case's stepping and skip
   to_depth.snapshots_revolutions.clear();
+  cam::WornRevolution to_depth_evaluator(setup->model, setup->revolution, setup->motion.motion, setup->unworn_profiles,
+                                         setup->life.grid, setup->dynamics.law);
   t0 = cpu_s();
-  const cam::CamLifeResult worn = cam::run_cam_life(to_depth, setup->producer());
+  const cam::CamLifeResult worn = cam::run_cam_life(to_depth, [&](const cam::CamWearState& st) {
+    if ((st.cam_depth_m == 0).all() && (st.roller_depth_m == 0).all()) return setup->unworn;
+    return to_depth_evaluator(st);
+  });
   std::printf("worn to %.3g m in %ld steps (%ld revolutions solved): %.3f s CPU\n", worn.max_depth_m, worn.steps,
               worn.revolutions_solved, cpu_s() - t0);
   const cam::CamWearState& s = worn.state;
@@ -178,10 +273,18 @@ int main(int argc, char** argv) {
   const struct {
     const char* name;
     cam::WornRevolutionOptions o;
-  } variants[] = {{"neither", {false, false}}, {"shared contacts", {true, false}}, {"warm starts", {false, true}},
-                  {"both (the life's)", {true, true}}};
+  } variants[] = {{"neither", {false, false}},
+                  {"shared contacts", {true, false}},
+                  {"warm starts", {false, true}},
+                  {"both (the life's)", {true, true}},
+                  {"both, skip 2 (0.01)", {true, true, true, 2, 0.01}},
+                  {"both, skip 2 (0.2)", {true, true, true, 2, 0.2}},
+                  {"both, skip 2 (1: always)", {true, true, true, 2, 1}},
+                  {"both, skip 4 (0.2)", {true, true, true, 4, 0.2}},
+                  {"both, skip 4 (0.5)", {true, true, true, 4, 0.5}},
+                  {"both, skip 4 (1: always)", {true, true, true, 4, 1}}};
   for (const auto& v : variants) {
-    if (life_only && !(v.o.share_contacts && v.o.warm_start)) continue;
+    if (life_only && !(v.o.share_contacts && v.o.warm_start && v.o.skip_stride == 1)) continue;
     cam::WornRevolution ev(setup->model, setup->revolution, setup->motion.motion, setup->unworn_profiles,
                            setup->life.grid, setup->dynamics.law, v.o);
     std::vector<double> tw;
@@ -200,10 +303,11 @@ int main(int argc, char** argv) {
     if (v.o.share_contacts) std::printf("angle steps with the inputs of the step before: %ld\n", st.same_input_angles);
     std::printf("%-34s %8.1f ms/revolution  solves %ld, F(delta) %ld, creep law %ld per revolution;"
                 " against the reference: power %.2e, energy %.2e, %d other contacts (on s), %.2e, %.2e, %d (on s2);"
-                " %ld cold retries\n",
+                " %ld cold retries, %ld interpolated\n",
                 v.name, 1e3 * median(tw), st.contacts_solved - before.contacts_solved,
                 st.approach_evaluations - before.approach_evaluations, st.creep_evaluations - before.creep_evaluations,
-                d1.power, d1.energy, d1.other_contacts, d2.power, d2.energy, d2.other_contacts, st.cold_retries);
+                d1.power, d1.energy, d1.other_contacts, d2.power, d2.energy, d2.other_contacts, st.cold_retries,
+                (st.interpolated_angles - before.interpolated_angles));
   }
   {
     // the warm start's floor: the same state twice, each angle's search starting at its own root
