@@ -25,6 +25,7 @@ CamRun run_cam(const CamModel& m, const CamSolverSettings& s) {
   double t0 = cpu_s();
   RollerDynamicsSettings ds;
   ds.law.grid = {s.nx, s.ny};
+  ds.law.scheme = s.scheme;
   ds.periodicity_rtol = s.periodic_rtol;
   ds.max_revolutions = s.max_revolutions;
   run.motion = periodic_motion(m, run.revolution, ds);
@@ -45,6 +46,7 @@ CamRun run_cam(const CamModel& m, const CamSolverSettings& s) {
   }
   TransientRevolutionSettings ts;
   ts.grid = {s.nx, s.ny};
+  ts.scheme = s.scheme;
   ts.quasi_steady_tolerance = s.quasi_steady_tolerance;
   ts.skip = s.quasi_steady_tolerance > 0;
   run.transient = transient_revolution(m, run.revolution, run.motion.motion, ts);
