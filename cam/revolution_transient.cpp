@@ -187,10 +187,11 @@ void relaxed_rows(const std::vector<AngleContact>& contacts, const Revolution& r
 
 AngleContact angle_contact_on_grid(const RollerAndTrack& bodies, const contact::Profiles& profiles,
                                    double roller_radius_m, const CamKinematics& k, double normal_load_N, double mu,
-                                   bool heathcote_slip, const contact::Grid& grid) {
+                                   bool heathcote_slip, const contact::Grid& grid, contact::TangentialScheme scheme) {
+  check_cam_scheme(scheme);
   const Fits f = profile_fits(profiles);
   return contact_from_hertz(bodies, profiles, f, roller_radius_m, k,
-                            hertz_at(bodies, f, roller_radius_m, k, normal_load_N), mu, heathcote_slip, grid);
+                            hertz_at(bodies, f, roller_radius_m, k, normal_load_N), mu, heathcote_slip, grid, scheme);
 }
 
 TransientRevolution transient_revolution(const CamModel& m, const Revolution& r, const RollerMotion& motion,

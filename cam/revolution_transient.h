@@ -93,7 +93,8 @@ struct TransientRevolution {
 // ellipse does not fit inside the grid.
 AngleContact angle_contact_on_grid(const RollerAndTrack& bodies, const contact::Profiles& profiles,
                                    double roller_radius_m, const CamKinematics& k, double normal_load_N, double mu,
-                                   bool heathcote_slip, const contact::Grid& grid);
+                                   bool heathcote_slip, const contact::Grid& grid,
+                                   contact::TangentialScheme scheme = contact::kDefaultTangentialScheme);
 
 // throws std::invalid_argument when the motion does not match the revolution or (Satran) an angle step rolls less
 // than one cell (angle_steps too many for the grid: the shift scheme needs V dt >= dx), and as angle_contact_on_grid
