@@ -80,6 +80,8 @@ double relative_change(double x, double y, double ref) { return ref > 0 ? std::a
 void relaxed_rows(const std::vector<AngleContact>& contacts, const Revolution& r, const std::vector<RollerAngle>& rollers,
                   double dt_row, const TransientRevolutionSettings& s, TransientRevolution& out) {
   const std::size_t n = r.rows.size();
+  if (!(s.relaxed_step_cells > 0 && std::isfinite(s.relaxed_step_cells)))
+    throw std::invalid_argument("relaxed_step_cells must be > 0 and finite");
   std::vector<double> sigma(n, 0.0);
   double sigma_max = 0;
   for (std::size_t i = 0; i < n; ++i) {
@@ -128,7 +130,7 @@ void relaxed_rows(const std::vector<AngleContact>& contacts, const Revolution& r
     const contact::ContactPatch& p = c.normal.patch;
     const double V = rollers[i].speed_m_per_s, xi = rollers[i].xi;
     const double rolled = V * dt_row;
-    const long k = std::max(1L, static_cast<long>(std::ceil(rolled / p.grid.dx_m - 1e-9)));
+    const long k = std::max(1L, static_cast<long>(std::ceil(rolled / (s.relaxed_step_cells * p.grid.dx_m) - 1e-9)));
     const double dq = rolled / static_cast<double>(k), dts = dt_row / static_cast<double>(k);
     for (long q = 0; q < k; ++q) {
       const contact::TangentialSolution sol =

@@ -55,6 +55,8 @@ struct TransientRevolutionSettings {
   double quasi_steady_tolerance = 1e-3;  // epsilon at or below which a settled step is quasi-steady
   // Relaxed (the default) or Consistent (Satran's shift scheme on the common grid)
   contact::TangentialScheme scheme = contact::kDefaultTangentialScheme;
+  // the relaxed model's step, in cells dx of the row's grid (an angle step in equal steps of at most this)
+  double relaxed_step_cells = 1;
 };
 
 // the relaxed full transient's warm-up before theta = 0, in relaxation lengths: what is left of its start is
