@@ -92,6 +92,8 @@ void relaxed_rows(const std::vector<AngleContact>& contacts, const Revolution& r
     if (p.a_m > 0 && p.b_m > 0) sigma[i] = contact::relaxation_lengths_m(p.a_m, p.b_m).xi;
     sigma_max = std::max(sigma_max, sigma[i]);
   }
+  out.xi.resize(n);
+  for (std::size_t i = 0; i < n; ++i) out.xi[i] = rollers[i].xi;
   out.unsteadiness.assign(n, 0);
   for (std::size_t i = 0; i < n; ++i) {
     const double xi = rollers[i].xi;

@@ -80,6 +80,7 @@ struct TransientRevolution {
   contact::Grid grid;                 // the common grid (Satran's, and the relaxed model's on unworn profiles)
   contact::TangentialScheme scheme = contact::kDefaultTangentialScheme;
   std::vector<double> a_m, b_m, p0_Pa;  // each row's contact (Hertz under the motion's F_n; worn: the patch's)
+  std::vector<double> xi;             // each row's creepage (the motion's; worn: the one for its F_t there)
   std::vector<double> unsteadiness;   // epsilon_i
   std::vector<char> skipped;          // 1: the row took the steady solution
   int skipped_rows = 0;

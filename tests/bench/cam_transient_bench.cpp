@@ -119,5 +119,15 @@ int main(int argc, char** argv) {
     if (d > worst) worst = d, worst_theta = full.dissipation[i].theta_rad;
   }
   std::printf("  its largest at %.2f deg\n", worst_theta * 57.29577951308232);
+  if (argc > 5 && std::string(argv[5]) == "rows") {  // per angle step: the contact, creepage and both powers
+    std::printf("theta_deg a_m b_m p0_Pa xi unsteadiness skipped P_full_W P_quasi_steady_W\n");
+    const cam::TransientRevolution& t = full;
+    for (std::size_t i = 0; i < n; ++i) {
+      const double th = full.dissipation[i].theta_rad * 57.29577951308232;
+      std::printf("%.2f %.4e %.4e %.4e %.6e %.3e %d %.6e %.6e\n", th, t.a_m[i], t.b_m[i], t.p0_Pa[i],
+                  t.xi.empty() ? 0.0 : t.xi[i], with.unsteadiness[i], static_cast<int>(with.skipped[i]),
+                  cam::total_power_W(full.dissipation[i]), cam::total_power_W(qs[i]));
+    }
+  }
   return 0;
 }
