@@ -126,8 +126,11 @@ CreepageForForce creepage_in_bracket(const AngleContact& c, double force_N, doub
   return r;
 }
 
+// the law's slope -dF_t/dxi at xi -> 0: G a b C11, the relaxed model's times its factor (its creepage factor over
+// the shape factor), so that the inversion's first step lands on a nearly linear law's root
 double linear_stiffness_N(const AngleContact& c) {
-  return c.G_Pa * c.normal.patch.a_m * c.normal.patch.b_m * c.problem.C.C11;
+  const double k = c.G_Pa * c.normal.patch.a_m * c.normal.patch.b_m * c.problem.C.C11;
+  return c.scheme == contact::TangentialScheme::Relaxed ? k * contact::relaxed_xi_slope_factor(c.normal.patch) : k;
 }
 }  // namespace
 

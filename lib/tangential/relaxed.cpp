@@ -284,6 +284,11 @@ double relaxed_xi_saturation_level(const ContactPatch& patch) {
   return hi;
 }
 
+double relaxed_xi_slope_factor(const ContactPatch& patch) {
+  if (!(patch.a_m > 0 && patch.b_m > 0)) return 1;
+  return factor(T::kE, T::kGx, patch.a_m / patch.b_m, 0.0) / relaxed_shape_factor(patch);
+}
+
 TangentialSolution solve_relaxed_steady(const ContactPatch& patch, const ElasticPair& pair, const Creepages& creepages,
                                         double mu, double speed_m_per_s, bool fields) {
   return steady_at(patch, pair, creepages, creepages, mu, speed_m_per_s, fields);

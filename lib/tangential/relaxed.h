@@ -66,6 +66,10 @@ Creepages relaxation_lengths_m(double a_m, double b_m);
 // simplified theory's e = 1). 1 where there is no contact.
 double relaxed_xi_saturation_level(const ContactPatch& patch);
 
+// the model's slope dFx/dxi at xi -> 0 over the simplified theory's on the patch: g_x(a/b, 0) / S (its creepage
+// factor at the lowest level, held below it, over the shape factor); 1 where there is no contact
+double relaxed_xi_slope_factor(const ContactPatch& patch);
+
 // the steady model: forces, fields, per-strip power (scaled to the creep forces' work), creep work.
 // Throws std::invalid_argument as make_tangential_problem.
 TangentialSolution solve_relaxed_steady(const ContactPatch& patch, const ElasticPair& pair, const Creepages& creepages,

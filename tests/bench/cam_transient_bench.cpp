@@ -119,6 +119,16 @@ int main(int argc, char** argv) {
     if (d > worst) worst = d, worst_theta = full.dissipation[i].theta_rad;
   }
   std::printf("  its largest at %.2f deg\n", worst_theta * 57.29577951308232);
+  {  // the same state's quasi-steady revolution with the other model (the motion the case's)
+    cam::CreepLawSettings other = setup->dynamics.law;
+    other.scheme = other.scheme == contact::TangentialScheme::Relaxed ? contact::TangentialScheme::Consistent
+                                                                        : contact::TangentialScheme::Relaxed;
+    const cam::RevolutionDissipation q2 = cam::worn_revolution_dissipation(
+        setup->model, setup->revolution, setup->motion.motion, setup->unworn_profiles, setup->life.grid, s, other);
+    std::printf("quasi-steady energy per revolution on this state: %s %.9g J, %s %.9g J\n",
+                contact::to_string(setup->dynamics.law.scheme).c_str(), cam::dissipation_totals(qs).energy_J,
+                contact::to_string(other.scheme).c_str(), cam::dissipation_totals(q2).energy_J);
+  }
   if (argc > 5 && std::string(argv[5]) == "rows") {  // per angle step: the contact, creepage and both powers
     std::printf("theta_deg a_m b_m p0_Pa xi unsteadiness skipped P_full_W P_quasi_steady_W\n");
     const cam::TransientRevolution& t = full;
