@@ -20,6 +20,7 @@
 #include "cam/cam_life.h"
 #include "cam/revolution_dissipation.h"
 #include "cam/revolution_transient.h"
+#include "lib/tangential/relaxed_shape.h"
 
 namespace {
 
@@ -128,6 +129,36 @@ int main(int argc, char** argv) {
     std::printf("quasi-steady energy per revolution on this state: %s %.9g J, %s %.9g J\n",
                 contact::to_string(setup->dynamics.law.scheme).c_str(), cam::dissipation_totals(qs).energy_J,
                 contact::to_string(other.scheme).c_str(), cam::dissipation_totals(q2).energy_J);
+  }
+  if (argc > 6 && std::string(argv[5]) == "angle") {  // one angle's contact under both models
+    const double theta = std::stod(argv[6]) / 57.29577951308232;
+    std::size_t i = 0;
+    while (i + 1 < n && setup->revolution.rows[i + 1].kin.theta_rad <= theta) ++i;
+    const cam::RevolutionRow& row = setup->revolution.rows[i];
+    const cam::RollerAngle& a = setup->motion.motion.angles[i];
+    double b_min = 1e300;
+    for (const cam::RevolutionRow& rr : setup->revolution.rows) b_min = std::min(b_min, rr.contact.b_m);
+    for (const contact::TangentialScheme k : {contact::TangentialScheme::Relaxed, contact::TangentialScheme::Consistent}) {
+      cam::CreepLawSettings law = cam::worn_contact_settings(setup->unworn_profiles, setup->life.grid,
+                                                             setup->dynamics.law, 2 * b_min / setup->dynamics.law.grid.ny);
+      law.scheme = k;
+      const contact::Profiles worn = cam::worn_profiles_at(setup->unworn_profiles, setup->life.grid, s, row.contact_arc_m);
+      const cam::AngleContact ac = cam::angle_contact(setup->model.bodies, worn, setup->model.geometry.roller_radius_m,
+                                                      row.kin, a.normal_N, setup->model.mu, law);
+      const cam::CreepageForForce xi = cam::creepage_for_force(ac, a.tangential_N);
+      const contact::TangentialSolution sol = cam::steady_creep(ac, xi.xi, a.speed_m_per_s);
+      double off_lo = 1e300, off_hi = -1e300;
+      for (int j = 0; j < ac.normal.patch.grid.ny; ++j)
+        if (ac.normal.patch.half_length_m(j) > 0 && ac.normal.patch.strip_xi_offset.size() > 0) {
+          off_lo = std::min(off_lo, ac.normal.patch.strip_xi_offset(j));
+          off_hi = std::max(off_hi, ac.normal.patch.strip_xi_offset(j));
+        }
+      std::printf("%.2f deg %s: a %.4e b %.4e patches %d F_n %.4g F_t %.4g xi %.4e (offsets %.3e .. %.3e) P %.6e W, "
+                  "-creep work %.6e W, Fx %.5g, stick %.3f, shape factor S %.4f\n", row.kin.theta_rad * 57.29577951308232,
+                  contact::to_string(k).c_str(), ac.normal.patch.a_m, ac.normal.patch.b_m, ac.normal.patches, a.normal_N,
+                  a.tangential_N, xi.xi, off_lo, off_hi, sol.power_W, -sol.creep_work_W, sol.Fx_N, sol.stick_fraction,
+                  contact::relaxed_shape_factor(ac.normal.patch));
+    }
   }
   if (argc > 5 && std::string(argv[5]) == "rows") {  // per angle step: the contact, creepage and both powers
     std::printf("theta_deg a_m b_m p0_Pa xi unsteadiness skipped P_full_W P_quasi_steady_W\n");
