@@ -138,6 +138,16 @@ int main(int argc, char** argv) {
     const cam::RollerAngle& a = setup->motion.motion.angles[i];
     double b_min = 1e300;
     for (const cam::RevolutionRow& rr : setup->revolution.rows) b_min = std::min(b_min, rr.contact.b_m);
+    if (argc > 7) {  // the worn profiles there as lateral profile files (y_m,z_m) PREFIX_roller.csv, PREFIX_track.csv
+      const contact::Profiles worn = cam::worn_profiles_at(setup->unworn_profiles, setup->life.grid, s, row.contact_arc_m);
+      for (const auto& [body, name] : {std::pair{&worn.body1, "_roller.csv"}, std::pair{&worn.body2, "_track.csv"}}) {
+        std::FILE* f = std::fopen((std::string(argv[7]) + name).c_str(), "w");
+        std::fprintf(f, "y_m,z_m\n");
+        for (Eigen::Index j = 0; j < body->y_m.size(); ++j) std::fprintf(f, "%.17g,%.17g\n", body->y_m(j), body->z_m(j));
+        std::fclose(f);
+      }
+      std::printf("cam radius %.9g m, rolling speed %.9g m/s\n", cam::cam_radius_m(row.kin), a.speed_m_per_s);
+    }
     for (const contact::TangentialScheme k : {contact::TangentialScheme::Relaxed, contact::TangentialScheme::Consistent}) {
       cam::CreepLawSettings law = cam::worn_contact_settings(setup->unworn_profiles, setup->life.grid,
                                                              setup->dynamics.law, 2 * b_min / setup->dynamics.law.grid.ny);
