@@ -11,6 +11,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <limits>
+#include <stdexcept>
 
 #include "cam/cam_case.h"
 #include "cam/cam_life.h"
@@ -211,6 +212,13 @@ TEST(CamTransient, QuasiSteadySkipOnAWornRevolutionStaysWithinItsTolerance) {
     return worn_transient_revolution(u->model, u->revolution, u->motion.motion, u->unworn_profiles, u->life.grid,
                                      worn, u->dynamics.law, k);
   };
+  {  // Satran needs the common grid's Hertz contacts: refused
+    TransientRevolutionSettings k = s;
+    k.scheme = contact::TangentialScheme::Consistent;
+    EXPECT_THROW(worn_transient_revolution(u->model, u->revolution, u->motion.motion, u->unworn_profiles, u->life.grid,
+                                           worn, u->dynamics.law, k),
+                 std::invalid_argument);
+  }
   const TransientRevolution full = run(false, s.quasi_steady_tolerance);
   const TransientRevolution with = run(true, s.quasi_steady_tolerance);
   const TransientRevolution everywhere = run(true, std::numeric_limits<double>::infinity());
