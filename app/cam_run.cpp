@@ -201,6 +201,7 @@ int run_cam_life_command(const std::string& case_path, const std::string& output
   try {
     cam::RollerDynamicsSettings dynamics;  // the case's cam.tangential, as rollwear cam reads it
     dynamics.law.grid = {c.solver.nx, c.solver.ny};
+    dynamics.law.scheme = c.solver.scheme;
     dynamics.periodicity_rtol = c.solver.periodic_rtol;
     dynamics.max_revolutions = c.solver.max_revolutions;
     setup = cam::set_up_cam_life(c.name, m, *c.wear, dynamics);

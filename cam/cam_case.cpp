@@ -180,6 +180,18 @@ CamCase read_cam_case(const std::string& path) {
         t.optional("max_revolutions", c.solver.max_revolutions,
                    [](int v) { return v >= 2 && v <= 1000 ? "" : "must be in [2, 1000]"; });
         t.optional("compare_full_transient", c.solver.compare_full_transient);
+        // the tangential model, as a wear case's solver.tangential: relaxed (the default) or consistent
+        std::string scheme = contact::to_string(c.solver.scheme);
+        t.optional("scheme", scheme, [](const std::string& v) -> std::string {
+          try {
+            const contact::TangentialScheme k = contact::parse_tangential_scheme(v);
+            if (k == contact::TangentialScheme::Relaxed || k == contact::TangentialScheme::Consistent) return "";
+          } catch (const std::invalid_argument&) {
+          }
+          return "must be relaxed (the default: the model matched to the exact theory) or consistent (the simplified "
+                 "theory); a cam takes neither classic nor exact";
+        });
+        c.solver.scheme = contact::parse_tangential_scheme(scheme);
       });
       s.optional_section("wear", [&](YamlMap& w) { read_cam_wear(w, c.wear.emplace()); });
     });

@@ -19,8 +19,9 @@
 //               inertia_kg_m2: 5.0e-6, bearing_torque_N_m: 0.002, bearing_drag_N_m_s: 1.0e-5 }
 //     track:  { width_m: 0.012, crown_radius_m: .inf, E_Pa: 2.1e11, nu: 0.3 }
 //     follower: { spring_rate_N_per_m: 2.0e4, preload_N: 150, moving_mass_kg: 0.4, guide_mu: 0.05 }
-//     tangential: { nx: 40, ny: 40, quasi_steady_tolerance: 1e-3, periodic_rtol: 1e-9, max_revolutions: 30,
-//                   compare_full_transient: true }    # optional, these defaults
+//     tangential: { scheme: relaxed, nx: 40, ny: 40, quasi_steady_tolerance: 1e-3, periodic_rtol: 1e-9,
+//                   max_revolutions: 30, compare_full_transient: true }    # optional, these defaults;
+//                   # scheme: relaxed (kDefaultTangentialScheme) | consistent (classic and exact refused)
 //     lift: { rise_law: cycloidal, lift_m: 0.010, rise_rad: 1.7453, dwell_high_rad: 0.6981,
 //             return_law: polynomial-345, return_rad: 1.7453 }
 //     # or lift: { table: [[0, 0.0], [0.0174533, 1.2e-6], ...] }  # [angle_rad, lift_m], steps of 2 pi/n from 0

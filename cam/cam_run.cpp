@@ -25,6 +25,7 @@ CamRun run_cam(const CamModel& m, const CamSolverSettings& s) {
   double t0 = cpu_s();
   RollerDynamicsSettings ds;
   ds.law.grid = {s.nx, s.ny};
+  ds.law.scheme = s.scheme;
   ds.periodicity_rtol = s.periodic_rtol;
   ds.max_revolutions = s.max_revolutions;
   run.motion = periodic_motion(m, run.revolution, ds);
@@ -45,6 +46,7 @@ CamRun run_cam(const CamModel& m, const CamSolverSettings& s) {
   }
   TransientRevolutionSettings ts;
   ts.grid = {s.nx, s.ny};
+  ts.scheme = s.scheme;
   ts.quasi_steady_tolerance = s.quasi_steady_tolerance;
   ts.skip = s.quasi_steady_tolerance > 0;
   run.transient = transient_revolution(m, run.revolution, run.motion.motion, ts);
@@ -70,9 +72,11 @@ std::string cam_summary(const CamRun& run) {
                      "tolerance {:.3g}); sliding at {} of {} angle steps; {} steady solves, {:.3g} s CPU\n",
                      p.revolutions, p.periodicity_residual_rad_per_s, p.tolerance_rad_per_s, p.sliding_steps,
                      p.motion.angles.size(), p.motion.creep_law_evaluations, run.cpu_dynamics_s);
-  out += fmt::format("transient: grid {} x {}, {} Satran steps + {} warm-up, {} of {} angle steps quasi-steady "
+  const bool relaxed = t.scheme == contact::TangentialScheme::Relaxed;
+  out += fmt::format("transient: grid {} x {}, {}, {} {} steps + {} warm-up, {} of {} angle steps quasi-steady "
                      "(skipped), {:.3g} s CPU\n",
-                     t.grid.nx, t.grid.ny, t.transient_steps, t.warmup_steps, t.skipped_rows, t.dissipation.size(),
+                     t.grid.nx, t.grid.ny, relaxed ? "relaxed model" : "simplified theory", t.transient_steps,
+                     relaxed ? "relaxed" : "Satran", t.warmup_steps, t.skipped_rows, t.dissipation.size(),
                      run.cpu_transient_s);
   if (!run.full.dissipation.empty())
     out += fmt::format("quasi-steady skip against the full transient ({} steps, {:.3g} s CPU): {:.1f} % of the steps "
@@ -84,11 +88,11 @@ std::string cam_summary(const CamRun& run) {
                      "roller spin {:.3g} + rounding {:.3g}\n",
                      e.shaft_J, e.guide_J, e.bearing_J, e.creep_rigid_J, e.heathcote_roller_J, e.heathcote_track_J,
                      e.train_J, e.roller_J, e.residual_J);
-  out += fmt::format("contact: dissipated {:.6g} J = creep work {:.6g} J - elastic {:.3g} J + {:.3g}; creep work = "
+  out += fmt::format("contact: dissipated {:.6g} J = creep work {:.6g} J - {} {:.3g} J + {:.3g}; creep work = "
                      "steady law's {:.6g} (= rigid + Heathcote + contact frame's rotation {:.3g}) + "
                      "transient's {:.3g}\n",
-                     e.dissipated_J, e.creep_work_J, e.elastic_J, e.tangential_residual_J, e.creep_steady_J, e.frame_J,
-                     e.transient_J);
+                     e.dissipated_J, e.creep_work_J, relaxed ? "relaxation" : "elastic", e.elastic_J,
+                     e.tangential_residual_J, e.creep_steady_J, e.frame_J, e.transient_J);
   return out;
 }
 

@@ -21,6 +21,8 @@ struct CamSolverSettings {
   double periodic_rtol = 1e-9;           // |omega_r(2 pi) - omega_r(0)| over max |omega_r,kin|
   int max_revolutions = 30;
   bool compare_full_transient = true;    // also run the revolution without the skip, to measure the skip's error
+  // the tangential model (cam.tangential.scheme): relaxed (the default, kDefaultTangentialScheme) or consistent
+  contact::TangentialScheme scheme = contact::kDefaultTangentialScheme;
 };
 
 // The roller's spin did not become periodic within max_revolutions: a solver's failure (exit 1)

@@ -6,12 +6,19 @@
 #include <stdexcept>
 
 #include "lib/numeric.h"
+#include "lib/tangential/relaxed.h"
 #include "lib/tangential/steady.h"
 
 namespace cam {
 
+void check_cam_scheme(contact::TangentialScheme scheme) {
+  if (scheme != contact::TangentialScheme::Relaxed && scheme != contact::TangentialScheme::Consistent)
+    throw std::invalid_argument("the cam's tangential model is relaxed or consistent, not " + contact::to_string(scheme));
+}
+
 AngleContact angle_contact(const RollerAndTrack& bodies, const contact::Profiles& profiles, double roller_radius_m,
                            const CamKinematics& k, double normal_load_N, double mu, const CreepLawSettings& s) {
+  check_cam_scheme(s.scheme);
   contact::NormalProblem np;
   np.choice = contact::NormalChoice::Auto;
   np.bodies.body1.Rx_m = roller_radius_m;
@@ -35,6 +42,8 @@ AngleContact angle_contact(const RollerAndTrack& bodies, const contact::Profiles
   c.normal = contact::solve_normal_converged(np);
   c.problem = contact::make_tangential_problem(c.normal.patch, bodies.pair, {}, mu, 0);
   c.G_Pa = contact::combined_shear_modulus_Pa(bodies.pair);
+  c.scheme = s.scheme;
+  c.pair = bodies.pair;
   if (s.heathcote_slip) {
     c.roller_depth_m = roller_depth_m(profiles, c.normal.grid_y0_m, c.normal.patch.grid);
     c.track_depth_m = track_depth_m(profiles, c.normal.grid_y0_m, c.normal.patch.grid);
@@ -76,6 +85,9 @@ CreepForce creep_force(const AngleContact& c, double xi) {
 }
 
 contact::TangentialSolution steady_creep(const AngleContact& c, double xi, double speed_m_per_s) {
+  if (c.scheme == contact::TangentialScheme::Relaxed)
+    return contact::solve_relaxed_steady(c.normal.patch, c.pair, {xi, 0, 0}, c.problem.mu, speed_m_per_s, false);
+  check_cam_scheme(c.scheme);
   contact::TangentialProblem p = c.problem;
   p.creepages = {xi, 0, 0};
   p.L_m_per_Pa = contact::mean_flexibility_m_per_Pa(p.flex, p.creepages, c.normal.patch.a_m, c.normal.patch.b_m);
@@ -114,8 +126,11 @@ CreepageForForce creepage_in_bracket(const AngleContact& c, double force_N, doub
   return r;
 }
 
+// the law's slope -dF_t/dxi at xi -> 0: G a b C11, the relaxed model's times its factor (its creepage factor over
+// the shape factor), so that the inversion's first step lands on a nearly linear law's root
 double linear_stiffness_N(const AngleContact& c) {
-  return c.G_Pa * c.normal.patch.a_m * c.normal.patch.b_m * c.problem.C.C11;
+  const double k = c.G_Pa * c.normal.patch.a_m * c.normal.patch.b_m * c.problem.C.C11;
+  return c.scheme == contact::TangentialScheme::Relaxed ? k * contact::relaxed_xi_slope_factor(c.normal.patch) : k;
 }
 }  // namespace
 

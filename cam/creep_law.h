@@ -1,12 +1,17 @@
 // The roller's steady creep law at one cam angle (docs/cam-follower.md §7): the contact of that angle
 // (lib/normal/normal.h on the roller's and the track's profiles, its strips on a grid, with the Heathcote
-// offsets of the crowned roller, docs/physics.md §2.4) and the project's steady solver
-// (lib/tangential/steady.h, consistent scheme) on it with the longitudinal creepage xi alone. The contact's
+// offsets of the crowned roller, docs/physics.md §2.4) and the project's steady tangential model on it with the
+// longitudinal creepage xi alone: the default model (contact::kDefaultTangentialScheme, the relaxed model of
+// lib/tangential/relaxed.h, matched to the exact theory, with the worn contacts' shape factor and strip weights of
+// lib/tangential/relaxed_shape.h) or the simplified theory (lib/tangential/steady.h, consistent scheme), as
+// CreepLawSettings::scheme says (the case's cam.tangential.scheme). The contact's
 // x runs along the pitch tangent t of cam/kinematics.h, so the solver's Fx is the cam's F_t on the roller and
 // its xi the cam's (docs/physics.md §1: xi = w_x/V, w_x = R_r (omega_r - omega_r,kin) the roller's slip
-// velocity over the cam, xi > 0 a roller lagging the cam, Fx = -G a b C11 xi in the linear range). The law is
-// the solver's, nonlinear and saturating towards -mu F_n sign(xi): the same one FASTSIM gives, so that the
-// roller's dynamics (cam/roller_dynamics.h) and the dissipation (cam/revolution_dissipation.h) agree.
+// velocity over the cam, xi > 0 a roller lagging the cam, Fx = -G a b C11 xi in the linear range: the consistent
+// scheme's to the strip sum's quadrature, the relaxed model's to its creepage factor g_x(a/b, e), 0.97-0.98 at its
+// lowest level e = 0.05, held below it). The law is nonlinear and saturating towards -mu F_n sign(xi), one law
+// for the roller's dynamics (cam/roller_dynamics.h) and the dissipation (cam/revolution_dissipation.h), so
+// that they agree.
 #pragma once
 
 #include "cam/kinematics.h"
@@ -33,6 +38,8 @@ struct CreepLawSettings {
   bool worn = false;
   // the semi-Hertzian search's load tolerance (SemiHertzOptions::load_rtol)
   double normal_load_rtol = contact::SemiHertzOptions{}.load_rtol;
+  // the steady tangential model: Relaxed (the default) or Consistent; angle_contact refuses the others
+  contact::TangentialScheme scheme = contact::kDefaultTangentialScheme;
 };
 
 struct AngleContact {
@@ -44,7 +51,13 @@ struct AngleContact {
   Eigen::ArrayXd roller_depth_m;
   // likewise the track's surface below the cam's at the reference line, z2(y_j) - z2(y0) (a crowned track)
   Eigen::ArrayXd track_depth_m;
+  // the steady model (CreepLawSettings::scheme) and the materials it needs (the relaxed model's levels)
+  contact::TangentialScheme scheme = contact::kDefaultTangentialScheme;
+  contact::ElasticPair pair;
 };
+
+// the cam's tangential models: Relaxed and Consistent (std::invalid_argument naming them otherwise)
+void check_cam_scheme(contact::TangentialScheme scheme);
 
 // the creep force on the roller along t and its torque's correction for the strips' radii:
 //   torque about the axle = R_r force - depth_moment,  depth_moment = sum_j F_j (z1(y_j) - z1(y0)) dy
@@ -64,7 +77,7 @@ Eigen::ArrayXd track_depth_m(const contact::Profiles& profiles, double y0_m, con
 AngleContact angle_contact(const RollerAndTrack& bodies, const contact::Profiles& profiles, double roller_radius_m,
                            const CamKinematics& k, double normal_load_N, double mu, const CreepLawSettings& s);
 
-// the steady solution at creepage xi and rolling speed V (strips and totals, no fields)
+// the steady solution at creepage xi and rolling speed V (strips and totals, no fields) with the contact's model
 contact::TangentialSolution steady_creep(const AngleContact& c, double xi, double speed_m_per_s);
 
 // F_t(xi): the steady creep force on the roller along t (N), independent of V

@@ -44,7 +44,7 @@ RevolutionEnergy revolution_energy(const CamModel& m, const Revolution& r, const
     e.dissipated_J = t.dissipated_J;
     e.creep_work_J = t.creep_work_J;
     e.transient_J = t.creep_work_J - e.creep_steady_J;
-    e.elastic_J = t.elastic_change_J + t.trailing_J + t.transport_J;
+    e.elastic_J = t.elastic_change_J + t.trailing_J + t.transport_J + t.relaxation_J;
     e.tangential_residual_J = t.dissipated_J - (t.creep_work_J - e.elastic_J);
   }
   return e;

@@ -22,8 +22,10 @@
 // Heathcote's offsets (docs/physics.md §2.4) with the roller's spin relative to the contact, V/R_r; the roller's
 // term above has its spin in the fixed frame, |omega_r| = V/R_r + (omega |P'| kappa_p - omega): the two agree on the
 // dwells, and differ by the contact frame's rotation elsewhere (frame_J = steady creep - rigid - Heathcote terms).
-// Satran's balance (cam/revolution_transient.h): dissipated (the integral of P dt) = creep work - elastic terms,
-// its creep work the steady law's plus the transient's departure from it (transient_J).
+// The tangential solve's balance (cam/revolution_transient.h): dissipated (the integral of P dt) = creep work -
+// elastic terms (Satran's springs: elastic change, trailing edge, transport; the relaxed model: the relaxation,
+// the creep force's work against the creepage's lag), its creep work the steady law's plus the transient's
+// departure from it (transient_J).
 #pragma once
 
 #include "cam/revolution.h"
@@ -45,7 +47,7 @@ struct RevolutionEnergy {
   double dissipated_J = 0;      // the integral of P dt
   double creep_work_J = 0;      // the rigid slip's work in the tangential solve, Heathcote's included
   double transient_J = 0;       // creep_work - creep_steady: the transient's departure from the steady law
-  double elastic_J = 0;         // elastic change + trailing + transport (the springs' terms of the step balance)
+  double elastic_J = 0;         // elastic change + trailing + transport (Satran's springs) + relaxation (relaxed model)
   double tangential_residual_J = 0;  // dissipated - (creep_work - elastic)
 };
 

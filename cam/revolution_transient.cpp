@@ -3,15 +3,19 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #include <spdlog/fmt/fmt.h>
 
 #include "cam/cam_error.h"
+#include "cam/cam_life.h"
+#include "cam/cam_wear.h"
 #include "cam/revolution_dissipation.h"
 #include "lib/normal/hertz.h"
 #include "lib/normal/semi_hertz.h"
 #include "lib/numeric.h"
+#include "lib/tangential/relaxed.h"
 #include "lib/tangential/satran.h"
 #include "lib/tangential/steady.h"
 
@@ -44,7 +48,8 @@ contact::HertzContact hertz_at(const RollerAndTrack& bodies, const Fits& f, doub
 
 AngleContact contact_from_hertz(const RollerAndTrack& bodies, const contact::Profiles& profiles, const Fits& f,
                                 double Rr, const CamKinematics& k, const contact::HertzContact& h, double mu,
-                                bool heathcote_slip, const contact::Grid& grid) {
+                                bool heathcote_slip, const contact::Grid& grid,
+                                contact::TangentialScheme scheme = contact::TangentialScheme::Consistent) {
   if (h.a_m > grid.half_x_m * (1 + 1e-12) || h.b_m > grid.half_y_m * (1 + 1e-12))
     throw std::invalid_argument("the contact does not fit inside the revolution's grid");
   AngleContact c;
@@ -58,6 +63,8 @@ AngleContact contact_from_hertz(const RollerAndTrack& bodies, const contact::Pro
         contact::heathcote_xi_offset(profiles, Rr, cam_radius_m(k), f.y0 + grid.y_m, f.y0);
   c.problem = contact::make_tangential_problem(c.normal.patch, bodies.pair, {}, mu, 0);
   c.G_Pa = contact::combined_shear_modulus_Pa(bodies.pair);
+  c.scheme = scheme;
+  c.pair = bodies.pair;
   if (heathcote_slip) {
     c.roller_depth_m = roller_depth_m(profiles, f.y0, grid);
     c.track_depth_m = track_depth_m(profiles, f.y0, grid);
@@ -65,14 +72,130 @@ AngleContact contact_from_hertz(const RollerAndTrack& bodies, const contact::Pro
   return c;
 }
 
+
+double relative_change(double x, double y, double ref) { return ref > 0 ? std::abs(x - y) / ref : 0.0; }
+
+// the relaxed model along the revolution on the rows' contacts (revolution_transient.h): fills out's dissipation,
+// unsteadiness, skipped rows, step counts and energies
+void relaxed_rows(const std::vector<AngleContact>& contacts, const Revolution& r, const std::vector<RollerAngle>& rollers,
+                  double dt_row, const TransientRevolutionSettings& s, TransientRevolution& out) {
+  const std::size_t n = r.rows.size();
+  if (!(s.relaxed_step_cells > 0 && std::isfinite(s.relaxed_step_cells)))
+    throw std::invalid_argument("relaxed_step_cells must be > 0 and finite");
+  std::vector<double> sigma(n, 0.0);
+  double sigma_max = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const contact::ContactPatch& p = contacts[i].normal.patch;
+    if (!(rollers[i].speed_m_per_s > 0))
+      throw std::invalid_argument(fmt::format("the revolution's transient: at cam angle {:.6g} deg the rolling speed is "
+                                              "not positive", r.rows[i].kin.theta_rad * kDegPerRad));
+    if (p.a_m > 0 && p.b_m > 0) sigma[i] = contact::relaxation_lengths_m(p.a_m, p.b_m).xi;
+    sigma_max = std::max(sigma_max, sigma[i]);
+  }
+  out.xi.resize(n);
+  for (std::size_t i = 0; i < n; ++i) out.xi[i] = rollers[i].xi;
+  out.unsteadiness.assign(n, 0);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double xi = rollers[i].xi;
+    double change = 0;
+    for (const std::size_t k : {(i + 1) % n, (i + n - 1) % n})
+      change = std::max(change, relative_change(xi, rollers[k].xi, std::max(std::abs(xi), std::abs(rollers[k].xi))));
+    out.unsteadiness[i] = sigma[i] / rollers[i].speed_m_per_s / dt_row * change;
+  }
+  // how many rows before i (i excluded) roll `length`
+  const auto rows_back = [&](std::size_t i, double length) {
+    std::size_t k = 0;
+    double rolled = 0;
+    while (rolled < length && k < n) {
+      ++k;
+      rolled += rollers[(i + n - k) % n].speed_m_per_s * dt_row;
+    }
+    return k;
+  };
+  out.skipped.assign(n, 0);
+  const double tol = s.quasi_steady_tolerance;
+  if (s.skip && tol > 0) {
+    const double memory = sigma_max * std::log(1 / std::min(tol, 0.5));  // the lag left: tol of a change
+    for (std::size_t i = 0; i < n; ++i) {
+      bool qs = out.unsteadiness[i] <= tol;
+      const std::size_t back = rows_back(i, memory);
+      for (std::size_t k = 1; qs && k <= back; ++k) qs = out.unsteadiness[(i + n - k) % n] <= tol;
+      out.skipped[i] = qs;
+      out.skipped_rows += qs;
+    }
+  }
+
+  contact::RelaxedState state = contact::relaxed_rest();
+  // row i's steps, each at most one cell of its grid; its strip energies into e and the energies into energy
+  const auto run_row = [&](std::size_t i, Eigen::ArrayXd* e, TransientEnergy* energy, long& steps) {
+    const AngleContact& c = contacts[i];
+    const contact::ContactPatch& p = c.normal.patch;
+    const double V = rollers[i].speed_m_per_s, xi = rollers[i].xi;
+    const double rolled = V * dt_row;
+    const long k = std::max(1L, static_cast<long>(std::ceil(rolled / (s.relaxed_step_cells * p.grid.dx_m) - 1e-9)));
+    const double dq = rolled / static_cast<double>(k), dts = dt_row / static_cast<double>(k);
+    for (long q = 0; q < k; ++q) {
+      const contact::TangentialSolution sol =
+          contact::relaxed_step(p, c.pair, {xi, 0, 0}, c.problem.mu, V, dq, state, false);
+      ++steps;
+      if (e) *e += sol.strip_power_W_per_m * dts;
+      if (energy) {
+        energy->dissipated_J += sol.power_W * dts;
+        energy->creep_work_J += -sol.creep_work_W * dts;  // the steps' sign: energy the rigid slip puts in
+        energy->relaxation_J += -V * (xi - state.effective.xi) * sol.Fx_N * dts;
+      }
+    }
+  };
+
+  out.dissipation.resize(n);
+  bool warm = false;
+  for (std::size_t i = 0; i < n; ++i) {
+    const RevolutionRow& row = r.rows[i];
+    const RollerAngle& a = rollers[i];
+    if (out.skipped[i]) {
+      out.dissipation[i] = angle_dissipation(contacts[i], row, a, dt_row);
+      ++out.steady_solves;
+      const contact::TangentialSolution sol = steady_creep(contacts[i], a.xi, a.speed_m_per_s);
+      out.energy.dissipated_J += sol.power_W * dt_row;
+      out.energy.creep_work_J += -sol.creep_work_W * dt_row;
+      warm = false;
+      continue;
+    }
+    if (!warm) {
+      const std::size_t before = (i + n - 1) % n;
+      if (out.skipped[before]) {
+        state = contact::relaxed_steady_state({rollers[before].xi, 0, 0});  // quasi-steady there
+      } else {  // from the steady state kWarmupSigmas relaxation lengths back
+        const std::size_t back = rows_back(i, kWarmupSigmas * sigma_max);
+        state = contact::relaxed_steady_state({rollers[(i + n - back) % n].xi, 0, 0});
+        for (std::size_t k = back; k >= 1; --k) run_row((i + n - k) % n, nullptr, nullptr, out.warmup_steps);
+      }
+    }
+    warm = true;
+    const contact::ContactPatch& patch = contacts[i].normal.patch;
+    Eigen::ArrayXd e = Eigen::ArrayXd::Zero(patch.grid.ny);
+    run_row(i, &e, &out.energy, out.transient_steps);
+    AngleDissipation& d = out.dissipation[i];
+    d.theta_rad = row.kin.theta_rad;
+    d.duration_s = dt_row;
+    d.cam_arc_m = row.contact_arc_m;
+    d.rolling_speed_m_per_s = row.kin.rolling_speed_m_per_s;
+    d.roller_surface_speed_m_per_s = roller_surface_speed_m_per_s(row.kin.rolling_speed_m_per_s, a.slip_speed_m_per_s);
+    d.y_m = contacts[i].normal.grid_y0_m + patch.grid.y_m;
+    d.power_W_per_m = e / dt_row;
+    d.mean_pressure_Pa = (patch.half_length_m > 0).select(contact::kPi / 4 * patch.strip_peak_Pa, 0.0);
+  }
+}
+
 }  // namespace
 
 AngleContact angle_contact_on_grid(const RollerAndTrack& bodies, const contact::Profiles& profiles,
                                    double roller_radius_m, const CamKinematics& k, double normal_load_N, double mu,
-                                   bool heathcote_slip, const contact::Grid& grid) {
+                                   bool heathcote_slip, const contact::Grid& grid, contact::TangentialScheme scheme) {
+  check_cam_scheme(scheme);
   const Fits f = profile_fits(profiles);
   return contact_from_hertz(bodies, profiles, f, roller_radius_m, k,
-                            hertz_at(bodies, f, roller_radius_m, k, normal_load_N), mu, heathcote_slip, grid);
+                            hertz_at(bodies, f, roller_radius_m, k, normal_load_N), mu, heathcote_slip, grid, scheme);
 }
 
 TransientRevolution transient_revolution(const CamModel& m, const Revolution& r, const RollerMotion& motion,
@@ -81,6 +204,7 @@ TransientRevolution transient_revolution(const CamModel& m, const Revolution& r,
   if (motion.angles.size() != n || n < 2)
     throw std::invalid_argument("transient_revolution: the roller's motion does not match the revolution");
   if (!(s.quasi_steady_tolerance >= 0)) throw std::invalid_argument("quasi_steady_tolerance must be >= 0");
+  check_cam_scheme(s.scheme);
   const double Rr = m.geometry.roller_radius_m;
   const double dt_row = 2 * contact::kPi / static_cast<double>(n) / m.omega_rad_per_s;
   const contact::Profiles profiles = roller_and_track_profiles(m.bodies);
@@ -101,10 +225,16 @@ TransientRevolution transient_revolution(const CamModel& m, const Revolution& r,
     out.p0_Pa.push_back(h.p0_Pa);
   }
   out.grid = contact::make_grid(a_max, b_max, s.grid);
+  out.scheme = s.scheme;
   const contact::Grid& g = out.grid;
   std::vector<AngleContact> contacts(n);
   for (std::size_t i = 0; i < n; ++i)
-    contacts[i] = contact_from_hertz(m.bodies, profiles, f, Rr, r.rows[i].kin, hertz[i], m.mu, s.heathcote_slip, g);
+    contacts[i] =
+        contact_from_hertz(m.bodies, profiles, f, Rr, r.rows[i].kin, hertz[i], m.mu, s.heathcote_slip, g, s.scheme);
+  if (s.scheme == contact::TangentialScheme::Relaxed) {
+    relaxed_rows(contacts, r, motion.angles, dt_row, s, out);
+    return out;
+  }
 
   // unsteadiness per row
   out.unsteadiness.assign(n, 0);
@@ -225,20 +355,66 @@ TransientRevolution transient_revolution(const CamModel& m, const Revolution& r,
   return out;
 }
 
-SkipComparison compare_skip(const TransientRevolution& with_skip, const TransientRevolution& full) {
+TransientRevolution worn_transient_revolution(const CamModel& m, const Revolution& r, const RollerMotion& motion,
+                                              const contact::Profiles& unworn, const CamWearGrid& g,
+                                              const CamWearState& worn, const CreepLawSettings& law,
+                                              const TransientRevolutionSettings& s) {
+  const std::size_t n = r.rows.size();
+  if (motion.angles.size() != n || n < 2)
+    throw std::invalid_argument("worn_transient_revolution: the roller's motion does not match the revolution");
+  if (s.scheme != contact::TangentialScheme::Relaxed)
+    throw std::invalid_argument("worn_transient_revolution: the relaxed model only (Satran needs the common grid's "
+                                "Hertz contacts)");
+  if (!(s.quasi_steady_tolerance >= 0)) throw std::invalid_argument("quasi_steady_tolerance must be >= 0");
+  const double dt_row = 2 * contact::kPi / static_cast<double>(n) / m.omega_rad_per_s;
+  // the contacts and creepages of worn_revolution_dissipation (cam/cam_life.h)
+  double b_min = std::numeric_limits<double>::infinity();
+  for (const RevolutionRow& row : r.rows) b_min = std::min(b_min, row.contact.b_m);
+  CreepLawSettings fixed = worn_contact_settings(unworn, g, law, 2 * b_min / law.grid.ny);
+  fixed.scheme = s.scheme;
+  std::vector<AngleContact> contacts(n);
+  std::vector<RollerAngle> rollers = motion.angles;
+  TransientRevolution out;
+  out.scheme = s.scheme;
+  for (std::size_t i = 0; i < n; ++i) {
+    const RevolutionRow& row = r.rows[i];
+    const contact::Profiles profiles = worn_profiles_at(unworn, g, worn, row.contact_arc_m);
+    contacts[i] = angle_contact(m.bodies, profiles, m.geometry.roller_radius_m, row.kin, rollers[i].normal_N, m.mu,
+                                fixed);
+    const CreepageForForce xi = creepage_for_force(contacts[i], rollers[i].tangential_N);
+    if (xi.found) {
+      rollers[i].xi = xi.xi;
+      rollers[i].slip_speed_m_per_s = xi.xi * rollers[i].speed_m_per_s;
+    }
+    const contact::ContactPatch& p = contacts[i].normal.patch;
+    out.a_m.push_back(p.a_m);
+    out.b_m.push_back(p.b_m);
+    out.p0_Pa.push_back(p.p0_Pa);
+  }
+  relaxed_rows(contacts, r, rollers, dt_row, s, out);
+  return out;
+}
+
+SkipComparison compare_dissipation(const RevolutionDissipation& d, const RevolutionDissipation& full) {
   SkipComparison c;
-  if (with_skip.dissipation.size() != full.dissipation.size())
-    throw std::invalid_argument("compare_skip: the revolutions differ in steps");
+  if (d.size() != full.size()) throw std::invalid_argument("compare_dissipation: the revolutions differ in steps");
   double p_max = 0, diff = 0, e_skip = 0, e_full = 0;
-  for (std::size_t i = 0; i < full.dissipation.size(); ++i) {
-    const double pf = total_power_W(full.dissipation[i]), ps = total_power_W(with_skip.dissipation[i]);
+  for (std::size_t i = 0; i < full.size(); ++i) {
+    const double pf = total_power_W(full[i]), ps = total_power_W(d[i]);
     p_max = std::max(p_max, pf);
     diff = std::max(diff, std::abs(ps - pf));
-    e_full += pf * full.dissipation[i].duration_s;
-    e_skip += ps * with_skip.dissipation[i].duration_s;
+    e_full += pf * full[i].duration_s;
+    e_skip += ps * d[i].duration_s;
   }
   c.max_power_error = p_max > 0 ? diff / p_max : 0;
   c.energy_error = e_full > 0 ? (e_skip - e_full) / e_full : 0;
+  return c;
+}
+
+SkipComparison compare_skip(const TransientRevolution& with_skip, const TransientRevolution& full) {
+  if (with_skip.dissipation.size() != full.dissipation.size())
+    throw std::invalid_argument("compare_skip: the revolutions differ in steps");
+  SkipComparison c = compare_dissipation(with_skip.dissipation, full.dissipation);
   const double steps_full = static_cast<double>(full.transient_steps + full.warmup_steps);
   c.step_saving = steps_full > 0 ? 1 - static_cast<double>(with_skip.transient_steps + with_skip.warmup_steps) / steps_full : 0;
   return c;

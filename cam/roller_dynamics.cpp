@@ -10,13 +10,15 @@
 
 #include "cam/cam_error.h"
 #include "lib/numeric.h"
+#include "lib/tangential/relaxed.h"
 #include "lib/tangential/tangential.h"
 
 namespace cam {
 
 double saturation_creepage(const AngleContact& c) {
   const contact::ContactPatch& p = c.normal.patch;
-  return 3 * c.problem.mu * p.normal_load_N / (c.G_Pa * p.a_m * p.b_m * c.problem.C.C11);
+  const double jv = 3 * c.problem.mu * p.normal_load_N / (c.G_Pa * p.a_m * p.b_m * c.problem.C.C11);
+  return c.scheme == contact::TangentialScheme::Relaxed ? jv * contact::relaxed_xi_saturation_level(p) : jv;
 }
 
 namespace {

@@ -40,12 +40,15 @@ struct PeriodicMotion {
   double periodicity_residual_rad_per_s = 0;  // the last one's
   double tolerance_rad_per_s = 0;
   bool converged = false;
-  int sliding_steps = 0;                   // rows with |xi| >= the saturation creepage 3 mu F_n/(G a b C11)
+  int sliding_steps = 0;                   // rows with |xi| >= the law's saturation creepage (saturation_creepage)
   double start_omega_r_rad_per_s = 0;      // the last revolution's start (the one before's end), at theta = 0
 };
 
-// the saturation creepage of Johnson and Vermeulen, 3 mu F_n/(G a b C11): a row whose |xi| reaches it is
-// reported as sliding (a report only: the law itself decides the force)
+// the creepage at which the contact's law saturates: the simplified theory's (consistent) that of Johnson and
+// Vermeulen, 3 mu F_n/(G a b C11); the relaxed model's that times relaxed_xi_saturation_level (about 0.6 on Hertz
+// patches, lib/tangential/relaxed.h: where it gives the force the simplified theory gives at 3 mu F_n/(G a b C11)).
+// A row whose |xi| reaches it is reported as sliding (a report only: the law itself decides the force; Heathcote's
+// offsets are not in it)
 double saturation_creepage(const AngleContact& c);
 
 // Throws std::invalid_argument for bad settings, std::runtime_error when a step finds no root (the roller

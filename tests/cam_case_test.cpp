@@ -89,6 +89,21 @@ TEST_F(CamCaseTest, UnknownKeysAndBadValuesNameFileLineAndKey) {
   expect_case_error(f, t, "cam.lift.rise_law", line_of(t, "parabolic"), "must be one of");
 }
 
+// cam.tangential.scheme chooses the tangential model as a wear case's solver.tangential does: relaxed by default,
+// consistent on request; classic, exact and a misspelling refused at the key's line
+TEST_F(CamCaseTest, TangentialSchemeIsRelaxedByDefaultConsistentOnRequestOthersRefused) {
+  const fs::path f = dir_ / "cam.yaml";
+  const cam::CamCase shipped = cam::read_cam_case((kSource / "cases" / "cam-follower.yaml").string());
+  EXPECT_EQ(shipped.solver.scheme, contact::TangentialScheme::Relaxed);
+  std::string t = shipped_with("  angle_steps: 720", "  angle_steps: 720\n  tangential: { scheme: consistent }");
+  { std::ofstream(f) << t; }
+  EXPECT_EQ(cam::read_cam_case(f.string()).solver.scheme, contact::TangentialScheme::Consistent);
+  for (const char* bad : {"exact", "classic", "relaxd"}) {
+    t = shipped_with("  angle_steps: 720", std::string("  angle_steps: 720\n  tangential: { scheme: ") + bad + " }");
+    expect_case_error(f, t, "cam.tangential.scheme", line_of(t, "scheme:"), "must be relaxed");
+  }
+}
+
 // The keys are SI: a key of the former spelling is refused at its line, naming its SI key with the value
 // converted (600 rpm = 62.83 rad/s, 100 deg = 1.745 rad)
 TEST_F(CamCaseTest, FormerDegreeAndRpmKeysAreRefusedWithTheirSIKey) {

@@ -1,8 +1,8 @@
 // Energy over the periodic revolution (cam/revolution_energy.h, docs/cam-follower.md §10): the shaft's work
 // equals the guide's friction, the bearing's loss and the creep force's work against the roller's rigid slip,
 // the spring-and-mass term and the roller's spin energy being 0 to the integrator's tolerance; the tangential
-// solve's dissipation equals its creep work less its elastic terms, to rounding. A roller that rolls and one
-// that slides.
+// solve's dissipation equals its creep work less its elastic terms (the relaxed model's relaxation, the default;
+// Satran's springs with consistent), to rounding. A roller that rolls and one that slides.
 #include <gtest/gtest.h>
 
 #include <cmath>

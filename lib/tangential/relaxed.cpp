@@ -270,6 +270,25 @@ Creepages relaxation_lengths_m(double a_m, double b_m) {
   return {over_ab(T::kSigmaX, ab) * a_m, over_ab(T::kSigmaY, ab) * a_m, over_ab(T::kSigmaPhi, ab) * a_m};
 }
 
+double relaxed_xi_saturation_level(const ContactPatch& patch) {
+  if (!(patch.a_m > 0 && patch.b_m > 0)) return 1;
+  const double ab = patch.a_m / patch.b_m, S = relaxed_shape_factor(patch);
+  // e g_x(e) increases with e on the table (CamCreepLaw.RelaxedLawSaturatesAtItsSaturationCreepage); bisection
+  const auto f = [&](double e) { return e * factor(T::kE, T::kGx, ab, e) - S; };
+  double lo = 0, hi = 1;
+  while (f(hi) < 0) hi *= 2;
+  for (int k = 0; k < 200 && hi - lo > 1e-15 * hi; ++k) {
+    const double mid = 0.5 * (lo + hi);
+    (f(mid) < 0 ? lo : hi) = mid;
+  }
+  return hi;
+}
+
+double relaxed_xi_slope_factor(const ContactPatch& patch) {
+  if (!(patch.a_m > 0 && patch.b_m > 0)) return 1;
+  return factor(T::kE, T::kGx, patch.a_m / patch.b_m, 0.0) / relaxed_shape_factor(patch);
+}
+
 TangentialSolution solve_relaxed_steady(const ContactPatch& patch, const ElasticPair& pair, const Creepages& creepages,
                                         double mu, double speed_m_per_s, bool fields) {
   return steady_at(patch, pair, creepages, creepages, mu, speed_m_per_s, fields);

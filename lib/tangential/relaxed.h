@@ -59,6 +59,17 @@ inline RelaxedState relaxed_steady_state(const Creepages& c) { return {c, {}, -1
 // the relaxation lengths (m) of xi, eta and phi on a contact of semi-axes a_m (along rolling), b_m
 Creepages relaxation_lengths_m(double a_m, double b_m);
 
+// the saturation level e = G a b C11 |xi| / (3 mu N) at which the model under xi alone is as saturated as the
+// simplified theory at e = 1 (Johnson and Vermeulen's saturation creepage; the same force, without Heathcote
+// offsets): the simplified theory it solves is at its own level e g_x(a/b, e) / S there (S the shape factor), so
+// this is the root of e g_x(a/b, e) = S: about 0.6 on Hertz patches (the exact theory saturates before the
+// simplified theory's e = 1). 1 where there is no contact.
+double relaxed_xi_saturation_level(const ContactPatch& patch);
+
+// the model's slope dFx/dxi at xi -> 0 over the simplified theory's on the patch: g_x(a/b, 0) / S (its creepage
+// factor at the lowest level, held below it, over the shape factor); 1 where there is no contact
+double relaxed_xi_slope_factor(const ContactPatch& patch);
+
 // the steady model: forces, fields, per-strip power (scaled to the creep forces' work), creep work.
 // Throws std::invalid_argument as make_tangential_problem.
 TangentialSolution solve_relaxed_steady(const ContactPatch& patch, const ElasticPair& pair, const Creepages& creepages,

@@ -81,6 +81,7 @@ int main(int argc, char** argv) {
   }
   cam::RollerDynamicsSettings dynamics;
   dynamics.law.grid = {c.solver.nx, c.solver.ny};
+  dynamics.law.scheme = c.solver.scheme;
   dynamics.periodicity_rtol = c.solver.periodic_rtol;
   dynamics.max_revolutions = c.solver.max_revolutions;
 
