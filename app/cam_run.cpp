@@ -199,12 +199,7 @@ int run_cam_life_command(const std::string& case_path, const std::string& output
   // the unworn periodic revolution: kinematics, loads, the roller's motion, the dissipation
   std::unique_ptr<cam::CamLifeSetup> setup;
   try {
-    cam::RollerDynamicsSettings dynamics;  // the case's cam.tangential, as rollwear cam reads it
-    dynamics.law.grid = {c.solver.nx, c.solver.ny};
-    dynamics.law.scheme = c.solver.scheme;
-    dynamics.periodicity_rtol = c.solver.periodic_rtol;
-    dynamics.max_revolutions = c.solver.max_revolutions;
-    setup = cam::set_up_cam_life(c.name, m, *c.wear, dynamics);
+    setup = cam::set_up_cam_life(c.name, m, *c.wear, cam::roller_dynamics_of(c.solver));
   } catch (const cam::CamError& e) {
     throw cam::case_error_of(c, e);
   }
@@ -318,11 +313,12 @@ int run_cam_life_command(const std::string& case_path, const std::string& output
       "max depth: {:.6g} m\nmax lift loss: {:.6g} m at cam angle {:.4g} deg\n"
       "worn volume: track {:.6g} m^3, roller {:.6g} m^3\ndissipated: {:.6g} J\n"
       "steps: {} ({} rejected), evaluations of the wear rate: {}, revolutions solved: {}\n"
-      "worn revolutions: {} angle steps, {} normal solves (the rest shared a contact), {} F(delta) and {} creep-law "
+      "worn revolutions: {} angle steps ({} interpolated by the skip), {} normal solves (the rest shared a contact), {} F(delta) and {} creep-law "
       "evaluations, {} warm starts retried cold\nresumed: {}\ncpu: {:.3g} s\n",
       c.name, life.N, hours, m.omega_rad_per_s, cam::to_string(life.ended_by), life.message, life.max_depth_m,
       life.lift_loss.max_m, life.lift_loss.at_theta_rad * cam::kDegPerRad, life.cam_volume_m3, life.roller_volume_m3,
       life.energy_J, life.steps, life.rejected, life.rhs_evals, life.revolutions_solved, setup->worn->stats().angles,
+      setup->worn->stats().interpolated_angles,
       setup->worn->stats().contacts_solved, setup->worn->stats().approach_evaluations,
       setup->worn->stats().creep_evaluations, setup->worn->stats().cold_retries, resume ? "true" : "false", cpu);
   if (life.ended_by == cam::CamLifeEnd::Failed && life.steps > 0 && last.x.size() > 0) {

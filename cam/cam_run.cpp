@@ -18,17 +18,21 @@ double cpu_s() { return static_cast<double>(std::clock()) / CLOCKS_PER_SEC; }
 
 }  // namespace
 
-CamRun run_cam(const CamModel& m, const CamSolverSettings& s) {
-  CamRun run;
-  run.revolution = run_revolution(m);
-  if (run.revolution.status != RevolutionStatus::Complete) return run;
-  double t0 = cpu_s();
+RollerDynamicsSettings roller_dynamics_of(const CamSolverSettings& s) {
   RollerDynamicsSettings ds;
   ds.law.grid = {s.nx, s.ny};
   ds.law.scheme = s.scheme;
   ds.periodicity_rtol = s.periodic_rtol;
   ds.max_revolutions = s.max_revolutions;
-  run.motion = periodic_motion(m, run.revolution, ds);
+  return ds;
+}
+
+CamRun run_cam(const CamModel& m, const CamSolverSettings& s) {
+  CamRun run;
+  run.revolution = run_revolution(m);
+  if (run.revolution.status != RevolutionStatus::Complete) return run;
+  double t0 = cpu_s();
+  run.motion = periodic_motion(m, run.revolution, roller_dynamics_of(s));
   if (!run.motion.converged)
     throw PeriodicityError(fmt::format("the roller's spin is not periodic after {} revolutions: |omega_r(2 pi) - "
                                        "omega_r(0)| = {:.3g} rad/s > {:.3g} rad/s (cam.tangential.periodic_rtol)",

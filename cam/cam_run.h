@@ -44,6 +44,10 @@ struct CamRun {
 
 // throws CamError (a refused design), PeriodicityError, std::runtime_error / std::invalid_argument from the
 // solvers. Status Jump: only the revolution (no rows) comes back.
+// the roller's spin and the creep law as the case's cam.tangential asks (grid, scheme, periodicity): what
+// rollwear cam, rollwear run and the benchmarks hand to periodic_motion and set_up_cam_life
+RollerDynamicsSettings roller_dynamics_of(const CamSolverSettings& s);
+
 CamRun run_cam(const CamModel& m, const CamSolverSettings& s);
 
 // the printed summary (after the revolution's own lines): the roller, the transient and its skip, the energy

@@ -79,11 +79,7 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "%s: no cam.wear section\n", argv[1]);
     return 2;
   }
-  cam::RollerDynamicsSettings dynamics;
-  dynamics.law.grid = {c.solver.nx, c.solver.ny};
-  dynamics.law.scheme = c.solver.scheme;
-  dynamics.periodicity_rtol = c.solver.periodic_rtol;
-  dynamics.max_revolutions = c.solver.max_revolutions;
+  const cam::RollerDynamicsSettings dynamics = cam::roller_dynamics_of(c.solver);  // as rollwear run reads the case
 
   if (map_mode) {
     // cam_life_bench CASE map REFERENCE.csv ANGLE_STEPS STRIDE POWER_RTOL: the wear map after 4e9 revolutions

@@ -47,11 +47,7 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "%s: no cam.wear section\n", argv[1]);
     return 2;
   }
-  cam::RollerDynamicsSettings dynamics;
-  dynamics.law.grid = {c.solver.nx, c.solver.ny};
-  dynamics.law.scheme = c.solver.scheme;
-  dynamics.periodicity_rtol = c.solver.periodic_rtol;
-  dynamics.max_revolutions = c.solver.max_revolutions;
+  const cam::RollerDynamicsSettings dynamics = cam::roller_dynamics_of(c.solver);  // as rollwear run reads the case
   double t0 = cpu_s();
   const std::unique_ptr<cam::CamLifeSetup> setup = cam::set_up_cam_life(c.name, c.model, *c.wear, dynamics);
   std::printf("set-up (unworn periodic revolution, %s model): %.3f s CPU\n", contact::to_string(c.solver.scheme).c_str(),
