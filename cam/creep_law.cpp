@@ -23,8 +23,10 @@ AngleContact angle_contact(const RollerAndTrack& bodies, const contact::Profiles
   np.semi_hertz.heathcote_slip = s.heathcote_slip;
   np.semi_hertz.pressure_fields = false;  // the steady strips read only the strips
   // worn profiles change a little from one evaluation of the life's rate to the next: the contact must
-  // follow them continuously (semi_hertz.h; docs/cam-follower.md §14)
+  // follow them continuously (semi_hertz.h; docs/cam-follower.md §14), and its root must not depend on
+  // where the search starts (the Galerkin rule: docs/cam-follower.md §15)
   np.semi_hertz.continuous_rule = true;
+  np.semi_hertz.galerkin_rule = true;
   np.semi_hertz.fixed_grid_y_lo_m = s.fixed_grid_y_lo_m;
   np.semi_hertz.fixed_grid_y_hi_m = s.fixed_grid_y_hi_m;
   np.semi_hertz.initial_approach_m = s.initial_approach_m;
