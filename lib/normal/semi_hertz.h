@@ -32,6 +32,10 @@
 //   weighted mean of each such minimum's basin condition (weights continuous in the depths, 1 for the
 //   lowest, 0 for one higher by a tenth of its own depth below its neck),
 // both continuous in delta, and the second in the depths. The result says which rule ran (SemiHertzResult::rule).
+// A caller may ask for the Galerkin rule instead (SemiHertzOptions::galerkin_rule): eps as the continuous
+// rule's, p0 from the Boussinesq condition weighted by g_+ over the whole contact, with no reference point:
+// on the worn cam's gaps its F(delta) crosses the load once where the single-point rules' crosses it up to
+// three times (docs/semi-hertz.md, "The Galerkin rule").
 #pragma once
 
 #include <Eigen/Core>
