@@ -465,13 +465,13 @@ TEST(WornRevolution, LiftLossProbeIsMaxLiftLossToTheBit) {
   }
 }
 
-// The worn contacts take the semi-Hertzian continuous rule always (angle_contact sets it): by default the
-// solver picks its rule per solve, and where the two rules give different contacts on a worn gap the
-// dissipation jumped between neighbouring states (13-fold at one angle for a 1e-4 change of the depths,
-// docs/cam-follower.md §14). On a gap with two minima (the crowned roller with a ridge worn 3 mm off its
-// centre deep enough to touch) the default solve takes the self-consistent rule, angle_contact the
-// continuous one.
-TEST(WornRevolution, WornContactsTakeTheContinuousRule) {
+// The worn contacts take one semi-Hertzian rule always (angle_contact sets it): by default the solver picks
+// its rule per solve, and where the two rules give different contacts on a worn gap the dissipation jumped
+// between neighbouring states (13-fold at one angle for a 1e-4 change of the depths, docs/cam-follower.md
+// §14). The rule is the Galerkin one, whose load equation has one root on the worn cam's gaps (§15). On a
+// gap with two minima (the crowned roller with a ridge worn 3 mm off its centre deep enough to touch) the
+// default solve takes the self-consistent rule, angle_contact the Galerkin one.
+TEST(WornRevolution, WornContactsTakeTheGalerkinRule) {
   const CoarseShipped& c = coarse_shipped();
   const cam::CamLifeSetup& u = *c.setup;
   const cam::RevolutionRow& row = u.revolution.rows.front();  // the base circle
@@ -484,7 +484,7 @@ TEST(WornRevolution, WornContactsTakeTheContinuousRule) {
   const cam::CreepLawSettings law = cam::worn_contact_settings(u.unworn_profiles, u.life.grid, u.dynamics.law);
   const cam::AngleContact ac = cam::angle_contact(u.model.bodies, worn, u.model.geometry.roller_radius_m, row.kin,
                                                   row.loads.normal_N, u.model.mu, law);
-  EXPECT_EQ(ac.normal.on_profiles.rule, contact::ApproachRule::Continuous);
+  EXPECT_EQ(ac.normal.on_profiles.rule, contact::ApproachRule::Galerkin);
   EXPECT_GE(ac.normal.patches, 2);
   const contact::SemiHertzResult by_default = contact::solve_semi_hertz(
       worn, u.model.geometry.roller_radius_m, cam::cam_radius_m(row.kin), u.model.bodies.pair, row.loads.normal_N,
