@@ -459,10 +459,12 @@ TEST(SemiHertzRootFind, SteepContinuousLoadOnANearlyConformalWornGapConverges) {
 
 // The worn cam's gap where the single-point rules' F(delta) crosses the load more than once
 // (tests/data/semi_hertz/cam_worn_gap_*.csv: cases/cam-follower.yaml worn to 1.8e-5 m, angle step 204, 350 N).
-// With the continuous rule F falls by up to 13 % of the load within +-5 % of the root (199 of 400 steps
-// fall) and crosses the load at 2.953e-6 m and again at 3.262e-6 m, and which root a search ends on depends
-// on its start (the cold search ends on the upper one, one started from 0.9 of it on the lower one): the
-// cam's warm-started life took another root than the cold revolution (docs/cam-follower.md §15). Reference: a load equation with one root, which the Galerkin rule's weighted Boussinesq condition
+// With the continuous rule F crosses the load upwards at 2.953e-6 m, falls back below it by up to 13 % of
+// the load (199 of 400 steps fall over +-5 % of that root; 112 of the scan below, around the upper root)
+// and crosses it again at 3.262e-6 m; which root a search ends on depends on its start (the cold search
+// ends on the upper one, one started from 0.85-0.93 of it on the lower one): the cam's warm-started life
+// took another root than the cold revolution (docs/cam-follower.md §15). Reference: a load equation with
+// one root, which the Galerkin rule's weighted Boussinesq condition
 // gives here: F(delta) rises at every step of the scan, and every warm start finds the cold root to the
 // root find's aim (|ln F/F_load| <= 1e-12, slope ~ 4: 1e-9 of delta is a margin of 4000).
 Profiles worn_cam_gap() {
