@@ -132,7 +132,7 @@ void against_halfspace(const contact::Profiles& pr, double Rx1, double Rx2, cons
   for (int j = 0; j < ny; ++j) loaded += q_hs(j) > 0;
   std::printf("  half-space %dx%d over y [%.4e, %.4e] m (%.1f s, %s): approach %.6e m, peak %.4e Pa, loaded width %.4e m\n",
               nx, ny, ylo, yhi, cpu_s() - t0, hs.status.converged() ? "converged" : "NOT converged", hs.approach_m,
-              hs.pressure_Pa.maxCoeff(), loaded * grid.dy_m, 0.0);
+              hs.pressure_Pa.maxCoeff(), loaded * grid.dy_m);
   for (const Rule& r : rs) {
     SemiHertzOptions o = r.o;
     o.fixed_grid_y_lo_m = ylo;
