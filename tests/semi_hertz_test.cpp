@@ -84,6 +84,28 @@ TEST_P(SemiHertzConstantCurvature, ReproducesHertz) {
   }
   EXPECT_NEAR(p.grid.half_x_m / h.a_m, 1, kHertzTol);
 }
+// The Galerkin rule (SemiHertzOptions::galerkin_rule) is exact there too: Hertz's displacement condition
+// holds at every y of the contact, so its weighted mean gives Hertz's p0 (docs/semi-hertz.md); the same
+// tolerance as the default rule's, from the same quadrature
+TEST_P(SemiHertzConstantCurvature, GalerkinRuleReproducesHertz) {
+  const auto [Ry, F] = GetParam();
+  SemiHertzOptions o;
+  o.galerkin_rule = true;
+  const SemiHertzResult r = solve_semi_hertz(crowned_on_flat(Ry), kRx1, kRx2, steel(), F, {40, 60}, o);
+  const HertzContact h = solve_hertz({{kRx1, Ry}, {kRx2, kFlat}}, steel(), F);
+  ASSERT_TRUE(r.status.converged()) << r.status.message;
+  EXPECT_EQ(r.rule, ApproachRule::Galerkin);
+  EXPECT_EQ(r.patches, 1);
+  EXPECT_NEAR(r.patch.a_m / h.a_m, 1, kHertzTol);
+  EXPECT_NEAR(r.patch.b_m / h.b_m, 1, kHertzTol);
+  EXPECT_NEAR(r.patch.p0_Pa / h.p0_Pa, 1, kHertzTol);
+  EXPECT_NEAR(r.approach_m / h.approach_m, 1, kHertzTol);
+  EXPECT_NEAR(field_load_N(r.patch) / F, 1, kLoadTol);
+  EXPECT_NEAR(r.reference_y_m, 0, 1e-9 * h.b_m);  // the centroid of g_+: the centre
+  const ContactPatch hp = hertz_patch(h, r.patch.grid);
+  for (int j = 0; j < r.patch.grid.ny; ++j)
+    EXPECT_NEAR(r.patch.strip_peak_Pa(j), hp.strip_peak_Pa(j), kHertzTol * h.p0_Pa) << "strip " << j;
+}
 // the prefix keeps the instances under the filter SemiHertz*
 INSTANTIATE_TEST_SUITE_P(SemiHertzCrownsAndLoads, SemiHertzConstantCurvature,
                          testing::Combine(testing::Values(0.05, 0.2, 0.5, 2.0), testing::Values(100.0, 1500.0, 1e4)),
@@ -435,6 +457,83 @@ TEST(SemiHertzRootFind, SteepContinuousLoadOnANearlyConformalWornGapConverges) {
   }
 }
 
+// The worn cam's gap where the single-point rules' F(delta) crosses the load more than once
+// (tests/data/semi_hertz/cam_worn_gap_*.csv: cases/cam-follower.yaml worn to 1.8e-5 m, angle step 204, 350 N).
+// With the continuous rule F crosses the load upwards at 2.953e-6 m, falls back below it by up to 13 % of
+// the load (199 of 400 steps fall over +-5 % of that root; 112 of the scan below, around the upper root)
+// and crosses it again at 3.262e-6 m; which root a search ends on depends on its start (the cold search
+// ends on the upper one, one started from 0.85-0.93 of it on the lower one): the cam's warm-started life
+// took another root than the cold revolution (docs/cam-follower.md §15). Reference: a load equation with
+// one root, which the Galerkin rule's weighted Boussinesq condition
+// gives here: F(delta) rises at every step of the scan, and every warm start finds the cold root to the
+// root find's aim (|ln F/F_load| <= 1e-12, slope ~ 4: 1e-9 of delta is a margin of 4000).
+Profiles worn_cam_gap() {
+  const std::string dir = std::string(ROLLWEAR_SOURCE_DIR) + "/tests/data/semi_hertz/";
+  return {read_profile_csv(dir + "cam_worn_gap_roller.csv"), read_profile_csv(dir + "cam_worn_gap_track.csv")};
+}
+constexpr double kCamRx1 = 0.013, kCamRx2 = 0.05000000000000001, kCamLoad = 350;  // as the cam's solve had them
+
+TEST(SemiHertzGalerkin, WarmStartsFindTheColdRootOnAWornCamGap) {
+  SemiHertzOptions o;
+  o.galerkin_rule = true;
+  o.pressure_fields = false;
+  const SemiHertzResult cold = solve_semi_hertz(worn_cam_gap(), kCamRx1, kCamRx2, steel(), kCamLoad, {1, 80}, o);
+  ASSERT_TRUE(cold.status.converged()) << cold.status.message;
+  for (int k = 0; k <= 25; ++k) {  // starts from 0.85 to 1.1 of the cold root: both of the old roots' basins
+    const double start = 0.85 + 0.01 * k;
+    o.initial_approach_m = start * cold.approach_m;
+    const SemiHertzResult warm = solve_semi_hertz(worn_cam_gap(), kCamRx1, kCamRx2, steel(), kCamLoad, {1, 80}, o);
+    ASSERT_TRUE(warm.status.converged()) << start << ": " << warm.status.message;
+    EXPECT_NEAR(warm.approach_m / cold.approach_m, 1, 1e-9) << start;
+  }
+}
+
+TEST(SemiHertzGalerkin, LoadRisesWithTheApproachOnAWornCamGap) {
+  SemiHertzOptions o;
+  o.galerkin_rule = true;
+  const SemiHertzResult r = solve_semi_hertz(worn_cam_gap(), kCamRx1, kCamRx2, steel(), kCamLoad, {1, 80}, o);
+  ASSERT_TRUE(r.status.converged()) << r.status.message;
+  constexpr int kSteps = 400;
+  Eigen::ArrayXd d(kSteps + 1);
+  for (int k = 0; k <= kSteps; ++k) d(k) = r.approach_m * (0.95 + 0.1 * k / kSteps);
+  const Eigen::ArrayXd F = semi_hertz_load_N(worn_cam_gap(), kCamRx1, kCamRx2, steel(), d, o);
+  int falls = 0, crossings = 0;
+  for (int k = 1; k <= kSteps; ++k) {
+    falls += F(k) < F(k - 1);
+    crossings += (F(k) - kCamLoad) * (F(k - 1) - kCamLoad) < 0;
+  }
+  EXPECT_EQ(falls, 0);
+  EXPECT_EQ(crossings, 1);
+}
+
+// The stored worn roller (above) at the load where the continuous rule's F(delta) rises to 1780.7 N at
+// delta = 2.087734e-5 m, falls to 1778.9 N by 2.087770e-5 m and rises again: a search started at 2.0878e-5 m
+// ended at 2.087728e-5 m, the cold one at 2.087987e-5 m. Reference: one root; with the Galerkin rule F(delta)
+// rises at every step of 4e-11 m over [2.0873e-5, 2.0890e-5] m and both searches end at the same delta
+// (the root find's aim, 1e-12 on ln F at a slope of ~ 1e3: 1e-12 of delta; 1e-10 is a margin).
+TEST(SemiHertzGalerkin, WarmAndColdStartsFindOneRootOnTheWornRoller) {
+  const Profiles pr{read_profile_csv(std::string(ROLLWEAR_SOURCE_DIR) +
+                                     "/tests/data/semi_hertz/paper_wear_phi1_worn_roller.csv"),
+                    flat_profile(0.030)};
+  constexpr double kLoad = 1779.5;
+  SemiHertzOptions o;
+  o.galerkin_rule = true;
+  o.pressure_fields = false;
+  const SemiHertzResult cold = solve_semi_hertz(pr, kRx1, kRx2, steel(), kLoad, {1, 80}, o);
+  ASSERT_TRUE(cold.status.converged()) << cold.status.message;
+  o.initial_approach_m = 2.0878e-5;
+  const SemiHertzResult warm = solve_semi_hertz(pr, kRx1, kRx2, steel(), kLoad, {1, 80}, o);
+  ASSERT_TRUE(warm.status.converged()) << warm.status.message;
+  EXPECT_NEAR(warm.approach_m / cold.approach_m, 1, 1e-10);
+  constexpr int kSteps = 425;
+  Eigen::ArrayXd d(kSteps + 1);
+  for (int k = 0; k <= kSteps; ++k) d(k) = 2.0873e-5 + 4e-11 * k;
+  const Eigen::ArrayXd F = semi_hertz_load_N(pr, kRx1, kRx2, steel(), d, o);
+  int falls = 0;
+  for (int k = 1; k <= kSteps; ++k) falls += F(k) < F(k - 1);
+  EXPECT_EQ(falls, 0);
+}
+
 // A worn gap with two nearly equal minima (the cam's worn track, docs/semi-hertz.md): a narrow pit
 // (radius 0.05 m at y = -2 mm) and a broad one (0.5 m at y = +2.5 mm) whose depth differs by dz, on a
 // flat path. The continuous rule took the basin centroid of the lower minimum: as dz changed sign by
@@ -554,6 +653,11 @@ TEST(SemiHertz, RejectsImpossibleInput) {
   o = {};
   o.quadrature_cells = 2;
   EXPECT_THROW(solve_semi_hertz(pr, kRx1, kRx2, m, 1500, {10, 10}, o), std::invalid_argument);
+  o = {};
+  o.galerkin_rule = true;
+  o.galerkin_points = 0;
+  EXPECT_THROW(solve_semi_hertz(pr, kRx1, kRx2, m, 1500, {10, 10}, o), std::invalid_argument);
+  EXPECT_THROW(semi_hertz_load_N(pr, kRx1, kRx2, m, Eigen::ArrayXd::Constant(1, -1e-6), {}), std::invalid_argument);
 }
 
 }  // namespace

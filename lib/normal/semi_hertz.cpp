@@ -49,7 +49,9 @@ constexpr double kMinimaBlend = 0.1;
 // the root find aims at kPolish load_rtol (find_approach): the wear lives' convergence tests need the
 // rates free of solver noise to 1e-10 (at 1e-3 the rtol-1e-6 life of paper-wear.yaml was 5e-5 off)
 constexpr double kPolish = 1e-6;
-constexpr double kJumpWidth = 1e-12;  // the root find's bracket in ln delta: narrower is a jump of F(delta)
+constexpr double kJumpWidth = 1e-12;
+// the Galerkin rule's cells on the pieces of the contact other than an outer point's own (Solver::galerkin_p0)
+constexpr int kGalerkinFarCells = 4;  // the root find's bracket in ln delta: narrower is a jump of F(delta)
 
 std::string num(double v) { return six_digits(v); }  // lib/io/number.h
 
@@ -289,8 +291,8 @@ struct Evaluation {
 
 class Solver {
  public:
-  Solver(const Gap& gap, double A, double Estar, int cells, double kp_epsilon)
-      : gap_(gap), A_(A), Estar_(Estar), cells_(cells), kp_epsilon_(kp_epsilon) {
+  Solver(const Gap& gap, double A, double Estar, int cells, double kp_epsilon, int galerkin_points)
+      : gap_(gap), A_(A), Estar_(Estar), cells_(cells), galerkin_points_(galerkin_points), kp_epsilon_(kp_epsilon) {
     const std::size_t segments = gap.y.size() - 1;
     for (std::size_t s = 0; s < segments; s += kBlock) {
       const auto first = gap.h.begin() + static_cast<std::ptrdiff_t>(s);
@@ -358,6 +360,8 @@ class Solver {
       ev.h0 = h_at(ev.t, ev.y0);
       boussinesq_integrals(ev, false, &ev.y0, &ev.J, 1);
       ev.p0 = kPi * Estar_ * (ev.delta - ev.h0) / ev.J;
+    } else if (rule == ApproachRule::Galerkin) {
+      galerkin_p0(ev);
     } else {
       // the basin centroid of each minimum that counts (reference_minima), p0 the weighted mean of theirs
       ev.refs.clear();
@@ -383,6 +387,107 @@ class Solver {
     }
     ev.F = ev.p0 * ev.S;
     return ev;
+  }
+
+  // The Galerkin rule's p0: Hertz's field satisfies delta - h(y) = u_z(0, y) = (p0 / (pi E*)) J(y) at every y
+  // of the contact, so any weighted mean of that condition gives the same p0 there; weighted by g_+ (the
+  // line load's shape, vanishing at the edges) over the whole contact,
+  //   p0 = pi E* sum_i W_i (delta - h(y_i)) / sum_i W_i J(y_i),  W_i = g_+(y_i) dy_i,
+  // the outer points galerkin_points_ per piece (the pieces of the Boussinesq cells: patches cut at the
+  // gap's necks), uniform in theta (y = mid + half sin theta, midpoints) like the cells: both sums by the
+  // same points, so the quadrature of the outer integral cancels on Hertz's field. Each point and weight
+  // moves continuously with delta and the profiles; a piece entering or leaving weighs g_+ -> 0. No
+  // reference point, basin or blend enters p0. The Heathcote reference y0 is the centroid of g_+ over
+  // the whole contact (the centre on Hertz's field).
+  void galerkin_p0(Evaluation& ev) const {
+    static const KernelTable psi;
+    ys_.clear();
+    ws_.clear();
+    pieces_.clear();
+    fine_.clear();
+    coarse_.clear();
+    const int m = galerkin_points_;
+    const double dtheta = kPi / m;
+    double N = 0, W = 0, I0 = 0, I1 = 0;
+    for (const ContactRun& run : ev.runs) {
+      I0 += run.I0;
+      I1 += run.I1;
+      const std::vector<double>& cuts = piece_cuts(run, true);
+      for (std::size_t piece = 0; piece + 1 < cuts.size(); ++piece) {
+        const double l = cuts[piece], r = cuts[piece + 1];
+        const double mid = (l + r) / 2, half = (r - l) / 2;
+        Piece pc;
+        pc.first_point = ys_.size();
+        std::size_t seg = std::max<std::size_t>(run.i0, 1);  // segment [seg-1, seg] holds y
+        for (int i = 0; i < m; ++i) {
+          const double theta = -kPi / 2 + (i + 0.5) * dtheta;
+          const double y = mid + half * std::sin(theta);
+          while (seg + 1 < gap_.y.size() && gap_.y[seg] < y) ++seg;
+          const double g = g_on_segment(ev.t, seg, y);
+          if (!(g > 0)) continue;
+          const double w = g * half * std::cos(theta) * dtheta;
+          ys_.push_back(y);
+          ws_.push_back(w);
+          N += w * (ev.delta - ev.t + g);  // delta - h = delta - t + g
+          W += w;
+        }
+        pc.end_point = ys_.size();
+        pc.first_fine = fine_.size();
+        add_cells(ev, run, l, r, cells_, fine_);
+        pc.end_fine = fine_.size();
+        pc.first_coarse = coarse_.size();
+        add_cells(ev, run, l, r, kGalerkinFarCells, coarse_);
+        pc.end_coarse = coarse_.size();
+        pieces_.push_back(pc);
+      }
+    }
+    // J at each outer point: its own piece by the fine cells (the log singularity), the other pieces by
+    // kGalerkinFarCells each (a fixed assignment: no switch as the contact changes)
+    double D = 0;
+    for (std::size_t p = 0; p < pieces_.size(); ++p) {
+      for (std::size_t k = pieces_[p].first_point; k < pieces_[p].end_point; ++k) {
+        const double y = ys_[k];
+        double J = 0;
+        for (std::size_t q = 0; q < pieces_.size(); ++q) {
+          const bool own = q == p;
+          const std::vector<Cell>& cells = own ? fine_ : coarse_;
+          const std::size_t c0 = own ? pieces_[q].first_fine : pieces_[q].first_coarse;
+          const std::size_t c1 = own ? pieces_[q].end_fine : pieces_[q].end_coarse;
+          for (std::size_t c = c0; c < c1; ++c)
+            J += cells[c].wa * (psi((cells[c].r - y) * cells[c].inv_a) - psi((cells[c].l - y) * cells[c].inv_a));
+        }
+        D += ws_[k] * J;
+      }
+    }
+    ev.p0 = kPi * Estar_ * N / D;
+    ev.J = D / W;
+    ev.y0 = I1 / I0;
+    ev.refs.assign(1, {ev.y0, 1});
+    ev.h0 = h_at(ev.t, ev.y0);
+  }
+
+  // a Boussinesq cell: its edges, w a at its centre (w = sqrt(g/t) the pressure's lateral shape) and 1/a there
+  struct Cell {
+    double l, r, wa, inv_a;
+  };
+  struct Piece {
+    std::size_t first_point, end_point, first_fine, end_fine, first_coarse, end_coarse;
+  };
+  // n cells over [l, r] within run, uniform in theta (as boussinesq_integrals lays them); cells where g <= 0
+  // (rounding at an edge) are left out
+  void add_cells(const Evaluation& ev, const ContactRun& run, double l, double r, int n, std::vector<Cell>& out) const {
+    const double wa_per_g = 1 / std::sqrt(ev.t * ev.A_mod);
+    const double mid = (l + r) / 2, half = (r - l) / 2;
+    std::size_t seg = std::max<std::size_t>(run.i0, 1);
+    double y_left = l;
+    for (int c = 0; c < n; ++c) {
+      const double y_c = mid + half * std::sin(-kPi / 2 + (c + 0.5) * kPi / n);
+      const double y_right = c + 1 == n ? r : mid + half * std::sin(-kPi / 2 + (c + 1) * kPi / n);
+      while (seg + 1 < gap_.y.size() && gap_.y[seg] < y_c) ++seg;
+      const double g = g_on_segment(ev.t, seg, y_c);
+      if (g > 0) out.push_back({y_left, y_right, g * wa_per_g, std::sqrt(ev.A_mod / g)});
+      y_left = y_right;
+    }
   }
 
   // The continuous rule's reference is the basin centroid of the gap's lowest minimum, unless another
@@ -561,14 +666,8 @@ class Solver {
     static const KernelTable psi;
     std::fill(J, J + n_refs, 0.0);
     const double wa_per_g = 1 / std::sqrt(ev.t * ev.A_mod);  // w a = g / sqrt(t A_mod)
-    std::vector<double>& cuts = cuts_;
     for (const ContactRun& run : ev.runs) {
-      cuts.assign(1, run.l);
-      if (split_at_necks)
-        for (std::size_t k = std::max<std::size_t>(run.i0, 1); k <= run.i1 && k + 1 < gap_.y.size(); ++k)
-          if (gap_.h[k] >= gap_.h[k - 1] && gap_.h[k] > gap_.h[k + 1] && gap_.y[k] > run.l && gap_.y[k] < run.r)
-            cuts.push_back(gap_.y[k]);
-      cuts.push_back(run.r);
+      const std::vector<double>& cuts = piece_cuts(run, split_at_necks);
       std::size_t seg = std::max<std::size_t>(run.i0, 1);  // segment [seg-1, seg] holds y_c
       for (std::size_t piece = 0; piece + 1 < cuts.size(); ++piece) {
         // every patch its own cells: shared out by width, a patch's count changed by rounding as the
@@ -599,10 +698,25 @@ class Solver {
     }
   }
 
+  // the pieces of a patch that get their own cells: the patch, cut at the gap's interior local maxima
+  // (necks) when split_at_necks; returns their edges (scratch, valid until the next call)
+  const std::vector<double>& piece_cuts(const ContactRun& run, bool split_at_necks) const {
+    cuts_.assign(1, run.l);
+    if (split_at_necks)
+      for (std::size_t k = std::max<std::size_t>(run.i0, 1); k <= run.i1 && k + 1 < gap_.y.size(); ++k)
+        if (gap_.h[k] >= gap_.h[k - 1] && gap_.h[k] > gap_.h[k + 1] && gap_.y[k] > run.l && gap_.y[k] < run.r)
+          cuts_.push_back(gap_.y[k]);
+    cuts_.push_back(run.r);
+    return cuts_;
+  }
+
   const Gap& gap_;
   double A_, Estar_;
   int cells_;
-  mutable std::vector<double> cuts_, y0s_, Js_;  // scratch, kept between evaluations
+  int galerkin_points_;  // the Galerkin rule's outer points per piece
+  mutable std::vector<double> cuts_, y0s_, Js_, ys_, ws_;  // scratch, kept between evaluations
+  mutable std::vector<Cell> fine_, coarse_;
+  mutable std::vector<Piece> pieces_;
   double kp_epsilon_;  // > 0: fixed eps, no equivalent-ellipse correction
   // min of h over the nodes kBlock b ... kBlock (b + 1) (segments kBlock b ... kBlock (b + 1) - 1)
   static constexpr std::size_t kBlock = 16;
@@ -625,6 +739,9 @@ double checked_rolling_curvature(const Profiles& profiles, double Rx1_m, double 
   if (!(options.kp_epsilon == 0 || (options.kp_epsilon > 0 && options.kp_epsilon < 1)))
     throw std::invalid_argument("semi-Hertz: kp_epsilon must be 0 (equivalent-ellipse correction) or in (0, 1), got " +
                                 num(options.kp_epsilon));
+  if (options.galerkin_points < 1)
+    throw std::invalid_argument("semi-Hertz: galerkin_points must be at least 1, got " +
+                                std::to_string(options.galerkin_points));
   if (options.quadrature_cells < 4)
     throw std::invalid_argument("semi-Hertz: quadrature_cells must be at least 4, got " +
                                 std::to_string(options.quadrature_cells));
@@ -639,6 +756,12 @@ double checked_rolling_curvature(const Profiles& profiles, double Rx1_m, double 
 
 // the first approach: Hertz's ellipse with the equivalent curvature B_e of the gap, found at the
 // approach of Hertz's circle with curvature A (exact on constant curvature, a good start otherwise)
+ApproachRule rule_of(const SemiHertzOptions& options) {
+  return options.galerkin_rule     ? ApproachRule::Galerkin
+         : options.continuous_rule ? ApproachRule::Continuous
+                                   : ApproachRule::SelfConsistent;
+}
+
 double first_approach(Solver& solver, double A, double F, double Estar, double& eps) {
   const double R = 1 / (2 * A), a = std::cbrt(3 * F * R / (4 * Estar));
   const double B_e = solver.equivalent_ellipse(a * a / R, eps);
@@ -886,7 +1009,7 @@ SemiHertzResult solve_semi_hertz(const Profiles& profiles, double Rx1_m, double 
   const double A = checked_rolling_curvature(profiles, Rx1_m, Rx2_m, pair, normal_load_N, spec, options);
   const double Estar = effective_modulus_Pa(pair), F = normal_load_N;
   const Gap gap = make_gap(profiles);
-  Solver solver(gap, A, Estar, options.quadrature_cells, options.kp_epsilon);
+  Solver solver(gap, A, Estar, options.quadrature_cells, options.kp_epsilon, options.galerkin_points);
 
   // the approach from the load by the self-consistent rule; where its F(delta) jumps across the load
   // (lobes merging: finding 6b, and the fixed point of eps) no approach carries the load by it, and the
@@ -894,12 +1017,12 @@ SemiHertzResult solve_semi_hertz(const Profiles& profiles, double Rx1_m, double 
   double eps = 0.5;
   double delta = options.initial_approach_m > 0 ? options.initial_approach_m : first_approach(solver, A, F, Estar, eps);
   SemiHertzResult res;
-  res.rule = options.continuous_rule ? ApproachRule::Continuous : ApproachRule::SelfConsistent;
+  res.rule = rule_of(options);
   ApproachSearch search =
       find_approach(solver, F, delta, eps, options.max_iterations, options, res.rule, options.initial_slope);
   int evaluations = search.evaluations;
   std::string remedy;
-  if (!options.continuous_rule && !search.converged && search.bracketed()) {
+  if (res.rule == ApproachRule::SelfConsistent && !search.converged && search.bracketed()) {
     remedy = "; by the continuous rule: with the self-consistent one " + jump_text(search);
     res.rule = ApproachRule::Continuous;
     search = find_approach(solver, F, std::sqrt(search.lo * search.hi), search.ev.eps,
@@ -945,6 +1068,23 @@ SemiHertzResult solve_semi_hertz(const Profiles& profiles, double Rx1_m, double 
                 res.approach_m, res.epsilon, res.equivalent_B_per_m, patch.a_m, patch.b_m, patch.p0_Pa, res.patches,
                 res.contact_y_min_m, res.contact_y_max_m, res.status.message);
   return res;
+}
+
+Eigen::ArrayXd semi_hertz_load_N(const Profiles& profiles, double Rx1_m, double Rx2_m, const ElasticPair& pair,
+                                 const Eigen::ArrayXd& approach_m, const SemiHertzOptions& options) {
+  const double A = checked_rolling_curvature(profiles, Rx1_m, Rx2_m, pair, 1.0, {1, 1}, options);
+  const Gap gap = make_gap(profiles);
+  Solver solver(gap, A, effective_modulus_Pa(pair), options.quadrature_cells, options.kp_epsilon,
+                options.galerkin_points);
+  const ApproachRule rule = rule_of(options);
+  Eigen::ArrayXd F(approach_m.size());
+  for (Eigen::Index k = 0; k < approach_m.size(); ++k) {
+    if (!(approach_m(k) > 0))
+      throw std::invalid_argument("semi_hertz_load_N: the approach must be positive, got " + num(approach_m(k)) + " m");
+    double eps = 0.5;
+    F(k) = solver.evaluate(approach_m(k), eps, rule).F;
+  }
+  return F;
 }
 
 SemiHertzResult solve_normal_on_profiles(const Profiles& profiles, double Rx1_m, double Rx2_m, const ElasticPair& pair,

@@ -32,6 +32,10 @@
 //   weighted mean of each such minimum's basin condition (weights continuous in the depths, 1 for the
 //   lowest, 0 for one higher by a tenth of its own depth below its neck),
 // both continuous in delta, and the second in the depths. The result says which rule ran (SemiHertzResult::rule).
+// A caller may ask for the Galerkin rule instead (SemiHertzOptions::galerkin_rule): eps as the continuous
+// rule's, p0 from the Boussinesq condition weighted by g_+ over the whole contact, with no reference point:
+// on the worn cam's gaps its F(delta) crosses the load once where the single-point rules' crosses it up to
+// three times (docs/semi-hertz.md, "The Galerkin rule").
 #pragma once
 
 #include <Eigen/Core>
@@ -53,6 +57,8 @@ enum class ApproachRule {
                    // patch holding the gap's minimum
   Continuous,      // the remedy where the first one's F(delta) jumps across the load: eps from two passes
                    // from 1/2; y0 the centroid of m_+ (the basin rule)
+  Galerkin,        // eps as the continuous rule's; p0 from the Boussinesq condition weighted by g_+ over the
+                   // whole contact (no reference point, no basins): SemiHertzOptions::galerkin_rule
 };
 
 // A grid none of whose strip centres lies in the contact (a contact split into patches narrower than a
@@ -80,6 +86,17 @@ struct SemiHertzOptions {
   // default the rule is chosen per solve, and where the self-consistent F(delta) jumps across the load
   // for one profile and not for the next, the contact jumps between the two rules' solutions.
   bool continuous_rule = false;
+  // always the Galerkin rule (ApproachRule::Galerkin): eps from the continuous rule's two passes, and p0 from
+  // the Boussinesq condition delta - h(y) = u_z(0, y) weighted by g_+(y) over the whole contact,
+  //   p0 = pi E* integral g_+ (delta - h) dy / integral g_+ J dy,  J(y) = integral (p/p0) / r dA at (0, y),
+  // the outer integrals by galerkin_points points per piece of the contact (uniform in theta, as the cells).
+  // Exact on constant curvature like the others (Hertz's u_z = delta - h holds at every y of the contact);
+  // no reference point, no basins, no blend: on nearly conformal worn gaps F(delta) is monotone where the
+  // single-point rules' is not, so a warm-started search finds the cold one's root (docs/semi-hertz.md).
+  // The Heathcote offsets' reference (reference_y_m) is the centroid of g_+ over the whole contact.
+  // Overrides continuous_rule.
+  bool galerkin_rule = false;
+  int galerkin_points = 2;  // outer points per piece of the contact (>= 1); J is computed at each
   // the strips' lateral extent (profiles' y, lo < hi): the grid laid over [lo, hi] whatever the contact's
   // extent, strips outside the contact empty. Both 0: over the contact's extent (the default), which
   // moves every strip when a lobe of contact enters or leaves; a fixed extent keeps the strips in place
@@ -149,6 +166,12 @@ SemiHertzResult solve_semi_hertz(const Profiles& profiles, double Rx1_m, double 
 // the overlap of their extents, Hertz's solution with the fitted radii, centred on the gap's vertex
 // (a spdlog::debug says so; the result's diagnostics filled alike, solver NormalSolverKind::Hertz);
 // otherwise solve_semi_hertz. Both agree within 2e-3 on constant curvature (docs/semi-hertz.md).
+// F(delta) of the rule the options ask for (Galerkin, continuous, else self-consistent from eps = 1/2) at
+// each approach: the load the semi-Hertzian field carries there, for scans of the load equation (tests,
+// docs/semi-hertz.md). Throws what solve_semi_hertz throws for its inputs (the load is not used).
+Eigen::ArrayXd semi_hertz_load_N(const Profiles& profiles, double Rx1_m, double Rx2_m, const ElasticPair& pair,
+                                 const Eigen::ArrayXd& approach_m, const SemiHertzOptions& options = {});
+
 SemiHertzResult solve_normal_on_profiles(const Profiles& profiles, double Rx1_m, double Rx2_m, const ElasticPair& pair,
                                          double normal_load_N, const GridSpec& spec,
                                          const SemiHertzOptions& options = {}, double curvature_rtol = 1e-3);
