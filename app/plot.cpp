@@ -926,7 +926,7 @@ std::vector<fs::path> draw_cam(const fs::path& dir, const fs::path& plots, std::
             "set xlabel 'cam angle (deg)'\nset xrange [0:360]\nset xtics 60\nunset key\n"
             "set title 'lift (mm)'\nplot $rev using 1:2 with lines lw 2 lc rgb '#1f4e9c'\n"
             "set title 'pressure angle (deg)'\nplot $rev using 1:3 with lines lw 2 lc rgb '#2a9d8f'\n"
-            "set title 'normal load (N), peak pressure (MPa)'\nset key top left\n"
+            "set title 'normal load (N), peak pressure (MPa)'\nset key right center box opaque\n"
             "plot $rev using 1:4 with lines lw 2 lc rgb '#e9a03b' title 'F_n (N)', "
             "$rev using 1:5 with lines lw 2 lc rgb '#c0392b' title 'p0 (MPa)'\n"
             "unset key\nset title 'dissipated power (mW)'\nplot $rev using 1:6 with lines lw 2 lc rgb '#c0392b'\n"
