@@ -781,17 +781,20 @@ TEST(StressSatran, DISABLED_NodeCountedStepsKeepTheForceWithinMuF) {
   }
 }
 
-// "negative power": a step with power < 0 beyond rounding, without spin or in a fallback step (shift case
-// 1151, -1.2e-4 of the scale).
+// "negative power": a step with power < 0 beyond rounding, without spin or in a fallback step. The sweep's
+// first such case is now shift case 304 (case 1151, its first until the semi-Hertzian and Satran changes of
+// 2026-11-24, no longer shows it).
 TEST(StressSatran, DISABLED_NoStepDissipatesLessThanZero) {
-  Rng r(3161848494750301757ull);
+  Rng r(3161848494750300910ull);
   SatranTally t;
-  satran_case(r, "[shift case 1151, case seed 3161848494750301757]", TransientScheme::Shift, t, true);
+  satran_case(r, "[shift case 304, case seed 3161848494750300910]", TransientScheme::Shift, t, true);
 }
 
 // "snapshot": a snapshot's cell means above mu p with every input constant (shift case 76; in all 8 of the
-// sweep the snapshot's step is a fallback step at CFL < 1, whose fields are node values).
-TEST(StressSatran, DISABLED_SnapshotsAtConstantInputsStayWithinTheBound) {
+// sweep the snapshot's step was a fallback step at CFL < 1, whose fields are node values). Fixed: the sweeps
+// count 0 such snapshots and case 76 keeps the bound (found passing on 2026-11-24; which change fixed it was
+// not traced).
+TEST(StressSatran, SnapshotsAtConstantInputsStayWithinTheBound) {
   Rng r(3161848494750300682ull);
   SatranTally t;
   satran_case(r, "[shift case 76, case seed 3161848494750300682]", TransientScheme::Shift, t, true);
@@ -1506,11 +1509,11 @@ TEST(StressWear, HeavySpinLifeCase18IsSmoothByTheContinuousRule) {
   print_life_summary(lc);
 }
 
-// Finding 13's open part, kept until fixed (--gtest_also_run_disabled_tests): with seed 31415, case 3 of
-// StressWear.LooseToleranceDoesNotRunAway (case seed 10493433607780625003) has 7 reversals of the depth by
-// a tenth of its largest in its tight run (rtol 1e-5, atol 1e-12, effective 1.0e-5), above
-// kMaxDepthReversals; the loose run (rtol 0.1) has 7 too, its depth within 1.8 % of the tight one's.
-TEST(StressWear, DISABLED_TightRunOfSeed31415Case3StaysSmooth) {
+// Finding 13's second part: with seed 31415, case 3 of StressWear.LooseToleranceDoesNotRunAway (case seed
+// 10493433607780625003) had 7 reversals of the depth by a tenth of its largest in its tight run (rtol 1e-5,
+// atol 1e-12, effective 1.0e-5), above kMaxDepthReversals. Fixed: found within the limit on 2026-11-24 (which
+// change fixed it was not traced; the semi-Hertzian roots' polish and the minima's blend are the candidates).
+TEST(StressWear, TightRunOfSeed31415Case3StaysSmooth) {
   const std::uint64_t seed = 10493433607780625003ull;
   Rng r(seed);  // drawn as LooseToleranceDoesNotRunAway draws it
   RandomWear w = random_wear_case(r, 100, 1e4);
