@@ -8,16 +8,21 @@
 
 namespace cam {
 
-AngleDissipation angle_dissipation(const AngleContact& c, const RevolutionRow& row, const RollerAngle& roller,
-                                   double duration_s) {
-  const contact::ContactPatch& patch = c.normal.patch;
-  const contact::TangentialSolution sol = steady_creep(c, roller.xi, roller.speed_m_per_s);
+AngleDissipation angle_step(const RevolutionRow& row, const RollerAngle& roller, double duration_s) {
   AngleDissipation d;
   d.theta_rad = row.kin.theta_rad;
   d.duration_s = duration_s;
   d.cam_arc_m = row.contact_arc_m;
   d.rolling_speed_m_per_s = row.kin.rolling_speed_m_per_s;
   d.roller_surface_speed_m_per_s = roller_surface_speed_m_per_s(row.kin.rolling_speed_m_per_s, roller.slip_speed_m_per_s);
+  return d;
+}
+
+AngleDissipation angle_dissipation(const AngleContact& c, const RevolutionRow& row, const RollerAngle& roller,
+                                   double duration_s) {
+  const contact::ContactPatch& patch = c.normal.patch;
+  const contact::TangentialSolution sol = steady_creep(c, roller.xi, roller.speed_m_per_s);
+  AngleDissipation d = angle_step(row, roller, duration_s);
   d.y_m = c.normal.grid_y0_m + patch.grid.y_m;
   d.power_W_per_m = sol.strip_power_W_per_m;
   d.mean_pressure_Pa = (patch.half_length_m > 0).select(contact::kPi / 4 * patch.strip_peak_Pa, 0.0);

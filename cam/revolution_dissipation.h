@@ -28,6 +28,10 @@ RevolutionDissipation revolution_dissipation(const CamModel& m, const Revolution
 AngleDissipation angle_dissipation(const AngleContact& c, const RevolutionRow& row, const RollerAngle& roller,
                                    double duration_s);
 
+// one angle step's place and speeds (its angle, duration, arc, the two surfaces' speeds), no strips yet: what
+// every solve of the step (quasi-steady or transient) fills in the same way
+AngleDissipation angle_step(const RevolutionRow& row, const RollerAngle& roller, double duration_s);
+
 // the total power of one step (W): sum of power_W_per_m times the strip width
 double total_power_W(const AngleDissipation& d);
 

@@ -176,11 +176,7 @@ void relaxed_rows(const std::vector<AngleContact>& contacts, const Revolution& r
     Eigen::ArrayXd e = Eigen::ArrayXd::Zero(patch.grid.ny);
     run_row(i, &e, &out.energy, out.transient_steps);
     AngleDissipation& d = out.dissipation[i];
-    d.theta_rad = row.kin.theta_rad;
-    d.duration_s = dt_row;
-    d.cam_arc_m = row.contact_arc_m;
-    d.rolling_speed_m_per_s = row.kin.rolling_speed_m_per_s;
-    d.roller_surface_speed_m_per_s = roller_surface_speed_m_per_s(row.kin.rolling_speed_m_per_s, a.slip_speed_m_per_s);
+    d = angle_step(row, a, dt_row);
     d.y_m = contacts[i].normal.grid_y0_m + patch.grid.y_m;
     d.power_W_per_m = e / dt_row;
     d.mean_pressure_Pa = (patch.half_length_m > 0).select(contact::kPi / 4 * patch.strip_peak_Pa, 0.0);
@@ -341,11 +337,7 @@ TransientRevolution transient_revolution(const CamModel& m, const Revolution& r,
     Eigen::ArrayXd e = Eigen::ArrayXd::Zero(g.ny);
     const long k = run_row(i, &e, &out.energy, out.transient_steps);
     AngleDissipation& d = out.dissipation[i];
-    d.theta_rad = row.kin.theta_rad;
-    d.duration_s = dt_row;
-    d.cam_arc_m = row.contact_arc_m;
-    d.rolling_speed_m_per_s = row.kin.rolling_speed_m_per_s;
-    d.roller_surface_speed_m_per_s = roller_surface_speed_m_per_s(row.kin.rolling_speed_m_per_s, a.slip_speed_m_per_s);
+    d = angle_step(row, a, dt_row);
     d.y_m = f.y0 + g.y_m;
     // the mean power over the steps' time; k >= 1 since V dt >= dx (checked)
     d.power_W_per_m = e / (static_cast<double>(k) * g.dx_m / a.speed_m_per_s);
