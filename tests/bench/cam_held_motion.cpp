@@ -35,6 +35,7 @@
 #include "cam/cam_life.h"
 #include "cam/creep_law.h"
 #include "cam/revolution_dissipation.h"
+#include "tests/bench/cam_bench_life.h"
 
 namespace {
 
@@ -230,10 +231,7 @@ int main(int argc, char** argv) {
     if (argc > 2 && std::string(argv[2]) == "life") {
       // two whole lives, fixed depth steps of 1e-6 m, cold evaluations: the life's (the motion held) and one
       // whose every evaluation solves the revolution and the roller's motion on the worn lift again
-      cam::CamLifeModel model = setup->life;
-      model.stepping.method = "fixed-depth";
-      model.stepping.max_depth_step_m = 1e-6;
-      model.snapshots_revolutions.clear();
+      const cam::CamLifeModel model = bench::cam_bench_life(*setup).model;
       const auto unworn = [](const cam::CamWearState& st) {
         return (st.cam_depth_m == 0).all() && (st.roller_depth_m == 0).all();
       };
@@ -269,12 +267,10 @@ int main(int argc, char** argv) {
       s = state_of_folder(argv[2], g, which);
       std::printf("worn state: %s\n", which.c_str());
     } else {
-      cam::CamLifeModel model = setup->life;
-      model.stepping.method = "fixed-depth";
-      model.stepping.max_depth_step_m = 1e-6;
-      model.snapshots_revolutions.clear();
+      const bench::CamBenchLife b = bench::cam_bench_life(*setup);
+      const cam::CamLifeModel& model = b.model;
       t0 = cpu_s();
-      const cam::CamLifeResult life = cam::run_cam_life(model, setup->producer());
+      const cam::CamLifeResult life = cam::run_cam_life(model, b.producer);
       if (life.ended_by == cam::CamLifeEnd::Failed || life.ended_by == cam::CamLifeEnd::NotRun) {
         std::fprintf(stderr, "the life failed: %s\n", life.message.c_str());
         return 1;

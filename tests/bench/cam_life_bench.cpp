@@ -26,6 +26,7 @@
 #include "cam/cam_life.h"
 #include "cam/revolution_dissipation.h"
 #include "cam/worn_revolution.h"
+#include "tests/bench/cam_bench_life.h"
 
 namespace {
 
@@ -224,20 +225,8 @@ int main(int argc, char** argv) {
     return 0;
   }
 
-  cam::CamLifeModel to_depth = setup->life;
-  to_depth.max_depth_m = worn_depth;
-  to_depth.max_lift_loss_m = 0;
-  to_depth.stepping.method = "fixed-depth";
-  to_depth.stepping.max_depth_step_m = 1e-6;
-  to_depth.scheme = wear::IntegratorOptions::Scheme::Euler;  // the bench's state whatever the case's stepping and skip
-  to_depth.snapshots_revolutions.clear();
-  cam::WornRevolution to_depth_evaluator(setup->model, setup->revolution, setup->motion.motion, setup->unworn_profiles,
-                                         setup->life.grid, setup->dynamics.law);
   t0 = cpu_s();
-  const cam::CamLifeResult worn = cam::run_cam_life(to_depth, [&](const cam::CamWearState& st) {
-    if ((st.cam_depth_m == 0).all() && (st.roller_depth_m == 0).all()) return setup->unworn;
-    return to_depth_evaluator(st);
-  });
+  const cam::CamLifeResult worn = bench::cam_worn_to_depth(*setup, worn_depth);
   std::printf("worn to %.3g m in %ld steps (%ld revolutions solved): %.3f s CPU\n", worn.max_depth_m, worn.steps,
               worn.revolutions_solved, cpu_s() - t0);
   const cam::CamWearState& s = worn.state;

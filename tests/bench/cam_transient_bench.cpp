@@ -2,6 +2,8 @@
 // the revolution on the worn state's semi-Hertzian contacts (worn_transient_revolution), with and without the
 // quasi-steady skip, against the life's quasi-steady revolution (worn_revolution_dissipation). A plain program:
 //   cam_transient_bench CASE.yaml [worn_depth_m = 8e-6] [step_cells = 1] [repeats = 3]
+// The worn transient is the relaxed model's only: the program runs the whole case on it (the roller's steady
+// law, the wear to the state, the transients), whatever the case's cam.tangential.scheme says.
 // 1. sets up the case's life (the unworn periodic revolution);
 // 2. wears the case to worn_depth_m (fixed-depth steps of 1e-6 m, the life's producer), as cam_life_bench does;
 // 3. on that state: the full transient, the transient with the skip (the case's quasi_steady_tolerance) and the
@@ -21,6 +23,7 @@
 #include "cam/revolution_dissipation.h"
 #include "cam/revolution_transient.h"
 #include "lib/tangential/relaxed_shape.h"
+#include "tests/bench/cam_bench_life.h"
 
 namespace {
 
@@ -47,27 +50,23 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "%s: no cam.wear section\n", argv[1]);
     return 2;
   }
-  const cam::RollerDynamicsSettings dynamics = cam::roller_dynamics_of(c.solver);  // as rollwear run reads the case
+  cam::CamSolverSettings solver = c.solver;
+  solver.scheme = contact::TangentialScheme::Relaxed;  // the worn transient's model (above)
+  const cam::RollerDynamicsSettings dynamics = cam::roller_dynamics_of(solver);
   double t0 = cpu_s();
   const std::unique_ptr<cam::CamLifeSetup> setup = cam::set_up_cam_life(c.name, c.model, *c.wear, dynamics);
-  std::printf("set-up (unworn periodic revolution, %s model): %.3f s CPU\n", contact::to_string(c.solver.scheme).c_str(),
+  std::printf("set-up (unworn periodic revolution, %s model): %.3f s CPU\n", contact::to_string(solver.scheme).c_str(),
               cpu_s() - t0);
   cam::CamWearState s = cam::unworn_state(setup->life.grid);
   if (worn_depth > 0) {
-    cam::CamLifeModel to_depth = setup->life;
-    to_depth.max_depth_m = worn_depth;
-    to_depth.max_lift_loss_m = 0;
-    to_depth.stepping.method = "fixed-depth";
-    to_depth.stepping.max_depth_step_m = 1e-6;
-    to_depth.snapshots_revolutions.clear();
     t0 = cpu_s();
-    const cam::CamLifeResult worn = cam::run_cam_life(to_depth, setup->producer());
+    const cam::CamLifeResult worn = bench::cam_worn_to_depth(*setup, worn_depth);
     std::printf("worn to %.3g m in %ld steps (%.4g revolutions): %.3f s CPU\n", worn.max_depth_m, worn.steps, worn.N,
                 cpu_s() - t0);
     s = worn.state;
   }
   cam::TransientRevolutionSettings ts;
-  ts.scheme = c.solver.scheme;
+  ts.scheme = solver.scheme;
   ts.quasi_steady_tolerance = c.solver.quasi_steady_tolerance;
   ts.relaxed_step_cells = step_cells;
   const auto transient = [&](bool skip, double& cpu) {

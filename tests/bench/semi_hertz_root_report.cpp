@@ -31,6 +31,7 @@
 #include "lib/normal/halfspace.h"
 #include "lib/normal/hertz.h"
 #include "lib/normal/semi_hertz.h"
+#include "tests/bench/cam_bench_life.h"
 
 namespace {
 
@@ -238,17 +239,8 @@ int main(int argc, char** argv) {
     const int points = argc > 7 ? std::stoi(argv[7]) : 8;
     const bool only_galerkin = std::getenv("SH_ONLY_G") != nullptr;
     const cam::CamCase c = cam::read_cam_case(argv[2]);
-    cam::RollerDynamicsSettings dynamics;
-    dynamics.law.grid = {c.solver.nx, c.solver.ny};
-    dynamics.periodicity_rtol = c.solver.periodic_rtol;
-    dynamics.max_revolutions = c.solver.max_revolutions;
+    const cam::RollerDynamicsSettings dynamics = cam::roller_dynamics_of(c.solver);  // as rollwear run reads the case
     const std::unique_ptr<cam::CamLifeSetup> setup = cam::set_up_cam_life(c.name, c.model, *c.wear, dynamics);
-    cam::CamLifeModel to_depth = setup->life;
-    to_depth.max_depth_m = depth;
-    to_depth.max_lift_loss_m = 0;
-    to_depth.stepping.method = "fixed-depth";
-    to_depth.stepping.max_depth_step_m = 1e-6;
-    to_depth.snapshots_revolutions.clear();
     // the worn state, kept in SH_STATE (a scratch file of this program) to look again without wearing again
     cam::CamWearState state = cam::unworn_state(setup->life.grid);
     const char* keep = std::getenv("SH_STATE");
@@ -261,7 +253,7 @@ int main(int argc, char** argv) {
       if (!ok) return 1;
       std::printf("worn state read from %s (deepest %.3g m)\n", keep, state.cam_depth_m.maxCoeff());
     } else {
-      const cam::CamLifeResult worn = cam::run_cam_life(to_depth, setup->producer());
+      const cam::CamLifeResult worn = bench::cam_worn_to_depth(*setup, depth);
       std::printf("worn to %.3g m in %ld steps\n", worn.max_depth_m, worn.steps);
       state = worn.state;
       if (keep) {
