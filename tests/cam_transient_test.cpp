@@ -84,6 +84,26 @@ TEST(CamTransient, ContactOnTheCommonGridIsTheNormalSolversHertz) {
   }
 }
 
+// On the low dwell (from 250 deg) every step's strip powers are the steady model's on the same contact and grid,
+// to rounding (kRounding: the shift scheme's exact steps, or the relaxed creepage settled); more than 40 steps
+void expect_dwell_steps_steady(const CamRun& x, const TransientRevolution& t, contact::TangentialScheme scheme) {
+  const contact::Profiles prof = roller_and_track_profiles(x.m.bodies);
+  int checked = 0;
+  for (std::size_t i = 0; i < x.r.rows.size(); ++i) {
+    if (x.r.rows[i].kin.theta_rad < 250 * kDeg) continue;
+    const RollerAngle& a = x.p.motion.angles[i];
+    const AngleContact c = angle_contact_on_grid(x.m.bodies, prof, 0.013, x.r.rows[i].kin, a.normal_N, x.m.mu, true,
+                                                 t.grid, scheme);
+    const contact::TangentialSolution sol = steady_creep(c, a.xi, a.speed_m_per_s);
+    constexpr double kRounding = 1e-9;
+    for (int j = 0; j < t.grid.ny; ++j)
+      EXPECT_NEAR(t.dissipation[i].power_W_per_m(j), sol.strip_power_W_per_m(j),
+                  kRounding * sol.strip_power_W_per_m.maxCoeff()) << i << " " << j;
+    ++checked;
+  }
+  EXPECT_GT(checked, 40);
+}
+
 // On the low dwell (240-360 deg) nothing changes: after one transit the shift scheme's power at every step
 // is the steady solver's on the same contact and grid, to rounding; over the revolution the step balance
 // dissipated = creep work - elastic change - trailing - transport holds to rounding
@@ -94,21 +114,7 @@ TEST(CamTransient, OnTheDwellTheTransientIsTheSteadySolutionAndTheBalanceHolds) 
   s.scheme = contact::TangentialScheme::Consistent;
   const TransientRevolution t = transient_revolution(x.m, x.r, x.p.motion, s);
   EXPECT_EQ(t.skipped_rows, 0);
-  const contact::Profiles prof = roller_and_track_profiles(x.m.bodies);
-  int checked = 0;
-  for (std::size_t i = 0; i < x.r.rows.size(); ++i) {
-    if (x.r.rows[i].kin.theta_rad < 250 * kDeg) continue;
-    const RollerAngle& a = x.p.motion.angles[i];
-    const AngleContact c = angle_contact_on_grid(x.m.bodies, prof, 0.013, x.r.rows[i].kin, a.normal_N, x.m.mu, true,
-                                                 t.grid, s.scheme);
-    const contact::TangentialSolution sol = steady_creep(c, a.xi, a.speed_m_per_s);
-    constexpr double kRounding = 1e-9;  // the same strips through the shift scheme's exact steps
-    for (int j = 0; j < t.grid.ny; ++j)
-      EXPECT_NEAR(t.dissipation[i].power_W_per_m(j), sol.strip_power_W_per_m(j),
-                  kRounding * sol.strip_power_W_per_m.maxCoeff()) << i << " " << j;
-    ++checked;
-  }
-  EXPECT_GT(checked, 40);
+  expect_dwell_steps_steady(x, t, s.scheme);
   const TransientEnergy& e = t.energy;
   EXPECT_GT(e.dissipated_J, 0);
   EXPECT_NEAR(e.dissipated_J, e.creep_work_J - e.elastic_change_J - e.trailing_J - e.transport_J,
@@ -128,21 +134,7 @@ TEST(CamTransient, RelaxedOnTheDwellIsTheSteadyModelAndItsBalanceHolds) {
   const TransientRevolution t = transient_revolution(x.m, x.r, x.p.motion, s);
   EXPECT_EQ(t.skipped_rows, 0);
   EXPECT_GT(t.warmup_steps, 0);
-  const contact::Profiles prof = roller_and_track_profiles(x.m.bodies);
-  int checked = 0;
-  for (std::size_t i = 0; i < x.r.rows.size(); ++i) {
-    if (x.r.rows[i].kin.theta_rad < 250 * kDeg) continue;
-    const RollerAngle& a = x.p.motion.angles[i];
-    const AngleContact c = angle_contact_on_grid(x.m.bodies, prof, 0.013, x.r.rows[i].kin, a.normal_N, x.m.mu, true,
-                                                 t.grid, s.scheme);
-    const contact::TangentialSolution sol = steady_creep(c, a.xi, a.speed_m_per_s);
-    constexpr double kRounding = 1e-9;  // the same steady solve, its creepage settled to rounding
-    for (int j = 0; j < t.grid.ny; ++j)
-      EXPECT_NEAR(t.dissipation[i].power_W_per_m(j), sol.strip_power_W_per_m(j),
-                  kRounding * sol.strip_power_W_per_m.maxCoeff()) << i << " " << j;
-    ++checked;
-  }
-  EXPECT_GT(checked, 40);
+  expect_dwell_steps_steady(x, t, s.scheme);
   const TransientEnergy& e = t.energy;
   std::printf("relaxed: dissipated %.9e J = creep work %.9e - relaxation %.3e (+ %.2e)\n", e.dissipated_J,
               e.creep_work_J, e.relaxation_J, e.dissipated_J - (e.creep_work_J - e.relaxation_J));
