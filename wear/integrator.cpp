@@ -555,14 +555,12 @@ IntegratorResult integrate_fixed(const Rhs& f, const Roots& roots, int n_roots, 
         };
         auto [s, found] = locate_on_line(roots, n_roots, r.N, point, n, dN, g, g_next);
         r.N = s == 1 ? N_next : r.N + s * dN;
-        if (o.scheme == Scheme::Euler) {
-          r.h_m += (s * dN) * rate;
-        } else if (s == 1) {
+        if (s == 1) {
           r.h_m = h_next;
         } else {
           Eigen::VectorXd hs(n);
           point(s, hs);
-          r.h_m = hs;
+          r.h_m = std::move(hs);
         }
         ++r.steps;  // the step the root cut short counts, as in ARKODE
         r.status.kind = IntegratorStatus::Kind::RootFound;
@@ -577,9 +575,8 @@ IntegratorResult integrate_fixed(const Rhs& f, const Roots& roots, int n_roots, 
     // the rate at the step's end (evaluated above): the next step's slope and this step's error estimate
     // (Euler's: trapezoid minus Euler; Heun's: its update minus Euler's)
     ++r.steps;
-    const Eigen::ArrayXd e = o.scheme == Scheme::Euler || curve.isZero(0)
-                                 ? Eigen::ArrayXd(((0.5 * dN) * (rate_next - rate)).array())
-                                 : Eigen::ArrayXd((dN * curve).array());
+    const Eigen::ArrayXd e = o.scheme == Scheme::Euler ? Eigen::ArrayXd(((0.5 * dN) * (rate_next - rate)).array())
+                                                       : Eigen::ArrayXd((dN * curve).array());
     const Eigen::ArrayXd w = 1.0 / (o.rtol * r.h_m.array().abs() + o.atol);
     StepInfo info;
     info.N = N_next;
