@@ -20,11 +20,15 @@ AngleDissipation angle_step(const RevolutionRow& row, const RollerAngle& roller,
 
 AngleDissipation angle_dissipation(const AngleContact& c, const RevolutionRow& row, const RollerAngle& roller,
                                    double duration_s) {
+  return angle_dissipation(c, row, roller, duration_s, steady_creep(c, roller.xi, roller.speed_m_per_s));
+}
+
+AngleDissipation angle_dissipation(const AngleContact& c, const RevolutionRow& row, const RollerAngle& roller,
+                                   double duration_s, const contact::TangentialSolution& steady) {
   const contact::ContactPatch& patch = c.normal.patch;
-  const contact::TangentialSolution sol = steady_creep(c, roller.xi, roller.speed_m_per_s);
   AngleDissipation d = angle_step(row, roller, duration_s);
   d.y_m = c.normal.grid_y0_m + patch.grid.y_m;
-  d.power_W_per_m = sol.strip_power_W_per_m;
+  d.power_W_per_m = steady.strip_power_W_per_m;
   d.mean_pressure_Pa = (patch.half_length_m > 0).select(contact::kPi / 4 * patch.strip_peak_Pa, 0.0);
   return d;
 }

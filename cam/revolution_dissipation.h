@@ -27,6 +27,9 @@ RevolutionDissipation revolution_dissipation(const CamModel& m, const Revolution
 // one angle step: the contact c of row `row`, the roller's state there
 AngleDissipation angle_dissipation(const AngleContact& c, const RevolutionRow& row, const RollerAngle& roller,
                                    double duration_s);
+// the same from the steady solution already solved there (steady_creep(c, roller.xi, roller.speed_m_per_s))
+AngleDissipation angle_dissipation(const AngleContact& c, const RevolutionRow& row, const RollerAngle& roller,
+                                   double duration_s, const contact::TangentialSolution& steady);
 
 // one angle step's place and speeds (its angle, duration, arc, the two surfaces' speeds), no strips yet: what
 // every solve of the step (quasi-steady or transient) fills in the same way

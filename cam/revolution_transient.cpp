@@ -73,6 +73,17 @@ AngleContact contact_from_hertz(const RollerAndTrack& bodies, const contact::Pro
 }
 
 
+// a skipped row i: the steady solution on its contact, its strips and its energies (the steps' sign: the creep
+// work is the energy the rigid slip puts in)
+void add_quasi_steady_row(const AngleContact& c, const RevolutionRow& row, const RollerAngle& a, double dt_row,
+                          std::size_t i, TransientRevolution& out) {
+  const contact::TangentialSolution sol = steady_creep(c, a.xi, a.speed_m_per_s);
+  out.dissipation[i] = angle_dissipation(c, row, a, dt_row, sol);
+  ++out.steady_solves;
+  out.energy.dissipated_J += sol.power_W * dt_row;
+  out.energy.creep_work_J += -sol.creep_work_W * dt_row;
+}
+
 double relative_change(double x, double y, double ref) { return ref > 0 ? std::abs(x - y) / ref : 0.0; }
 
 // the relaxed model along the revolution on the rows' contacts (revolution_transient.h): fills out's dissipation,
@@ -153,11 +164,7 @@ void relaxed_rows(const std::vector<AngleContact>& contacts, const Revolution& r
     const RevolutionRow& row = r.rows[i];
     const RollerAngle& a = rollers[i];
     if (out.skipped[i]) {
-      out.dissipation[i] = angle_dissipation(contacts[i], row, a, dt_row);
-      ++out.steady_solves;
-      const contact::TangentialSolution sol = steady_creep(contacts[i], a.xi, a.speed_m_per_s);
-      out.energy.dissipated_J += sol.power_W * dt_row;
-      out.energy.creep_work_J += -sol.creep_work_W * dt_row;
+      add_quasi_steady_row(contacts[i], row, a, dt_row, i, out);
       warm = false;
       continue;
     }
@@ -324,11 +331,7 @@ TransientRevolution transient_revolution(const CamModel& m, const Revolution& r,
     const RevolutionRow& row = r.rows[i];
     const RollerAngle& a = motion.angles[i];
     if (out.skipped[i]) {
-      out.dissipation[i] = angle_dissipation(contacts[i], row, a, dt_row);
-      ++out.steady_solves;
-      const contact::TangentialSolution sol = steady_creep(contacts[i], a.xi, a.speed_m_per_s);
-      out.energy.dissipated_J += sol.power_W * dt_row;
-      out.energy.creep_work_J += -sol.creep_work_W * dt_row;  // the steps' sign: energy the rigid slip puts in
+      add_quasi_steady_row(contacts[i], row, a, dt_row, i, out);
       warm = false;
       continue;
     }

@@ -196,13 +196,9 @@ RevolutionDissipation WornRevolution::operator()(const CamWearState& s) {
     ++stats_.angles;
     ++stats_.interpolated_angles;
     const double xi = al.xi_known && ar.xi_known ? (1 - w) * al.xi + w * ar.xi : a.roller.xi;
-    AngleDissipation d;
-    d.theta_rad = a.row.kin.theta_rad;
-    d.duration_s = duration_s_;
-    d.cam_arc_m = a.row.contact_arc_m;
-    d.rolling_speed_m_per_s = a.row.kin.rolling_speed_m_per_s;
-    d.roller_surface_speed_m_per_s =
-        roller_surface_speed_m_per_s(a.row.kin.rolling_speed_m_per_s, xi * a.roller.speed_m_per_s);
+    RollerAngle roller = a.roller;  // at the interpolated creepage, as a solved angle's at its own
+    roller.slip_speed_m_per_s = xi * roller.speed_m_per_s;
+    AngleDissipation d = angle_step(a.row, roller, duration_s_);
     d.y_m = A.y_m;
     d.power_W_per_m = (1 - w) * A.power_W_per_m + w * B.power_W_per_m;
     d.mean_pressure_Pa = (1 - w) * A.mean_pressure_Pa + w * B.mean_pressure_Pa;
