@@ -327,20 +327,76 @@ TangentialInfluence cerruti_rectangle_influence(double x_m, double y_m, double d
 
 namespace {
 
-// steady (prev_ux == nullptr) or one rolling step by dq = dx from the previous displacement
-ExactSolution solve_exact(const ContactPatch& patch, double G_Pa, double nu, const Creepages& creepages, double mu,
-                          double speed_m_per_s, const ExactOptions& opt, const Eigen::ArrayXXd* prev_ux,
-                          const Eigen::ArrayXXd* prev_uy, const Eigen::ArrayXXd* start_tx,
-                          const Eigen::ArrayXXd* start_ty, int prev_offset = 1, double creep_scale = 1.0,
-                          const char* mode_name = nullptr, const Eigen::ArrayXXi* start_state = nullptr,
-                          const Eigen::ArrayXXd* start_ux = nullptr, const Eigen::ArrayXXd* start_uy = nullptr,
-                          const Eigen::ArrayXXd* guess_x = nullptr, const Eigen::ArrayXXd* guess_y = nullptr,
-                          bool warn_unconverged = true) {
-  const bool transient = prev_ux != nullptr;
-  const char* const mode = mode_name                 ? mode_name
-                           : !transient             ? "exact steady"
-                           : prev_offset == 1       ? "exact rolling step"
-                                                    : "exact shift";
+// What a solve carries in besides the patch and the problem; the defaults are the steady solve from
+// the all-stick start.
+// The transport of a transient step: the previous step's displacement difference ((nx + 1) x ny),
+// cell i reading its row i + offset (1: the material rolled by one cell; 0: already carried to where
+// it is now, or a shift), and the rigid slip per dx times creep_scale (dq/dx of a partial step).
+// Without it (ux == nullptr) the problem is steady: u_(i+1) is A tau too.
+struct ExactTransport {
+  const Eigen::ArrayXXd* ux = nullptr;
+  const Eigen::ArrayXXd* uy = nullptr;
+  int offset = 1;
+  double creep_scale = 1.0;
+};
+
+// A warm start: the tractions (nx x ny) the Newton iteration starts from (tau_x == nullptr: the
+// all-stick start), and what else of a previous solve it reuses where given: A of those tractions
+// ((nx + 1) x ny, kept when none lies on a cell out of contact now), their stick (1) and slip (2)
+// sets (the first Newton step's), their last change ((nx + 1) x ny: the first Newton step's guessed
+// direction of the increment).
+struct ExactWarmStart {
+  const Eigen::ArrayXXd* tau_x = nullptr;
+  const Eigen::ArrayXXd* tau_y = nullptr;
+  const Eigen::ArrayXXd* u_x = nullptr;
+  const Eigen::ArrayXXd* u_y = nullptr;
+  const Eigen::ArrayXXi* state = nullptr;
+  const Eigen::ArrayXXd* dtau_x = nullptr;
+  const Eigen::ArrayXXd* dtau_y = nullptr;
+};
+
+struct ExactSolveSetup {
+  const char* mode_name = nullptr;  // in messages; nullptr: "exact steady", "exact rolling step", "exact shift"
+  ExactTransport transport;
+  ExactWarmStart start;
+  bool warn_unconverged = true;  // spdlog::warn on a solve that did not converge
+};
+
+// a previous solution as the start: its tractions and their product; with_sets also its stick and
+// slip sets and its last change (a rolling step from the previous rolling step)
+ExactWarmStart warm_start_from(const ExactSolution& s, bool with_sets) {
+  ExactWarmStart w;
+  w.tau_x = &s.fields.tau_x_Pa;
+  w.tau_y = &s.fields.tau_y_Pa;
+  w.u_x = &s.u_x_m;
+  w.u_y = &s.u_y_m;
+  if (with_sets) {
+    w.state = &s.fields.state;
+    w.dtau_x = &s.dtau_x_Pa;
+    w.dtau_y = &s.dtau_y_Pa;
+  }
+  return w;
+}
+
+// a steady solve's start from given tractions alone (a coarser grid's solution, prolonged)
+ExactSolveSetup tractions_start(const Eigen::ArrayXXd& tx, const Eigen::ArrayXXd& ty) {
+  ExactSolveSetup setup;
+  setup.start.tau_x = &tx;
+  setup.start.tau_y = &ty;
+  return setup;
+}
+
+const char* mode_of(const ExactSolveSetup& setup) {
+  const bool transient = setup.transport.ux != nullptr;
+  return setup.mode_name               ? setup.mode_name
+         : !transient                  ? "exact steady"
+         : setup.transport.offset == 1 ? "exact rolling step"
+                                       : "exact shift";
+}
+
+// the patch, the constants and the options (std::invalid_argument, named by the mode)
+void check_exact_inputs(const ContactPatch& patch, double G_Pa, double nu, const Creepages& creepages, double mu,
+                        double speed_m_per_s, const ExactOptions& opt, const char* mode) {
   const Grid& grid = patch.grid;
   const int nx = grid.nx, ny = grid.ny;
   if (nx < 1 || ny < 1 || !(grid.dx_m > 0) || !(grid.dy_m > 0) || grid.x_m.size() != nx || grid.y_m.size() != ny)
@@ -361,30 +417,47 @@ ExactSolution solve_exact(const ContactPatch& patch, double G_Pa, double nu, con
     throw std::invalid_argument(std::string(mode) + ": a creepage is not finite");
   if (!(opt.tol > 0) || opt.max_iterations < 1 || !(opt.stick_tol > 0) || opt.max_stick_iterations < 1)
     throw std::invalid_argument(std::string(mode) + ": tol, stick_tol must be positive, max_iterations, max_stick_iterations >= 1");
-
-  const int nxe = nx + 1;  // one row ahead of the leading edge
-  const double dx = grid.dx_m, dy = grid.dy_m;
   if (opt.plane_strain && ny != 1)
     throw std::invalid_argument(fmt::format("{}: plane strain takes one strip (ny = 1), got {}", mode, ny));
-  TangentialOperator& A = cached_operator(nxe, ny, dx, dy, G_Pa, nu, opt.plane_strain);
-  const TangentialInfluence A0 = opt.plane_strain ? line_load_influence(0, dx, G_Pa, nu)
-                                                  : cerruti_rectangle_influence(0, 0, dx, dy, G_Pa, nu);
-  const TangentialInfluence A1 = opt.plane_strain ? line_load_influence(dx, dx, G_Pa, nu)
-                                                  : cerruti_rectangle_influence(dx, 0, dx, dy, G_Pa, nu);
-  // steady: u_(i+1) is A tau too; a rolling step: it is the previous step's, known
-  const double upstream = transient ? 0.0 : 1.0;
-  const double bx = (A0.xx - upstream * A1.xx) / dx, by = (A0.yy - upstream * A1.yy) / dx;
-  if (transient && (prev_ux->rows() != nx + 1 || prev_ux->cols() != ny || prev_uy->rows() != nx + 1 ||
-                    prev_uy->cols() != ny || !prev_ux->allFinite() || !prev_uy->allFinite()))
+}
+
+// the carried fields' shapes: the previous displacement ((nx + 1) x ny), the start's tractions (nx x ny)
+void check_carried_inputs(const ExactSolveSetup& setup, int nx, int ny, const char* mode) {
+  const Eigen::ArrayXXd* prev_ux = setup.transport.ux;
+  const Eigen::ArrayXXd* prev_uy = setup.transport.uy;
+  const Eigen::ArrayXXd* start_tx = setup.start.tau_x;
+  const Eigen::ArrayXXd* start_ty = setup.start.tau_y;
+  if (prev_ux && (prev_ux->rows() != nx + 1 || prev_ux->cols() != ny || prev_uy->rows() != nx + 1 ||
+                  prev_uy->cols() != ny || !prev_ux->allFinite() || !prev_uy->allFinite()))
     throw std::invalid_argument(fmt::format("{}: the previous displacement must be finite, {} x {}", mode, nx + 1, ny));
   if (start_tx && (start_tx->rows() != nx || start_tx->cols() != ny || start_ty->rows() != nx ||
                    start_ty->cols() != ny || !start_tx->allFinite() || !start_ty->allFinite()))
     throw std::invalid_argument(fmt::format("{}: the previous tractions must be finite, {} x {}", mode, nx, ny));
-  ROLLWEAR_ASSERT(bx > 0 && by > 0, fmt::format("own coefficients bx {} by {}", bx, by));
+}
 
-  // contact cells (column-major index i + nxe j on the extended grid), bound, rigid creepage
+// The contact cells (column-major index i + nxe j on the grid extended by one row ahead of the
+// leading edge), their bound g = mu p and rigid creepage w (per dx, times the transport's scale), and
+// w with the previous step's displacement one cell upstream (known) in the equations' we
+struct ExactCells {
   std::vector<int> cells;
-  Eigen::ArrayXXd g = Eigen::ArrayXXd::Zero(nxe, ny), wx = g, wy = g, wex = g, wey = g;
+  Eigen::ArrayXXd g, wx, wy, wex, wey;  // (nxe x ny), zero outside the contact
+};
+
+ExactCells contact_cells(const ContactPatch& patch, const Creepages& creepages, double mu, const ExactTransport& tr,
+                         int nxe) {
+  const Grid& grid = patch.grid;
+  const int nx = grid.nx, ny = grid.ny;
+  const double dx = grid.dx_m, creep_scale = tr.creep_scale;
+  const int prev_offset = tr.offset;
+  const bool transient = tr.ux != nullptr;
+  ExactCells e;
+  std::vector<int>& cells = e.cells;
+  e.g = Eigen::ArrayXXd::Zero(nxe, ny);
+  e.wx = e.g;
+  e.wy = e.g;
+  e.wex = e.g;
+  e.wey = e.g;
+  Eigen::ArrayXXd &g = e.g, &wx = e.wx, &wy = e.wy, &wex = e.wex, &wey = e.wey;
   for (int j = 0; j < ny; ++j) {
     const double xi_j = creepages.xi + (patch.strip_xi_offset.size() == ny ? patch.strip_xi_offset(j) : 0.0);
     for (int i = 0; i < nx; ++i) {
@@ -394,48 +467,120 @@ ExactSolution solve_exact(const ContactPatch& patch, double G_Pa, double nu, con
       wx(i, j) = creep_scale * (xi_j - creepages.phi_per_m * grid.y_m(j));
       wy(i, j) = creep_scale * (creepages.eta + creepages.phi_per_m * grid.x_m(i));
       if (transient) {  // the previous step's displacement one cell upstream, known
-        wex(i, j) = wx(i, j) - (*prev_ux)(i + prev_offset, j) / dx;
-        wey(i, j) = wy(i, j) - (*prev_uy)(i + prev_offset, j) / dx;
+        wex(i, j) = wx(i, j) - (*tr.ux)(i + prev_offset, j) / dx;
+        wey(i, j) = wy(i, j) - (*tr.uy)(i + prev_offset, j) / dx;
       } else {
         wex(i, j) = wx(i, j);
         wey(i, j) = wy(i, j);
       }
     }
   }
-  const int nc = static_cast<int>(cells.size());
-  if (nc == 0) throw std::invalid_argument(std::string(mode) + ": the patch has no loaded cell");
+  return e;
+}
 
-  Eigen::ArrayXXd tx = Eigen::ArrayXXd::Zero(nxe, ny), ty = tx, ux = tx, uy = tx;
-  double* const TX = tx.data();
-  double* const TY = ty.data();
-  const double* const UX = ux.data();
-  const double* const UY = uy.data();
-  const double* const WX = wex.data();  // in the equations: with the previous step's part
-  const double* const WY = wey.data();
-  const double* const RX = wx.data();  // the rigid slip alone (creep power)
-  const double* const RY = wy.data();
-  const double* const Gb = g.data();
+// One solve of the discrete problem (exact.h): the state of its iteration and its stages, in the
+// order solve_exact runs them. The Newton iteration's linear problem: per contact cell c (order of
+// `cells`), stick (two unknowns, the traction) or slip (one unknown, the traction's component tau_t
+// along t = e^perp, with tau = -g e + tau_t t, e the unit slip direction, |s| the slip of the
+// current iterate):
+//   stick: (D A tau)_i + w_i = 0
+//   slip:  (|s_i|/g_i) tau_t + t.((D A tau)_i + w_i) = 0
+// (the Newton linearisation of tau = -g s/|s|; it stays regular as |s| -> 0, where it asks for
+// no slip across e).
+struct ExactSolve {
+  const ContactPatch& patch;
+  const ExactOptions& opt;
+  const ExactSolveSetup& setup;
+  const char* mode;
+  int nx, ny, nxe;  // nxe: one row ahead of the leading edge
+  double dx, dy;
+  bool transient;
+  TangentialOperator& A;
+  double upstream;  // steady: u_(i+1) is A tau too (1); a rolling step: it is the previous step's, known (0)
+  double bx = 0, by = 0;  // the cell's own coefficient B = diag(bx, by)
+  ExactCells contact;
+  const std::vector<int>& cells;
+  int nc;
 
+  // the iterate (tx, ty) and u = A tau of it in (ux, uy) when u_current: kept by linearity through the
+  // Newton steps (the product of the right-hand side's tractions plus the Krylov vectors' products
+  // combined as the increment is), so that the residual of a Newton iterate costs no product of its own
+  Eigen::ArrayXXd tx, ty, ux, uy;
+  double* TX = nullptr;
+  double* TY = nullptr;
+  const double* UX = nullptr;
+  const double* UY = nullptr;
+  const double* WX = nullptr;  // in the equations: with the previous step's part
+  const double* WY = nullptr;
+  const double* RX = nullptr;  // the rigid slip alone (creep power)
+  const double* RY = nullptr;
+  const double* Gb = nullptr;
+  bool u_current = false;
+
+  // the Newton step's unknowns: per cell slip or stick, slip direction, |s|, the first unknown's index
+  std::vector<char> slip;
+  std::vector<double> ex, ey, sabs;
+  std::vector<int> offset;
+  Eigen::ArrayXXd px, py;  // the traction increment of the unknowns (to_traction)
+  int gmres_total = 0;
+  int products = 0;  // FFT products A tau
+  Eigen::ArrayXXd u0x, u0y, uzx, uzy;
+  std::vector<Eigen::ArrayXXd> Ukx, Uky;  // the u of each Krylov vector's traction
+  Eigen::MatrixXd Vbuf;                   // GMRES's basis, rows for up to 2 nc unknowns
+
+  Eigen::ArrayXXi state;  // per cell of the extended grid: 1 stick, 2 slip, 0 outside
   ExactSolution out;
-  SolveStatus& status = out.status;
 
-  // The linear problem of one Newton step. Per contact cell c (order of `cells`): stick (two
-  // unknowns, the traction) or slip (one unknown, the traction's component tau_t along t = e^perp,
-  // with tau = -g e + tau_t t, e the unit slip direction, |s| the slip of the current iterate):
-  //   stick: (D A tau)_i + w_i = 0
-  //   slip:  (|s_i|/g_i) tau_t + t.((D A tau)_i + w_i) = 0
-  // (the Newton linearisation of tau = -g s/|s|; it stays regular as |s| -> 0, where it asks for
-  // no slip across e).
-  std::vector<char> slip(static_cast<std::size_t>(nc), 0);
-  std::vector<double> ex(static_cast<std::size_t>(nc), 1.0), ey(static_cast<std::size_t>(nc), 0.0),
-      sabs(static_cast<std::size_t>(nc), 0.0);
-  std::vector<int> offset(static_cast<std::size_t>(nc) + 1, 0);
-  auto index_unknowns = [&] {
+  ExactSolve(const ContactPatch& patch_, double G_Pa, double nu, const Creepages& creepages, double mu,
+             const ExactOptions& opt_, const ExactSolveSetup& setup_, const char* mode_)
+      : patch(patch_), opt(opt_), setup(setup_), mode(mode_), nx(patch_.grid.nx), ny(patch_.grid.ny), nxe(nx + 1),
+        dx(patch_.grid.dx_m), dy(patch_.grid.dy_m), transient(setup_.transport.ux != nullptr),
+        A(cached_operator(nxe, ny, dx, dy, G_Pa, nu, opt_.plane_strain)), upstream(transient ? 0.0 : 1.0),
+        cells(contact.cells) {
+    const TangentialInfluence A0 = opt.plane_strain ? line_load_influence(0, dx, G_Pa, nu)
+                                                    : cerruti_rectangle_influence(0, 0, dx, dy, G_Pa, nu);
+    const TangentialInfluence A1 = opt.plane_strain ? line_load_influence(dx, dx, G_Pa, nu)
+                                                    : cerruti_rectangle_influence(dx, 0, dx, dy, G_Pa, nu);
+    bx = (A0.xx - upstream * A1.xx) / dx;
+    by = (A0.yy - upstream * A1.yy) / dx;
+    check_carried_inputs(setup, nx, ny, mode);
+    ROLLWEAR_ASSERT(bx > 0 && by > 0, fmt::format("own coefficients bx {} by {}", bx, by));
+
+    contact = contact_cells(patch, creepages, mu, setup.transport, nxe);
+    nc = static_cast<int>(cells.size());
+    if (nc == 0) throw std::invalid_argument(std::string(mode) + ": the patch has no loaded cell");
+
+    tx = Eigen::ArrayXXd::Zero(nxe, ny);
+    ty = tx;
+    ux = tx;
+    uy = tx;
+    TX = tx.data();
+    TY = ty.data();
+    UX = ux.data();
+    UY = uy.data();
+    WX = contact.wex.data();
+    WY = contact.wey.data();
+    RX = contact.wx.data();
+    RY = contact.wy.data();
+    Gb = contact.g.data();
+    slip.assign(static_cast<std::size_t>(nc), 0);
+    ex.assign(static_cast<std::size_t>(nc), 1.0);
+    ey.assign(static_cast<std::size_t>(nc), 0.0);
+    sabs.assign(static_cast<std::size_t>(nc), 0.0);
+    offset.assign(static_cast<std::size_t>(nc) + 1, 0);
+    px = tx;
+    py = ty;
+    state = Eigen::ArrayXXi::Zero(nxe, ny);
+  }
+  ExactSolve(const ExactSolve&) = delete;
+  ExactSolve& operator=(const ExactSolve&) = delete;
+
+  void index_unknowns() {
     for (int c = 0; c < nc; ++c) offset[c + 1] = offset[c] + (slip[c] ? 1 : 2);
-  };
-  Eigen::ArrayXXd px = tx, py = ty;
+  }
+
   // x -> traction increments (px, py) on the contact cells
-  auto to_traction = [&](const Eigen::VectorXd& x) {
+  void to_traction(const Eigen::VectorXd& x) {
     px.setZero();
     py.setZero();
     for (int c = 0; c < nc; ++c) {
@@ -448,11 +593,12 @@ ExactSolution solve_exact(const ContactPatch& patch, double G_Pa, double nu, con
         py.data()[q] = x(o + 1);
       }
     }
-  };
+  }
+
   // right preconditioner x = M z: z as a traction field, marched from the leading edge along each
   // run of contact cells and divided by the own coefficient (the inverse of the local part of D A,
   // b (I - S)), then taken along t on the slip cells
-  auto precondition = [&](const Eigen::VectorXd& z, Eigen::VectorXd& x) {
+  void precondition(const Eigen::VectorXd& z, Eigen::VectorXd& x) const {
     if (transient) {  // the diagonal of the rows, the slip rows' own term |s|/g included
       for (int c = 0; c < nc; ++c) {
         const int o = offset[c];
@@ -483,10 +629,11 @@ ExactSolution solve_exact(const ContactPatch& patch, double G_Pa, double nu, con
         x(o + 1) = ay;
       }
     }
-  };
+  }
+
   // rows of the linear operator for traction increments (px, py) and unknowns x; with_w adds w
-  auto rows = [&](const Eigen::ArrayXXd& fx_, const Eigen::ArrayXXd& fy_, const Eigen::VectorXd* x, bool with_w,
-                  Eigen::VectorXd& y) {
+  void rows(const Eigen::ArrayXXd& fx_, const Eigen::ArrayXXd& fy_, const Eigen::VectorXd* x, bool with_w,
+            Eigen::VectorXd& y) {
     A.apply(fx_, fy_, ux, uy);
     for (int c = 0; c < nc; ++c) {
       const int q = cells[c], o = offset[c];
@@ -502,24 +649,14 @@ ExactSolution solve_exact(const ContactPatch& patch, double G_Pa, double nu, con
         y(o + 1) = ry;
       }
     }
-  };
-  int gmres_total = 0;
-  int products = 0;  // FFT products A tau
-  // u = A tau of the current (tx, ty) is in (ux, uy): kept by linearity through the Newton steps
-  // (the product of the right-hand side's tractions plus the Krylov vectors' products combined as
-  // the increment is), so that the residual of a Newton iterate costs no product of its own
-  bool u_current = false;
-  Eigen::ArrayXXd u0x, u0y, uzx, uzy;
-  std::vector<Eigen::ArrayXXd> Ukx, Uky;  // the u of each Krylov vector's traction
-  Eigen::MatrixXd Vbuf;                   // GMRES's basis, rows for up to 2 nc unknowns
-  // one Newton step from (tx, ty): solves for the increment to rel_tol; returns the relative residual
-  Eigen::ArrayXXd ugx, ugy;
-  auto newton_step = [&](double rel_tol, const Eigen::ArrayXXd* gx = nullptr, const Eigen::ArrayXXd* gy = nullptr) {
-    index_unknowns();
+  }
+
+  // the Newton step's right-hand side at the current tractions: their unknowns x0 (the fixed part -g e
+  // on slip cells aside) and b = -F(x0); u0 = A of them
+  void newton_rhs(Eigen::VectorXd& x0, Eigen::VectorXd& b) {
     const int n = offset[nc];
-    // the current tractions in these unknowns: the fixed part -g e on slip cells
     Eigen::ArrayXXd fx0 = Eigen::ArrayXXd::Zero(nxe, ny), fy0 = fx0;
-    Eigen::VectorXd x0(n);
+    x0.resize(n);
     for (int c = 0; c < nc; ++c) {
       const int q = cells[c], o = offset[c];
       if (slip[c]) {
@@ -534,7 +671,7 @@ ExactSolution solve_exact(const ContactPatch& patch, double G_Pa, double nu, con
     to_traction(x0);
     fx0 += px;
     fy0 += py;
-    Eigen::VectorXd b(n), w(n), r(n), v(n), xi(n);
+    b.resize(n);
     rows(fx0, fy0, nullptr, true, b);  // F(x0) without the |s|/g term of the slip rows
     ++products;
     u0x = ux;
@@ -544,34 +681,43 @@ ExactSolution solve_exact(const ContactPatch& patch, double G_Pa, double nu, con
     for (int c = 0; c < nc; ++c)
       if (slip[c]) b(offset[c]) += sabs[c] / Gb[cells[c]] * x0(offset[c]);
     b = -b;
-    const double b_norm = b.norm();
-    Eigen::VectorXd z = Eigen::VectorXd::Zero(n);
-    // a guessed direction of the increment (the previous step's change of the tractions, taken along
-    // the current unknowns): its multiple that best reduces the residual starts the increment
-    Eigen::VectorXd x_guess;
-    if (gx && n > 0 && b_norm > 0) {
-      Eigen::VectorXd xg(n), q(n);
-      for (int c = 0; c < nc; ++c) {
-        const int qq = cells[c], o = offset[c];
-        const double gxq = gx->data()[qq], gyq = gy->data()[qq];
-        if (slip[c]) {
-          xg(o) = -ey[c] * gxq + ex[c] * gyq;
-        } else {
-          xg(o) = gxq;
-          xg(o + 1) = gyq;
-        }
-      }
-      to_traction(xg);
-      rows(px, py, &xg, false, q);
-      ++products;
-      const double qq = q.squaredNorm(), alpha = qq > 0 ? q.dot(b) / qq : 0.0;
-      if (std::isfinite(alpha) && alpha != 0) {
-        b -= alpha * q;
-        x_guess = alpha * xg;
-        u0x += alpha * ux;
-        u0y += alpha * uy;
+  }
+
+  // a guessed direction of the increment (the previous step's change of the tractions, taken along
+  // the current unknowns): its multiple that best reduces the residual starts the increment (x_guess,
+  // taken off b, its product added to u0)
+  void start_from_guess(const Eigen::ArrayXXd& gx, const Eigen::ArrayXXd& gy, Eigen::VectorXd& b,
+                        Eigen::VectorXd& x_guess) {
+    const int n = offset[nc];
+    Eigen::VectorXd xg(n), q(n);
+    for (int c = 0; c < nc; ++c) {
+      const int qq = cells[c], o = offset[c];
+      const double gxq = gx.data()[qq], gyq = gy.data()[qq];
+      if (slip[c]) {
+        xg(o) = -ey[c] * gxq + ex[c] * gyq;
+      } else {
+        xg(o) = gxq;
+        xg(o + 1) = gyq;
       }
     }
+    to_traction(xg);
+    rows(px, py, &xg, false, q);
+    ++products;
+    const double qq = q.squaredNorm(), alpha = qq > 0 ? q.dot(b) / qq : 0.0;
+    if (std::isfinite(alpha) && alpha != 0) {
+      b -= alpha * q;
+      x_guess = alpha * xg;
+      u0x += alpha * ux;
+      u0y += alpha * uy;
+    }
+  }
+
+  // GMRES(kGmresRestart) on the right-preconditioned rows: z with |b - rows(M z)| <= rel_tol b_norm (b_norm:
+  // the norm of the right-hand side before the guess), within the solve's budget of iterations; the
+  // increment's u in (uzx, uzy). Returns the relative residual.
+  double gmres(const Eigen::VectorXd& b, double b_norm, double rel_tol, Eigen::VectorXd& z) {
+    const int n = offset[nc];
+    Eigen::VectorXd w(n), r(n), v(n), xi(n);
     auto matvec = [&](const Eigen::VectorXd& zz, Eigen::VectorXd& y) {
       precondition(zz, xi);
       to_traction(xi);
@@ -579,76 +725,91 @@ ExactSolution solve_exact(const ContactPatch& patch, double G_Pa, double nu, con
       ++products;
     };
     double rel = 0;
-    if (n > 0 && b_norm > 0) {
-      const int m = kGmresRestart;
-      if (Vbuf.rows() < n) Vbuf.resize(2 * nc, m + 1);
-      auto Vk = Vbuf.topRows(n);
-      if (static_cast<int>(Ukx.size()) < m + 1) {
-        Ukx.resize(static_cast<std::size_t>(m) + 1);
-        Uky.resize(static_cast<std::size_t>(m) + 1);
+    const int m = kGmresRestart;
+    if (Vbuf.rows() < n) Vbuf.resize(2 * nc, m + 1);
+    auto Vk = Vbuf.topRows(n);
+    if (static_cast<int>(Ukx.size()) < m + 1) {
+      Ukx.resize(static_cast<std::size_t>(m) + 1);
+      Uky.resize(static_cast<std::size_t>(m) + 1);
+    }
+    Eigen::MatrixXd Hm = Eigen::MatrixXd::Zero(m + 1, m);
+    Eigen::VectorXd cs(m), sn(m), e(m + 1);
+    bool zero = true;  // z = 0: the residual is b, no product needed
+    for (;;) {
+      if (zero) {
+        r = b;
+      } else {
+        matvec(z, w);
+        r = b - w;
+        uzx = ux;  // the increment's u, measured
+        uzy = uy;
       }
-      Eigen::MatrixXd Hm = Eigen::MatrixXd::Zero(m + 1, m);
-      Eigen::VectorXd cs(m), sn(m), e(m + 1);
-      bool zero = true;  // z = 0: the residual is b, no product needed
-      for (;;) {
-        if (zero) {
-          r = b;
-        } else {
-          matvec(z, w);
-          r = b - w;
-          uzx = ux;  // the increment's u, measured
-          uzy = uy;
+      const double beta = r.norm();
+      rel = beta / std::max(b_norm, 1e-300);
+      if (rel <= rel_tol || gmres_total >= opt.max_stick_iterations) break;
+      Vk.col(0) = r / beta;
+      e.setZero();
+      e(0) = beta;
+      Hm.setZero();
+      int k = 0;
+      while (k < m && gmres_total < opt.max_stick_iterations) {
+        v = Vk.col(k);
+        matvec(v, w);
+        ++gmres_total;
+        Ukx[k] = ux;
+        Uky[k] = uy;
+        for (int i = 0; i <= k; ++i) {  // modified Gram-Schmidt
+          Hm(i, k) = Vk.col(i).dot(w);
+          w -= Hm(i, k) * Vk.col(i);
         }
-        const double beta = r.norm();
-        rel = beta / std::max(b_norm, 1e-300);
-        if (rel <= rel_tol || gmres_total >= opt.max_stick_iterations) break;
-        Vk.col(0) = r / beta;
-        e.setZero();
-        e(0) = beta;
-        Hm.setZero();
-        int k = 0;
-        while (k < m && gmres_total < opt.max_stick_iterations) {
-          v = Vk.col(k);
-          matvec(v, w);
-          ++gmres_total;
-          Ukx[k] = ux;
-          Uky[k] = uy;
-          for (int i = 0; i <= k; ++i) {  // modified Gram-Schmidt
-            Hm(i, k) = Vk.col(i).dot(w);
-            w -= Hm(i, k) * Vk.col(i);
-          }
-          Hm(k + 1, k) = w.norm();
-          if (Hm(k + 1, k) > 0) Vk.col(k + 1) = w / Hm(k + 1, k);
-          for (int i = 0; i < k; ++i) {  // Givens rotations
-            const double t = cs(i) * Hm(i, k) + sn(i) * Hm(i + 1, k);
-            Hm(i + 1, k) = -sn(i) * Hm(i, k) + cs(i) * Hm(i + 1, k);
-            Hm(i, k) = t;
-          }
-          const double den = std::hypot(Hm(k, k), Hm(k + 1, k));
-          cs(k) = Hm(k, k) / den;
-          sn(k) = Hm(k + 1, k) / den;
-          Hm(k, k) = den;
-          Hm(k + 1, k) = 0;
-          e(k + 1) = -sn(k) * e(k);
-          e(k) = cs(k) * e(k);
-          ++k;
-          if (std::abs(e(k)) <= 0.5 * rel_tol * b_norm || !(den > 0)) break;
+        Hm(k + 1, k) = w.norm();
+        if (Hm(k + 1, k) > 0) Vk.col(k + 1) = w / Hm(k + 1, k);
+        for (int i = 0; i < k; ++i) {  // Givens rotations
+          const double t = cs(i) * Hm(i, k) + sn(i) * Hm(i + 1, k);
+          Hm(i + 1, k) = -sn(i) * Hm(i, k) + cs(i) * Hm(i + 1, k);
+          Hm(i, k) = t;
         }
-        const Eigen::VectorXd yk = Hm.topLeftCorner(k, k).triangularView<Eigen::Upper>().solve(e.head(k));
-        z += Vk.leftCols(k) * yk;
-        for (int i = 0; i < k; ++i) {
-          uzx += yk(i) * Ukx[i];
-          uzy += yk(i) * Uky[i];
-        }
-        zero = false;
-        // the cycle's own residual estimate (exact in exact arithmetic) met the tolerance: done, without
-        // the product that would measure it again (the Newton iteration measures its own residual)
-        if (std::abs(e(k)) <= 0.5 * rel_tol * b_norm) {
-          rel = std::abs(e(k)) / b_norm;
-          break;
-        }
+        const double den = std::hypot(Hm(k, k), Hm(k + 1, k));
+        cs(k) = Hm(k, k) / den;
+        sn(k) = Hm(k + 1, k) / den;
+        Hm(k, k) = den;
+        Hm(k + 1, k) = 0;
+        e(k + 1) = -sn(k) * e(k);
+        e(k) = cs(k) * e(k);
+        ++k;
+        if (std::abs(e(k)) <= 0.5 * rel_tol * b_norm || !(den > 0)) break;
+      }
+      const Eigen::VectorXd yk = Hm.topLeftCorner(k, k).triangularView<Eigen::Upper>().solve(e.head(k));
+      z += Vk.leftCols(k) * yk;
+      for (int i = 0; i < k; ++i) {
+        uzx += yk(i) * Ukx[i];
+        uzy += yk(i) * Uky[i];
+      }
+      zero = false;
+      // the cycle's own residual estimate (exact in exact arithmetic) met the tolerance: done, without
+      // the product that would measure it again (the Newton iteration measures its own residual)
+      if (std::abs(e(k)) <= 0.5 * rel_tol * b_norm) {
+        rel = std::abs(e(k)) / b_norm;
+        break;
       }
     }
+    return rel;
+  }
+
+  // one Newton step from (tx, ty): solves for the increment to rel_tol, starting along the guess
+  // (gx, gy) where given; returns the relative residual
+  double newton_step(double rel_tol, const Eigen::ArrayXXd* gx = nullptr, const Eigen::ArrayXXd* gy = nullptr) {
+    index_unknowns();
+    const int n = offset[nc];
+    Eigen::VectorXd x0, b;
+    newton_rhs(x0, b);
+    const double b_norm = b.norm();
+    Eigen::VectorXd z = Eigen::VectorXd::Zero(n);
+    Eigen::VectorXd x_guess;
+    if (gx && n > 0 && b_norm > 0) start_from_guess(*gx, *gy, b, x_guess);
+    const double rel = n > 0 && b_norm > 0 ? gmres(b, b_norm, rel_tol, z) : 0.0;
+    // the new iterate: the increment M z on the start and the guess, its u by linearity
+    Eigen::VectorXd xi(n);
     precondition(z, xi);
     xi += x0;
     if (x_guess.size() == n) xi += x_guess;
@@ -662,79 +823,153 @@ ExactSolution solve_exact(const ContactPatch& patch, double G_Pa, double nu, con
       TY[q] = py.data()[q] + (slip[c] ? -Gb[q] * ey[c] : 0.0);
     }
     return rel;
-  };
+  }
 
-  // ---- all stick first (the linear theory when mu is large): to kLooseStickTol, and on to
-  // stick_tol unless the tractions already exceed the bound by more than that solve's error
-  auto exceeds_bound = [&](double margin) {
+  bool exceeds_bound(double margin) const {
     for (const int q : cells)
       if (TX[q] * TX[q] + TY[q] * TY[q] > sq(Gb[q] * (1 + margin))) return true;
     return false;
-  };
-  double rel = 0;
-  bool admissible = false;
-  if (start_tx) {  // a warm start: the given tractions (clipped below), straight to Newton
-    for (const int q : cells) {
-      TX[q] = (*start_tx)(q % nxe, q / nxe);
-      TY[q] = (*start_ty)(q % nxe, q / nxe);
-    }
-    // their product given (start_ux: A of the start tractions, the previous step's u) holds when
-    // every traction of the start is on a cell in contact now (none dropped)
-    if (start_ux && start_uy && start_ux->rows() == nxe && start_ux->cols() == ny && start_uy->rows() == nxe &&
-        start_uy->cols() == ny) {
-      bool kept = true;
-      for (int j = 0; j < ny && kept; ++j)
-        for (int i = 0; i < nx; ++i)
-          if (((*start_tx)(i, j) != 0 || (*start_ty)(i, j) != 0) && !(patch.pressure_Pa(i, j) > 0)) {
-            kept = false;
-            break;
-          }
-      if (kept) {
-        ux = *start_ux;
-        uy = *start_uy;
-        u_current = true;
-      }
-    }
-  } else {
-    rel = newton_step(kLooseStickTol);
-    if (rel <= kLooseStickTol && !exceeds_bound(kLooseStickMargin)) rel = newton_step(opt.stick_tol);
-    admissible = !exceeds_bound(0);
   }
-  out.stick_iterations = gmres_total;
-  Eigen::ArrayXXi state = Eigen::ArrayXXi::Zero(nxe, ny);
-  double residual = 0;
-  int outer = 0;
-  if (!start_tx && !(rel <= (admissible ? opt.stick_tol : kLooseStickTol))) {
+
+  // The start. Warm: the given tractions (clipped later), and their product where it holds. Cold: all
+  // stick (the linear theory when mu is large), to kLooseStickTol, and on to stick_tol unless the
+  // tractions already exceed the bound by more than that solve's error. Returns GMRES's relative residual
+  // (0 for a warm start); admissible: the cold start's tractions are within the bound everywhere.
+  double start_iterate(bool& admissible) {
+    double rel = 0;
+    admissible = false;
+    const Eigen::ArrayXXd* start_tx = setup.start.tau_x;
+    const Eigen::ArrayXXd* start_ty = setup.start.tau_y;
+    if (start_tx) {  // a warm start: the given tractions (clipped below), straight to Newton
+      for (const int q : cells) {
+        TX[q] = (*start_tx)(q % nxe, q / nxe);
+        TY[q] = (*start_ty)(q % nxe, q / nxe);
+      }
+      // their product given (start_ux: A of the start tractions, the previous step's u) holds when
+      // every traction of the start is on a cell in contact now (none dropped)
+      const Eigen::ArrayXXd* start_ux = setup.start.u_x;
+      const Eigen::ArrayXXd* start_uy = setup.start.u_y;
+      if (start_ux && start_uy && start_ux->rows() == nxe && start_ux->cols() == ny && start_uy->rows() == nxe &&
+          start_uy->cols() == ny) {
+        bool kept = true;
+        for (int j = 0; j < ny && kept; ++j)
+          for (int i = 0; i < nx; ++i)
+            if (((*start_tx)(i, j) != 0 || (*start_ty)(i, j) != 0) && !(patch.pressure_Pa(i, j) > 0)) {
+              kept = false;
+              break;
+            }
+        if (kept) {
+          ux = *start_ux;
+          uy = *start_uy;
+          u_current = true;
+        }
+      }
+    } else {
+      rel = newton_step(kLooseStickTol);
+      if (rel <= kLooseStickTol && !exceeds_bound(kLooseStickMargin)) rel = newton_step(opt.stick_tol);
+      admissible = !exceeds_bound(0);
+    }
+    return rel;
+  }
+
+  // the all-stick GMRES did not reach its tolerance: the status says so; returns the residual
+  double stick_not_converged(double rel) {
+    SolveStatus& status = out.status;
     status.kind = std::isfinite(rel) ? SolveStatus::Kind::MaxIterations : SolveStatus::Kind::Failed;
     status.message = fmt::format("all-stick GMRES: relative residual {:.2g} > tol {:.3g} after {} iterations", rel,
                                  opt.stick_tol, gmres_total);
-    residual = rel;
-  } else if (admissible) {
+    return rel;
+  }
+
+  // the all-stick tractions are within the bound: the solution (full stick); returns the residual
+  double full_stick(double rel) {
     if (!u_current) {
       A.apply(tx, ty, ux, uy);
       ++products;
     }
     for (const int q : cells) state.data()[q] = 1;
+    SolveStatus& status = out.status;
     status.kind = SolveStatus::Kind::Converged;
     status.message = fmt::format("full stick: GMRES relative residual {:.2g} <= {:.3g} after {} iterations", rel,
                                  opt.stick_tol, gmres_total);
-    residual = rel;
-  } else {
-    // ---- friction: semi-smooth Newton on the active sets. Each iteration: every cell's own
-    // Coulomb problem with u = A tau fresh gives the residual, the stick and slip sets, the slip
-    // tractions and directions; then one Newton step.
-    for (const int q : cells) {  // the stick tractions clipped to the bound start it
+    return rel;
+  }
+
+  // Every cell's own Coulomb problem with u = A tau fresh: the stick and slip sets, the slip directions
+  // and |s|, the cells' own tractions in (sol_x, sol_y); returns the fixed-point residual (exact.h). On
+  // the first iteration of a start with its sets (first_on_start_sets), the Newton step takes those sets:
+  // a slip cell along its previous traction (on the bound), a stick cell stick; the cells' own solutions
+  // then only measure the residual.
+  double classify_cells(bool first_on_start_sets, Eigen::ArrayXXd& sol_x, Eigen::ArrayXXd& sol_y) {
+    double change = 0, scale = 0;
+    for (int c = 0; c < nc; ++c) {
+      const int q = cells[c];
+      const double rx = WX[q] + (UX[q] - upstream * UX[q + 1]) / dx - bx * TX[q];
+      const double ry = WY[q] + (UY[q] - upstream * UY[q + 1]) / dx - by * TY[q];
+      double sx, sy;
+      const bool stick = element_solve(rx, ry, bx, by, Gb[q], sx, sy);
+      state.data()[q] = stick ? 1 : 2;
+      // squares here, the roots after the loop
+      change = std::max(change, sq(sx - TX[q]) + sq(sy - TY[q]));
+      scale = std::max({scale, TX[q] * TX[q] + TY[q] * TY[q], sx * sx + sy * sy});  // a zero start: the solution's
+      slip[c] = !stick;
+      sol_x.data()[q] = sx;
+      sol_y.data()[q] = sy;
+      if (!stick) {  // the slip of the element solution: s = r + B tau, along -tau
+        const double vx = rx + bx * sx, vy = ry + by * sy;
+        sabs[c] = std::sqrt(vx * vx + vy * vy);
+        const double en = std::sqrt(sx * sx + sy * sy);
+        ex[c] = -sx / en;
+        ey[c] = -sy / en;
+      }
+      if (first_on_start_sets) {
+        const int i = q % nxe, j = q / nxe;
+        const bool was_slip = (*setup.start.state)(i, j) == 2;
+        const double t = std::hypot(TX[q], TY[q]);
+        if (was_slip && t > 0) {
+          if (stick) sabs[c] = 0;  // a cell that sticks by its own solution: no slip across e asked
+          slip[c] = 1;
+          ex[c] = -TX[q] / t;
+          ey[c] = -TY[q] / t;
+          sol_x.data()[q] = -Gb[q] * ex[c];
+          sol_y.data()[q] = -Gb[q] * ey[c];
+        } else {
+          slip[c] = 0;
+        }
+      }
+    }
+    change = std::sqrt(change);
+    scale = std::sqrt(scale);
+    return scale > 0 ? change / scale : change;
+  }
+
+  // tractions above the bound by more than `rounding` (a share of it) onto it
+  void clip_to_bound(double rounding) {
+    for (const int q : cells) {
       const double t = std::hypot(TX[q], TY[q]);
-      if (t > Gb[q] * (1 + kBoundRounding)) {
+      if (t > Gb[q] * (1 + rounding)) {
         TX[q] *= Gb[q] / t;
         TY[q] *= Gb[q] / t;
         u_current = false;
       }
     }
+  }
+
+  // Friction: semi-smooth Newton on the active sets. Each iteration: every cell's own Coulomb problem
+  // with u = A tau fresh gives the residual, the stick and slip sets, the slip tractions and directions;
+  // then one Newton step. Returns the residual; outer: the Newton iterations.
+  double friction(int& outer) {
+    SolveStatus& status = out.status;
+    double residual = 0;
+    clip_to_bound(kBoundRounding);  // the stick tractions clipped to the bound start it
     // backtracking: a Newton step that raised the residual is halved towards the last accepted
     // tractions, up to kMaxHalvings times (semi-smooth Newton can cycle between active sets)
     Eigen::ArrayXXd acc_x = tx, acc_y = ty, sol_x = tx, sol_y = ty, acc_ux, acc_uy;
-    const bool use_start_state = start_tx && start_state && start_state->rows() == nx && start_state->cols() == ny;
+    const Eigen::ArrayXXi* start_state = setup.start.state;
+    const bool use_start_state = setup.start.tau_x && start_state && start_state->rows() == nx &&
+                                 start_state->cols() == ny;
+    const Eigen::ArrayXXd* guess_x = setup.start.dtau_x;
+    const Eigen::ArrayXXd* guess_y = setup.start.dtau_y;
     double accepted_residual = std::numeric_limits<double>::infinity();
     int halvings = 0;
     for (;; ++outer) {
@@ -743,48 +978,7 @@ ExactSolution solve_exact(const ContactPatch& patch, double G_Pa, double nu, con
         ++products;
         u_current = true;
       }
-      double change = 0, scale = 0;
-      for (int c = 0; c < nc; ++c) {
-        const int q = cells[c];
-        const double rx = WX[q] + (UX[q] - upstream * UX[q + 1]) / dx - bx * TX[q];
-        const double ry = WY[q] + (UY[q] - upstream * UY[q + 1]) / dx - by * TY[q];
-        double sx, sy;
-        const bool stick = element_solve(rx, ry, bx, by, Gb[q], sx, sy);
-        state.data()[q] = stick ? 1 : 2;
-        // squares here, the roots after the loop
-        change = std::max(change, sq(sx - TX[q]) + sq(sy - TY[q]));
-        scale = std::max({scale, TX[q] * TX[q] + TY[q] * TY[q], sx * sx + sy * sy});  // a zero start: the solution's
-        slip[c] = !stick;
-        sol_x.data()[q] = sx;
-        sol_y.data()[q] = sy;
-        if (!stick) {  // the slip of the element solution: s = r + B tau, along -tau
-          const double vx = rx + bx * sx, vy = ry + by * sy;
-          sabs[c] = std::sqrt(vx * vx + vy * vy);
-          const double en = std::sqrt(sx * sx + sy * sy);
-          ex[c] = -sx / en;
-          ey[c] = -sy / en;
-        }
-        if (outer == 0 && use_start_state) {
-          // the first Newton step on the previous step's sets: a slip cell along its previous traction
-          // (on the bound), a stick cell stick; the cells' own solutions only measure the residual
-          const int i = q % nxe, j = q / nxe;
-          const bool was_slip = (*start_state)(i, j) == 2;
-          const double t = std::hypot(TX[q], TY[q]);
-          if (was_slip && t > 0) {
-            if (stick) sabs[c] = 0;  // a cell that sticks by its own solution: no slip across e asked
-            slip[c] = 1;
-            ex[c] = -TX[q] / t;
-            ey[c] = -TY[q] / t;
-            sol_x.data()[q] = -Gb[q] * ex[c];
-            sol_y.data()[q] = -Gb[q] * ey[c];
-          } else {
-            slip[c] = 0;
-          }
-        }
-      }
-      change = std::sqrt(change);
-      scale = std::sqrt(scale);
-      residual = scale > 0 ? change / scale : change;
+      residual = classify_cells(outer == 0 && use_start_state, sol_x, sol_y);
       if (!std::isfinite(residual)) {
         status.kind = SolveStatus::Kind::Failed;
         status.message = fmt::format("residual is {} after {} Newton iterations", residual, outer);
@@ -829,74 +1023,98 @@ ExactSolution solve_exact(const ContactPatch& patch, double G_Pa, double nu, con
     }
     // the iterate obeys the bound to the tolerance only (a slip cell's Newton traction is
     // -g e + tau_t t, |tau| = g sqrt(1 + (tau_t/g)^2)): onto the bound, a change within the tolerance
-    for (const int q : cells) {
-      const double t = std::hypot(TX[q], TY[q]);
-      if (t > Gb[q]) {
-        TX[q] *= Gb[q] / t;
-        TY[q] *= Gb[q] / t;
-        u_current = false;
-      }
-    }
+    clip_to_bound(0);
     if (!u_current) {
       A.apply(tx, ty, ux, uy);
       ++products;
     }
+    return residual;
   }
-  out.products = products;
+
+  // the solution as the fast solvers report it: tractions, slip velocities at speed V, power, forces
+  void report(const Creepages& creepages, double V) {
+    const Grid& grid = patch.grid;
+    const double creep_scale = setup.transport.creep_scale;
+    TangentialSolution& s = out.fields;
+    s.tau_x_Pa = tx.topRows(nx);
+    s.tau_y_Pa = ty.topRows(nx);
+    s.slip_x_m_per_s = Eigen::ArrayXXd::Zero(nx, ny);
+    s.slip_y_m_per_s = Eigen::ArrayXXd::Zero(nx, ny);
+    s.power_W_per_m2 = Eigen::ArrayXXd::Zero(nx, ny);
+    s.state = state.topRows(nx);
+    s.strip_power_W_per_m = Eigen::ArrayXd::Zero(ny);
+    s.strip_creep_power_W_per_m = Eigen::ArrayXd::Zero(ny);
+    s.strip_trailing_W_per_m = Eigen::ArrayXd::Zero(ny);
+    s.strip_force_x_N_per_m = Eigen::ArrayXd::Zero(ny);
+    s.strip_force_y_N_per_m = Eigen::ArrayXd::Zero(ny);
+    double stick = 0;
+    for (const int q : cells) {
+      const int i = q % nxe, j = q / nxe;
+      const double sx = V * (WX[q] + (UX[q] - upstream * UX[q + 1]) / dx);
+      const double sy = V * (WY[q] + (UY[q] - upstream * UY[q + 1]) / dx);
+      s.slip_x_m_per_s(i, j) = sx;
+      s.slip_y_m_per_s(i, j) = sy;
+      s.power_W_per_m2(i, j) = -(TX[q] * sx + TY[q] * sy);
+      s.strip_power_W_per_m(j) += s.power_W_per_m2(i, j) * dx;
+      s.strip_creep_power_W_per_m(j) += -V * (TX[q] * RX[q] + TY[q] * RY[q]) * dx;
+      s.strip_force_x_N_per_m(j) += TX[q] * dx;
+      s.strip_force_y_N_per_m(j) += TY[q] * dx;
+      s.Mz_N_m += (grid.x_m(i) * TY[q] - grid.y_m(j) * TX[q]) * dx * dy;
+      if (state.data()[q] == 1) stick += 1;
+    }
+    s.Fx_N = s.strip_force_x_N_per_m.sum() * dy;
+    s.Fy_N = s.strip_force_y_N_per_m.sum() * dy;
+    s.power_W = s.strip_power_W_per_m.sum() * dy;
+    s.stick_fraction = stick / nc;
+    double xi_Fx = creepages.xi * s.Fx_N;
+    if (patch.strip_xi_offset.size() == ny) xi_Fx += (patch.strip_xi_offset * s.strip_force_x_N_per_m).sum() * dy;
+    s.creep_work_W = creep_scale * V * (xi_Fx + creepages.eta * s.Fy_N + creepages.phi_per_m * s.Mz_N_m);
+    out.u_x_m = ux;
+    out.u_y_m = uy;
+    if (setup.start.tau_x) {
+      out.dtau_x_Pa = Eigen::ArrayXXd::Zero(nxe, ny);
+      out.dtau_y_Pa = out.dtau_x_Pa;
+      out.dtau_x_Pa.topRows(nx) = s.tau_x_Pa - *setup.start.tau_x;
+      out.dtau_y_Pa.topRows(nx) = s.tau_y_Pa - *setup.start.tau_y;
+    }
+  }
+};
+
+// Steady rolling or one transient step (setup.transport) of the discrete problem of exact.h, from
+// the all-stick start or a warm one (setup.start): the start, then friction where the start's
+// tractions exceed the bound, then the solution as the fast solvers report it.
+ExactSolution solve_exact(const ContactPatch& patch, double G_Pa, double nu, const Creepages& creepages, double mu,
+                          double speed_m_per_s, const ExactOptions& opt, const ExactSolveSetup& setup = {}) {
+  const char* const mode = mode_of(setup);
+  check_exact_inputs(patch, G_Pa, nu, creepages, mu, speed_m_per_s, opt, mode);
+  ExactSolve s(patch, G_Pa, nu, creepages, mu, opt, setup, mode);
+  const bool warm = setup.start.tau_x != nullptr;
+
+  bool admissible = false;
+  const double rel = s.start_iterate(admissible);
+  s.out.stick_iterations = s.gmres_total;
+  double residual = 0;
+  int outer = 0;
+  if (!warm && !(rel <= (admissible ? opt.stick_tol : kLooseStickTol)))
+    residual = s.stick_not_converged(rel);
+  else if (admissible)
+    residual = s.full_stick(rel);
+  else
+    residual = s.friction(outer);
+  ExactSolution& out = s.out;
+  SolveStatus& status = out.status;
+  out.products = s.products;
   out.active_set_iterations = outer;
-  status.iterations = gmres_total;
+  status.iterations = s.gmres_total;
   status.residual = residual;
 
-  // ---- the solution as the fast solvers report it
-  TangentialSolution& s = out.fields;
-  const double V = speed_m_per_s;
-  s.tau_x_Pa = tx.topRows(nx);
-  s.tau_y_Pa = ty.topRows(nx);
-  s.slip_x_m_per_s = Eigen::ArrayXXd::Zero(nx, ny);
-  s.slip_y_m_per_s = Eigen::ArrayXXd::Zero(nx, ny);
-  s.power_W_per_m2 = Eigen::ArrayXXd::Zero(nx, ny);
-  s.state = state.topRows(nx);
-  s.strip_power_W_per_m = Eigen::ArrayXd::Zero(ny);
-  s.strip_creep_power_W_per_m = Eigen::ArrayXd::Zero(ny);
-  s.strip_trailing_W_per_m = Eigen::ArrayXd::Zero(ny);
-  s.strip_force_x_N_per_m = Eigen::ArrayXd::Zero(ny);
-  s.strip_force_y_N_per_m = Eigen::ArrayXd::Zero(ny);
-  double stick = 0;
-  for (const int q : cells) {
-    const int i = q % nxe, j = q / nxe;
-    const double sx = V * (WX[q] + (UX[q] - upstream * UX[q + 1]) / dx);
-    const double sy = V * (WY[q] + (UY[q] - upstream * UY[q + 1]) / dx);
-    s.slip_x_m_per_s(i, j) = sx;
-    s.slip_y_m_per_s(i, j) = sy;
-    s.power_W_per_m2(i, j) = -(TX[q] * sx + TY[q] * sy);
-    s.strip_power_W_per_m(j) += s.power_W_per_m2(i, j) * dx;
-    s.strip_creep_power_W_per_m(j) += -V * (TX[q] * RX[q] + TY[q] * RY[q]) * dx;
-    s.strip_force_x_N_per_m(j) += TX[q] * dx;
-    s.strip_force_y_N_per_m(j) += TY[q] * dx;
-    s.Mz_N_m += (grid.x_m(i) * TY[q] - grid.y_m(j) * TX[q]) * dx * dy;
-    if (state.data()[q] == 1) stick += 1;
-  }
-  s.Fx_N = s.strip_force_x_N_per_m.sum() * dy;
-  s.Fy_N = s.strip_force_y_N_per_m.sum() * dy;
-  s.power_W = s.strip_power_W_per_m.sum() * dy;
-  s.stick_fraction = stick / nc;
-  double xi_Fx = creepages.xi * s.Fx_N;
-  if (patch.strip_xi_offset.size() == ny) xi_Fx += (patch.strip_xi_offset * s.strip_force_x_N_per_m).sum() * dy;
-  s.creep_work_W = creep_scale * V * (xi_Fx + creepages.eta * s.Fy_N + creepages.phi_per_m * s.Mz_N_m);
-  out.u_x_m = ux;
-  out.u_y_m = uy;
-  if (start_tx) {
-    out.dtau_x_Pa = Eigen::ArrayXXd::Zero(nxe, ny);
-    out.dtau_y_Pa = out.dtau_x_Pa;
-    out.dtau_x_Pa.topRows(nx) = s.tau_x_Pa - *start_tx;
-    out.dtau_y_Pa.topRows(nx) = s.tau_y_Pa - *start_ty;
-  }
-
-  spdlog::debug("{} ({} x {}): {}; Fx {:.6e} N, Fy {:.6e} N, Mz {:.6e} N m, P {:.6e} W, stick {:.3f}", mode, nx, ny,
-                status.message, s.Fx_N, s.Fy_N, s.Mz_N_m, s.power_W, s.stick_fraction);
-  if (!status.converged() && warn_unconverged)
-    spdlog::warn("{} ({} x {}): not converged: {}", mode, nx, ny, status.message);
-  return out;
+  s.report(creepages, speed_m_per_s);
+  const TangentialSolution& f = out.fields;
+  spdlog::debug("{} ({} x {}): {}; Fx {:.6e} N, Fy {:.6e} N, Mz {:.6e} N m, P {:.6e} W, stick {:.3f}", mode,
+                s.nx, s.ny, status.message, f.Fx_N, f.Fy_N, f.Mz_N_m, f.power_W, f.stick_fraction);
+  if (!status.converged() && setup.warn_unconverged)
+    spdlog::warn("{} ({} x {}): not converged: {}", mode, s.nx, s.ny, status.message);
+  return std::move(out);
 }
 
 }  // namespace
@@ -987,8 +1205,9 @@ ExactSolution solve_exact_steady(const ContactPatch& patch, double G_Pa, double 
       (patch.pressure_Pa >= 0).all() && (patch.strip_xi_offset.size() == 0 || patch.strip_xi_offset.size() == ny)) {
     ExactOptions cold = opt;
     cold.max_iterations = kColdNewtonBudget;
-    ExactSolution first = solve_exact(patch, G_Pa, nu, creepages, mu, speed_m_per_s, cold, nullptr, nullptr, nullptr,
-                                      nullptr, 1, 1.0, nullptr, nullptr, nullptr, nullptr, nullptr, nullptr, false);
+    ExactSolveSetup quiet;
+    quiet.warn_unconverged = false;
+    ExactSolution first = solve_exact(patch, G_Pa, nu, creepages, mu, speed_m_per_s, cold, quiet);
     // converged, or stopped by the GMRES budget or a failure (which the restart would not mend)
     if (first.status.converged() || first.active_set_iterations < kColdNewtonBudget) {
       if (!first.status.converged())
@@ -1002,7 +1221,7 @@ ExactSolution solve_exact_steady(const ContactPatch& patch, double G_Pa, double 
           prolonged_along_x(prolonged_along_x(coarse.fields.tau_x_Pa, nx).transpose().eval(), ny).transpose();
       const Eigen::ArrayXXd ty =
           prolonged_along_x(prolonged_along_x(coarse.fields.tau_y_Pa, nx).transpose().eval(), ny).transpose();
-      ExactSolution s = solve_exact(patch, G_Pa, nu, creepages, mu, speed_m_per_s, opt, nullptr, nullptr, &tx, &ty);
+      ExactSolution s = solve_exact(patch, G_Pa, nu, creepages, mu, speed_m_per_s, opt, tractions_start(tx, ty));
       s.status.message += fmt::format(" (from the {} x {} solution after {} Newton iterations from all stick)", nx / 2,
                                       ny / 2, kColdNewtonBudget);
       return s;
@@ -1015,24 +1234,26 @@ ExactSolution solve_exact_steady(const ContactPatch& patch, double G_Pa, double 
     if (coarse.status.converged()) {
       const Eigen::ArrayXXd tx = prolonged_along_x(coarse.fields.tau_x_Pa, nx);
       const Eigen::ArrayXXd ty = prolonged_along_x(coarse.fields.tau_y_Pa, nx);
-      ExactSolution s = solve_exact(patch, G_Pa, nu, creepages, mu, speed_m_per_s, opt, nullptr, nullptr, &tx, &ty);
+      ExactSolution s = solve_exact(patch, G_Pa, nu, creepages, mu, speed_m_per_s, opt, tractions_start(tx, ty));
       s.status.message += fmt::format(" (from the {}-cell solution)", nx / 2);
       return s;
     }
   }
-  return solve_exact(patch, G_Pa, nu, creepages, mu, speed_m_per_s, opt, nullptr, nullptr, nullptr, nullptr);
+  return solve_exact(patch, G_Pa, nu, creepages, mu, speed_m_per_s, opt);
 }
 
 ExactSolution solve_exact_rolling_step(const ContactPatch& patch, double G_Pa, double nu, const Creepages& creepages,
                                        double mu, double speed_m_per_s, const ExactSolution* previous,
                                        const ExactOptions& opt) {
+  ExactSolveSetup setup;  // rolled by one cell: cell i reads the previous u of cell i + 1
   if (!previous) {
     const Eigen::ArrayXXd rest = Eigen::ArrayXXd::Zero(patch.grid.nx + 1, patch.grid.ny);
-    return solve_exact(patch, G_Pa, nu, creepages, mu, speed_m_per_s, opt, &rest, &rest, nullptr, nullptr);
+    setup.transport = {&rest, &rest, 1, 1.0};
+    return solve_exact(patch, G_Pa, nu, creepages, mu, speed_m_per_s, opt, setup);
   }
-  return solve_exact(patch, G_Pa, nu, creepages, mu, speed_m_per_s, opt, &previous->u_x_m, &previous->u_y_m,
-                     &previous->fields.tau_x_Pa, &previous->fields.tau_y_Pa, 1, 1.0, nullptr, &previous->fields.state,
-                     &previous->u_x_m, &previous->u_y_m, &previous->dtau_x_Pa, &previous->dtau_y_Pa);
+  setup.transport = {&previous->u_x_m, &previous->u_y_m, 1, 1.0};
+  setup.start = warm_start_from(*previous, true);
+  return solve_exact(patch, G_Pa, nu, creepages, mu, speed_m_per_s, opt, setup);
 }
 
 ExactSolution solve_exact_shift(const ContactPatch& patch, double G_Pa, double nu, double shift_x_m, double shift_y_m,
@@ -1043,12 +1264,15 @@ ExactSolution solve_exact_shift(const ContactPatch& patch, double G_Pa, double n
   const double dx = patch.grid.dx_m;
   const Creepages c{shift_x_m / dx, shift_y_m / dx, 0};
   const double V = dx / dt_s;
+  ExactSolveSetup setup;  // no transport: cell i reads its own previous u
   if (!previous) {
     const Eigen::ArrayXXd rest = Eigen::ArrayXXd::Zero(patch.grid.nx + 1, patch.grid.ny);
-    return solve_exact(patch, G_Pa, nu, c, mu, V, opt, &rest, &rest, nullptr, nullptr, 0);
+    setup.transport = {&rest, &rest, 0, 1.0};
+    return solve_exact(patch, G_Pa, nu, c, mu, V, opt, setup);
   }
-  return solve_exact(patch, G_Pa, nu, c, mu, V, opt, &previous->u_x_m, &previous->u_y_m, &previous->fields.tau_x_Pa,
-                     &previous->fields.tau_y_Pa, 0, 1.0, nullptr, nullptr, &previous->u_x_m, &previous->u_y_m);
+  setup.transport = {&previous->u_x_m, &previous->u_y_m, 0, 1.0};
+  setup.start = warm_start_from(*previous, false);
+  return solve_exact(patch, G_Pa, nu, c, mu, V, opt, setup);
 }
 
 
@@ -1084,10 +1308,11 @@ ExactShiftForce solve_exact_shift_force(const ContactPatch& patch, double G_Pa, 
   std::optional<SolveStatus> failed;
   auto evaluate = [&](double sx, double sy) -> const ExactSolution& {
     const ExactSolution* start = last ? &*last : previous;
-    ExactSolution e = solve_exact(patch, G_Pa, nu, Creepages{sx / dx, sy / dx, 0}, mu, dx / dt_s, opt, &prev_ux,
-                                  &prev_uy, start ? &start->fields.tau_x_Pa : nullptr,
-                                  start ? &start->fields.tau_y_Pa : nullptr, 0, 1.0, "exact shift", nullptr,
-                                  start ? &start->u_x_m : nullptr, start ? &start->u_y_m : nullptr);
+    ExactSolveSetup setup;
+    setup.mode_name = "exact shift";
+    setup.transport = {&prev_ux, &prev_uy, 0, 1.0};
+    if (start) setup.start = warm_start_from(*start, false);
+    ExactSolution e = solve_exact(patch, G_Pa, nu, Creepages{sx / dx, sy / dx, 0}, mu, dx / dt_s, opt, setup);
     ++best.shift_solves;
     if (!e.status.converged() && !failed) failed = e.status;
     const double err = std::hypot(e.fields.Fx_N - Fx_N, e.fields.Fy_N - Fy_N);
@@ -1200,12 +1425,11 @@ ExactSolution solve_exact_roll(const ContactPatch& patch, double G_Pa, double nu
   }
   // the rolling step's equations per dx (V = dx/dt): rigid slip w dq/dx, the previous field not moved
   // again (prev_offset 0), slip velocities S/dt, creep work V_rolling (xi Fx + eta Fy + phi Mz)
-  if (!previous)
-    return solve_exact(patch, G_Pa, nu, creepages, mu, dx / dt_s, opt, &px, &py, nullptr, nullptr, 0, theta,
-                       "exact rolling step");
-  return solve_exact(patch, G_Pa, nu, creepages, mu, dx / dt_s, opt, &px, &py, &previous->fields.tau_x_Pa,
-                     &previous->fields.tau_y_Pa, 0, theta, "exact rolling step", &previous->fields.state,
-                     &previous->u_x_m, &previous->u_y_m, &previous->dtau_x_Pa, &previous->dtau_y_Pa);
+  ExactSolveSetup setup;
+  setup.mode_name = "exact rolling step";
+  setup.transport = {&px, &py, 0, theta};
+  if (previous) setup.start = warm_start_from(*previous, true);
+  return solve_exact(patch, G_Pa, nu, creepages, mu, dx / dt_s, opt, setup);
 }
 
 namespace {
