@@ -1276,6 +1276,43 @@ ExactSolution solve_exact_shift(const ContactPatch& patch, double G_Pa, double n
 }
 
 
+namespace {
+
+// T(F) = (1 - (1 - |F|/(mu Fn))^(2/3)) F/|F| (limit = mu Fn): by Mindlin's relation linear in the shift
+// for a circle at nu = 0, T = -shift/scale, and close to linear otherwise, so that the Jacobian
+// -I/scale starts Broyden's method well
+void mindlin_transform(double fx, double fy, double limit, double& tx, double& ty) {
+  const double m = std::hypot(fx, fy);
+  if (m == 0) {
+    tx = ty = 0;
+    return;
+  }
+  const double h = 1 - std::cbrt(std::pow(std::max(0.0, 1 - m / limit), 2));
+  tx = h * fx / m;
+  ty = h * fy / m;
+}
+
+// the force iteration's status on its best evaluation: a failed shift solve's, converged within tol, or
+// MaxIterations (with a spdlog::warn)
+void finish_force_status(ExactShiftForce& best, const std::optional<SolveStatus>& failed, double best_error,
+                         double tol) {
+  SolveStatus& st = best.solution.status;
+  if (failed) {
+    st = *failed;
+    st.message = "a shift solve of the force iteration: " + failed->message;
+  } else if (best_error <= tol) {
+    st.message = fmt::format("force within {:.2g} N of the target after {} shift solves; last solve: {}", best_error,
+                             best.shift_solves, st.message);
+  } else {
+    st.kind = SolveStatus::Kind::MaxIterations;
+    st.message = fmt::format("force {:.3g} N from the target > tol {:.3g} N after {} shift solves", best_error, tol,
+                             best.shift_solves);
+    spdlog::warn("exact shift: {}", st.message);
+  }
+}
+
+}  // namespace
+
 ExactShiftForce solve_exact_shift_force(const ContactPatch& patch, double G_Pa, double nu, double Fx_N, double Fy_N,
                                         double mu, double dt_s, const ExactSolution* previous,
                                         const ExactOptions& opt, double force_tol_N) {
@@ -1325,20 +1362,9 @@ ExactShiftForce solve_exact_shift_force(const ContactPatch& patch, double G_Pa, 
     last = std::move(e);
     return *last;
   };
-  // Broyden's method on T(F(shift)) = T(F_target), T(F) = (1 - (1 - |F|/(mu Fn))^(2/3)) F/|F|: by
-  // Mindlin's relation T is linear in the shift for a circle at nu = 0, T = -shift/scale, and close
-  // to linear otherwise, so that the Jacobian -I/scale starts it well; a step that does not reduce
+  // Broyden's method on T(F(shift)) = T(F_target) (mindlin_transform); a step that does not reduce
   // |F - F_target| is halved back towards the best shift.
-  auto T = [&](double fx, double fy, double& tx, double& ty) {
-    const double m = std::hypot(fx, fy);
-    if (m == 0) {
-      tx = ty = 0;
-      return;
-    }
-    const double h = 1 - std::cbrt(std::pow(std::max(0.0, 1 - m / limit), 2));
-    tx = h * fx / m;
-    ty = h * fy / m;
-  };
+  auto T = [&](double fx, double fy, double& tx, double& ty) { mindlin_transform(fx, fy, limit, tx, ty); };
   double Tx_t, Ty_t;
   T(Fx_N, Fy_N, Tx_t, Ty_t);
   // J: d T / d shift (2 x 2, row-major)
@@ -1383,19 +1409,7 @@ ExactShiftForce solve_exact_shift_force(const ContactPatch& patch, double G_Pa, 
     rx = nrx;
     ry = nry;
   }
-  SolveStatus& st = best.solution.status;
-  if (failed) {
-    st = *failed;
-    st.message = "a shift solve of the force iteration: " + failed->message;
-  } else if (best_error <= tol) {
-    st.message = fmt::format("force within {:.2g} N of the target after {} shift solves; last solve: {}", best_error,
-                             best.shift_solves, st.message);
-  } else {
-    st.kind = SolveStatus::Kind::MaxIterations;
-    st.message = fmt::format("force {:.3g} N from the target > tol {:.3g} N after {} shift solves", best_error, tol,
-                             best.shift_solves);
-    spdlog::warn("exact shift: {}", st.message);
-  }
+  finish_force_status(best, failed, best_error, tol);
   return best;
 }
 
