@@ -37,7 +37,7 @@
 #include "lib/tangential/satran.h"
 #include "lib/tangential/steady.h"
 #include "lib/tangential/tangential.h"
-#include "lib/case_run.h"
+#include "lib/io/case_run.h"
 #include "app/plot.h"
 #include "app/sweep_command.h"
 #include "app/cam_run.h"
@@ -178,7 +178,7 @@ void print_contact_summary(const ContactCase& c, const NormalSolution& normal, c
 int run_contact(const ContactOptions& opt) {
   const ContactCase c = read_contact_case(opt.case_path);
   const bool fields = c.output.fields && !opt.no_fields;
-  const ContactRun run = solve_contact_case(c, fields);  // lib/case_run.h
+  const ContactRun run = solve_contact_case(c, fields);  // lib/io/case_run.h
   const NormalSolution& normal = run.normal;
   const ContactPatch& patch = normal.patch;
   const TangentialProblem& problem = run.problem;
@@ -419,7 +419,7 @@ int run_transient_command(const TransientOptions& opt) {
   };
 
   const bool exact_run = parse_tangential_scheme(c.solver.tangential) == TangentialScheme::Exact;
-  const TransientResult res = run_transient_case(c, t, observe);  // lib/case_run.h
+  const TransientResult res = run_transient_case(c, t, observe);  // lib/io/case_run.h
   progress.clear();
   if (!timeseries) throw std::logic_error("transient: the run took no step");
   if (res.grid.ny != y_m.size() || (res.grid.y_m != y_m).any())

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "lib/case_run.h"
+#include "lib/io/case_run.h"
 #include "lib/history.h"
 #include "lib/io/case.h"
 #include "lib/io/csv_reader.h"

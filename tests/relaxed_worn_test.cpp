@@ -12,7 +12,7 @@
 #include <map>
 #include <string>
 
-#include "lib/case_run.h"
+#include "lib/io/case_run.h"
 #include "lib/grid.h"
 #include "lib/io/case.h"
 #include "lib/io/csv_reader.h"

@@ -1,4 +1,4 @@
-#include "lib/case_run.h"
+#include "lib/io/case_run.h"
 
 #include <limits>
 #include <stdexcept>
