@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "lib/io/yaml_reader.h"
+#include "lib/model/contact_model.h"
 #include "lib/numeric.h"
 
 namespace cam {
@@ -180,18 +181,21 @@ CamCase read_cam_case(const std::string& path) {
         t.optional("max_revolutions", c.solver.max_revolutions,
                    [](int v) { return v >= 2 && v <= 1000 ? "" : "must be in [2, 1000]"; });
         t.optional("compare_full_transient", c.solver.compare_full_transient);
-        // the tangential model, as a wear case's solver.tangential: relaxed (the default) or consistent
+        // the tangential model, as a wear case's solver.tangential: one the cam takes (lib/model/contact_model.h),
+        // relaxed (the default) or consistent; parsed once, as it is read
         std::string scheme = contact::to_string(c.solver.scheme);
-        t.optional("scheme", scheme, [](const std::string& v) -> std::string {
+        t.optional("scheme", scheme, [&c](const std::string& v) -> std::string {
           try {
             const contact::TangentialScheme k = contact::parse_tangential_scheme(v);
-            if (k == contact::TangentialScheme::Relaxed || k == contact::TangentialScheme::Consistent) return "";
+            if (contact::tangential_traits(k).cam) {
+              c.solver.scheme = k;
+              return "";
+            }
           } catch (const std::invalid_argument&) {
           }
           return "must be relaxed (the default: the model matched to the exact theory) or consistent (the simplified "
                  "theory); a cam takes neither classic nor exact";
         });
-        c.solver.scheme = contact::parse_tangential_scheme(scheme);
       });
       s.optional_section("wear", [&](YamlMap& w) { read_cam_wear(w, c.wear.emplace()); });
     });

@@ -45,7 +45,7 @@ void expect_within_target(const std::string& name, double xi, double eta, double
   const auto exact = exact_strips();
   ASSERT_EQ(exact.count(name), 1u) << name;
   ContactCase c = read_contact_case(kSource + "/cases/paper.yaml");
-  c.solver.tangential = "relaxed";
+  c.solver.tangential = TangentialScheme::Relaxed;
   c.kinematics.xi = constant_history(xi);
   c.kinematics.eta = constant_history(eta);
   c.kinematics.phi_per_m = constant_history(phi);
