@@ -429,8 +429,8 @@ int run_transient_command(const TransientOptions& opt) {
   std::vector<OutputFile> files = {{dir / "strip_energy.csv", strip_energy_csv(res.grid, res.strip_energy_J_per_m)}};
   for (std::size_t k = 0; k < res.snapshots.size(); ++k)
     files.push_back({dir / fmt::format("snapshot_{}.csv", k + 1), snapshot_csv(res.grid, res.snapshots[k])});
-  files.push_back({dir / "summary.csv", transient_summary_csv(c.name, transient_run_name(c.solver.tangential, t.settings.scheme), res,
-                                                                 log.sliding_end_s)});
+  const std::string run_name = transient_run_name(c.solver.tangential, t.settings.scheme);  // lib/model/
+  files.push_back({dir / "summary.csv", transient_summary_csv(c.name, run_name, res, log.sliding_end_s)});
 
   print_transient_summary(c, t, res, log);
   std::vector<StreamedFile*> streamed = {&*timeseries};

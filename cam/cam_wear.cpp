@@ -305,8 +305,8 @@ void read_cam_wear(contact::YamlMap& m, CamWearSpec& spec) {
   for (const std::optional<wear::WearLaw>* law : {&spec.laws.cam, &spec.laws.roller})
     if (*law && ((*law)->law == wear::WearLawKind::Kth || (*law)->law == wear::WearLawKind::Usfd))
       m.fail(law == &spec.laws.cam ? "cam" : "roller",
-             "law: '" + wear::to_string((*law)->law) + "' needs per-cell slip fields the cam's revolution does not carry: use energy "
-                                      "or archard");
+             "law: '" + wear::to_string((*law)->law) +
+                 "' needs per-cell slip fields the cam's revolution does not carry: use energy or archard");
   m.required("revolutions", spec.revolutions, [](double v) -> std::string {
     return v > 0 && v <= 1e15 ? "" : "must be in (0, 1e15]";
   });

@@ -1035,20 +1035,23 @@ RandomWear random_wear_case(Rng& r, double load_lo = 1e-3, double load_hi = 1e6)
       "{:.6g} 1/m, mu {:.6g}, grid {}x{}, law {} (k_E {:.4g}, K {:.4g}, H {:.4g}), max depth {:.4g} m, smoothing {:.4g} m",
       k.profiles->profiles.body1.source, k.bodies.body1.Rx_m, k.profiles->profiles.body2.source,
       radius_text(k.bodies.body2.Rx_m), k.profiles->heathcote_slip, F, V, k.kinematics.xi.value[0],
-      k.kinematics.eta.value[0], k.kinematics.phi_per_m.value[0], k.friction.mu, k.solver.nx, k.solver.ny, wear::to_string(law.law),
+      k.kinematics.eta.value[0], k.kinematics.phi_per_m.value[0], k.friction.mu, k.solver.nx, k.solver.ny,
+      wear::to_string(law.law),
       law.k_E_m3_per_J, law.archard_k, law.hardness_Pa, c.wear.limits.max_depth_m, c.wear.smoothing_wavelength_m);
   return w;
 }
 
 std::string stepping_text(const wear::WearStepping& s) {
-  return fmt::format("stepping {} rtol {:.4g} atol {:.4g} m, max depth step {:.4g} m, step {:.4g} rev", wear::to_string(s.method), s.rtol,
+  return fmt::format("stepping {} rtol {:.4g} atol {:.4g} m, max depth step {:.4g} m, step {:.4g} rev",
+                     wear::to_string(s.method), s.rtol,
                      s.atol_m, s.max_depth_step_m, s.step_revolutions);
 }
 
 double k_E_of(const wear::WearModel& m) {
   const wear::WearLaw& law = *m.law1;
-  return law.law == wear::WearLawKind::Archard ? wear::archard_energy_coefficient_m3_per_J(law.archard_k, law.hardness_Pa, m.mu)
-                              : law.k_E_m3_per_J;
+  return law.law == wear::WearLawKind::Archard
+             ? wear::archard_energy_coefficient_m3_per_J(law.archard_k, law.hardness_Pa, m.mu)
+             : law.k_E_m3_per_J;
 }
 
 // Roughness of a worn profile (finding 9, "wavy", docs/stress-suite.md): the reversals of the depth

@@ -293,7 +293,8 @@ Eigen::ArrayXd depth_per_duty_cycle(const WearLaw& law, const DutyCycle& duty) {
     depth_m = depth_from_energy(duty.strip_energy_J_per_m, k_E, R_w);
   } else {
     if (duty.stretches.empty())
-      throw std::invalid_argument("wear law " + to_string(law.law) + ": the duty cycle has no per-cell fields (stretches)");
+      throw std::invalid_argument("wear law " + to_string(law.law) +
+                                  ": the duty cycle has no per-cell fields (stretches)");
     const Eigen::Index nx = duty.stretches.front().pressure_Pa.rows(), ny = duty.stretches.front().pressure_Pa.cols();
     depth_m = Eigen::ArrayXd::Zero(ny);
     for (std::size_t k = 0; k < duty.stretches.size(); ++k) {

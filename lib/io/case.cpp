@@ -417,7 +417,8 @@ void validate(const ContactCase& c) {
   }
 
   // a model that solves with friction only (Kalker's exact theory, lib/tangential/exact.h)
-  if (const TangentialModelTraits& model = tangential_traits(c.solver.tangential); model.needs_friction && !(c.friction.mu > 0))
+  if (const TangentialModelTraits& model = tangential_traits(c.solver.tangential);
+      model.needs_friction && !(c.friction.mu > 0))
     throw key_error(c, "friction.mu", std::string("friction.mu, solver.tangential: the ") + model.needs_friction_as +
                     " needs mu > 0");
 
@@ -613,7 +614,8 @@ CaseError transient_error(const ContactCase& c, const SettingError& e) {
       what = fmt::format("{} s breaks the CFL condition of the {} scheme (V dt/dx = {:.9g} > 1 at the largest "
                          "speed V = {} m/s, dx = {:.6g} m); the largest allowed dt_s is {:.6g} s (or set "
                          "substep: true)",
-                         number(cfl->dt_s), to_string(c.transient->scheme), vmax * cfl->dt_s / dx, number(vmax), dx, dt_max);
+                         number(cfl->dt_s), to_string(c.transient->scheme), vmax * cfl->dt_s / dx, number(vmax), dx,
+                         dt_max);
     }
     return key_error(c, key, std::string(key) + ": " + what);
   }

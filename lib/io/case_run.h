@@ -30,8 +30,9 @@ ContactRun solve_contact_case(const ContactCase& c, bool fields);
 // the patch with its strips at the profiles' lateral positions (strips.csv's y_m, as `rollwear contact` writes it)
 ContactPatch in_profile_coordinates(const NormalSolution& normal);
 
-// The transient run of t (transient_case_of(c)) with the case's model (run_tangential_transient). Settings the run refuses are a CaseError at the key's line (transient_error); any other
-// std::invalid_argument from inside the solver, on settings that passed, is its failure (SolverError).
+// The transient run of t (transient_case_of(c)) with the case's model (run_tangential_transient). Settings the
+// run refuses are a CaseError at the key's line (transient_error); any other std::invalid_argument from inside
+// the solver, on settings that passed, is its failure (SolverError).
 TransientResult run_transient_case(const ContactCase& c, const TransientCase& t, const StepObserver& observe);
 
 }  // namespace contact

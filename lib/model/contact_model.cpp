@@ -48,7 +48,8 @@ SteadyModelSolution simplified_steady(const ContactPatch& patch, const ElasticPa
 // the consistent march matched to the exact theory (lib/tangential/relaxed.h)
 SteadyModelSolution relaxed_steady(const ContactPatch& patch, const ElasticPair& pair, const TangentialProblem& problem,
                                    bool fields) {
-  return direct(problem, solve_relaxed_steady(patch, pair, problem.creepages, problem.mu, problem.speed_m_per_s, fields));
+  return direct(problem,
+                solve_relaxed_steady(patch, pair, problem.creepages, problem.mu, problem.speed_m_per_s, fields));
 }
 
 // Kalker's exact theory on the half-space (lib/tangential/exact.h); it computes its fields in any case
@@ -70,7 +71,9 @@ TransientResult satran_run(const TransientCase& t, const StepObserver& observe) 
 TransientResult relaxed_run(const TransientCase& t, const StepObserver& observe) {
   return run_relaxed_transient(t, observe);
 }
-TransientResult exact_run(const TransientCase& t, const StepObserver& observe) { return run_exact_transient(t, observe); }
+TransientResult exact_run(const TransientCase& t, const StepObserver& observe) {
+  return run_exact_transient(t, observe);
+}
 
 double one(const ContactPatch&) { return 1.0; }
 
