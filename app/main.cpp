@@ -37,7 +37,8 @@
 #include "lib/tangential/satran.h"
 #include "lib/tangential/steady.h"
 #include "lib/tangential/tangential.h"
-#include "lib/case_run.h"
+#include "lib/io/case_run.h"
+#include "lib/model/contact_model.h"
 #include "app/plot.h"
 #include "app/sweep_command.h"
 #include "app/cam_run.h"
@@ -160,7 +161,7 @@ void print_contact_summary(const ContactCase& c, const NormalSolution& normal, c
   fmt::print("  semi-axes       a  = {:.6f} mm, b = {:.6f} mm\n", patch.a_m * 1e3, patch.b_m * 1e3);
   fmt::print("  peak pressure   p0 = {:.3f} MPa\n", patch.p0_Pa * 1e-6);
   fmt::print("  approach        delta = {:.4f} µm\n", patch.approach_m * 1e6);
-  if (scheme == TangentialScheme::Exact) {
+  if (!tangential_traits(scheme).simplified_coefficients) {  // the exact theory: its solve in their place
     const ElasticPair pair = materials_of(c);
     fmt::print("  exact theory    Kalker's, on the half-space: G = {:.6g} GPa, nu = {:.4g}\n",
                combined_shear_modulus_Pa(pair) * 1e-9, combined_poisson(pair));
@@ -178,7 +179,7 @@ void print_contact_summary(const ContactCase& c, const NormalSolution& normal, c
 int run_contact(const ContactOptions& opt) {
   const ContactCase c = read_contact_case(opt.case_path);
   const bool fields = c.output.fields && !opt.no_fields;
-  const ContactRun run = solve_contact_case(c, fields);  // lib/case_run.h
+  const ContactRun run = solve_contact_case(c, fields);  // lib/io/case_run.h
   const NormalSolution& normal = run.normal;
   const ContactPatch& patch = normal.patch;
   const TangentialProblem& problem = run.problem;
@@ -324,9 +325,7 @@ void print_transient_summary(const ContactCase& c, const TransientCase& t, const
   const TransientRecord& r = res.end;  // the last whole step (the shortened last step runs a cruder scheme)
   fmt::print("case {} ({}), {} x {} grid, {} scheme{}\n", c.name, c.path, res.grid.nx, res.grid.ny,
              to_string(t.settings.scheme),
-             std::string(parse_tangential_scheme(c.solver.tangential) == TangentialScheme::Exact     ? ", exact theory"
-                         : parse_tangential_scheme(c.solver.tangential) == TangentialScheme::Relaxed ? ", relaxed model"
-                                                                                                     : "") +
+             std::string(tangential_traits(c.solver.tangential).run_note) +
                  (t.inertia ? ", roller inertia" : ""));
   fmt::print("  steps           {}", res.steps);
   if (res.fallback_steps > 0)
@@ -418,8 +417,7 @@ int run_transient_command(const TransientOptions& opt) {
                     fmt::format("step {}, t {:.4e} / {:.4e} s", r.step, log.t_s, t.settings.t_end_s));
   };
 
-  const bool exact_run = parse_tangential_scheme(c.solver.tangential) == TangentialScheme::Exact;
-  const TransientResult res = run_transient_case(c, t, observe);  // lib/case_run.h
+  const TransientResult res = run_transient_case(c, t, observe);  // lib/io/case_run.h
   progress.clear();
   if (!timeseries) throw std::logic_error("transient: the run took no step");
   if (res.grid.ny != y_m.size() || (res.grid.y_m != y_m).any())
@@ -431,8 +429,8 @@ int run_transient_command(const TransientOptions& opt) {
   std::vector<OutputFile> files = {{dir / "strip_energy.csv", strip_energy_csv(res.grid, res.strip_energy_J_per_m)}};
   for (std::size_t k = 0; k < res.snapshots.size(); ++k)
     files.push_back({dir / fmt::format("snapshot_{}.csv", k + 1), snapshot_csv(res.grid, res.snapshots[k])});
-  files.push_back({dir / "summary.csv", transient_summary_csv(c.name, exact_run ? "exact" : to_string(t.settings.scheme), res,
-                                                                 log.sliding_end_s)});
+  const std::string run_name = transient_run_name(c.solver.tangential, t.settings.scheme);  // lib/model/
+  files.push_back({dir / "summary.csv", transient_summary_csv(c.name, run_name, res, log.sliding_end_s)});
 
   print_transient_summary(c, t, res, log);
   std::vector<StreamedFile*> streamed = {&*timeseries};

@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "lib/io/yaml_reader.h"
+#include "lib/model/contact_model.h"
 #include "lib/numeric.h"
 
 namespace cam {
@@ -66,16 +67,19 @@ void read_lift(YamlMap& s, CamCase& c, double table_tolerance) {
     return;
   DwellRiseDwellReturn d;
   std::string rise_law, return_law;
-  const auto law_name = [](const std::string& v) -> std::string {
-    try {
-      const SegmentLaw l = parse_segment_law(v);
-      return l == SegmentLaw::Dwell ? "must be cycloidal, polynomial-345 or harmonic" : "";
-    } catch (const std::invalid_argument& e) {
-      return e.what();
-    }
+  // a segment's law, parsed once as it is read into `law`
+  const auto law_name = [](SegmentLaw& law) {
+    return [&law](const std::string& v) -> std::string {
+      try {
+        law = parse_segment_law(v);
+        return law == SegmentLaw::Dwell ? "must be cycloidal, polynomial-345 or harmonic" : "";
+      } catch (const std::invalid_argument& e) {
+        return e.what();
+      }
+    };
   };
-  s.required("rise_law", rise_law, law_name);
-  s.required("return_law", return_law, law_name);
+  s.required("rise_law", rise_law, law_name(d.rise_law));
+  s.required("return_law", return_law, law_name(d.return_law));
   s.required("lift_m", d.lift_m, contact::positive_finite);
   for (const char* k : {"rise", "dwell_high", "return"})
     refuse_old_key(s, std::string(k) + "_deg", std::string(k) + "_rad", kRadPerDeg);
@@ -86,8 +90,6 @@ void read_lift(YamlMap& s, CamCase& c, double table_tolerance) {
   if (d.rise_rad + d.dwell_high_rad + d.return_rad > 2 * contact::kPi * (1 + 1e-12))
     s.fail("return_rad", fmt::format("rise_rad + dwell_high_rad + return_rad = {:.10g} must be <= 2 pi",
                                      d.rise_rad + d.dwell_high_rad + d.return_rad));
-  d.rise_law = parse_segment_law(rise_law);
-  d.return_law = parse_segment_law(return_law);
   try {
     c.model.law = make_dwell_rise_dwell_return(d);
   } catch (const CamError& e) {
@@ -180,18 +182,21 @@ CamCase read_cam_case(const std::string& path) {
         t.optional("max_revolutions", c.solver.max_revolutions,
                    [](int v) { return v >= 2 && v <= 1000 ? "" : "must be in [2, 1000]"; });
         t.optional("compare_full_transient", c.solver.compare_full_transient);
-        // the tangential model, as a wear case's solver.tangential: relaxed (the default) or consistent
+        // the tangential model, as a wear case's solver.tangential: one the cam takes (lib/model/contact_model.h),
+        // relaxed (the default) or consistent; parsed once, as it is read
         std::string scheme = contact::to_string(c.solver.scheme);
-        t.optional("scheme", scheme, [](const std::string& v) -> std::string {
+        t.optional("scheme", scheme, [&c](const std::string& v) -> std::string {
           try {
             const contact::TangentialScheme k = contact::parse_tangential_scheme(v);
-            if (k == contact::TangentialScheme::Relaxed || k == contact::TangentialScheme::Consistent) return "";
+            if (contact::tangential_traits(k).cam) {
+              c.solver.scheme = k;
+              return "";
+            }
           } catch (const std::invalid_argument&) {
           }
           return "must be relaxed (the default: the model matched to the exact theory) or consistent (the simplified "
                  "theory); a cam takes neither classic nor exact";
         });
-        c.solver.scheme = contact::parse_tangential_scheme(scheme);
       });
       s.optional_section("wear", [&](YamlMap& w) { read_cam_wear(w, c.wear.emplace()); });
     });

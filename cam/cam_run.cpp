@@ -9,6 +9,7 @@
 #include "cam/cam_error.h"
 #include "cam/revolution_dissipation.h"
 #include "lib/io/number.h"
+#include "lib/model/contact_model.h"
 
 namespace cam {
 
@@ -76,11 +77,11 @@ std::string cam_summary(const CamRun& run) {
                      "tolerance {:.3g}); sliding at {} of {} angle steps; {} steady solves, {:.3g} s CPU\n",
                      p.revolutions, p.periodicity_residual_rad_per_s, p.tolerance_rad_per_s, p.sliding_steps,
                      p.motion.angles.size(), p.motion.creep_law_evaluations, run.cpu_dynamics_s);
-  const bool relaxed = t.scheme == contact::TangentialScheme::Relaxed;
+  const contact::TangentialModelTraits& model = contact::tangential_traits(t.scheme);
   out += fmt::format("transient: grid {} x {}, {}, {} {} steps + {} warm-up, {} of {} angle steps quasi-steady "
                      "(skipped), {:.3g} s CPU\n",
-                     t.grid.nx, t.grid.ny, relaxed ? "relaxed model" : "simplified theory", t.transient_steps,
-                     relaxed ? "relaxed" : "Satran", t.warmup_steps, t.skipped_rows, t.dissipation.size(),
+                     t.grid.nx, t.grid.ny, model.theory, t.transient_steps,
+                     model.steps_name, t.warmup_steps, t.skipped_rows, t.dissipation.size(),
                      run.cpu_transient_s);
   if (!run.full.dissipation.empty())
     out += fmt::format("quasi-steady skip against the full transient ({} steps, {:.3g} s CPU): {:.1f} % of the steps "
@@ -95,7 +96,7 @@ std::string cam_summary(const CamRun& run) {
   out += fmt::format("contact: dissipated {:.6g} J = creep work {:.6g} J - {} {:.3g} J + {:.3g}; creep work = "
                      "steady law's {:.6g} (= rigid + Heathcote + contact frame's rotation {:.3g}) + "
                      "transient's {:.3g}\n",
-                     e.dissipated_J, e.creep_work_J, relaxed ? "relaxation" : "elastic", e.elastic_J,
+                     e.dissipated_J, e.creep_work_J, model.stored_energy, e.elastic_J,
                      e.tangential_residual_J, e.creep_steady_J, e.frame_J, e.transient_J);
   return out;
 }

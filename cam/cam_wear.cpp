@@ -62,8 +62,8 @@ Eigen::ArrayXd strip_edges(const Eigen::ArrayXd& y) {
 // the depth for energy per unit width E spread over a length (the circumference a worn surface's point
 // goes round once): the wear law's depth per duty cycle with 2 pi R_w = length
 Eigen::ArrayXd law_depth(const wear::WearLaw& law, double mu, const Eigen::ArrayXd& energy_J_per_m, double length_m) {
-  if (law.law == "kth" || law.law == "usfd")
-    throw std::invalid_argument("cam wear: the law '" + law.law +
+  if (law.law == wear::WearLawKind::Kth || law.law == wear::WearLawKind::Usfd)
+    throw std::invalid_argument("cam wear: the law '" + wear::to_string(law.law) +
                                 "' needs per-cell slip fields that the revolution's record does not carry: use "
                                 "energy or archard");
   wear::DutyCycle duty;
@@ -303,10 +303,10 @@ void read_cam_wear(contact::YamlMap& m, CamWearSpec& spec) {
   if (!spec.laws.cam && !spec.laws.roller)
     m.fail_here("nothing wears: give cam: and/or roller: with a law, e.g. cam: { law: energy, k_E_m3_per_J: 1.0e-14 }");
   for (const std::optional<wear::WearLaw>* law : {&spec.laws.cam, &spec.laws.roller})
-    if (*law && ((*law)->law == "kth" || (*law)->law == "usfd"))
+    if (*law && ((*law)->law == wear::WearLawKind::Kth || (*law)->law == wear::WearLawKind::Usfd))
       m.fail(law == &spec.laws.cam ? "cam" : "roller",
-             "law: '" + (*law)->law + "' needs per-cell slip fields the cam's revolution does not carry: use energy "
-                                      "or archard");
+             "law: '" + wear::to_string((*law)->law) +
+                 "' needs per-cell slip fields the cam's revolution does not carry: use energy or archard");
   m.required("revolutions", spec.revolutions, [](double v) -> std::string {
     return v > 0 && v <= 1e15 ? "" : "must be in (0, 1e15]";
   });
@@ -325,7 +325,7 @@ void read_cam_wear(contact::YamlMap& m, CamWearSpec& spec) {
       return contact::enum_from_name(kSchemes, v) ? "" : "must be " + contact::enum_names_list(kSchemes);
     });
     if (!scheme.empty()) {
-      if (spec.stepping.method == "adaptive")
+      if (spec.stepping.method == wear::IntegratorOptions::Method::Adaptive)
         s.fail("scheme", "the fixed steps' update: give it with method: fixed-depth or fixed-revolutions");
       spec.scheme = *contact::enum_from_name(kSchemes, scheme);
     }

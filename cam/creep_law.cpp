@@ -6,13 +6,12 @@
 #include <stdexcept>
 
 #include "lib/numeric.h"
-#include "lib/tangential/relaxed.h"
-#include "lib/tangential/steady.h"
+#include "lib/model/contact_model.h"
 
 namespace cam {
 
 void check_cam_scheme(contact::TangentialScheme scheme) {
-  if (scheme != contact::TangentialScheme::Relaxed && scheme != contact::TangentialScheme::Consistent)
+  if (!contact::tangential_traits(scheme).cam)
     throw std::invalid_argument("the cam's tangential model is relaxed or consistent, not " + contact::to_string(scheme));
 }
 
@@ -85,16 +84,13 @@ CreepForce creep_force(const AngleContact& c, double xi) {
 }
 
 contact::TangentialSolution steady_creep(const AngleContact& c, double xi, double speed_m_per_s) {
-  if (c.scheme == contact::TangentialScheme::Relaxed)
-    return contact::solve_relaxed_steady(c.normal.patch, c.pair, {xi, 0, 0}, c.problem.mu, speed_m_per_s, false);
   check_cam_scheme(c.scheme);
   contact::TangentialProblem p = c.problem;
   p.creepages = {xi, 0, 0};
   p.L_m_per_Pa = contact::mean_flexibility_m_per_Pa(p.flex, p.creepages, c.normal.patch.a_m, c.normal.patch.b_m);
   p.speed_m_per_s = speed_m_per_s;
-  contact::SteadyOptions o;
-  o.fields = false;
-  return contact::solve_steady(c.normal.patch, p, contact::TangentialScheme::Consistent, o);
+  // the contact's model (lib/model/contact_model.h): strips and totals, no fields
+  return contact::solve_tangential_steady(c.scheme, c.normal.patch, c.pair, p, false).solution;
 }
 
 double steady_creep_force_N(const AngleContact& c, double xi) { return steady_creep(c, xi, 1.0).Fx_N; }
@@ -130,7 +126,7 @@ CreepageForForce creepage_in_bracket(const AngleContact& c, double force_N, doub
 // the shape factor), so that the inversion's first step lands on a nearly linear law's root
 double linear_stiffness_N(const AngleContact& c) {
   const double k = c.G_Pa * c.normal.patch.a_m * c.normal.patch.b_m * c.problem.C.C11;
-  return c.scheme == contact::TangentialScheme::Relaxed ? k * contact::relaxed_xi_slope_factor(c.normal.patch) : k;
+  return k * contact::xi_slope_factor(c.scheme, c.normal.patch);
 }
 }  // namespace
 

@@ -14,6 +14,7 @@
 #include "cam/revolution_dissipation.h"
 #include "lib/normal/hertz.h"
 #include "lib/normal/semi_hertz.h"
+#include "lib/model/contact_model.h"
 #include "lib/numeric.h"
 #include "lib/tangential/relaxed.h"
 #include "lib/tangential/satran.h"
@@ -48,8 +49,7 @@ contact::HertzContact hertz_at(const RollerAndTrack& bodies, const Fits& f, doub
 
 AngleContact contact_from_hertz(const RollerAndTrack& bodies, const contact::Profiles& profiles, const Fits& f,
                                 double Rr, const CamKinematics& k, const contact::HertzContact& h, double mu,
-                                bool heathcote_slip, const contact::Grid& grid,
-                                contact::TangentialScheme scheme = contact::TangentialScheme::Consistent) {
+                                bool heathcote_slip, const contact::Grid& grid, contact::TangentialScheme scheme) {
   if (h.a_m > grid.half_x_m * (1 + 1e-12) || h.b_m > grid.half_y_m * (1 + 1e-12))
     throw std::invalid_argument("the contact does not fit inside the revolution's grid");
   AngleContact c;
@@ -234,7 +234,7 @@ TransientRevolution transient_revolution(const CamModel& m, const Revolution& r,
   for (std::size_t i = 0; i < n; ++i)
     contacts[i] =
         contact_from_hertz(m.bodies, profiles, f, Rr, r.rows[i].kin, hertz[i], m.mu, s.heathcote_slip, g, s.scheme);
-  if (s.scheme == contact::TangentialScheme::Relaxed) {
+  if (contact::tangential_traits(s.scheme).relaxes_steady_law) {  // the relaxed model: its rows' steady solves
     relaxed_rows(contacts, r, motion.angles, dt_row, s, out);
     return out;
   }
@@ -357,7 +357,7 @@ TransientRevolution worn_transient_revolution(const CamModel& m, const Revolutio
   const std::size_t n = r.rows.size();
   if (motion.angles.size() != n || n < 2)
     throw std::invalid_argument("worn_transient_revolution: the roller's motion does not match the revolution");
-  if (s.scheme != contact::TangentialScheme::Relaxed)
+  if (!contact::tangential_traits(s.scheme).relaxes_steady_law)
     throw std::invalid_argument("worn_transient_revolution: the relaxed model only (Satran needs the common grid's "
                                 "Hertz contacts)");
   if (!(s.quasi_steady_tolerance >= 0)) throw std::invalid_argument("quasi_steady_tolerance must be >= 0");

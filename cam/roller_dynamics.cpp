@@ -10,7 +10,7 @@
 
 #include "cam/cam_error.h"
 #include "lib/numeric.h"
-#include "lib/tangential/relaxed.h"
+#include "lib/model/contact_model.h"
 #include "lib/tangential/tangential.h"
 
 namespace cam {
@@ -18,7 +18,7 @@ namespace cam {
 double saturation_creepage(const AngleContact& c) {
   const contact::ContactPatch& p = c.normal.patch;
   const double jv = 3 * c.problem.mu * p.normal_load_N / (c.G_Pa * p.a_m * p.b_m * c.problem.C.C11);
-  return c.scheme == contact::TangentialScheme::Relaxed ? jv * contact::relaxed_xi_saturation_level(p) : jv;
+  return jv * contact::xi_saturation_factor(c.scheme, p);
 }
 
 namespace {

@@ -2,7 +2,7 @@
 // python/rollwear/__init__.py wraps. One translation unit, so that pybind11's templates compile once.
 //
 // - contact, transient, run: one case (a file, or a document's text from a dict), the work of the commands
-//   `rollwear contact`, `transient` and `run` (lib/case_run.h, wear/wear_loop.h) without their files; the
+//   `rollwear contact`, `transient` and `run` (lib/io/case_run.h, wear/wear_loop.h) without their files; the
 //   results come back as dicts of NumPy arrays named as the commands' CSV columns.
 // - sweep: `rollwear sweep` (wear/sweep.h), writing its folder as the command does.
 // - Errors by type (lib/io/errors.h), never by message: CaseError -> InputError (file, line, column, key from
@@ -31,7 +31,7 @@
 #include <spdlog/sinks/base_sink.h>
 #include <spdlog/spdlog.h>
 
-#include "lib/case_run.h"
+#include "lib/io/case_run.h"
 #include "lib/io/case.h"
 #include "lib/io/errors.h"
 #include "lib/normal/normal.h"

@@ -143,7 +143,7 @@ TEST(CamLife, HeunsFixedDepthStepsConvergeAtSecondOrder) {
     for (int k = 0; k < 3; ++k) {
       CamLifeModel m = model(false);
       m.max_depth_m = 2e-5;
-      m.stepping.method = "fixed-depth";
+      m.stepping.method = wear::IntegratorOptions::Method::FixedDepth;
       m.stepping.max_depth_step_m = 4e-6 / (1 << k);
       m.scheme = heun ? wear::IntegratorOptions::Scheme::Heun : wear::IntegratorOptions::Scheme::Euler;
       const cam::CamLifeResult life = cam::run_cam_life(m, [&](const cam::CamWearState& s) {
@@ -220,7 +220,7 @@ cam::CamWearState shipped_map(int angle_steps, int steps, bool euler_every_angle
   spec.revolutions = kRegressionN;
   spec.max_depth_m = 1e-3;  // far: the budget ends the run
   spec.max_lift_loss_m = 0;
-  spec.stepping.method = "fixed-revolutions";
+  spec.stepping.method = wear::IntegratorOptions::Method::FixedStep;
   spec.stepping.step_revolutions = kRegressionN / steps;
   if (euler_every_angle) {
     spec.scheme = wear::IntegratorOptions::Scheme::Euler;
@@ -601,7 +601,7 @@ ResumableLife resumable_life(bool warm_start) {
   l.model = u.life;
   l.model.max_depth_m = 2e-6;
   l.model.max_lift_loss_m = 0;
-  l.model.stepping.method = "fixed-depth";
+  l.model.stepping.method = wear::IntegratorOptions::Method::FixedDepth;
   l.model.stepping.max_depth_step_m = 0.5e-6;
   l.model.snapshots_revolutions.clear();
   l.worn = std::make_shared<cam::WornRevolution>(worn_revolution(coarse_shipped(), {true, warm_start}));
@@ -735,7 +735,7 @@ TEST_F(CamWearCase, TheShippedCaseReadsItsWearSection) {
   const cam::CamCase c = cam::read_cam_case((kSource / "cases" / "cam-follower.yaml").string());
   ASSERT_TRUE(c.wear.has_value());
   ASSERT_TRUE(c.wear->laws.cam && c.wear->laws.roller);
-  EXPECT_EQ(c.wear->laws.cam->law, "archard");
+  EXPECT_EQ(wear::to_string(c.wear->laws.cam->law), "archard");
   EXPECT_GT(c.wear->max_lift_loss_m, 0);
   EXPECT_GT(c.wear->revolutions, 0);
 }

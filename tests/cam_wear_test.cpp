@@ -40,7 +40,7 @@ CamWearGrid grid(int arc_cells, int lateral_cells) {
 CamWearLaws energy_laws() {
   CamWearLaws l;
   l.cam = wear::WearLaw{};
-  l.cam->law = "energy";
+  l.cam->law = wear::WearLawKind::Energy;
   l.cam->k_E_m3_per_J = kE;
   l.roller = l.cam;
   return l;
@@ -146,7 +146,7 @@ TEST(CamWear, WornVolumeIsTheEnergyLawsAndArchardIsItsSpecialCase) {
   CamWearLaws archard;
   archard.mu = 0.1;
   archard.cam = wear::WearLaw{};
-  archard.cam->law = "archard";
+  archard.cam->law = wear::WearLawKind::Archard;
   archard.cam->archard_k = 1e-6;
   archard.cam->hardness_Pa = 5e9;
   CamWearLaws energy;
@@ -164,7 +164,7 @@ TEST(CamWear, RefusesWhatTheRecordCannotFeedAndBadRecords) {
       12, [](double) { return 1.0; }, [](int, double, double) { return 1.0; }, strips(kTrackW, 4));
   CamWearLaws kth;
   kth.cam = wear::WearLaw{};
-  kth.cam->law = "kth";
+  kth.cam->law = wear::WearLawKind::Kth;
   kth.cam->hardness_Pa = 5e9;
   EXPECT_THROW(cam::wear_per_revolution(rev, g, kth), std::invalid_argument);
   RevolutionDissipation back = rev;

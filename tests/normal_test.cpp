@@ -81,7 +81,7 @@ TEST(NormalChoice, UnconvergedSolveIsNoResult) {
 TEST(NormalChoice, UnconvergedSolveAtABodysEdgeIsNoResult) {
   ContactCase c = read_contact_case((kSource / "cases" / "worn-crown.yaml").string());
   c.profiles->profiles = {crowned_profile(0.5, 0.004), flat_profile(0.030)};
-  c.solver.normal = "semi-hertz";
+  c.solver.normal = contact::NormalChoice::SemiHertz;
   c.solver.nx = c.solver.ny = 20;
   NormalProblem starved = normal_problem_of(c);
   starved.semi_hertz.max_iterations = 2;
@@ -140,7 +140,7 @@ TEST_P(DefectTwoLives, ConvergeWithoutWarningAndMatchAFineFixedStepRun) {
   // lib/tangential/relaxed_shape.h, wear the crown otherwise: the lobes no longer merge at 1.76e8 revolutions; the
   // Rx1mm life on the relaxed model's wear, which stopped at a semi-Hertz solve at 3.6e6 revolutions before its
   // steep-but-continuous F(delta) was searched in (ln delta, ln F), now runs to its 1.5e7 budget)
-  c.contact.solver.tangential = "consistent";
+  c.contact.solver.tangential = contact::TangentialScheme::Consistent;
   c.contact.kinematics.xi = contact::constant_history(v.xi);
   c.contact.kinematics.phi_per_m = contact::constant_history(v.phi_per_m);
   c.contact.bodies.body1.Rx_m = v.Rx1_m;
@@ -163,7 +163,7 @@ TEST_P(DefectTwoLives, ConvergeWithoutWarningAndMatchAFineFixedStepRun) {
   }
   // the reference: fixed-depth (explicit Euler, first order) at depth/200 and depth/400, extrapolated
   // to zero step (Richardson: 2 h_400 - h_200)
-  c.wear.stepping.method = "fixed-depth";
+  c.wear.stepping.method = wear::IntegratorOptions::Method::FixedDepth;
   c.wear.stepping.max_steps = 100000;
   double fixed_depth[2] = {0, 0};
   for (int k = 0; k < 2; ++k) {
@@ -191,7 +191,7 @@ TEST(DefectTwoLives, WornRollerWhereLobesMergeConverges) {
   // lib/tangential/relaxed_shape.h, wear the crown otherwise: the lobes no longer merge at 1.76e8 revolutions; the
   // Rx1mm life on the relaxed model's wear, which stopped at a semi-Hertz solve at 3.6e6 revolutions before its
   // steep-but-continuous F(delta) was searched in (ln delta, ln F), now runs to its 1.5e7 budget)
-  c.contact.solver.tangential = "consistent";
+  c.contact.solver.tangential = contact::TangentialScheme::Consistent;
   c.contact.kinematics.xi = contact::constant_history(0.0);
   c.wear.revolutions = 1.76e8;
   c.wear.snapshots_revolutions.clear();

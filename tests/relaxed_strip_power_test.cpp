@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "lib/case_run.h"
+#include "lib/io/case_run.h"
 #include "lib/history.h"
 #include "lib/io/case.h"
 #include "lib/io/csv_reader.h"
@@ -45,7 +45,7 @@ void expect_within_target(const std::string& name, double xi, double eta, double
   const auto exact = exact_strips();
   ASSERT_EQ(exact.count(name), 1u) << name;
   ContactCase c = read_contact_case(kSource + "/cases/paper.yaml");
-  c.solver.tangential = "relaxed";
+  c.solver.tangential = TangentialScheme::Relaxed;
   c.kinematics.xi = constant_history(xi);
   c.kinematics.eta = constant_history(eta);
   c.kinematics.phi_per_m = constant_history(phi);

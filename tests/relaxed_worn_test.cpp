@@ -12,7 +12,7 @@
 #include <map>
 #include <string>
 
-#include "lib/case_run.h"
+#include "lib/io/case_run.h"
 #include "lib/grid.h"
 #include "lib/io/case.h"
 #include "lib/io/csv_reader.h"
@@ -134,7 +134,7 @@ std::map<std::string, std::array<double, 3>> exact_worn_crown() {
 
 ContactRun worn_crown(const std::string& scheme, bool heathcote) {
   ContactCase c = read_contact_case(kData + "worn-crown-1e7.yaml");
-  c.solver.tangential = scheme;
+  c.solver.tangential = parse_tangential_scheme(scheme);
   c.profiles->heathcote_slip = heathcote;
   return solve_contact_case(c, false);
 }

@@ -1013,11 +1013,11 @@ RandomWear random_wear_case(Rng& r, double load_lo = 1e-3, double load_hi = 1e6)
   k.solver.ny = r.integer(8, 24);
   wear::WearLaw law;
   if (r.chance(0.5)) {
-    law.law = "archard";
+    law.law = wear::WearLawKind::Archard;
     law.archard_k = r.log_uniform(1e-6, 1e-3);
     law.hardness_Pa = r.uniform(1e9, 8e9);
   } else {
-    law.law = "energy";
+    law.law = wear::WearLawKind::Energy;
     law.k_E_m3_per_J = r.log_uniform(1e-16, 1e-12);
   }
   c.wear.body1 = law;
@@ -1025,7 +1025,7 @@ RandomWear random_wear_case(Rng& r, double load_lo = 1e-3, double load_hi = 1e6)
   c.wear.snapshots_revolutions.clear();
   c.wear.limits = {r.chance(0.5) ? r.log_uniform(1e-6, 3e-4) : 0.0, 0, true};
   c.wear.smoothing_wavelength_m = r.chance(0.2) ? 0.0 : r.uniform(1e-4, 1e-3);
-  c.wear.stepping.method = "adaptive";
+  c.wear.stepping.method = wear::IntegratorOptions::Method::Adaptive;
   // the reader takes rtol up to 0.1: a fifth of the lives (ln 5 / ln 5000) run at that loosest tolerance
   c.wear.stepping.rtol = std::min(r.log_uniform(1e-4, 0.5), 0.1);
   c.wear.stepping.atol_m = c.wear.stepping.rtol * 1e-6;
@@ -1035,20 +1035,23 @@ RandomWear random_wear_case(Rng& r, double load_lo = 1e-3, double load_hi = 1e6)
       "{:.6g} 1/m, mu {:.6g}, grid {}x{}, law {} (k_E {:.4g}, K {:.4g}, H {:.4g}), max depth {:.4g} m, smoothing {:.4g} m",
       k.profiles->profiles.body1.source, k.bodies.body1.Rx_m, k.profiles->profiles.body2.source,
       radius_text(k.bodies.body2.Rx_m), k.profiles->heathcote_slip, F, V, k.kinematics.xi.value[0],
-      k.kinematics.eta.value[0], k.kinematics.phi_per_m.value[0], k.friction.mu, k.solver.nx, k.solver.ny, law.law,
+      k.kinematics.eta.value[0], k.kinematics.phi_per_m.value[0], k.friction.mu, k.solver.nx, k.solver.ny,
+      wear::to_string(law.law),
       law.k_E_m3_per_J, law.archard_k, law.hardness_Pa, c.wear.limits.max_depth_m, c.wear.smoothing_wavelength_m);
   return w;
 }
 
 std::string stepping_text(const wear::WearStepping& s) {
-  return fmt::format("stepping {} rtol {:.4g} atol {:.4g} m, max depth step {:.4g} m, step {:.4g} rev", s.method, s.rtol,
+  return fmt::format("stepping {} rtol {:.4g} atol {:.4g} m, max depth step {:.4g} m, step {:.4g} rev",
+                     wear::to_string(s.method), s.rtol,
                      s.atol_m, s.max_depth_step_m, s.step_revolutions);
 }
 
 double k_E_of(const wear::WearModel& m) {
   const wear::WearLaw& law = *m.law1;
-  return law.law == "archard" ? wear::archard_energy_coefficient_m3_per_J(law.archard_k, law.hardness_Pa, m.mu)
-                              : law.k_E_m3_per_J;
+  return law.law == wear::WearLawKind::Archard
+             ? wear::archard_energy_coefficient_m3_per_J(law.archard_k, law.hardness_Pa, m.mu)
+             : law.k_E_m3_per_J;
 }
 
 // Roughness of a worn profile (finding 9, "wavy", docs/stress-suite.md): the reversals of the depth
@@ -1336,10 +1339,10 @@ TEST(StressWear, TooLargeFixedStepKeepsVolumeAndDoesNotThrow) {
     RandomWear w = random_wear_case(r, 100, 1e4);
     wear::WearStepping& s = w.c.wear.stepping;
     if (r.chance(0.5)) {
-      s.method = "fixed-revolutions";
+      s.method = wear::IntegratorOptions::Method::FixedStep;
       s.step_revolutions = w.c.wear.revolutions / r.integer(2, 8);
     } else {
-      s.method = "fixed-depth";
+      s.method = wear::IntegratorOptions::Method::FixedDepth;
       s.max_depth_step_m = r.log_uniform(1e-5, 1e-3);
     }
     w.c.wear.limits.max_depth_m = 0;

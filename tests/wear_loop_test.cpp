@@ -188,7 +188,7 @@ TEST(WearLoop, DepthLimitIsLocated) {
   for (const std::string method : {"adaptive", "fixed-depth"}) {
     WearCase c = paper_wear(20);
     c.wear.limits = WearLimits{3e-5, 0, true};
-    c.wear.stepping.method = method;
+    c.wear.stepping.method = parse_stepping_method(method);
     c.wear.stepping.max_depth_step_m = 7e-6;
     c.wear.snapshots_revolutions.clear();
     const WearModel m = make_wear_model(c);
@@ -213,11 +213,11 @@ TEST(WearLoop, ExactTheoryLifeRunsAndAgreesInForce) {
   WearCase c = paper_wear(40);
   // the simplified theory's, as measured above (the shipped default, the relaxed model, is fitted to the exact
   // theory; its three 1e7-revolution Euler steps leave a crown of up to 8 patches, on which it is not judged here)
-  c.contact.solver.tangential = "consistent";
-  c.wear.stepping.method = "fixed-revolutions";
+  c.contact.solver.tangential = contact::TangentialScheme::Consistent;
+  c.wear.stepping.method = IntegratorOptions::Method::FixedStep;
   c.wear.stepping.step_revolutions = 1e7;
   WearCase e = c;
-  e.contact.solver.tangential = "exact";
+  e.contact.solver.tangential = contact::TangentialScheme::Exact;
   const WearModel mc = make_wear_model(c), me = make_wear_model(e);
   const LifeResult lc = run_to(c, 3e7), le = run_to(e, 3e7);
   ASSERT_EQ(le.ended_by, LifeEnd::Revolutions) << le.message;
@@ -246,7 +246,7 @@ TEST(WearLoop, FixedSteppingRespectsItsStepAndAgreesWithAdaptive) {
   const WearModel m = make_wear_model(c);
   const double depth = max_depth_m(m, adaptive.state);
 
-  c.wear.stepping.method = "fixed-depth";
+  c.wear.stepping.method = IntegratorOptions::Method::FixedDepth;
   c.wear.stepping.max_depth_step_m = depth / 50;
   double largest = 0;
   Eigen::VectorXd previous = initial_state(m);
@@ -260,7 +260,7 @@ TEST(WearLoop, FixedSteppingRespectsItsStepAndAgreesWithAdaptive) {
   EXPECT_LE(largest, depth / 50 * (1 + 1e-12));
   EXPECT_NEAR(max_depth_m(m, fixed.state) / depth, 1.0, 0.03);
 
-  c.wear.stepping.method = "fixed-revolutions";
+  c.wear.stepping.method = IntegratorOptions::Method::FixedStep;
   c.wear.stepping.step_revolutions = N / 64;
   const LifeResult by_revolutions = run_to(c, N);
   EXPECT_EQ(by_revolutions.counters.steps, 64);
@@ -289,7 +289,7 @@ TEST(WearLoop, StepControlCopesOnTheShippedCase) {
 TEST(WearLoop, BothBodiesWearWithTheirOwnCoefficients) {
   WearCase c = paper_wear();
   WearLaw path;
-  path.law = "energy";
+  path.law = WearLawKind::Energy;
   path.k_E_m3_per_J = 2e-14;
   c.wear.body2 = path;
   const WearModel m = make_wear_model(c);
@@ -313,7 +313,7 @@ TEST(WearLoop, KthWithOneCoefficientIsArchard) {
   WearCase c = paper_wear();
   const WearModel archard = make_wear_model(c);
   WearLaw kth;
-  kth.law = "kth";
+  kth.law = WearLawKind::Kth;
   kth.hardness_Pa = c.wear.body1->hardness_Pa;
   kth.kth.K_mild_slow = kth.kth.K_severe = kth.kth.K_mild_fast = kth.kth.K_catastrophic = c.wear.body1->archard_k;
   c.wear.body1 = kth;
@@ -343,7 +343,7 @@ TEST(WearLoop, BodyWornThroughEndsTheLife) {
   roller.z_m = (kWidth_m - kMargin_m) - roller.y_m.square() / (2 * kGrooveRadius_m);
   c.contact.profiles->profiles.body1 = roller;
   c.contact.profiles->profiles.body2 = contact::crowned_profile(0.25, 0.030);
-  c.contact.solver.normal = "semi-hertz";
+  c.contact.solver.normal = contact::NormalChoice::SemiHertz;
   c.wear.limits = WearLimits{0, 0, false};
   c.wear.revolutions = 1e8;
   c.wear.snapshots_revolutions.clear();
@@ -472,7 +472,7 @@ std::map<std::string, double> stored_values(const fs::path& p) {
 }
 
 WearCase with_scheme(WearCase c, const std::string& scheme) {
-  c.contact.solver.tangential = scheme;
+  c.contact.solver.tangential = contact::parse_tangential_scheme(scheme);
   return c;
 }
 
@@ -531,7 +531,7 @@ std::map<std::string, double> paper_wear_exact_reference(const WearCase& c) {
 // 1.47641e-8 m^3 (-0.20 %), the maximum depth 1.79172e-5 m (-1.01 %).
 TEST(WearGolden, PaperWear) {
   const WearCase c = read_wear_case((kSource / "cases" / "paper-wear.yaml").string());
-  ASSERT_EQ(contact::parse_tangential_scheme(c.contact.solver.tangential), contact::TangentialScheme::Relaxed);
+  ASSERT_EQ(c.contact.solver.tangential, contact::TangentialScheme::Relaxed);
   const LifeResult life = run_to(c, 1e7);
   const std::map<std::string, double> v = wear_values(make_wear_model(c), life);
   check_golden("paper-wear", v);
@@ -571,7 +571,7 @@ TEST(WearGolden, PaperWearConsistent) {  // the simplified theory's golden, as b
 // weights fading with the saturation level: 265506 J, 1.47503e-8 m^3 (-0.29 %).
 TEST(WearGolden, StartStopWear) {
   const WearCase c = read_wear_case((kSource / "cases" / "start-stop-wear.yaml").string());
-  ASSERT_EQ(contact::parse_tangential_scheme(c.contact.solver.tangential), contact::TangentialScheme::Relaxed);
+  ASSERT_EQ(c.contact.solver.tangential, contact::TangentialScheme::Relaxed);
   const LifeResult life = run_to(c, 1e7);
   const std::map<std::string, double> v = wear_values(make_wear_model(c), life);
   check_golden("start-stop-wear", v);
@@ -614,7 +614,7 @@ constexpr double kShippedLifeRtol = 3e-3;  // the shipped tolerances' life again
 
 // the life of the case with fixed-depth steps of d_m, ended by the edge limit
 double fixed_depth_life(WearCase c, double d_m) {
-  c.wear.stepping.method = "fixed-depth";
+  c.wear.stepping.method = IntegratorOptions::Method::FixedDepth;
   c.wear.stepping.max_depth_step_m = d_m;
   c.wear.stepping.max_steps = 10000000;
   const WearModel m = make_wear_model(c);
@@ -702,7 +702,7 @@ TEST(WearLife, PaperWearConvergesToTheFixedDepthLife) {
 TEST(WearLife, EdgeLimitIsLocatedInBothModes) {
   for (const std::string method : {"adaptive", "fixed-depth"}) {
     WearCase c = paper_wear(40);
-    c.wear.stepping.method = method;
+    c.wear.stepping.method = parse_stepping_method(method);
     c.wear.stepping.max_depth_step_m = 2e-6;
     c.wear.limits.max_depth_m = 0;
     c.wear.snapshots_revolutions.clear();
@@ -741,7 +741,7 @@ void check_start_stop_reference(const WearCase& c, const std::string& file) {
   if (std::getenv("ROLLWEAR_UPDATE_REFERENCES")) {
     const double coarse = fixed_depth_life(c, 2e-8), fine = fixed_depth_life(c, 1e-8);
     std::ofstream out(p);
-    out << "# start-stop-wear (tangential: " << c.contact.solver.tangential
+    out << "# start-stop-wear (tangential: " << contact::to_string(c.contact.solver.tangential)
         << "): the life (revolutions) with fixed-depth steps of 2e-8 and 1e-8 m, and their\n"
            "# Richardson extrapolation (first order), the reference of WearLife.StartStopWear* in\n"
            "# tests/wear_loop_test.cpp (made as said there).\n";
@@ -761,7 +761,7 @@ void check_start_stop_reference(const WearCase& c, const std::string& file) {
   EXPECT_LT(std::abs(shipped.N / euler - 1), kShippedLifeRtol + kEulerError) << shipped.N << " against " << euler;
   std::cout << fmt::format("start-stop-wear ({}): shipped {:.10g} ({:.2e}), fixed-depth 4e-7 m {:.10g} ({:.2e}), "
                            "reference {:.10g}\n",
-                           c.contact.solver.tangential, shipped.N, shipped.N / reference - 1, euler,
+                           contact::to_string(c.contact.solver.tangential), shipped.N, shipped.N / reference - 1, euler,
                            euler / reference - 1, reference);
 }
 
@@ -783,7 +783,7 @@ TEST(WearLife, StartStopWearConsistentAgreesWithItsConvergedReference) {
 // solve). The report's message names the step the limit was reached in, which is `steps`.
 TEST(WearLoop, ResumedLifeCountsTheWholeLife) {
   WearCase c = paper_wear(20);
-  c.wear.stepping.method = "fixed-depth";
+  c.wear.stepping.method = IntegratorOptions::Method::FixedDepth;
   c.wear.stepping.max_depth_step_m = 1e-6;
   c.wear.limits.max_depth_m = 3e-5;
   const WearModel m = make_wear_model(c);

@@ -28,7 +28,7 @@
 
 #include <spdlog/spdlog.h>
 
-#include "lib/case_run.h"
+#include "lib/io/case_run.h"
 #include "lib/io/case_node.h"
 #include "lib/io/csv.h"
 #include "lib/io/errors.h"

@@ -160,7 +160,7 @@ std::string case_folder_name(long i);
 CaseOutcome run_case(const std::string& yaml_text, long index, const std::vector<double>& inputs,
                      const std::filesystem::path& dir);
 
-// Runs one contact case as `rollwear contact` does (solve_contact_case, lib/case_run.h), fields when the case
+// Runs one contact case as `rollwear contact` does (solve_contact_case, lib/io/case_run.h), fields when the case
 // asks for them (output.fields). With `dir` not empty, writes there case.yaml (`text`), summary.csv,
 // strips.csv, fields.csv (when asked) and then row.csv (the mark that the case is finished); with `dir`
 // empty, no file. Never throws for the case's own failure: that is the row's status and message.

@@ -11,6 +11,7 @@
 #include "lib/io/enum_names.h"
 #include "lib/io/number.h"
 #include "lib/io/yaml_reader.h"
+#include "lib/model/contact_model.h"
 #include "lib/normal/profile.h"
 #include "wear/collective.h"
 
@@ -44,9 +45,10 @@ void read_usfd(YamlMap& m, UsfdWearFunction& u) {
 
 // one body's law; validate()'s message "wear.KEY: ..." is moved to this body's key and line
 void read_law(YamlMap& m, WearLaw& law) {
-  m.optional("law", law.law);
+  std::string name = to_string(law.law);
+  m.optional("law", name);
   try {
-    parse_wear_law(law.law);
+    law.law = parse_wear_law(name);  // once, as it is read
   } catch (const contact::SettingError& e) {
     m.fail("law", e.problem);
   }
@@ -71,8 +73,12 @@ constexpr contact::EnumTable<Method, 3> kSteppingMethods = {
     {{Method::Adaptive, "adaptive"}, {Method::FixedDepth, "fixed-depth"}, {Method::FixedStep, "fixed-revolutions"}}};
 
 void read_stepping(YamlMap& m, WearStepping& s) {
-  m.optional("method", s.method, [](const std::string& v) -> std::string {
-    return contact::enum_from_name(kSteppingMethods, v) ? "" : "must be " + contact::enum_names_list(kSteppingMethods);
+  std::string method = to_string(s.method);
+  m.optional("method", method, [&s](const std::string& v) -> std::string {  // parsed once, as it is read
+    const std::optional<Method> parsed = contact::enum_from_name(kSteppingMethods, v);
+    if (!parsed) return "must be " + contact::enum_names_list(kSteppingMethods);
+    s.method = *parsed;
+    return "";
   });
   m.optional("rtol", s.rtol, [](double v) -> std::string {
     return v >= 1e-10 && v <= 0.1 ? "" : "must be in [1e-10, 0.1]";
@@ -161,9 +167,10 @@ void validate(const WearCase& c) {
   if (!k.profiles)
     throw key_error(k, "wear", "wear, profiles: the worn body needs a lateral profile; give a profiles: "
                     "section (e.g. body1: { crowned: { Ry_m: 0.5, width_m: 0.02 } })");
-  if (k.solver.normal == "hertz" || k.solver.normal == "halfspace")
+  if (k.solver.normal == contact::NormalChoice::Hertz || k.solver.normal == contact::NormalChoice::Halfspace)
     throw key_error(k, "solver.normal", "solver.normal: a wear run solves the worn profiles with auto "
-                    "(Hertz while the curvature is constant, then semi-Hertz) or semi-hertz, not " + k.solver.normal);
+                    "(Hertz while the curvature is constant, then semi-Hertz) or semi-hertz, not " +
+                    std::string(to_string(k.solver.normal)));
   if (k.inertia) throw key_error(k, "inertia", "inertia: not supported in a wear run");
   for (const auto& [key, law, R] : {std::tuple<const char*, const std::optional<WearLaw>*, double>{
                                         "wear.body1", &w.body1, k.bodies.body1.Rx_m},
@@ -172,20 +179,20 @@ void validate(const WearCase& c) {
     if (!(R > 0) || !std::isfinite(R))
       throw key_error(k, key, std::string(key) + ": the body wears but its rolling radius Rx_m = " + number(R) +
                       " gives no revolutions (a flat or concave body cannot be the worn body)");
-    const std::string name = (*law)->law;
+    const WearLawKind kind = (*law)->law;
     // Archard's law is the energy law with k_E = K/(H mu) (wear_law.h): mu = 0 has no energy equivalent
-    if (name == "archard" && !(k.friction.mu > 0))
+    if (kind == WearLawKind::Archard && !(k.friction.mu > 0))
       throw key_error(k, "friction.mu", std::string("friction.mu, ") + key + ".law: the archard law needs friction (it is "
                       "the energy law with k_E = K/(H mu)), got mu = " + number(k.friction.mu) + "; give mu > 0");
-    if (k.transient && name != "energy" && name != "archard")
-      throw key_error(k, std::string(key) + ".law", std::string(key) + ".law, transient: the " + name +
+    if (k.transient && kind != WearLawKind::Energy && kind != WearLawKind::Archard)
+      throw key_error(k, std::string(key) + ".law", std::string(key) + ".law, transient: the " + to_string(kind) +
                       " law reads steady per-cell fields; a transient duty cycle takes energy or archard");
   }
   if (k.transient) {
     if (!contact::is_constant(k.load.normal_load_N))
       throw key_error(k, "load.normal_load_N", "load.normal_load_N: a wear run's duty cycle needs a constant "
                       "load (the worn contact is solved once per evaluation)");
-    if (k.transient->scheme != "shift")
+    if (k.transient->scheme != contact::TransientScheme::Shift)
       throw key_error(k, "transient.scheme", "transient.scheme: a wear run's duty cycle uses shift");
   } else {
     contact::validate_steady(k);
@@ -197,9 +204,15 @@ void validate(const WearCase& c) {
     throw key_error(k, "wear.snapshots_revolutions", "wear.snapshots_revolutions, wear.revolutions: snapshot at " +
                     number(w.snapshots_revolutions.back()) + " is after the end of the life budget, " +
                     number(w.revolutions));
-  if (contact::enum_from_name(kSteppingMethods, w.stepping.method) == Method::FixedStep &&
+  if (w.stepping.method == Method::FixedStep &&
       !(w.stepping.step_revolutions > 0))
     throw key_error(k, "wear.stepping", "wear.stepping.step_revolutions: fixed-revolutions needs a step > 0");
+  // a model a transient duty cycle cannot run: the exact theory, for reference lives with steady duty cycles
+  // (one exact solve per wear-rate evaluation)
+  if (const contact::TangentialModelTraits& model = contact::tangential_traits(k.solver.tangential);
+      k.transient && !model.wear_transient_duty_cycle)
+    throw key_error(k, "solver.tangential", std::string("solver.tangential: a wear run takes the ") + model.theory +
+                    " with a steady duty cycle only (no transient: section); use consistent or classic");
   if (!w.collective.empty()) validate_collective(c);
 }
 
@@ -221,18 +234,21 @@ void check_profile_resolves_contact(const WearCase& c, int body, double node_spa
 
 IntegratorOptions integrator_options(const WearStepping& s) {
   IntegratorOptions o;
-  // read_stepping took only the table's names; anything else is a case built in code, refused here
-  const std::optional<Method> method = contact::enum_from_name(kSteppingMethods, s.method);
-  if (!method)
-    throw contact::SettingError("wear.stepping", "method", "must be " + contact::enum_names_list(kSteppingMethods) +
-                                                                ", got '" + contact::clipped(s.method) + "'");
-  o.method = *method;
+  o.method = s.method;
   o.rtol = s.rtol;
   o.atol = s.atol_m;
   o.max_depth_step = s.max_depth_step_m;
   o.fixed_step = s.step_revolutions;
   o.max_steps = s.max_steps;
   return o;
+}
+
+std::string to_string(IntegratorOptions::Method method) { return contact::enum_name(kSteppingMethods, method); }
+
+IntegratorOptions::Method parse_stepping_method(const std::string& name) {
+  if (const std::optional<Method> method = contact::enum_from_name(kSteppingMethods, name)) return *method;
+  throw contact::SettingError("wear.stepping", "method", "must be " + contact::enum_names_list(kSteppingMethods) +
+                                                             ", got '" + contact::clipped(name) + "'");
 }
 
 void read_wear_law(YamlMap& m, WearLaw& law) { read_law(m, law); }

@@ -47,7 +47,7 @@ struct WearLimits {
 };
 
 struct WearStepping {
-  std::string method = "adaptive";  // adaptive | fixed-depth | fixed-revolutions
+  IntegratorOptions::Method method = IntegratorOptions::Method::Adaptive;  // adaptive | fixed-depth | fixed-revolutions
   double rtol = 1e-3;               // adaptive: relative tolerance on the worn depth
   double atol_m = 1e-9;             // adaptive: absolute tolerance, m
   double max_depth_step_m = 1e-5;   // fixed-depth: the largest depth worn in one update, m
@@ -98,6 +98,11 @@ void check_profile_resolves_contact(const WearCase& c, int body, double node_spa
 
 // the integrator's settings of the case
 IntegratorOptions integrator_options(const WearStepping& s);
+
+// wear.stepping.method's names (one table, wear_case.cpp): "adaptive", "fixed-depth", "fixed-revolutions";
+// the parse throws contact::SettingError (wear.stepping, method) naming them for anything else
+std::string to_string(IntegratorOptions::Method method);
+IntegratorOptions::Method parse_stepping_method(const std::string& name);
 
 // one body's wear law and the stepping, read from their sections with a wear case's keys and errors (for
 // the cases that carry a wear section of their own: the cam's, cam/cam_wear.h)

@@ -239,7 +239,7 @@ WearLawKind parse_wear_law(const std::string& name) {
 void validate(const WearLaw& law) {
   // ranges wide enough for any metal, narrow enough to catch a unit slip: k_E in mm^3/(N m) reads
   // 1e9 times too large, hardness in GPa or HV and density in g/cm^3 read far too small
-  switch (parse_wear_law(law.law)) {
+  switch (law.law) {
     case WearLawKind::Energy:
       check_range("k_E_m3_per_J", law.k_E_m3_per_J, 0, 1e-6, true, "in (0, 1e-6] m^3/J");
       break;
@@ -276,7 +276,7 @@ void validate(const WearLaw& law) {
 
 Eigen::ArrayXd depth_per_duty_cycle(const WearLaw& law, const DutyCycle& duty) {
   validate(law);
-  const WearLawKind kind = parse_wear_law(law.law);
+  const WearLawKind kind = law.law;
   const double R_w = duty.worn_radius_m;
   if (!(R_w > 0) || !std::isfinite(R_w))
     throw std::invalid_argument("duty cycle: worn_radius_m must be > 0, got " + number(R_w));
@@ -285,7 +285,7 @@ Eigen::ArrayXd depth_per_duty_cycle(const WearLaw& law, const DutyCycle& duty) {
   Eigen::ArrayXd depth_m;
   if (kind == WearLawKind::Energy || kind == WearLawKind::Archard) {
     if (duty.strip_energy_J_per_m.size() == 0)
-      throw std::invalid_argument("wear law " + law.law + ": the duty cycle has no strip_energy_J_per_m");
+      throw std::invalid_argument("wear law " + to_string(law.law) + ": the duty cycle has no strip_energy_J_per_m");
     // archard: the energy law with k_E = K/(H mu), on the same energy-consistent E_l
     const double k_E = kind == WearLawKind::Energy
                            ? law.k_E_m3_per_J
@@ -293,7 +293,8 @@ Eigen::ArrayXd depth_per_duty_cycle(const WearLaw& law, const DutyCycle& duty) {
     depth_m = depth_from_energy(duty.strip_energy_J_per_m, k_E, R_w);
   } else {
     if (duty.stretches.empty())
-      throw std::invalid_argument("wear law " + law.law + ": the duty cycle has no per-cell fields (stretches)");
+      throw std::invalid_argument("wear law " + to_string(law.law) +
+                                  ": the duty cycle has no per-cell fields (stretches)");
     const Eigen::Index nx = duty.stretches.front().pressure_Pa.rows(), ny = duty.stretches.front().pressure_Pa.cols();
     depth_m = Eigen::ArrayXd::Zero(ny);
     for (std::size_t k = 0; k < duty.stretches.size(); ++k) {
@@ -313,7 +314,7 @@ Eigen::ArrayXd depth_per_duty_cycle(const WearLaw& law, const DutyCycle& duty) {
       }
     }
   }
-  spdlog::debug("wear law {}: max depth {:.3e} m per duty cycle over {} strips, R_w {:.4g} m", law.law,
+  spdlog::debug("wear law {}: max depth {:.3e} m per duty cycle over {} strips, R_w {:.4g} m", to_string(law.law),
                 depth_m.size() > 0 ? depth_m.maxCoeff() : 0.0, depth_m.size(), R_w);
   return depth_m;
 }

@@ -171,7 +171,7 @@ std::string to_string(WearLawKind kind);
 WearLawKind parse_wear_law(const std::string& name);
 
 struct WearLaw {                         // the case's wear section (YAML keys = field names)
-  std::string law = "energy";            // energy | archard | kth | usfd
+  WearLawKind law = WearLawKind::Energy;  // energy | archard | kth | usfd (kWearLawNames)
   double k_E_m3_per_J = 0;               // energy: > 0
   double archard_k = 0;                  // archard: (0, 1]
   double hardness_Pa = 0;                // archard, kth: > 0 (of the worn body)

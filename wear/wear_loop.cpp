@@ -17,9 +17,7 @@
 #include "lib/io/enum_names.h"
 #include "lib/numeric.h"
 #include "lib/io/errors.h"
-#include "lib/tangential/exact.h"
-#include "lib/tangential/relaxed.h"
-#include "lib/tangential/steady.h"
+#include "lib/model/contact_model.h"
 #include "wear/collective.h"
 #include "wear/profile_update.h"
 
@@ -34,7 +32,7 @@ constexpr std::size_t kCachedRates = 4;  // an RK step's stages, the step end, a
 
 // k_E of an energy-type law (energy, archard), 0 for the per-cell laws
 double energy_coefficient(const WearLaw& law, double mu) {
-  const WearLawKind kind = parse_wear_law(law.law);
+  const WearLawKind kind = law.law;
   if (kind == WearLawKind::Energy) return law.k_E_m3_per_J;
   if (kind == WearLawKind::Archard) return archard_energy_coefficient_m3_per_J(law.archard_k, law.hardness_Pa, mu);
   return 0;
@@ -60,20 +58,12 @@ DutyCycleEnergy duty_cycle_energy(const WearModel& m, const contact::ContactPatc
     // steady running: one cycle is one revolution of the reference body
     const contact::TangentialProblem problem =
         contact::make_tangential_problem(patch, m.materials, m.creepages, m.mu, m.speed_m_per_s);
-    contact::SteadyOptions options;
-    options.fields = need_fields;
-    contact::TangentialSolution s;
-    if (m.scheme == contact::TangentialScheme::Exact) {  // the reference: Kalker's exact theory, steady
-      const contact::ExactSolution e =
-          contact::solve_exact_steady(patch, contact::combined_shear_modulus_Pa(m.materials),
-                                      contact::combined_poisson(m.materials), m.creepages, m.mu, m.speed_m_per_s);
-      if (!e.status.converged()) throw contact::SolverError("wear rate: exact steady solve: " + e.status.message);
-      s = e.fields;
-    } else if (m.scheme == contact::TangentialScheme::Relaxed) {  // matched to the exact theory
-      s = contact::solve_relaxed_steady(patch, m.materials, m.creepages, m.mu, m.speed_m_per_s, need_fields);
-    } else {
-      s = contact::solve_steady(patch, problem, m.scheme, options);
-    }
+    // the case's model (lib/model/contact_model.h); the exact theory's solve may not converge
+    contact::SteadyModelSolution solved =
+        contact::solve_tangential_steady(m.scheme, patch, m.materials, problem, need_fields);
+    if (!solved.status.converged())
+      throw contact::SolverError("wear rate: exact steady solve: " + solved.status.message);
+    const contact::TangentialSolution& s = solved.solution;
     d.rolled_m = 2 * kPi * m.reference_radius_m;
     d.duration_s = d.rolled_m / m.speed_m_per_s;
     d.strip_energy_J_per_m = s.strip_power_W_per_m * d.duration_s;
@@ -87,9 +77,7 @@ DutyCycleEnergy duty_cycle_energy(const WearModel& m, const contact::ContactPatc
   t.patch = patch;
   double last_Fx = 0;
   const auto observe = [&](const contact::TransientRecord& rec, const Eigen::ArrayXd&) { last_Fx = rec.Fx_N; };
-  const contact::TransientResult r = m.scheme == contact::TangentialScheme::Relaxed
-                                         ? contact::run_relaxed_transient(t, observe)
-                                         : contact::run_transient(t, observe);
+  const contact::TransientResult r = contact::run_tangential_transient(m.scheme, t, observe);
   d.strip_energy_J_per_m = r.strip_energy_J_per_m;
   d.rolled_m = r.q_end_m;
   d.duration_s = r.t_end_s;
@@ -115,7 +103,7 @@ Eigen::ArrayXd node_depth_per_cycle(const WearModel& m, int body, const WearLaw&
 
 bool needs_fields(const std::optional<WearLaw>& law) {
   if (!law) return false;
-  const WearLawKind k = parse_wear_law(law->law);
+  const WearLawKind k = law->law;
   return k == WearLawKind::Kth || k == WearLawKind::Usfd;
 }
 
@@ -133,14 +121,10 @@ WearModel make_wear_model(const WearCase& c) {
   m.materials = contact::materials_of(k);
   m.grid = contact::grid_of(k);
   m.normal_options.heathcote_slip = k.profiles->heathcote_slip;
-  m.semi_hertz_always = k.solver.normal == "semi-hertz";
+  m.normal_choice = k.solver.normal;  // auto or semi-hertz (validate)
   m.normal_load_N = k.load.normal_load_N.value.front();
   m.mu = k.friction.mu;
-  m.scheme = contact::parse_tangential_scheme(k.solver.tangential);
-  // the exact theory for reference lives: steady duty cycles only (one exact solve per wear-rate evaluation)
-  if (m.scheme == contact::TangentialScheme::Exact && k.transient)
-    throw contact::key_error(k, "solver.tangential", "solver.tangential: a wear run takes the exact "
-                             "theory with a steady duty cycle only (no transient: section); use consistent or classic");
+  m.scheme = k.solver.tangential;  // one the duty cycle can run (validate)
   if (k.transient) {
     m.transient = contact::transient_case_of(k);
     m.transient->settings.skip_steady = true;
@@ -167,9 +151,7 @@ WearModel make_wear_model(const WearCase& c) {
   // the pressure fields on the grid: read by the transient duty cycle (Satran), the per-cell laws and the
   // consistent march; not by the steady pure-xi closed form (solve_steady's skip) with the strip laws
   // (the relaxed model's steady solve is that march at scaled creepages: the same closed form)
-  const bool closed_form = !m.transient &&
-                           (m.scheme == contact::TangentialScheme::Consistent ||
-                            m.scheme == contact::TangentialScheme::Relaxed) &&
+  const bool closed_form = !m.transient && contact::tangential_traits(m.scheme).pure_xi_closed_form &&
                            m.creepages.eta == 0 && m.creepages.phi_per_m == 0;
   m.normal_options.pressure_fields = !closed_form || needs_fields(m.law1) || needs_fields(m.law2);
   return m;
@@ -208,7 +190,7 @@ NormalState normal_state_on(const WearModel& m, const contact::Profiles& profile
   // normal problem on the current worn geometry (contact::solve_normal chooses: Hertz while the unworn
   // profiles have constant curvature, semi-Hertz once anything is worn)
   contact::NormalProblem problem;
-  problem.choice = m.semi_hertz_always ? contact::NormalChoice::SemiHertz : contact::NormalChoice::Auto;
+  problem.choice = m.normal_choice;
   problem.bodies = {{m.Rx1_m, contact::kFlat}, {m.Rx2_m, contact::kFlat}};
   problem.profiles = &profiles;
   problem.worn = !(m.n1 + m.n2 == 0 || state.head(m.n1 + m.n2).isZero(0));

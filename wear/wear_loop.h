@@ -45,7 +45,8 @@ struct WearModel {
   contact::ElasticPair materials;
   contact::GridSpec grid;
   contact::SemiHertzOptions normal_options;
-  bool semi_hertz_always = false;  // solver.normal semi-hertz (else auto: Hertz while curvature is constant)
+  // solver.normal: semi-hertz, or auto (Hertz while the curvature is constant and the profiles unworn)
+  contact::NormalChoice normal_choice = contact::NormalChoice::Auto;
   double normal_load_N = 0;
   double mu = 0;
   contact::TangentialScheme scheme = contact::kDefaultTangentialScheme;

@@ -30,7 +30,7 @@ constexpr const char* kCheckpointMagic = "rollwear-wear-checkpoint 2";  // 2: th
 using contact::round_trip;
 
 std::string law_text(const WearLaw& law) {
-  switch (parse_wear_law(law.law)) {
+  switch (law.law) {
     case WearLawKind::Energy: return fmt::format("energy, k_E {} m^3/J", round_trip(law.k_E_m3_per_J));
     case WearLawKind::Archard:
       return fmt::format("archard, K {}, H {} Pa (k_E = K/(H mu))", round_trip(law.archard_k),
@@ -38,7 +38,7 @@ std::string law_text(const WearLaw& law) {
     case WearLawKind::Kth: return fmt::format("kth, H {} Pa", round_trip(law.hardness_Pa));
     case WearLawKind::Usfd: return fmt::format("usfd, rho {} kg/m^3", round_trip(law.density_kg_per_m3));
   }
-  return law.law;
+  return to_string(law.law);
 }
 
 }  // namespace

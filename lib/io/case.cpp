@@ -18,6 +18,7 @@
 #include "lib/tangential/tangential.h"
 #include "lib/io/number.h"
 #include "lib/io/yaml_reader.h"
+#include "lib/model/contact_model.h"
 
 namespace contact {
 namespace {
@@ -199,13 +200,21 @@ void read_kinematics(YamlMap& m, KinematicsSection& k) {
   m.optional_value("phi_per_m", [&](const YamlValue& v) { k.phi_per_m = read_history(v, finite); });
 }
 
-void read_transient(YamlMap& m, TransientSection& t) {
-  m.optional("scheme", t.scheme);
+// A choice: its name read and parsed once into the enum, the default being the value's own (a name outside the
+// parse's table: its message at the key, clipped to clip_chars when given)
+template <class E, class Parse>
+void read_choice(YamlMap& m, const char* key, E& value, Parse parse, std::size_t clip_chars = 0) {
+  std::string name = to_string(value);
+  m.optional(key, name);
   try {
-    parse_transient_scheme(t.scheme);
+    value = parse(name);
   } catch (const std::invalid_argument& e) {
-    m.fail("scheme", clipped(e.what(), 200));
+    m.fail(key, clip_chars > 0 ? clipped(e.what(), clip_chars) : std::string(e.what()));
   }
+}
+
+void read_transient(YamlMap& m, TransientSection& t) {
+  read_choice(m, "scheme", t.scheme, parse_transient_scheme, 200);
   m.required("t_end_s", t.t_end_s, positive_finite);
   m.optional("dt_s", t.dt_s, nonnegative_finite);
   m.optional("substep", t.substep);
@@ -232,18 +241,8 @@ void read_inertia(YamlMap& m, InertiaSection& in) {
 }
 
 void read_solver(YamlMap& m, SolverSection& s) {
-  m.optional("normal", s.normal);
-  try {
-    parse_normal_choice(s.normal);
-  } catch (const std::invalid_argument& e) {
-    m.fail("normal", e.what());
-  }
-  m.optional("tangential", s.tangential);
-  try {
-    parse_tangential_scheme(s.tangential);
-  } catch (const std::invalid_argument& e) {
-    m.fail("tangential", clipped(e.what(), 200));
-  }
+  read_choice(m, "normal", s.normal, parse_normal_choice);
+  read_choice(m, "tangential", s.tangential, parse_tangential_scheme, 200);
   m.optional("nx", s.nx, in_closed(1, 4096));
   m.optional("ny", s.ny, in_closed(1, 4096));
 }
@@ -398,8 +397,8 @@ void validate(const ContactCase& c) {
   check_curvature(c, "Rx_m", "A", c.bodies.body1.Rx_m, c.bodies.body2.Rx_m);
   if (!c.profiles) {
     check_curvature(c, "Ry_m", "B", c.bodies.body1.Ry_m, c.bodies.body2.Ry_m);
-    if (c.solver.normal == "semi-hertz" || c.solver.normal == "halfspace")
-      throw key_error(c, "solver.normal", "solver.normal, profiles: the " + c.solver.normal +
+    if (c.solver.normal == NormalChoice::SemiHertz || c.solver.normal == NormalChoice::Halfspace)
+      throw key_error(c, "solver.normal", "solver.normal, profiles: the " + std::string(to_string(c.solver.normal)) +
                       " solver works on lateral profiles; give a profiles: section (or normal: auto)");
   } else {
     // the profiles are the lateral geometry: no Ry_m besides
@@ -408,7 +407,7 @@ void validate(const ContactCase& c) {
         throw key_error(c, key, std::string(key) + ", profiles: the lateral geometry comes from the profiles; "
                         "remove Ry_m (Rx_m stays: the rolling radius)");
     // Hertz needs constant curvature
-    if (c.solver.normal == "hertz")
+    if (c.solver.normal == NormalChoice::Hertz)
       for (const auto& [key, p] : {std::pair<const char*, const Profile*>{"profiles.body1", &c.profiles->profiles.body1},
                                    {"profiles.body2", &c.profiles->profiles.body2}})
         if (!has_constant_curvature(*p, kCaseCurvatureRtol))
@@ -417,9 +416,11 @@ void validate(const ContactCase& c) {
                           " is not; use normal: auto, semi-hertz or halfspace");
   }
 
-  // Kalker's exact theory (lib/tangential/exact.h) solves with friction only
-  if (parse_tangential_scheme(c.solver.tangential) == TangentialScheme::Exact && !(c.friction.mu > 0))
-    throw key_error(c, "friction.mu", "friction.mu, solver.tangential: the exact solver needs mu > 0");
+  // a model that solves with friction only (Kalker's exact theory, lib/tangential/exact.h)
+  if (const TangentialModelTraits& model = tangential_traits(c.solver.tangential);
+      model.needs_friction && !(c.friction.mu > 0))
+    throw key_error(c, "friction.mu", std::string("friction.mu, solver.tangential: the ") + model.needs_friction_as +
+                    " needs mu > 0");
 
   // the run: snapshots within it, a time step for the fixed-step schemes
   if (c.transient) {
@@ -428,17 +429,17 @@ void validate(const ContactCase& c) {
       throw key_error(c, "transient.snapshots_s", "transient.snapshots_s, transient.t_end_s: snapshot at " +
                       number(t.snapshots_s.back()) + " s is after the end of the run, t_end_s = " +
                       number(t.t_end_s) + " s");
-    if (t.scheme != "shift" && !(t.dt_s > 0))
-      throw key_error(c, "transient.dt_s", "transient.dt_s, transient.scheme: the " + t.scheme +
+    if (t.scheme != TransientScheme::Shift && !(t.dt_s > 0))
+      throw key_error(c, "transient.dt_s", "transient.dt_s, transient.scheme: the " + to_string(t.scheme) +
                       " scheme needs a time step dt_s > 0");
   }
 
   // the roller's inertia: its spin sets V and xi; the run is a shift run with a longest step
   if (c.inertia) {
     check_inertia_kinematics(c);
-    if (c.transient && c.transient->scheme != "shift")
+    if (c.transient && c.transient->scheme != TransientScheme::Shift)
       throw key_error(c, "transient.scheme", "transient.scheme, inertia: an inertia run uses the shift "
-                      "scheme, got '" + c.transient->scheme + "'");
+                      "scheme, got '" + to_string(c.transient->scheme) + "'");
     if (c.transient && !(c.transient->dt_s > 0))
       throw key_error(c, "transient.dt_s", "transient.dt_s, inertia: an inertia run needs the longest "
                       "step dt_s > 0 (the spin-up is stiff; e.g. 2.0e-6 s)");
@@ -497,7 +498,7 @@ GridSpec grid_of(const ContactCase& c) {
 
 NormalProblem normal_problem_of(const ContactCase& c) {
   NormalProblem problem;
-  problem.choice = parse_normal_choice(c.solver.normal);  // validated when read
+  problem.choice = c.solver.normal;
   problem.bodies = {{c.bodies.body1.Rx_m, c.bodies.body1.Ry_m}, {c.bodies.body2.Rx_m, c.bodies.body2.Ry_m}};
   if (c.profiles) {
     problem.profiles = &c.profiles->profiles;
@@ -553,7 +554,7 @@ TransientCase transient_case_of(const ContactCase& c) {
     t.inertia = in;
   }
   const TransientSection& s = *c.transient;
-  t.settings.scheme = parse_transient_scheme(s.scheme);
+  t.settings.scheme = s.scheme;
   t.settings.t_end_s = s.t_end_s;
   t.settings.dt_s = s.dt_s;
   t.settings.substep = s.substep;
@@ -613,7 +614,8 @@ CaseError transient_error(const ContactCase& c, const SettingError& e) {
       what = fmt::format("{} s breaks the CFL condition of the {} scheme (V dt/dx = {:.9g} > 1 at the largest "
                          "speed V = {} m/s, dx = {:.6g} m); the largest allowed dt_s is {:.6g} s (or set "
                          "substep: true)",
-                         number(cfl->dt_s), c.transient->scheme, vmax * cfl->dt_s / dx, number(vmax), dx, dt_max);
+                         number(cfl->dt_s), to_string(c.transient->scheme), vmax * cfl->dt_s / dx, number(vmax), dx,
+                         dt_max);
     }
     return key_error(c, key, std::string(key) + ": " + what);
   }

@@ -33,13 +33,11 @@
 #include "lib/io/key_locations.h"
 #include "lib/patch.h"
 #include "lib/normal/profile.h"
+#include "lib/tangential/satran.h"
+#include "lib/tangential/tangential.h"
 
 namespace contact {
 
-// the tangential and transient inputs this reader builds (lib/tangential/tangential.h, satran.h): a
-// caller that builds them includes those headers; the case itself needs only their names
-struct Creepages;
-struct TransientCase;
 
 struct BodySection {                  // bodies.body1 / bodies.body2
   double Rx_m = kFlat, Ry_m = kFlat;  // required (Ry_m: only without profiles:); .inf for flat, negative for concave
@@ -73,14 +71,16 @@ struct ProfilesSection {
   Profiles profiles;          // read or generated when the case is read
   bool heathcote_slip = true;  // the strips' creepage offset from the rolling radii across the profiles
 };
+// The choices are read once into their enums (named by their to_string/parse functions, which the messages
+// and the reports share); the solvers take them from here (lib/model/contact_model.h, lib/normal/normal.h).
 struct SolverSection {
-  std::string normal = "auto";            // auto | hertz | semi-hertz | halfspace
-  // relaxed (the default, kDefaultTangentialScheme: lib/tangential/relaxed.h) | consistent | classic | exact
-  std::string tangential = "relaxed";
+  NormalChoice normal = NormalChoice::Auto;  // auto | hertz | semi-hertz | halfspace
+  // relaxed (the default: lib/tangential/relaxed.h) | consistent | classic | exact
+  TangentialScheme tangential = kDefaultTangentialScheme;
   int nx = 80, ny = 80;
 };
 struct TransientSection {  // the 'transient' command's run (lib/tangential/satran.h)
-  std::string scheme = "shift";     // shift | upwind | lax-friedrichs
+  TransientScheme scheme = TransientScheme::Shift;  // shift | upwind | lax-friedrichs
   double t_end_s = 0;               // required, > 0
   double dt_s = 0;                  // upwind, lax-friedrichs: the step; shift: the longest step (0 = no limit)
   bool substep = false;             // split a step that breaks CFL <= 1 instead of refusing it

@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 
+#include "lib/io/enum_names.h"
 #include "lib/numeric.h"
 
 namespace contact {
@@ -123,24 +125,20 @@ int mirrored_from_scratch(const ContactPatch& patch) {
   return ny - ny / 2;
 }
 
+// solver.tangential's names (lib/io/enum_names.h), in the order messages list them
+constexpr EnumTable<TangentialScheme, 4> kTangentialSchemeNames = {{{TangentialScheme::Consistent, "consistent"},
+                                                                    {TangentialScheme::Classic, "classic"},
+                                                                    {TangentialScheme::Exact, "exact"},
+                                                                    {TangentialScheme::Relaxed, "relaxed"}}};
 }  // namespace
 
-std::string to_string(TangentialScheme scheme) {
-  switch (scheme) {
-    case TangentialScheme::Classic: return "classic";
-    case TangentialScheme::Consistent: return "consistent";
-    case TangentialScheme::Exact: return "exact";
-    case TangentialScheme::Relaxed: return "relaxed";
-  }
-  return "unknown";
-}
+std::string to_string(TangentialScheme scheme) { return enum_name(kTangentialSchemeNames, scheme); }
 
 TangentialScheme parse_tangential_scheme(const std::string& name) {
-  if (name == "consistent") return TangentialScheme::Consistent;
-  if (name == "classic") return TangentialScheme::Classic;
-  if (name == "exact") return TangentialScheme::Exact;
-  if (name == "relaxed") return TangentialScheme::Relaxed;
-  throw std::invalid_argument("unknown tangential scheme '" + name + "' (valid: consistent, classic, exact, relaxed)");
+  if (const std::optional<TangentialScheme> scheme = enum_from_name(kTangentialSchemeNames, name)) return *scheme;
+  std::string valid;
+  for (const auto& [value, n] : kTangentialSchemeNames) valid += (valid.empty() ? "" : ", ") + std::string(n);
+  throw std::invalid_argument("unknown tangential scheme '" + name + "' (valid: " + valid + ")");
 }
 
 }  // namespace contact

@@ -44,18 +44,19 @@ struct TangentialProblem {
 TangentialProblem make_tangential_problem(const ContactPatch& patch, const ElasticPair& pair,
                                           const Creepages& creepages, double mu, double speed_m_per_s);
 
-// Discretisations of the strip march.
+// The tangential models a case chooses (solver.tangential); lib/model/contact_model.h turns the choice into
+// the model's solves, in one place (a new model: a value here, its row there, its implementation and tests).
 //   Classic:    Kalker's FASTSIM as published, on the Cartesian cell centres (for comparison).
 //   Consistent: node values at the cell edges and the exact strip ends; within each cell the stick
 //               line is integrated exactly and its crossing with the semi-elliptic traction bound is
 //               located exactly; the dissipated power is -integral(tau . s) of that reconstruction,
 //               so the discrete energy balance of docs/physics.md §4 holds to rounding, strip by strip.
+//   (Classic and Consistent are the discretisations of the strip march, solve_steady's and Satran's.)
 //   Exact:      not a scheme of the simplified theory: Kalker's exact theory on the half-space
-//               (lib/tangential/exact.h), which the commands call in its place; solve_steady and
-//               satran_step do not take it.
+//               (lib/tangential/exact.h); solve_steady and satran_step do not take it.
 //   Relaxed:    the consistent scheme wrapped to match the exact theory (lib/tangential/relaxed.h: creepages
 //               relaxed over the rolled distance, calibrated creepage factors, power scaled to the creep
-//               forces' work); the commands call it in solve_steady's place, which does not take it.
+//               forces' work); solve_steady does not take it.
 enum class TangentialScheme { Classic, Consistent, Exact, Relaxed };
 
 // the scheme of a case without solver.tangential: the relaxed model, matched to the exact theory

@@ -20,7 +20,7 @@ struct CamBenchLife {
 inline CamBenchLife cam_bench_life(const cam::CamLifeSetup& setup) {
   CamBenchLife b;
   b.model = setup.life;
-  b.model.stepping.method = "fixed-depth";
+  b.model.stepping.method = wear::IntegratorOptions::Method::FixedDepth;
   b.model.stepping.max_depth_step_m = 1e-6;
   b.model.scheme = wear::IntegratorOptions::Scheme::Euler;
   b.model.snapshots_revolutions.clear();

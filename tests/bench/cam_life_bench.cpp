@@ -104,7 +104,7 @@ int main(int argc, char** argv) {
       spec.revolutions = 4e9;
       spec.max_depth_m = 1e-3;
       spec.max_lift_loss_m = 0;
-      spec.stepping.method = "fixed-revolutions";
+      spec.stepping.method = wear::IntegratorOptions::Method::FixedStep;
       spec.stepping.step_revolutions = 4e9 / steps;
       spec.skip_stride = stride > 0 ? stride : std::stoi(argv[5]);
       spec.skip_power_rtol = std::stod(argv[6]);

@@ -1,5 +1,5 @@
 // The time of one steady contact solve in one process, as a contact sweep runs it per case
-// (solve_contact_case of lib/case_run.h, fields as the case asks): the "one solve" that docs/sweeps.md's
+// (solve_contact_case of lib/io/case_run.h, fields as the case asks): the "one solve" that docs/sweeps.md's
 // per-case overhead leaves out. Median over `passes` passes of `reps` solves each.
 //   contact_case_time CASE.yaml [reps = 2000] [passes = 9]
 #include <algorithm>
@@ -8,7 +8,7 @@
 #include <cstdlib>
 #include <vector>
 
-#include "lib/case_run.h"
+#include "lib/io/case_run.h"
 
 int main(int argc, char** argv) {
   if (argc < 2) {

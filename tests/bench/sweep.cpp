@@ -605,7 +605,7 @@ void skips_study(const Options& o, std::vector<Row>& rows) {
     const wear::WearCase c = wear::read_wear_case(kSource + "/cases/paper-wear.yaml");
     const wear::WearModel m = wear::make_wear_model(c);
     wear::WearModel semi = m;
-    semi.semi_hertz_always = true;
+    semi.normal_choice = contact::NormalChoice::SemiHertz;
     auto rate = [&](const wear::WearModel& model) {
       wear::WearCache cache;
       return wear::wear_rate(model, wear::initial_state(model), cache);

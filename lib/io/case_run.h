@@ -1,5 +1,6 @@
 // The work of `rollwear contact` and `rollwear transient` on a case that is read, without the files and
-// the printing: shared by the command line (app/main.cpp), the sweeps (wear/sweep.cpp) and the Python bindings (python/).
+// the printing: shared by the command line (app/main.cpp), the sweeps (wear/sweep.cpp) and the Python bindings
+// (python/). The case's tangential model is solved by lib/model/contact_model.h.
 #pragma once
 
 #include <string>
@@ -20,8 +21,8 @@ struct ContactRun {
   std::string exact_solve;  // scheme Exact: the exact solve's status message (problem.C and L are nan then)
 };
 
-// validate_steady, the normal solve (solve_normal_of), then solve_steady with the case's scheme, or Kalker's
-// exact theory for solver.tangential exact (SolverError when it does not converge). `fields`: the per-cell
+// validate_steady, the normal solve (solve_normal_of), then the steady tangential solve of the case's model
+// (solve_tangential_steady; SolverError when the exact theory's does not converge). `fields`: the per-cell
 // fields computed (else left empty). Throws CaseError for bad input, SolverError or NormalSolveError for a
 // solver's failure.
 ContactRun solve_contact_case(const ContactCase& c, bool fields);
@@ -29,9 +30,9 @@ ContactRun solve_contact_case(const ContactCase& c, bool fields);
 // the patch with its strips at the profiles' lateral positions (strips.csv's y_m, as `rollwear contact` writes it)
 ContactPatch in_profile_coordinates(const NormalSolution& normal);
 
-// The transient run of t (transient_case_of(c)): Satran, or Kalker's exact theory for solver.tangential
-// exact. Settings the run refuses are a CaseError at the key's line (transient_error); any other
-// std::invalid_argument from inside the solver, on settings that passed, is its failure (SolverError).
+// The transient run of t (transient_case_of(c)) with the case's model (run_tangential_transient). Settings the
+// run refuses are a CaseError at the key's line (transient_error); any other std::invalid_argument from inside
+// the solver, on settings that passed, is its failure (SolverError).
 TransientResult run_transient_case(const ContactCase& c, const TransientCase& t, const StepObserver& observe);
 
 }  // namespace contact

@@ -1,0 +1,50 @@
+#include "lib/io/case_run.h"
+
+#include <stdexcept>
+#include <string>
+
+#include <spdlog/spdlog.h>
+
+#include "lib/io/errors.h"
+#include "lib/model/contact_model.h"
+
+namespace contact {
+
+ContactRun solve_contact_case(const ContactCase& c, bool fields) {
+  validate_steady(c);  // constants only, no inertia
+  ContactRun r;
+  r.scheme = c.solver.tangential;
+
+  // normal problem, then the steady tangential problem on its patch with the case's model (lib/model/)
+  r.normal = solve_normal_of(c);
+  const ContactPatch& patch = r.normal.patch;
+  const TangentialProblem problem =
+      make_tangential_problem(patch, materials_of(c), creepages_of(c), c.friction.mu, speed_of(c));
+  SteadyModelSolution s = solve_tangential_steady(r.scheme, patch, materials_of(c), problem, fields);
+  if (!s.status.converged()) throw SolverError("exact steady solve: " + s.status.message);
+  if (!s.status.message.empty()) {  // an iterative model's solve (the exact theory's)
+    spdlog::info("exact steady solve: {}", s.status.message);
+    r.exact_solve = s.status.message;
+  }
+  r.problem = s.problem;
+  r.solution = std::move(s.solution);
+  return r;
+}
+
+ContactPatch in_profile_coordinates(const NormalSolution& normal) {
+  ContactPatch p = normal.patch;
+  p.grid.y_m += normal.grid_y0_m;
+  return p;
+}
+
+TransientResult run_transient_case(const ContactCase& c, const TransientCase& t, const StepObserver& observe) {
+  try {
+    return run_tangential_transient(c.solver.tangential, t, observe);
+  } catch (const SettingError& e) {  // the settings refused: the key (data) and its line
+    throw transient_error(c, e);
+  } catch (const std::invalid_argument& e) {  // inside the solver, on settings that passed: its failure
+    throw SolverError(std::string("transient: ") + e.what());
+  }
+}
+
+}  // namespace contact
