@@ -1,5 +1,5 @@
 // The work of `rollwear contact` and `rollwear transient` on a case that is read, without the files and
-// the printing: shared by the command line (app/main.cpp), the sweeps (session/sweep.cpp) and the Python bindings (python/).
+// the printing: shared by the command line (app/), the sweeps (session/sweep.cpp) and the Python bindings (python/).
 #pragma once
 
 #include <string>
