@@ -1,15 +1,11 @@
-// `rollwear run` on a cam case (session/life_run.h).
+// `rollwear run` on a cam case, and the choice between a cam and a wear case (session/life_run.h).
 #include "session/life_run.h"
 
-#include <signal.h>
-#include <unistd.h>
-
 #include <algorithm>
-#include <cerrno>
 #include <chrono>
 #include <cmath>
-#include <cstdlib>
 #include <ctime>
+#include <memory>
 #include <filesystem>
 #include <fstream>
 #include <regex>
