@@ -94,9 +94,8 @@ int run_sweep_command(const SweepOptions& opt) {
   const session::Sweep s = session::read_sweep(opt.sweep_path);
   session::SweepRunOptions o;
   parse_shard(opt.shard, o.shard_k, o.shard_n);
-  o.output_directory = !opt.output_directory.empty() ? std::filesystem::path(opt.output_directory)
-                       : !s.output_directory.empty() ? std::filesystem::path(s.output_directory)
-                                                     : std::filesystem::path("out") / std::filesystem::path(opt.sweep_path).stem();
+  o.output_directory = session::output_directory(opt.output_directory, s.output_directory,
+                                                std::filesystem::path(opt.sweep_path).stem().string());
   o.threads = opt.threads > 0 ? opt.threads : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
 #ifdef ROLLWEAR_WITH_MPI
   // under mpirun: rank 0 runs the sweep and deals its cases to the other ranks (session/sweep_mpi.h)

@@ -36,6 +36,7 @@
 #include "lib/io/errors.h"
 #include "lib/normal/normal.h"
 #include "lib/normal/semi_hertz.h"
+#include "session/output_folder.h"
 #include "session/sweep.h"
 #include "session/wear_life_run.h"
 #include "wear/wear_case.h"
@@ -509,9 +510,8 @@ std::string sweep_run(const std::string& path, const std::string& output_directo
                                std::to_string(shard_n));
     o.shard_k = shard_k;
     o.shard_n = shard_n;
-    o.output_directory = !output_directory.empty() ? std::filesystem::path(output_directory)
-                         : !s.output_directory.empty() ? std::filesystem::path(s.output_directory)
-                                                       : std::filesystem::path("out") / std::filesystem::path(path).stem();
+    o.output_directory = session::output_directory(output_directory, s.output_directory,
+                                                  std::filesystem::path(path).stem().string());
     dir = o.output_directory.string();
     o.threads = threads > 0 ? threads : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
     o.progress_interval_s = 0.05;

@@ -11,7 +11,8 @@
 
 namespace session {
 
-// -o (option), else the case's output.directory (case_directory), else out/<case name>
+// -o (option), else the case's (or sweep's) output.directory (case_directory), else out/<case name> (a sweep:
+// out/<sweep file stem>)
 std::filesystem::path output_directory(const std::string& option, const std::string& case_directory,
                                        const std::string& case_name);
 
