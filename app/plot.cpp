@@ -32,7 +32,7 @@
 #include "lib/io/csv.h"
 #include "lib/io/csv_reader.h"
 #include "lib/io/errors.h"
-#include "wear/sweep_summary.h"
+#include "session/sweep_summary.h"
 #include "wear/wear_loop.h"
 #include "lib/numeric.h"
 
@@ -740,7 +740,7 @@ std::string distribution_figure(const SweepOutput& s, double divisor, const std:
   std::vector<double> sorted;
   for (const SweepCase& c : s.cases) lives.emplace_back(c.life, c.censored), sorted.push_back(c.life);
   std::sort(sorted.begin(), sorted.end());
-  const std::vector<wear::KaplanMeierStep> km = wear::kaplan_meier(lives);
+  const std::vector<session::KaplanMeierStep> km = session::kaplan_meier(lives);
   std::string out = "$empirical << EOD\n";
   for (std::size_t i = 0; i < sorted.size(); ++i) {
     put(out, sorted[i] / divisor);
@@ -749,7 +749,7 @@ std::string distribution_figure(const SweepOutput& s, double divisor, const std:
     out += '\n';
   }
   out += "EOD\n$km << EOD\n";
-  for (const wear::KaplanMeierStep& k : km) {  // a vertical jump at each failure
+  for (const session::KaplanMeierStep& k : km) {  // a vertical jump at each failure
     const double before = &k == &km.front() ? 0.0 : (&k - 1)->failed_fraction;
     for (const double f : {before, k.failed_fraction}) {
       put(out, k.life / divisor);
@@ -770,7 +770,7 @@ std::string distribution_figure(const SweepOutput& s, double divisor, const std:
     if (!is_censored) continue;
     ++censored;
     double f = 0;
-    for (const wear::KaplanMeierStep& k : km)
+    for (const session::KaplanMeierStep& k : km)
       if (k.life <= life) f = k.failed_fraction;
     put(out, life / divisor);
     out += ' ';
@@ -817,7 +817,7 @@ std::vector<fs::path> draw_sweep(const SweepOutput& s, const fs::path& plots, st
   return render(script, pictures, plots, err);
 }
 
-// ---- a cam's life (rollwear run on a cam case, app/cam_run.h) --------------------------------------------
+// ---- a cam's life (rollwear run on a cam case, session/cam_life_run.h) --------------------------------------------
 
 // the folder of a cam's life: life.csv and dissipation.csv, which a wear loop's run does not write
 bool is_cam_output(const fs::path& dir) {

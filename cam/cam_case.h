@@ -33,7 +33,7 @@
 #include <string>
 
 #include "cam/cam_error.h"
-#include "cam/cam_run.h"
+#include "cam/periodic_revolution.h"
 #include "cam/cam_wear.h"
 #include "cam/revolution.h"
 #include "lib/io/errors.h"

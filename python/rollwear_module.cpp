@@ -2,9 +2,9 @@
 // python/rollwear/__init__.py wraps. One translation unit, so that pybind11's templates compile once.
 //
 // - contact, transient, run: one case (a file, or a document's text from a dict), the work of the commands
-//   `rollwear contact`, `transient` and `run` (lib/io/case_run.h, wear/wear_loop.h) without their files; the
+//   `rollwear contact`, `transient` and `run` (lib/io/case_run.h, session/wear_life_run.h) without their files; the
 //   results come back as dicts of NumPy arrays named as the commands' CSV columns.
-// - sweep: `rollwear sweep` (wear/sweep.h), writing its folder as the command does.
+// - sweep: `rollwear sweep` (session/sweep.h), writing its folder as the command does.
 // - Errors by type (lib/io/errors.h), never by message: CaseError -> InputError (file, line, column, key from
 //   CaseError::location), SolverError and the solvers' own failures -> SolverError, anything else -> Error.
 // - The GIL is released while C++ runs; every ~50 ms a hook (the transient's step observer, the wear loop's
@@ -36,7 +36,9 @@
 #include "lib/io/errors.h"
 #include "lib/normal/normal.h"
 #include "lib/normal/semi_hertz.h"
-#include "wear/sweep.h"
+#include "session/output_folder.h"
+#include "session/sweep.h"
+#include "session/wear_life_run.h"
 #include "wear/wear_case.h"
 #include "wear/wear_loop.h"
 #include "wear/wear_output.h"
@@ -408,32 +410,27 @@ py::dict run_result(const CaseSource& source) {
     m.emplace(wear::make_wear_model(*c));
     hours_per_rev = wear::hours_per_revolution(*m);
     wear::WearCache cache;
-    wear::LifeStart start;
-    start.state = wear::initial_state(*m);
-    const auto row = [&](long step, double N, const Eigen::VectorXd& h, const wear::ContactReport& k, double dN,
-                         double error, long rejected, long rhs) {
-      rows.push_back({static_cast<double>(step), N, N * hours_per_rev, wear::max_depth_m(*m, h),
+    // the life as rollwear run drives it (session/wear_life_run.h), its rows kept as numbers
+    session::WearLifeObserver observer;
+    observer.on_row = [&](const wear::LifeStep& s) {
+      const Eigen::VectorXd& h = *s.state;
+      const wear::ContactReport& k = s.contact;
+      rows.push_back({static_cast<double>(s.step), s.N, s.N * hours_per_rev, wear::max_depth_m(*m, h),
                       wear::worn_volume_m3(*m, h, 1) + wear::worn_volume_m3(*m, h, 2), wear::dissipated_energy_J(*m, h),
-                      k.a_m, k.b_m, k.p0_Pa, k.Fx_N, k.power_W, dN, error, static_cast<double>(rejected),
-                      static_cast<double>(rhs)});
+                      k.a_m, k.b_m, k.p0_Pa, k.Fx_N, k.power_W, s.info.step, s.info.error_estimate,
+                      static_cast<double>(s.info.rejected), static_cast<double>(s.info.rhs_evals)});
     };
-    row(0, 0, start.state, wear::wear_rate(*m, start.state, cache).contact, 0, 0, 0, 0);
-    start.counters = cache.counters;
-    snapshot_N.push_back(0);
-    snapshot_state.push_back(start.state);
-    wear::LifeHooks hooks;
-    hooks.on_step = [&](const wear::LifeStep& s) {
-      row(s.step, s.N, *s.state, s.contact, s.info.step, s.info.error_estimate, s.info.rejected, s.info.rhs_evals);
+    observer.on_step = [&](const wear::LifeStep&) {
       return !signals.interrupted();  // false stops the life (LifeEnd::Stopped)
     };
-    hooks.on_snapshot = [&](double N, const Eigen::VectorXd& state) {
+    observer.on_snapshot = [&](double N, const Eigen::VectorXd& state) {
       snapshot_N.push_back(N);
       snapshot_state.push_back(state);
     };
-    life = wear::run_life(*m, *c, start, hooks, cache);
-    if (life.N > rows.back()[1])  // a limit located within a step: its state is the last row
-      row(life.counters.steps, life.N, life.state, life.contact, life.N - rows.back()[1], 0, life.counters.rejected,
-          life.counters.rhs_evals);
+    const wear::LifeStart start = session::fresh_wear_start(*m, cache, observer);
+    snapshot_N.push_back(0);
+    snapshot_state.push_back(start.state);
+    life = session::drive_wear_life(*m, *c, start, cache, observer);
     snapshot_N.push_back(life.N);
     snapshot_state.push_back(life.state);
   }
@@ -506,22 +503,21 @@ std::string sweep_run(const std::string& path, const std::string& output_directo
   std::string dir;
   try {
     py::gil_scoped_release release;
-    const wear::Sweep s = wear::read_sweep(path);
-    wear::SweepRunOptions o;
+    const session::Sweep s = session::read_sweep(path);
+    session::SweepRunOptions o;
     if (!(shard_n >= 1 && shard_k >= 1 && shard_k <= shard_n))
       throw contact::CaseError("sweep: shard K/N needs 1 <= K <= N, got " + std::to_string(shard_k) + "/" +
                                std::to_string(shard_n));
     o.shard_k = shard_k;
     o.shard_n = shard_n;
-    o.output_directory = !output_directory.empty() ? std::filesystem::path(output_directory)
-                         : !s.output_directory.empty() ? std::filesystem::path(s.output_directory)
-                                                       : std::filesystem::path("out") / std::filesystem::path(path).stem();
+    o.output_directory = session::output_directory(output_directory, s.output_directory,
+                                                  std::filesystem::path(path).stem().string());
     dir = o.output_directory.string();
     o.threads = threads > 0 ? threads : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
     o.progress_interval_s = 0.05;
     o.cancelled = [&] { return signals.interrupted(); };
-    wear::run_sweep(s, o);
-  } catch (const wear::SweepCancelled&) {
+    session::run_sweep(s, o);
+  } catch (const session::SweepCancelled&) {
     signals.rethrow();
     throw;
   }

@@ -1,5 +1,5 @@
-// `rollwear run` on a cam case as a user meets it (app/cam_run.h, docs/cam-follower.md §13): the output
-// folder held by one run at a time (app/output_folder.h, as a wear case's run) and a life stopped by Ctrl-C
+// `rollwear run` on a cam case as a user meets it (session/life_run.h, docs/cam-follower.md §13): the output
+// folder held by one run at a time (session/output_folder.h, as a wear case's run) and a life stopped by Ctrl-C
 // or SIGTERM saved at its last step, with the --resume command printed.
 #include <gtest/gtest.h>
 

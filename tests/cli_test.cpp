@@ -1,4 +1,4 @@
-// The output files (lib/io/csv.h) and the command line (app/main.cpp, run as a process).
+// The output files (lib/io/csv.h) and the command line (app/, run as a process).
 #include "lib/io/csv.h"
 
 #include <gtest/gtest.h>

@@ -14,7 +14,7 @@
 #include "lib/io/errors.h"
 #include "tests/log_capture.h"
 #include "tests/temp_dir.h"
-#include "wear/sweep.h"
+#include "session/sweep.h"
 #include "wear/wear_loop.h"
 
 namespace wear {
@@ -128,8 +128,8 @@ TEST_F(Collective, SweepCaseIsTheSameLife) {
   std::string text = paper_wear_with(collective);
   text.replace(text.find("max_depth_m: 1.0e-4"), 19, "max_depth_m: 2.0e-5");
   const fs::path path = write("c.yaml", text);
-  const CaseOutcome row = run_case(text, 0, {}, dir_ / "case_0000");
-  ASSERT_EQ(row.status, CaseStatus::Ok) << row.message;
+  const session::CaseOutcome row = session::run_case(text, 0, {}, dir_ / "case_0000");
+  ASSERT_EQ(row.status, session::CaseStatus::Ok) << row.message;
   const LifeResult life = life_of(read_wear_case(path.string()), 2);
   EXPECT_EQ(row.ended_by, life.ended_by);
   EXPECT_EQ(row.life_revolutions, life.N);  // to the bit

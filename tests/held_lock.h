@@ -1,5 +1,5 @@
 // The test process playing another rollwear run in an output folder: it holds DIR/.rollwear.lock (flock)
-// with its PID in the file, as app/output_folder.h's OutputLock does, until release() or the end of scope.
+// with its PID in the file, as session/output_folder.h's OutputLock does, until release() or the end of scope.
 #pragma once
 
 #include <fcntl.h>

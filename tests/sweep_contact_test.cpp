@@ -1,4 +1,4 @@
-// A contact sweep (wear/sweep.h, docs/sweeps.md "Contact sweeps"): a base case without wear: runs the steady
+// A contact sweep (session/sweep.h, docs/sweeps.md "Contact sweeps"): a base case without wear: runs the steady
 // contact of `rollwear contact` per case in the sweep's process. Its table against the command's own
 // summary.csv for the same case (the reference: the command), a resumed run (case folders and the table
 // alone) against an uninterrupted one, shards merged, and bad keys refused before any case runs.
@@ -16,12 +16,13 @@
 
 #include "lib/io/errors.h"
 #include "temp_dir.h"
-#include "wear/sweep.h"
+#include "session/sweep.h"
 
 namespace {
 
 namespace fs = std::filesystem;
 using namespace wear;
+using namespace session;
 
 std::string read_text(const fs::path& p) {
   std::ifstream in(p, std::ios::binary);

@@ -1,4 +1,4 @@
-// rollwear sweep (wear/sweep.h, docs/sweeps.md): the generator and inverse CDFs against reference values
+// rollwear sweep (session/sweep.h, docs/sweeps.md): the generator and inverse CDFs against reference values
 // and closed forms, the sweep file's grid and sampling, the validation of every case before any runs,
 // and the command: threads, shards merged and a resumed run all give the whole sweep's table to the bit.
 #include <gtest/gtest.h>
@@ -17,14 +17,15 @@
 
 #include "lib/io/errors.h"
 #include "temp_dir.h"
-#include "wear/sweep.h"
-#include "wear/sweep_summary.h"
+#include "session/sweep.h"
+#include "session/sweep_summary.h"
 
 namespace {
 
 namespace fs = std::filesystem;
 using rollwear_test::TempDirTest;
 using namespace wear;
+using namespace session;
 
 const fs::path kSource = ROLLWEAR_SOURCE_DIR;
 

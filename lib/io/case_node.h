@@ -1,5 +1,5 @@
 // A contact case read from a YAML document already parsed (a sweep's cases: the base case's document with
-// some keys replaced, read without writing and parsing its text again, wear/sweep.h). Kept out of
+// some keys replaced, read without writing and parsing its text again, session/sweep.h). Kept out of
 // lib/io/case.h so that the yaml-cpp node type stays out of that widely included header.
 #pragma once
 

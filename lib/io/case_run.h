@@ -1,5 +1,5 @@
 // The work of `rollwear contact` and `rollwear transient` on a case that is read, without the files and
-// the printing: shared by the command line (app/main.cpp), the sweeps (wear/sweep.cpp) and the Python bindings
+// the printing: shared by the command line (app/), the sweeps (session/sweep.cpp) and the Python bindings
 // (python/). The case's tangential model is solved by lib/model/contact_model.h.
 #pragma once
 

@@ -5,7 +5,7 @@
 #include <utility>
 #include <vector>
 
-namespace wear {
+namespace session {
 
 // The summary of a whole sweep's table (summary.txt), from results.csv's text and sweep.txt's:
 //   random sampling: the life's B10 and B50 (Kaplan-Meier: a life that reached wear.revolutions or
@@ -26,4 +26,4 @@ struct KaplanMeierStep {
 std::vector<KaplanMeierStep> kaplan_meier(std::vector<std::pair<double, bool>> lives);
 std::string sweep_summary(const std::string& results_csv, const std::string& sweep_txt);
 
-}  // namespace wear
+}  // namespace session

@@ -1,4 +1,4 @@
-#include "wear/sweep_summary.h"
+#include "session/sweep_summary.h"
 
 #include <algorithm>
 #include <cmath>
@@ -11,11 +11,13 @@
 #include <spdlog/fmt/fmt.h>
 
 #include "lib/io/number.h"
-#include "wear/sweep.h"
-#include "wear/sweep_random.h"
+#include "session/sweep.h"
+#include "session/sweep_random.h"
 #include "wear/wear_loop.h"
 
-namespace wear {
+namespace session {
+
+using namespace wear;  // the wear case, its model and its life
 
 using contact::round_trip;
 
@@ -87,7 +89,7 @@ std::string contact_summary(const std::string& results_csv) {
   std::string header;
   std::getline(table, header);
   const std::vector<std::string> head = split_fields(header, 1000);
-  constexpr std::size_t kOutputs = 9;  // a_m ... stick_fraction (wear/sweep.h ContactOutputs)
+  constexpr std::size_t kOutputs = 9;  // a_m ... stick_fraction (session/sweep.h ContactOutputs)
   if (head.size() < kOutputs + 3) throw std::invalid_argument("sweep_summary: not a contact sweep's results table");
   const std::size_t first = head.size() - kOutputs - 2;
   std::vector<double> lo(kOutputs, std::numeric_limits<double>::infinity()), hi(kOutputs, -std::numeric_limits<double>::infinity());
@@ -251,4 +253,4 @@ std::string sweep_summary(const std::string& results_csv, const std::string& swe
   return out;
 }
 
-}  // namespace wear
+}  // namespace session

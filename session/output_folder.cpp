@@ -1,5 +1,6 @@
-// The output folder's lock and the signals' clean-up (app/output_folder.h).
-#include "app/output_folder.h"
+// The output folder: its place, its lock, the signals' clean-up, stale temporaries, the size estimate
+// (session/output_folder.h).
+#include "session/output_folder.h"
 
 #include <fcntl.h>
 #include <sys/file.h>
@@ -13,12 +14,74 @@
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
+#include <regex>
 #include <stdexcept>
 
 #include <spdlog/fmt/fmt.h>
 #include <spdlog/spdlog.h>
 
-namespace app {
+namespace session {
+
+std::filesystem::path output_directory(const std::string& option, const std::string& case_directory,
+                                       const std::string& case_name) {
+  if (!option.empty()) return option;
+  if (!case_directory.empty()) return case_directory;
+  return std::filesystem::path("out") / case_name;
+}
+
+namespace {
+
+// The program's own file names in an output folder (every command's, a sweep's case folders included): what
+// it may delete there, and nothing else.
+const std::regex& own_output_name() {
+  static const std::regex kNames(
+      "(summary\\.csv|strips\\.csv|fields\\.csv|timeseries\\.csv|strip_power\\.csv|strip_energy\\.csv|"
+      "snapshot_[0-9]+\\.csv|snapshot_[0-9]{4}_body[12]\\.csv|checkpoint\\.txt|report\\.txt|"
+      "revolution\\.csv|dissipation\\.csv|life\\.csv|(wear_map|roller_wear)_[0-9]{4}\\.csv|"
+      "case\\.yaml|row\\.csv|results\\.csv|sweep\\.txt|summary\\.txt|\\.validate\\.yaml|finished\\.csv)");
+  return kNames;
+}
+
+}  // namespace
+
+void remove_stale_temporaries(const std::filesystem::path& dir) {
+  static const std::regex kTemporary("(.+)\\.tmp\\.([0-9]{1,10})");
+  for (const std::filesystem::path& d : {dir, dir / "snapshots"}) {
+    std::error_code ec;
+    for (const auto& entry : std::filesystem::directory_iterator(d, ec)) {
+      const std::string name = entry.path().filename().string();
+      std::smatch m;
+      if (!std::regex_match(name, m, kTemporary) || !std::regex_match(m[1].str(), own_output_name())) continue;
+      const long pid = std::strtol(m[2].str().c_str(), nullptr, 10);
+      if (pid > 0 && pid != ::getpid() && ::kill(static_cast<pid_t>(pid), 0) != 0 && errno == ESRCH) {
+        std::filesystem::remove(entry.path(), ec);
+        spdlog::info("removed {}, the temporary file of a killed run (PID {})", entry.path().string(), pid);
+      }
+    }
+  }
+}
+
+void check_transient_output_size(const contact::ContactCase& c, const contact::TransientCase& t, bool fields,
+                                 const std::filesystem::path& dir, bool force) {
+  const contact::TransientOutputEstimate estimate = contact::estimate_transient_output(t, fields);
+  std::filesystem::path existing = std::filesystem::absolute(dir);
+  while (!std::filesystem::exists(existing) && existing.has_parent_path() && existing != existing.parent_path())
+    existing = existing.parent_path();
+  std::error_code space_ec;
+  const double free_bytes = static_cast<double>(std::filesystem::space(existing, space_ec).available);
+  const bool over_max = estimate.bytes > c.output.max_bytes;
+  const bool over_disk = !space_ec && estimate.bytes > free_bytes / 2;
+  spdlog::debug("transient: about {:.3g} steps, {:.3g} MB of output estimated", estimate.steps, estimate.bytes / 1e6);
+  if ((over_max || over_disk) && !force)
+    throw contact::CaseError(fmt::format(
+        "{}transient.t_end_s, transient.dt_s, solver.nx, solver.ny, output.max_bytes: the run would write about {:.3g} "
+        "bytes ({:.3g} GB: about {:.3g} steps of {} strips), more than {}; shorten t_end_s, coarsen the grid, "
+        "raise output.max_bytes, or run with --force",
+        contact::where(c, "transient.t_end_s"), estimate.bytes, estimate.bytes / 1e9, estimate.steps,
+        contact::transient_grid(t).y_m.size(),
+        over_max ? fmt::format("output.max_bytes = {:.0f}", c.output.max_bytes)
+                 : fmt::format("half the free disk ({:.3g} bytes free in {})", free_bytes, existing.string())));
+}
 
 namespace interrupted {
 namespace {
@@ -162,4 +225,4 @@ std::string OutputLock::holder_pid() const {
   return pid.size() <= 20 && pid.find_first_not_of("0123456789") == std::string::npos ? pid : std::string();
 }
 
-}  // namespace app
+}  // namespace session

@@ -1,4 +1,4 @@
-#include "wear/sweep.h"
+#include "session/sweep.h"
 
 #include <fcntl.h>
 #include <signal.h>
@@ -39,10 +39,14 @@
 #include "wear/wear_case.h"
 #include "wear/wear_loop.h"
 #include "wear/wear_output.h"
-#include "wear/sweep_random.h"
-#include "wear/sweep_summary.h"
+#include "session/output_folder.h"
+#include "session/sweep_random.h"
+#include "session/sweep_summary.h"
+#include "session/wear_life_run.h"
 
-namespace wear {
+namespace session {
+
+using namespace wear;  // the wear case, its model and its life
 
 using contact::CaseError;
 using contact::YamlMap;
@@ -543,29 +547,6 @@ long row_index(const std::string& row) {
 
 // ---- running ----
 
-namespace {
-
-// temporaries (OWN_NAME.tmp.<pid>, lib/io/csv.h) a killed sweep left in dir and dir/snapshots, of processes
-// that no longer run; files of any other name stay
-void remove_stale_temporaries(const std::filesystem::path& dir) {
-  static const std::regex kTemporary(
-      "(case\\.yaml|row\\.csv|summary\\.csv|strips\\.csv|fields\\.csv|report\\.txt|snapshot_[0-9]{4}_body[12]\\.csv|results\\.csv|sweep\\.txt|"
-      "summary\\.txt|\\.validate\\.yaml|finished\\.csv)\\.tmp\\.([0-9]{1,10})");
-  for (const std::filesystem::path& d : {dir, dir / "snapshots"}) {
-    std::error_code ec;
-    for (const auto& entry : std::filesystem::directory_iterator(d, ec)) {
-      std::smatch m;
-      const std::string name = entry.path().filename().string();
-      if (!std::regex_match(name, m, kTemporary)) continue;
-      const long pid = std::strtol(m[2].str().c_str(), nullptr, 10);
-      if (pid > 0 && pid != ::getpid() && ::kill(static_cast<pid_t>(pid), 0) != 0 && errno == ESRCH)
-        std::filesystem::remove(entry.path(), ec);
-    }
-  }
-}
-
-}  // namespace
-
 CaseOutcome run_case(const std::string& yaml_text, long index, const std::vector<double>& inputs,
                      const std::filesystem::path& dir) {
   CaseOutcome o;
@@ -582,13 +563,7 @@ CaseOutcome run_case(const std::string& yaml_text, long index, const std::vector
     const WearModel& m = model;
     const double hours_per_rev = hours_per_revolution(m);
     WearCache cache;
-    LifeStart start;
-    start.state = initial_state(m);
-    LifeStep s0;
-    s0.state = &start.state;
-    s0.contact = wear_rate(m, start.state, cache).contact;
-    start.counters = cache.counters;
-    std::string summary = wear_summary_header(m) + wear_summary_row(m, s0, hours_per_rev);
+    std::string summary = wear_summary_header(m);
     std::vector<contact::OutputFile> files;
     int snapshots = 0;
     const auto snapshot = [&](double N, const Eigen::VectorXd& state) {
@@ -597,29 +572,14 @@ CaseOutcome run_case(const std::string& yaml_text, long index, const std::vector
           files.push_back({dir / wear_snapshot_path(snapshots, body), wear_snapshot_csv(m, body, N, N * hours_per_rev, state)});
       ++snapshots;
     };
+    // the life as rollwear run drives it (session/wear_life_run.h), its files written at the end
+    WearLifeObserver observer;
+    observer.on_row = [&](const LifeStep& s) { summary += wear_summary_row(m, s, hours_per_rev); };
+    observer.on_snapshot = snapshot;
+    const LifeStart start = fresh_wear_start(m, cache, observer);
     snapshot(0, start.state);
-    double last_N = 0;
-    LifeHooks hooks;
-    hooks.on_step = [&](const LifeStep& s) {
-      summary += wear_summary_row(m, s, hours_per_rev);
-      last_N = s.N;
-      return true;
-    };
-    hooks.on_snapshot = snapshot;
     const auto t0 = std::chrono::steady_clock::now();
-    const LifeResult life = run_life(m, c, start, hooks, cache);
-    if (life.N > last_N) {  // a limit located within a step: its state is the last row (as rollwear run)
-      LifeStep end;
-      end.step = life.counters.steps;
-      end.N = life.N;
-      end.state = &life.state;
-      end.info.step = life.N - last_N;
-      end.info.rhs_evals = life.counters.rhs_evals;
-      end.info.rejected = life.counters.rejected;
-      end.counters = life.counters;
-      end.contact = life.contact;
-      summary += wear_summary_row(m, end, hours_per_rev);
-    }
+    const LifeResult life = drive_wear_life(m, c, start, cache, observer);
     snapshot(life.N, life.state);
     WearReport report;
     report.case_name = m.name;
@@ -988,4 +948,4 @@ std::string merge_results(const std::vector<std::filesystem::path>& dirs, std::s
   return out;
 }
 
-}  // namespace wear
+}  // namespace session

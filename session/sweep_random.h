@@ -1,4 +1,4 @@
-// The project's own random numbers for sweeps (wear/sweep.h, docs/sweeps.md): a uniform number keyed by
+// The project's own random numbers for sweeps (session/sweep.h, docs/sweeps.md): a uniform number keyed by
 // (seed, case, input), inverse CDFs written here in plain arithmetic and <cmath> (no std::*_distribution,
 // whose results differ between standard libraries), Iman-Conover's rank correlation and Spearman's rho.
 #pragma once
@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-namespace wear {
+namespace session {
 
 constexpr double kTwoPow53 = 9007199254740992.0;  // the uniform's resolution; the largest seed
 
@@ -43,4 +43,4 @@ void iman_conover(std::vector<std::vector<double>>& x, const std::vector<std::ve
 // Spearman's rank correlation of two equally long samples (ties ranked by their order)
 double spearman(const std::vector<double>& a, const std::vector<double>& b);
 
-}  // namespace wear
+}  // namespace session

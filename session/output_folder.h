@@ -1,12 +1,29 @@
-// The output folder of a command that writes one: one run at a time (OutputLock), and what a signal
-// (SIGINT, SIGTERM, SIGHUP) leaves there (interrupted::). Shared by the wear run (app/main.cpp) and the
-// cam run (app/cam_run.cpp), so that both hold the folder and end on a signal the same way.
+// The output folder of a command that writes one: where it is, one run at a time (OutputLock), what a signal
+// (SIGINT, SIGTERM, SIGHUP) leaves there (interrupted::), the temporaries of a killed run, and the size of a
+// transient run's output estimated before it starts. Shared by every command, so that each holds its folder
+// and ends on a signal the same way.
 #pragma once
 
 #include <filesystem>
 #include <string>
 
-namespace app {
+#include "lib/io/case.h"
+
+namespace session {
+
+// -o (option), else the case's (or sweep's) output.directory (case_directory), else out/<case name> (a sweep:
+// out/<sweep file stem>)
+std::filesystem::path output_directory(const std::string& option, const std::string& case_directory,
+                                       const std::string& case_name);
+
+// Temporary files a killed command left in dir and dir/snapshots: OWN_NAME.tmp.<pid> (lib/io/csv.h), OWN_NAME one
+// of the names the program writes, of a process that no longer runs: removed. Files of any other name stay.
+void remove_stale_temporaries(const std::filesystem::path& dir);
+
+// A transient run's output estimated before it runs (one step per dx rolled and per dt_s): CaseError naming
+// the keys when above output.max_bytes or half the free disk under dir, unless force.
+void check_transient_output_size(const contact::ContactCase& c, const contact::TransientCase& t, bool fields,
+                                 const std::filesystem::path& dir, bool force);
 
 // Temporary files of the streamed output, removed if the run is interrupted (SIGINT, SIGTERM, SIGHUP); the
 // handler only unlinks (async-signal-safe) and re-raises the signal. A message may go with them (the wear
@@ -49,4 +66,4 @@ class OutputLock {
   bool created_ = false;
 };
 
-}  // namespace app
+}  // namespace session

@@ -1,16 +1,11 @@
-// `rollwear run` on a cam case (app/cam_run.h).
-#include "app/cam_run.h"
-#include "app/output_folder.h"
-
-#include <signal.h>
-#include <unistd.h>
+// `rollwear run` on a cam case, and the choice between a cam and a wear case (session/life_run.h).
+#include "session/life_run.h"
 
 #include <algorithm>
-#include <cerrno>
 #include <chrono>
 #include <cmath>
-#include <cstdlib>
 #include <ctime>
+#include <memory>
 #include <filesystem>
 #include <fstream>
 #include <regex>
@@ -28,9 +23,11 @@
 #include "lib/io/errors.h"
 #include "lib/normal/profile.h"
 #include "lib/numeric.h"
+#include "session/life_folder.h"
+#include "session/output_folder.h"
 #include "wear/wear_output.h"
 
-namespace app {
+namespace session {
 
 namespace fs = std::filesystem;
 
@@ -46,16 +43,6 @@ bool is_cam_case(const std::string& path) {
 namespace {
 
 std::string snapshot_path(const char* what, int k) { return fmt::format("snapshots/{}_{:04d}.csv", what, k); }
-
-// the previous run's snapshot files (this command's naming only), and the folder if that leaves it empty
-void remove_previous_snapshots(const fs::path& dir) {
-  static const std::regex kName("(wear_map|roller_wear)_[0-9]{4}\\.csv");
-  std::error_code ec;
-  for (const auto& entry : fs::directory_iterator(dir / "snapshots", ec))
-    if (entry.is_regular_file() && std::regex_match(entry.path().filename().string(), kName))
-      fs::remove(entry.path(), ec);
-  if (fs::is_empty(dir / "snapshots", ec)) fs::remove(dir / "snapshots", ec);
-}
 
 // per angle step: the power and energy, where the contact sits on the cam (its polar angle and radius in the
 // cam's frame: the plot's outline of the cam), and the roller's periodic motion the life holds (its loads,
@@ -80,30 +67,6 @@ std::string dissipation_csv(const cam::Revolution& r, const cam::RevolutionDissi
 }
 
 double cpu_seconds() { return static_cast<double>(std::clock()) / CLOCKS_PER_SEC; }
-
-// The files this command writes in the folder (and snapshots/): what it may delete, nothing else.
-const std::regex& own_name() {
-  static const std::regex kNames(
-      "(revolution\\.csv|dissipation\\.csv|life\\.csv|report\\.txt|checkpoint\\.txt|"
-      "(wear_map|roller_wear)_[0-9]{4}\\.csv)");
-  return kNames;
-}
-
-// a killed run's temporaries (OWN_NAME.tmp.PID, lib/io/csv.h) whose process is gone
-void remove_stale_temporaries(const fs::path& dir) {
-  static const std::regex kTemporary("(.+)\\.tmp\\.([0-9]{1,10})");
-  for (const fs::path& d : {dir, dir / "snapshots"}) {
-    std::error_code ec;
-    for (const auto& entry : fs::directory_iterator(d, ec)) {
-      const std::string name = entry.path().filename().string();
-      std::smatch m;
-      if (!std::regex_match(name, m, kTemporary) || !std::regex_match(m[1].str(), own_name())) continue;
-      const long pid = std::strtol(m[2].str().c_str(), nullptr, 10);
-      if (pid > 0 && pid != ::getpid() && ::kill(static_cast<pid_t>(pid), 0) != 0 && errno == ESRCH)
-        fs::remove(entry.path(), ec);
-    }
-  }
-}
 
 // The case's fingerprint for its checkpoint: the case file's text (every key of the model, the wear and the
 // grid is in it; a cam case reads no other file), tagged so that a wear case's checkpoint never matches.
@@ -148,55 +111,10 @@ cam::CamLifeStart from_checkpoint(const wear::Checkpoint& c) {
   return s;
 }
 
-}  // namespace
-
-int run_cam_life_command(const std::string& case_path, const std::string& output_option, bool quiet, bool resume,
-                         bool restart) {
-  const double cpu0 = cpu_seconds();
-  const cam::CamCase c = cam::read_cam_case(case_path);
-  if (resume && restart) throw contact::CaseError("--resume and --restart exclude each other");
-  if (!c.wear) {
-    const auto it = c.locations.find("cam");
-    throw contact::CaseError((it != c.locations.end() ? it->second : case_path) +
-                             ": cam.wear: missing: `rollwear run` on a cam case needs the wear laws, revolutions and "
-                             "limits (docs/cam-follower.md §13); `rollwear cam` runs one revolution without them");
-  }
+// the unworn periodic revolution (kinematics, loads, the roller's motion, the dissipation), printed; nullptr
+// when the follower jumps (printed too: no life)
+std::unique_ptr<cam::CamLifeSetup> set_up_life(const cam::CamCase& c) {
   const cam::CamModel& m = c.model;
-  const fs::path dir = !output_option.empty()           ? fs::path(output_option)
-                       : !c.output_directory.empty()    ? fs::path(c.output_directory)
-                                                        : fs::path("out") / c.name;
-
-  const OutputLock lock(dir);  // one run in the folder at a time, as a wear case's (app/output_folder.h)
-
-  // where the life starts: a checkpoint (refused unless it is this case's), or the unworn state; checked
-  // before the revolution is set up, so that a refusal costs nothing
-  const fs::path checkpoint_path = dir / "checkpoint.txt", life_path = dir / "life.csv";
-  const std::uint64_t fingerprint = cam_case_fingerprint(case_path);
-  wear::Checkpoint cp;
-  if (resume) {
-    if (!fs::exists(checkpoint_path))
-      throw contact::CaseError(checkpoint_path.string() +
-                               ": no checkpoint to resume from (the run finished, or never passed its first step: run "
-                               "without --resume)");
-    cp = wear::read_checkpoint(checkpoint_path);
-    if (cp.case_hash != fingerprint)
-      throw contact::CaseError(checkpoint_path.string() + ": the checkpoint belongs to another case, or " + case_path +
-                               " changed since; run with --restart to start afresh");
-  } else if (fs::exists(checkpoint_path) && !restart) {
-    throw contact::CaseError(dir.string() + " holds an unfinished run (checkpoint.txt): continue it with --resume, "
-                             "or start afresh with --restart");
-  }
-
-  // a signal before the life's first accepted step ends the process at once (a resumed run's checkpoint stays)
-  const std::string resume_line = fmt::format(
-      "\nrollwear: interrupted; the run continues from its last checkpoint ({}) with: rollwear run {} -o {} --resume\n",
-      checkpoint_path.string(), case_path, dir.string());
-  interrupted::say_on_signal(resume ? resume_line
-                                    : fmt::format("\nrollwear: interrupted before the life's first step; nothing to "
-                                                  "resume: run rollwear run {} -o {}{} again\n", case_path, dir.string(),
-                                                  restart ? " --restart" : ""));
-
-  // the unworn periodic revolution: kinematics, loads, the roller's motion, the dissipation
   std::unique_ptr<cam::CamLifeSetup> setup;
   try {
     setup = cam::set_up_cam_life(c.name, m, *c.wear, cam::roller_dynamics_of(c.solver));
@@ -207,13 +125,10 @@ int run_cam_life_command(const std::string& case_path, const std::string& output
   if (r.status == cam::RevolutionStatus::Jump) {
     fmt::print("status: jump (the contact is lost around cam angle {:.6g} deg; no impact model): no life\n",
                r.jump_at_theta_rad * cam::kDegPerRad);
-    return contact::kExitFailure;
+    return nullptr;
   }
   const cam::PeriodicMotion& motion = setup->motion;
-  const cam::RevolutionDissipation& unworn_rev = setup->unworn;
-  const cam::CamLifeModel& life_model = setup->life;
-  const cam::DissipationOf producer = setup->producer();
-  const cam::DissipationTotals totals = cam::dissipation_totals(unworn_rev);
+  const cam::DissipationTotals totals = cam::dissipation_totals(setup->unworn);
   fmt::print("cam {}: {:.6g} rad/s, {} angle steps, cam circumference {:.6g} m\n", c.name, m.omega_rad_per_s,
              r.rows.size(), r.cam_circumference_m);
   fmt::print("roller: periodic after {} revolutions, sliding at {} of {} angle steps\n", motion.revolutions,
@@ -221,39 +136,82 @@ int run_cam_life_command(const std::string& case_path, const std::string& output
   fmt::print("dissipated per revolution {:.6g} J (mean {:.6g} W), peak {:.6g} W at cam angle {:.4g} deg\n",
              totals.energy_J, totals.energy_J * m.omega_rad_per_s / (2 * contact::kPi), totals.max_power_W,
              totals.max_power_theta_rad * cam::kDegPerRad);
+  return setup;
+}
 
-  fs::create_directories(dir / "snapshots");
-  remove_stale_temporaries(dir);
+// report.txt: the life and what ended it
+std::string cam_report_text(const cam::CamCase& c, const cam::CamLifeSetup& setup, const cam::CamLifeResult& life,
+                            bool resume, double cpu) {
+  const cam::CamModel& m = c.model;
+  const double hours = life.N * 2 * contact::kPi / m.omega_rad_per_s / 3600;
+  std::string report = fmt::format(
+      "case: {}\nlife: {:.6g} cam revolutions ({:.6g} h at {:.6g} rad/s)\nended by: {}\nwhy: {}\n"
+      "max depth: {:.6g} m\nmax lift loss: {:.6g} m at cam angle {:.4g} deg\n"
+      "worn volume: track {:.6g} m^3, roller {:.6g} m^3\ndissipated: {:.6g} J\n"
+      "steps: {} ({} rejected), evaluations of the wear rate: {}, revolutions solved: {}\n"
+      "worn revolutions: {} angle steps ({} interpolated by the skip), {} normal solves (the rest shared a contact), {} F(delta) and {} creep-law "
+      "evaluations, {} warm starts retried cold\nresumed: {}\ncpu: {:.3g} s\n",
+      c.name, life.N, hours, m.omega_rad_per_s, cam::to_string(life.ended_by), life.message, life.max_depth_m,
+      life.lift_loss.max_m, life.lift_loss.at_theta_rad * cam::kDegPerRad, life.cam_volume_m3, life.roller_volume_m3,
+      life.energy_J, life.steps, life.rejected, life.rhs_evals, life.revolutions_solved, setup.worn->stats().angles,
+      setup.worn->stats().interpolated_angles,
+      setup.worn->stats().contacts_solved, setup.worn->stats().approach_evaluations,
+      setup.worn->stats().creep_evaluations, setup.worn->stats().cold_retries, resume ? "true" : "false", cpu);
+  return report;
+}
+
+}  // namespace
+
+LifeRunEnd run_cam_life_in_folder(const LifeRunOptions& o) {
+  const double cpu0 = cpu_seconds();
+  const cam::CamCase c = cam::read_cam_case(o.case_path);
+  if (!c.wear) {
+    const auto it = c.locations.find("cam");
+    throw contact::CaseError((it != c.locations.end() ? it->second : o.case_path) +
+                             ": cam.wear: missing: `rollwear run` on a cam case needs the wear laws, revolutions and "
+                             "limits (docs/cam-follower.md §13); `rollwear cam` runs one revolution without them");
+  }
+  const fs::path dir = output_directory(o.output_directory, c.output_directory, c.name);
+
+  // one run in the folder at a time, as a wear case's; where the life starts (a checkpoint, refused unless it
+  // is this case's, or the unworn state) checked before the revolution is set up, so that a refusal costs nothing
+  const std::uint64_t fingerprint = cam_case_fingerprint(o.case_path);
+  const LifeFolder folder({dir, o.case_path, "life.csv", fingerprint, o.resume, o.restart});
+
+  // a signal before the life's first accepted step ends the process at once (a resumed run's checkpoint stays)
+  interrupted::say_on_signal(o.resume ? folder.resume_line()
+                                      : fmt::format("\nrollwear: interrupted before the life's first step; nothing to "
+                                                    "resume: run rollwear run {} -o {}{} again\n", o.case_path,
+                                                    dir.string(), o.restart ? " --restart" : ""));
+  const std::unique_ptr<cam::CamLifeSetup> setup = set_up_life(c);
+  if (!setup) return LifeRunEnd::Failed;
+  const cam::CamLifeModel& life_model = setup->life;
+
   std::string life_csv;
   cam::CamLifeStart start;
-  if (resume) {
-    start = from_checkpoint(cp);
-    life_csv = wear::summary_up_to(life_path, start.steps);  // rows after the checkpoint are written again
+  if (o.resume) {
+    start = from_checkpoint(folder.checkpoint());
+    life_csv = folder.table_up_to(start.steps);  // rows after the checkpoint are written again
     spdlog::info("run: resuming at cam revolution {:.6g} (step {}) from {}", start.N, start.steps,
-                 checkpoint_path.string());
+                 folder.checkpoint_path().string());
   } else {
-    remove_previous_snapshots(dir);
-    fs::create_directories(dir / "snapshots");
-    fs::remove(dir / "report.txt");
-    fs::remove(checkpoint_path);  // --restart: the unfinished run's
+    folder.start_afresh(std::regex("(wear_map|roller_wear)_[0-9]{4}\\.csv"));
     life_csv = "# case: " + c.name +
                "\nstep,revolutions,max_depth_m,lift_loss_m,lift_loss_at_deg,energy_J\n"
                "0,0,0,0,0,0\n";
   }
-  contact::write_files_atomic({{dir / "revolution.csv", cam::revolution_csv(r)},
-                               {dir / "dissipation.csv", dissipation_csv(r, unworn_rev, motion.motion)}});
+  fs::create_directories(dir / "snapshots");
+  contact::write_files_atomic({{dir / "revolution.csv", cam::revolution_csv(setup->revolution)},
+                               {dir / "dissipation.csv",
+                                dissipation_csv(setup->revolution, setup->unworn, setup->motion.motion)}});
 
   // life.csv and the checkpoint are written together, life.csv renamed first: it never lags the checkpoint
-  int snapshots = resume ? cp.snapshots_written : 0;
-  const double earlier_cpu_s = resume ? cp.wall_s : 0;
+  int snapshots = o.resume ? folder.checkpoint().snapshots_written : 0;
+  const double earlier_cpu_s = o.resume ? folder.checkpoint().wall_s : 0;
   cam::CamLifeStart last;  // the last accepted step's end (x empty: none yet, nothing to checkpoint)
   const auto save = [&](std::vector<contact::OutputFile> files) {
-    files.push_back({life_path, life_csv});
-    if (last.x.size() > 0)
-      files.push_back({checkpoint_path, wear::checkpoint_text(to_checkpoint(fingerprint, last, snapshots,
-                                                                      earlier_cpu_s + cpu_seconds() - cpu0))});
-    contact::write_files_atomic(files);
-    if (last.x.size() > 0) interrupted::say_on_signal(resume_line);  // a second signal: resume from here
+    const wear::Checkpoint cp = to_checkpoint(fingerprint, last, snapshots, earlier_cpu_s + cpu_seconds() - cpu0);
+    folder.save(std::move(files), life_csv, last.x.size() > 0 ? &cp : nullptr);
   };
   const auto is_snapshot_revolution = [&](double N) {
     return std::find(life_model.snapshots_revolutions.begin(), life_model.snapshots_revolutions.end(), N) !=
@@ -286,8 +244,8 @@ int run_cam_life_command(const std::string& case_path, const std::string& output
       save({});
       last_save = Clock::now();
     }
-    if (!quiet) spdlog::info("step {}: N {:.6g}, max depth {:.4g} m, lift loss {:.4g} m", step.step, step.N,
-                             step.max_depth_m, step.lift_loss.max_m);
+    if (!o.quiet) spdlog::info("step {}: N {:.6g}, max depth {:.4g} m, lift loss {:.4g} m", step.step, step.N,
+                               step.max_depth_m, step.lift_loss.max_m);
   };
   // Ctrl-C or SIGTERM during the life: the life stops after its current step (not at a snapshot revolution,
   // whose snapshot goes with that step's checkpoint), saves it, and the process ends as the wear run's does
@@ -297,42 +255,34 @@ int run_cam_life_command(const std::string& case_path, const std::string& output
   };
   interrupted::defer_next_signal(
       "\nrollwear: interrupted; the life stops after its current step and saves it (a second signal stops at once)\n");
-  const cam::CamLifeResult life = cam::run_cam_life(life_model, producer, hooks, start);
+  const cam::CamLifeResult life = cam::run_cam_life(life_model, setup->producer(), hooks, start);
   interrupted::stop_deferring();
   if (life.ended_by == cam::CamLifeEnd::Stopped) {
     save({});
     spdlog::info("run: stopped after step {} at cam revolution {:.6g}; its state is saved in {}", last.steps, last.N,
-                 checkpoint_path.string());
+                 folder.checkpoint_path().string());
     interrupted::end_by(interrupted::requested_signal());
   }
-  const double cpu = earlier_cpu_s + cpu_seconds() - cpu0;
 
-  const double hours = life.N * 2 * contact::kPi / m.omega_rad_per_s / 3600;
-  std::string report = fmt::format(
-      "case: {}\nlife: {:.6g} cam revolutions ({:.6g} h at {:.6g} rad/s)\nended by: {}\nwhy: {}\n"
-      "max depth: {:.6g} m\nmax lift loss: {:.6g} m at cam angle {:.4g} deg\n"
-      "worn volume: track {:.6g} m^3, roller {:.6g} m^3\ndissipated: {:.6g} J\n"
-      "steps: {} ({} rejected), evaluations of the wear rate: {}, revolutions solved: {}\n"
-      "worn revolutions: {} angle steps ({} interpolated by the skip), {} normal solves (the rest shared a contact), {} F(delta) and {} creep-law "
-      "evaluations, {} warm starts retried cold\nresumed: {}\ncpu: {:.3g} s\n",
-      c.name, life.N, hours, m.omega_rad_per_s, cam::to_string(life.ended_by), life.message, life.max_depth_m,
-      life.lift_loss.max_m, life.lift_loss.at_theta_rad * cam::kDegPerRad, life.cam_volume_m3, life.roller_volume_m3,
-      life.energy_J, life.steps, life.rejected, life.rhs_evals, life.revolutions_solved, setup->worn->stats().angles,
-      setup->worn->stats().interpolated_angles,
-      setup->worn->stats().contacts_solved, setup->worn->stats().approach_evaluations,
-      setup->worn->stats().creep_evaluations, setup->worn->stats().cold_retries, resume ? "true" : "false", cpu);
+  // the end: life.csv and the report; the checkpoint goes (the run is complete) unless the life failed
+  const std::string report = cam_report_text(c, *setup, life, o.resume, earlier_cpu_s + cpu_seconds() - cpu0);
   if (life.ended_by == cam::CamLifeEnd::Failed && life.steps > 0 && last.x.size() > 0) {
     save({});  // the last accepted step: --resume continues from there (e.g. with other settings)
-    spdlog::error("run: the life failed after step {}; its state is saved in {}", last.steps, checkpoint_path.string());
+    spdlog::error("run: the life failed after step {}; its state is saved in {}", last.steps,
+                  folder.checkpoint_path().string());
   }
-  contact::write_files_atomic({{life_path, life_csv}, {dir / "report.txt", report}});
-  if (life.ended_by != cam::CamLifeEnd::Failed) fs::remove(checkpoint_path);  // the run is complete
+  contact::write_files_atomic({{folder.table_path(), life_csv}, {dir / "report.txt", report}});
+  if (life.ended_by != cam::CamLifeEnd::Failed) folder.remove_checkpoint();  // the run is complete
   fmt::print("{}", report);
   fmt::print("wrote {} (revolution.csv, dissipation.csv, life.csv, report.txt, {} wear maps in snapshots/)\n",
              dir.string(), snapshots);
   const bool failed = life.ended_by == cam::CamLifeEnd::Failed || life.ended_by == cam::CamLifeEnd::NotRun;
   if (failed) spdlog::error("the life failed: {}", life.message);
-  return failed ? contact::kExitFailure : 0;
+  return failed ? LifeRunEnd::Failed : LifeRunEnd::Ended;
 }
 
-}  // namespace app
+LifeRunEnd run_life_in_folder(const LifeRunOptions& o) {
+  return is_cam_case(o.case_path) ? run_cam_life_in_folder(o) : run_wear_life_in_folder(o);
+}
+
+}  // namespace session

@@ -1,5 +1,5 @@
-// rollwear sweep under MPI (app/sweep_mpi.h).
-#include "app/sweep_mpi.h"
+// rollwear sweep under MPI (session/sweep_mpi.h).
+#include "session/sweep_mpi.h"
 
 #include <mpi.h>
 
@@ -8,7 +8,7 @@
 
 #include <spdlog/spdlog.h>
 
-namespace rollwear_mpi {
+namespace session::mpi {
 
 namespace {
 constexpr int kCaseTag = 1;  // rank 0 -> a rank: the index of the case to run
@@ -66,8 +66,8 @@ dispatch() {
   };
 }
 
-void serve(const wear::Sweep& s, const std::filesystem::path& output_directory) {
-  const YAML::Node base = wear::load_base_case(s);
+void serve(const Sweep& s, const std::filesystem::path& output_directory) {
+  const YAML::Node base = load_base_case(s);
   for (long ran = 0;; ++ran) {
     long index = -1;
     MPI_Status status;
@@ -76,8 +76,8 @@ void serve(const wear::Sweep& s, const std::filesystem::path& output_directory) 
       spdlog::info("sweep: rank {} ran {} cases", rank(), ran);
       return;
     }
-    const wear::CaseOutcome c = wear::run_sweep_case(s, base, index, output_directory);
-    const std::string row = wear::results_row(c);
+    const CaseOutcome c = run_sweep_case(s, base, index, output_directory);
+    const std::string row = results_row(c);
     MPI_Send(row.data(), static_cast<int>(row.size()), MPI_CHAR, 0, kRowTag, MPI_COMM_WORLD);
   }
 }
@@ -92,4 +92,4 @@ void finish() {
   MPI_Finalize();
 }
 
-}  // namespace rollwear_mpi
+}  // namespace session::mpi

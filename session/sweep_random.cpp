@@ -1,4 +1,4 @@
-#include "wear/sweep_random.h"
+#include "session/sweep_random.h"
 
 #include <algorithm>
 #include <cmath>
@@ -10,7 +10,7 @@
 
 #include "lib/io/number.h"
 
-namespace wear {
+namespace session {
 
 using contact::round_trip;
 
@@ -142,4 +142,4 @@ void iman_conover(std::vector<std::vector<double>>& x, const std::vector<std::ve
   }
 }
 
-}  // namespace wear
+}  // namespace session

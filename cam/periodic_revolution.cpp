@@ -1,5 +1,5 @@
-// One periodic cam revolution, all of it (cam/cam_run.h).
-#include "cam/cam_run.h"
+// One periodic cam revolution, all of it (cam/periodic_revolution.h).
+#include "cam/periodic_revolution.h"
 
 #include <ctime>
 #include <limits>

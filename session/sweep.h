@@ -40,10 +40,10 @@
 #include <yaml-cpp/yaml.h>
 
 #include "lib/io/case.h"
-#include "wear/sweep_random.h"
+#include "session/sweep_random.h"
 #include "wear/wear_loop.h"
 
-namespace wear {
+namespace session {
 
 // ---- the sweep file ----
 
@@ -138,7 +138,7 @@ struct CaseOutcome {
   SweepKind kind = SweepKind::Wear;
   ContactOutputs contact;  // SweepKind::Contact
   double life_revolutions = std::numeric_limits<double>::quiet_NaN();
-  LifeEnd ended_by = LifeEnd::NotRun;
+  wear::LifeEnd ended_by = wear::LifeEnd::NotRun;
   double max_depth_m = std::numeric_limits<double>::quiet_NaN();
   double worn_volume_m3 = std::numeric_limits<double>::quiet_NaN();
   CaseStatus status = CaseStatus::Error;  // the pessimistic default
@@ -168,7 +168,7 @@ CaseOutcome run_contact_case(const contact::ContactCase& c, const std::string& t
                              const std::vector<double>& inputs, const std::filesystem::path& dir);
 
 // case i of the sweep generated, read and run as run_sweep's threads run it, into out/case_NNNN/ (when
-// s.case_files): what an MPI rank does with a case it is dealt (app/sweep_mpi.h)
+// s.case_files): what an MPI rank does with a case it is dealt (session/sweep_mpi.h)
 CaseOutcome run_sweep_case(const Sweep& s, const YAML::Node& base, long i, const std::filesystem::path& out);
 
 // the cases of shard k (1-based) of n: i with i % n == k - 1
@@ -186,7 +186,7 @@ struct SweepRunOptions {
   // SweepCancelled without writing results.csv. The Python bindings check for Ctrl-C here.
   std::function<bool()> cancelled;
   // When set, the pending cases run elsewhere instead of on `threads` threads (rollwear sweep under MPI,
-  // app/sweep_mpi.h): called once with every pending case (index, case text), it calls finished(row) with
+  // session/sweep_mpi.h): called once with every pending case (index, case text), it calls finished(row) with
   // each case's results row, in any order, from the calling thread, and returns when every case has one.
   std::function<void(const std::vector<std::pair<long, std::string>>& pending,
                      const std::function<void(const std::string& row)>& finished)>
@@ -212,4 +212,4 @@ SweepRunSummary run_sweep(const Sweep& s, const SweepRunOptions& o);
 // receives the first folder's sweep.txt (the input of sweep_summary).
 std::string merge_results(const std::vector<std::filesystem::path>& dirs, std::string* sweep_txt = nullptr);
 
-}  // namespace wear
+}  // namespace session
