@@ -818,8 +818,7 @@ TEST(WearLoop, ResumedLifeCountsTheWholeLife) {
 
 // LifeEnd's words are the report's, each read back to itself; an unknown word is refused.
 TEST(WearLoop, LifeEndWordsReadBack) {
-  for (LifeEnd e : {LifeEnd::NotRun, LifeEnd::MaxDepth, LifeEnd::MaxPressure, LifeEnd::Edge, LifeEnd::LiftLoss,
-                    LifeEnd::Revolutions,
+  for (LifeEnd e : {LifeEnd::NotRun, LifeEnd::MaxDepth, LifeEnd::MaxPressure, LifeEnd::Edge, LifeEnd::Revolutions,
                     LifeEnd::MaxSteps, LifeEnd::Stopped, LifeEnd::Failed})
     EXPECT_EQ(parse_life_end(to_string(e)), e) << to_string(e);
   EXPECT_EQ(to_string(LifeResult{}.ended_by), "not_run");
