@@ -9,28 +9,19 @@
 #include <spdlog/fmt/fmt.h>
 #include <spdlog/spdlog.h>
 
+#include "cam/cam_error.h"
 #include "cam/revolution.h"
 #include "cam/revolution_dissipation.h"
 #include "cam/roller_motion.h"
-#include "lib/io/enum_names.h"
 #include "lib/numeric.h"
 #include "wear/integrator.h"
+#include "wear/life.h"
+#include "wear/wear_output.h"
 #include "wear/profile_update.h"
 
 namespace cam {
 
 namespace {
-
-constexpr contact::EnumTable<CamLifeEnd, 7> kCamLifeEndWords = {{{CamLifeEnd::NotRun, "not_run"},
-                                                                 {CamLifeEnd::MaxDepth, "max_depth"},
-                                                                 {CamLifeEnd::LiftLoss, "lift_loss"},
-                                                                 {CamLifeEnd::Revolutions, "revolutions"},
-                                                                 {CamLifeEnd::MaxSteps, "max_steps"},
-                                                                 {CamLifeEnd::Failed, "failed"},
-                                                                 {CamLifeEnd::Stopped, "stopped"}}};
-
-constexpr int kLimits = 2;  // g_0 the depth limit, g_1 the lift-loss limit
-constexpr CamLifeEnd kLimitEnds[kLimits] = {CamLifeEnd::MaxDepth, CamLifeEnd::LiftLoss};
 
 // the state vector: [track map, arc-major columns as Eigen stores them | roller | e], e = E energy_scale
 struct Layout {
@@ -54,8 +45,6 @@ double max_depth_of(const CamWearState& s) {
 }
 
 }  // namespace
-
-std::string to_string(CamLifeEnd e) { return contact::enum_name(kCamLifeEndWords, e); }
 
 std::vector<LiftLossSample> lift_loss_samples(const Revolution& r) {
   std::vector<LiftLossSample> out;
@@ -224,6 +213,39 @@ std::unique_ptr<CamLifeSetup> set_up_cam_life(const std::string& name, const Cam
   return setup;
 }
 
+std::string cam_life_report_text(const std::string& case_name, double omega_rad_per_s, const CamLifeResult& life,
+                                 const WornRevolutionStats& worn, bool resumed, double cpu_s) {
+  wear::LifeReport r;
+  r.case_name = case_name;
+  r.ended_by = life.ended_by;
+  r.failure = life.failure;
+  r.message = life.message;
+  r.revolutions = life.N;
+  r.hours = life.N * 2 * contact::kPi / omega_rad_per_s / 3600;
+  r.max_depth_m = life.max_depth_m;
+  r.dissipated_J = life.energy_J;
+  r.counters.steps = life.steps;
+  r.counters.rejected = life.rejected;
+  r.counters.rhs_evals = life.rhs_evals;
+  r.resumed = resumed;
+  r.digits = 6;
+  const auto g6 = [](double v) { return fmt::format("{:.6g}", v); };
+  r.own = {{"speed_rad_per_s", g6(omega_rad_per_s)},
+           {"lift_loss_m", g6(life.lift_loss.max_m)},
+           {"lift_loss_at_deg", fmt::format("{:.4g}", life.lift_loss.at_theta_rad * kDegPerRad)},
+           {"worn_volume_track_m3", g6(life.cam_volume_m3)},
+           {"worn_volume_roller_m3", g6(life.roller_volume_m3)},
+           {"revolutions_solved", std::to_string(life.revolutions_solved)},
+           {"worn_angle_steps", std::to_string(worn.angles)},
+           {"interpolated_angle_steps", std::to_string(worn.interpolated_angles)},
+           {"normal_solves", std::to_string(worn.contacts_solved)},
+           {"approach_evaluations", std::to_string(worn.approach_evaluations)},
+           {"creep_evaluations", std::to_string(worn.creep_evaluations)},
+           {"cold_retries", std::to_string(worn.cold_retries)},
+           {"cpu_s", fmt::format("{:.3g}", cpu_s)}};
+  return wear::life_report_text(r);
+}
+
 double cam_worn_volume_m3(const CamWearGrid& g, const CamWearState& s) {
   return s.cam_depth_m.sum() * g.arc_cell_m() * g.track_cell_m();
 }
@@ -259,190 +281,205 @@ CamLifeModel make_cam_life_model(const std::string& name, const CamWearSpec& spe
   return m;
 }
 
-CamLifeResult run_cam_life(const CamLifeModel& m, const DissipationOf& dissipation, const CamLifeHooks& hooks,
-                           const CamLifeStart& start) {
+namespace {
+
+void check_life_model(const CamLifeModel& m) {
   check_grid(m.grid);
   if (!(m.revolutions > 0)) throw std::invalid_argument("cam life: the budget of revolutions must be > 0");
   if (!m.laws.cam && !m.laws.roller) throw std::invalid_argument("cam life: nothing wears");
-  const Layout lay = layout(m.grid);
-  wear::IntegratorOptions options0 = wear::integrator_options(m.stepping);
-  options0.scheme = m.scheme;
+}
 
-  CamLifeResult life;
-  life.state = unworn_state(m.grid);
-  Eigen::VectorXd x = Eigen::VectorXd::Zero(lay.size());
+// f(x): the wear per revolution on the worn geometry, smoothed across the width, with the dissipated energy
+// on the depths' scale (e = E energy_scale, fixed by the first evaluation, so that the error test weighs it
+// alike); the last one kept (an FSAL stage, the step report and a limit's probe often ask at the same state)
+class CamRate {
+ public:
+  CamRate(const CamLifeModel& m, const DissipationOf& dissipation)
+      : m_(m), dissipation_(dissipation), layout_(layout(m.grid)), smooth_(m.smoothing_wavelength_m > 0) {
+    // the lateral filter's kernels on the cells' centres (which never move)
+    const auto centres = [](double width_m, int n) {
+      return Eigen::ArrayXd::LinSpaced(n, -0.5 * width_m + 0.5 * width_m / n, 0.5 * width_m - 0.5 * width_m / n);
+    };
+    if (smooth_) {
+      track_kernel_ = wear::smoothing_kernel(centres(m.grid.track_width_m, m.grid.track_cells), m.smoothing_wavelength_m);
+      roller_kernel_ =
+          wear::smoothing_kernel(centres(m.grid.roller_width_m, m.grid.roller_cells), m.smoothing_wavelength_m);
+    }
+  }
 
-  // the lateral filter's kernels on the cells' centres (which never move)
-  const auto centres = [](double width_m, int n) {
-    return Eigen::ArrayXd::LinSpaced(n, -0.5 * width_m + 0.5 * width_m / n, 0.5 * width_m - 0.5 * width_m / n);
-  };
-  const bool smooth = m.smoothing_wavelength_m > 0;
-  const wear::SmoothingKernel track_kernel =
-      smooth ? wear::smoothing_kernel(centres(m.grid.track_width_m, m.grid.track_cells), m.smoothing_wavelength_m)
-             : wear::SmoothingKernel{};
-  const wear::SmoothingKernel roller_kernel =
-      smooth ? wear::smoothing_kernel(centres(m.grid.roller_width_m, m.grid.roller_cells), m.smoothing_wavelength_m)
-             : wear::SmoothingKernel{};
-
-  const LiftLossProbe lift_loss(m.unworn, m.grid, m.samples);
-
-  // f(h): the wear per revolution on the worn geometry; the last one kept (an FSAL stage, the step
-  // report and a limit's probe often ask at the same state)
-  Eigen::VectorXd last_x;
-  Eigen::VectorXd last_f;
-  double energy_scale = 0;  // e = E energy_scale: on the depths' scale, so the error test weighs it alike
-  const auto rate = [&](const Eigen::VectorXd& h) -> const Eigen::VectorXd& {
-    if (last_x.size() == h.size() && last_x == h) return last_f;
-    const CamWearState s = state_of(m.grid, h);
-    CamWearRate r = wear_per_revolution(dissipation(s), m.grid, m.laws);
-    ++life.revolutions_solved;
-    if (smooth) {
+  const Eigen::VectorXd& operator()(const Eigen::VectorXd& h) {
+    if (last_x_.size() == h.size() && last_x_ == h) return last_f_;
+    const CamWearState s = state_of(m_.grid, h);
+    CamWearRate r = wear_per_revolution(dissipation_(s), m_.grid, m_.laws);
+    ++solved;
+    if (smooth_) {
       Eigen::ArrayXXd& h_cam = r.depth_per_revolution.cam_depth_m;
       for (int i = 0; i < h_cam.rows(); ++i)
-        if ((h_cam.row(i) != 0).any()) h_cam.row(i) = wear::smooth_conserving(h_cam.row(i).transpose(), track_kernel).transpose();
-      r.depth_per_revolution.roller_depth_m = wear::smooth_conserving(r.depth_per_revolution.roller_depth_m, roller_kernel);
+        if ((h_cam.row(i) != 0).any()) h_cam.row(i) = wear::smooth_conserving(h_cam.row(i).transpose(), track_kernel_).transpose();
+      r.depth_per_revolution.roller_depth_m = wear::smooth_conserving(r.depth_per_revolution.roller_depth_m, roller_kernel_);
     }
     if (energy_scale == 0) {
       const double depth_rate = std::max(max_depth_of(r.depth_per_revolution), 1e-300);
       energy_scale = r.energy_J > 0 ? depth_rate / r.energy_J : 1;
     }
-    last_f.resize(lay.size());
-    last_f.head(lay.n_cam) = Eigen::Map<const Eigen::VectorXd>(r.depth_per_revolution.cam_depth_m.data(), lay.n_cam);
-    last_f.segment(lay.n_cam, lay.n_roller) = r.depth_per_revolution.roller_depth_m.matrix();
-    last_f(lay.energy()) = r.energy_J * energy_scale;
-    last_x = h;
-    return last_f;
-  };
-  // the limits, g < 0 inside the life; -1 where a limit is off
-  const auto limits = [&](const Eigen::VectorXd& h, Eigen::VectorXd& g) {
-    g = Eigen::VectorXd::Constant(kLimits, -1.0);
+    const Layout& lay = layout_;
+    last_f_.resize(lay.size());
+    last_f_.head(lay.n_cam) = Eigen::Map<const Eigen::VectorXd>(r.depth_per_revolution.cam_depth_m.data(), lay.n_cam);
+    last_f_.segment(lay.n_cam, lay.n_roller) = r.depth_per_revolution.roller_depth_m.matrix();
+    last_f_(lay.energy()) = r.energy_J * energy_scale;
+    last_x_ = h;
+    return last_f_;
+  }
+
+  double energy_scale = 0;  // e = E energy_scale
+  long solved = 0;          // calls of the producer
+
+ private:
+  const CamLifeModel& m_;
+  const DissipationOf& dissipation_;
+  Layout layout_;
+  bool smooth_;
+  wear::SmoothingKernel track_kernel_, roller_kernel_;
+  Eigen::VectorXd last_x_, last_f_;
+};
+
+// the cam's life as the driver's problem: its rate, its limits (the depth and the lift loss, g < 0 inside
+// the life, -1 where a limit is off); any failure of the producer ends the life at its last accepted step
+wear::LifeProblem cam_life_problem(const CamLifeModel& m, CamRate& rate, const LiftLossProbe& lift_loss) {
+  wear::LifeProblem p;
+  p.rate = [&rate](double, const Eigen::VectorXd& h, Eigen::VectorXd& dhdN) { dhdN = rate(h); };
+  p.limits = {wear::LifeEnd::MaxDepth, wear::LifeEnd::LiftLoss};
+  p.limit_values = [&m, &lift_loss](double, const Eigen::VectorXd& h, Eigen::VectorXd& g) {
+    g = Eigen::VectorXd::Constant(2, -1.0);
     const CamWearState s = state_of(m.grid, h);
     if (m.max_depth_m > 0) g(0) = max_depth_of(s) - m.max_depth_m;
     if (m.max_lift_loss_m > 0) g(1) = lift_loss(s).max_m - m.max_lift_loss_m;
   };
-  const auto finish = [&](CamLifeEnd end, std::string message) -> CamLifeResult& {
-    const bool snapshot = end != CamLifeEnd::Stopped;
-    life.ended_by = end;
-    life.message = std::move(message);
-    life.state = state_of(m.grid, x);
-    life.max_depth_m = max_depth_of(life.state);
-    life.lift_loss = lift_loss(life.state);
-    life.energy_J = energy_scale > 0 ? x(lay.energy()) / energy_scale : 0;
-    life.cam_volume_m3 = cam_worn_volume_m3(m.grid, life.state);
-    life.roller_volume_m3 = roller_worn_volume_m3(m.grid, life.state);
-    if (snapshot && hooks.on_snapshot) hooks.on_snapshot(life.N, life.state);
-    return life;
+  p.options = wear::integrator_options(m.stepping);
+  p.options.scheme = m.scheme;
+  p.revolutions = m.revolutions;
+  p.budget_key = "revolutions";
+  for (const double N : m.snapshots_revolutions)  // the budget's end has the life's end snapshot
+    if (N < m.revolutions) p.snapshots_revolutions.push_back(N);
+  p.solves = [&rate] {
+    wear::LifeCounters c;
+    c.tangential_solves = rate.solved;
+    return c;
   };
+  p.failure_of = [](const std::exception&, double) { return wear::LifeFailure::Rate; };
+  return p;
+}
 
-  const bool resumed = start.x.size() > 0;
-  if (resumed) {
-    if (start.x.size() != lay.size() || !(start.energy_scale > 0) || !(start.N >= 0) || !(start.N <= m.revolutions))
-      throw std::invalid_argument(fmt::format("cam life: the start (state of {} values at N {:.10g}, energy scale "
-                                              "{:.3g}) is not one of this model (state of {} values)",
-                                              start.x.size(), start.N, start.energy_scale, lay.size()));
-    x = start.x;
-    life.N = start.N;
-    energy_scale = start.energy_scale;
-    life.steps = start.steps;
-    life.rejected = start.rejected;
-    // the integrator's first evaluation, at the start, is the last step's end's, counted already (as in the
-    // wear loop's continuations, docs/wear-loop.md "Counters"); the producer is called there again
-    life.rhs_evals = std::max(0L, start.rhs_evals - 1);
-    life.revolutions_solved = start.revolutions_solved;
+// the driver's start from the caller's (a checkpoint's content, checked against the model), the producer's
+// revolutions solved counted as the life's tangential solves
+wear::LifeStart driver_start(const CamLifeModel& m, const CamLifeStart& start, CamRate& rate) {
+  const Layout lay = layout(m.grid);
+  if (start.x.size() != lay.size() || !(start.energy_scale > 0) || !(start.N >= 0) || !(start.N <= m.revolutions))
+    throw std::invalid_argument(fmt::format("cam life: the start (state of {} values at N {:.10g}, energy scale "
+                                            "{:.3g}) is not one of this model (state of {} values)",
+                                            start.x.size(), start.N, start.energy_scale, lay.size()));
+  rate.energy_scale = start.energy_scale;
+  wear::LifeStart s;
+  s.N = start.N;
+  s.state = start.x;
+  s.next_step = start.next_step;
+  s.counters.steps = start.steps;
+  s.counters.rejected = start.rejected;
+  s.counters.rhs_evals = start.rhs_evals;
+  s.counters.tangential_solves = start.revolutions_solved;
+  return s;
+}
+
+// the step as the cam's hooks see it: the worn state, its depth, lift loss and energy, and the start that
+// continues the life from there
+CamLifeStep cam_life_step(const CamLifeModel& m, const wear::LifeStepEnd& e, const CamWearState& s,
+                          const LiftLossProbe& lift_loss, double energy_scale) {
+  const wear::LifeCounters counters = e.counters();
+  CamLifeStep step;
+  step.step = counters.steps;
+  step.N = e.N;
+  step.state = &s;
+  step.max_depth_m = max_depth_of(s);
+  step.lift_loss = lift_loss(s);
+  step.energy_J = (*e.state)(layout(m.grid).energy()) / energy_scale;
+  step.resume.N = e.N;
+  step.resume.x = *e.state;
+  step.resume.energy_scale = energy_scale;
+  step.resume.next_step = e.next_step;
+  step.resume.steps = counters.steps;
+  step.resume.rejected = counters.rejected;
+  step.resume.rhs_evals = counters.rhs_evals;
+  step.resume.revolutions_solved = counters.tangential_solves;
+  return step;
+}
+
+// the life's end: the worn state and what it says, and its snapshot (none for a stopped life: a kill's state)
+CamLifeResult finish_cam_life(const CamLifeModel& m, const wear::LifeOutcome& out, const LiftLossProbe& lift_loss,
+                              double energy_scale, const CamLifeHooks& hooks) {
+  CamLifeResult life;
+  life.ended_by = out.ended_by;
+  life.failure = out.failure;
+  life.message = out.message;
+  life.N = out.N;
+  life.state = state_of(m.grid, out.state);
+  life.max_depth_m = max_depth_of(life.state);
+  life.lift_loss = lift_loss(life.state);
+  life.energy_J = energy_scale > 0 ? out.state(layout(m.grid).energy()) / energy_scale : 0;
+  life.cam_volume_m3 = cam_worn_volume_m3(m.grid, life.state);
+  life.roller_volume_m3 = roller_worn_volume_m3(m.grid, life.state);
+  life.steps = out.counters.steps;
+  life.rejected = out.counters.rejected;
+  life.rhs_evals = out.counters.rhs_evals;
+  life.revolutions_solved = out.counters.tangential_solves;
+  if (out.ended_by != wear::LifeEnd::Stopped && hooks.on_snapshot) hooks.on_snapshot(life.N, life.state);
+  return life;
+}
+
+}  // namespace
+
+CamLifeResult run_cam_life(const CamLifeModel& m, const DissipationOf& dissipation, const CamLifeHooks& hooks,
+                           const CamLifeStart& start) {
+  check_life_model(m);
+  CamRate rate(m, dissipation);
+  const LiftLossProbe lift_loss(m.unworn, m.grid, m.samples);
+  const wear::LifeProblem problem = cam_life_problem(m, rate, lift_loss);
+
+  // where the life starts: a checkpoint's step end, or the unworn state, whose revolution fixes the energy's
+  // scale (and fails early on a bad producer)
+  wear::LifeStart from;
+  if (start.x.size() > 0) {
+    from = driver_start(m, start, rate);
   } else {
-    if (hooks.on_snapshot) hooks.on_snapshot(0, life.state);
+    from.state = Eigen::VectorXd::Zero(layout(m.grid).size());
+    if (hooks.on_snapshot) hooks.on_snapshot(0, unworn_state(m.grid));
     try {
-      rate(x);  // the unworn revolution: fixes the energy's scale, and fails early on a bad producer
+      rate(from.state);
     } catch (const std::exception& e) {
-      return finish(CamLifeEnd::Failed, fmt::format("the unworn revolution failed: {}", e.what()));
+      wear::LifeOutcome failed;
+      failed.ended_by = wear::LifeEnd::Failed;
+      failed.failure = wear::LifeFailure::Rate;
+      failed.message = fmt::format("the unworn revolution failed: {}", e.what());
+      failed.state = from.state;
+      failed.counters.tangential_solves = rate.solved;
+      return finish_cam_life(m, failed, lift_loss, rate.energy_scale, hooks);
     }
+    from.counters.tangential_solves = rate.solved;
   }
 
-  std::vector<double> ends;  // the segments still ahead of the start
-  for (double N : m.snapshots_revolutions)
-    if (N > life.N && N < m.revolutions) ends.push_back(N);
-  ends.push_back(m.revolutions);
-  bool stopped = false;
-  double next_step = resumed ? start.next_step : 0;
-
-  const wear::Rhs f = [&](double, const Eigen::VectorXd& h, Eigen::VectorXd& dhdN) { dhdN = rate(h); };
-  const wear::Roots roots = [&](double, const Eigen::VectorXd& h, Eigen::VectorXd& g) { limits(h, g); };
-  for (const double N_end : ends) {
-    if (N_end <= life.N) continue;  // a start at the budget's end (a checkpoint of its last step)
-    wear::IntegratorOptions options = options0;
-    if (next_step > 0 && options.method == wear::IntegratorOptions::Method::Adaptive) options.initial_step = next_step;
-    next_step = 0;  // later segments start as the uninterrupted life's do: from ARKODE's estimate
-    options.max_steps = m.stepping.max_steps - life.steps;
-    if (options.max_steps <= 0) return finish(CamLifeEnd::MaxSteps, fmt::format("max_steps {} reached", m.stepping.max_steps));
-    Eigen::VectorXd last_accepted = x;
-    double last_N = life.N;
-    const long steps_before = life.steps, rejected_before = life.rejected, rhs_evals_before = life.rhs_evals;
-    const wear::OnStep on_step = [&](const wear::StepInfo& info, const Eigen::VectorXd& h) {
-      last_accepted = h;
-      last_N = info.N;
-      if (hooks.on_step || hooks.stop_after) {
-        const CamWearState s = state_of(m.grid, h);
-        CamLifeStep step;
-        step.step = steps_before + info.steps;
-        step.N = info.N;
-        step.state = &s;
-        step.max_depth_m = max_depth_of(s);
-        step.lift_loss = lift_loss(s);
-        step.energy_J = h(lay.energy()) / energy_scale;
-        step.resume.N = info.N;
-        step.resume.x = h;
-        step.resume.energy_scale = energy_scale;
-        step.resume.next_step = info.next_step;
-        step.resume.steps = step.step;
-        step.resume.rejected = rejected_before + info.rejected;
-        step.resume.rhs_evals = rhs_evals_before + info.rhs_evals;
-        step.resume.revolutions_solved = life.revolutions_solved;
-        if (hooks.on_step) hooks.on_step(step);
-        if (hooks.stop_after && hooks.stop_after(step)) {
-          stopped = true;
-          return false;
-        }
-      }
-      return true;
+  // each accepted step to the caller's hooks; stop_after ends the life there
+  wear::LifeDriverHooks driver;
+  if (hooks.on_step || hooks.stop_after)
+    driver.on_step = [&](const wear::LifeStepEnd& e) {
+      const CamWearState s = state_of(m.grid, *e.state);
+      const CamLifeStep step = cam_life_step(m, e, s, lift_loss, rate.energy_scale);
+      if (hooks.on_step) hooks.on_step(step);
+      return !(hooks.stop_after && hooks.stop_after(step));
     };
-    wear::IntegratorResult r;
-    try {
-      r = wear::integrate(f, roots, kLimits, life.N, x, N_end, options, on_step);
-    } catch (const std::exception& e) {
-      x = last_accepted;
-      life.N = last_N;
-      std::string why = e.what();
-      try {
-        std::rethrow_if_nested(e);
-      } catch (const std::exception& inner) {
-        why += std::string(": ") + inner.what();
-      }
-      return finish(CamLifeEnd::Failed, fmt::format("ended at N {:.10g}, the last accepted step: {}", life.N, why));
-    }
-    x = r.h_m;
-    life.N = r.N;
-    life.steps += r.steps;
-    life.rejected += r.rejected;
-    life.rhs_evals += r.rhs_evals;
-    using Kind = wear::IntegratorStatus::Kind;
-    switch (r.status.kind) {
-      case Kind::ReachedEnd:
-        if (N_end < m.revolutions && hooks.on_snapshot) hooks.on_snapshot(life.N, state_of(m.grid, x));
-        continue;
-      case Kind::RootFound: {
-        const CamLifeEnd end = kLimitEnds[r.status.roots.front()];
-        return finish(end, fmt::format("{} reached at N {:.10g}, in step {}", to_string(end), life.N, life.steps));
-      }
-      case Kind::MaxSteps: return finish(CamLifeEnd::MaxSteps, r.status.message);
-      case Kind::Stopped:
-        if (stopped)
-          return finish(CamLifeEnd::Stopped, fmt::format("stopped after step {} at N {:.10g}", life.steps, life.N));
-        return finish(CamLifeEnd::Failed, r.status.message);
-      case Kind::Failed: return finish(CamLifeEnd::Failed, r.status.message);
-    }
-  }
-  return finish(CamLifeEnd::Revolutions,
-                fmt::format("the life budget revolutions = {:.10g} reached with no limit", m.revolutions));
+  driver.on_snapshot = [&](double N, const Eigen::VectorXd& x) {
+    if (hooks.on_snapshot) hooks.on_snapshot(N, state_of(m.grid, x));
+  };
+  const wear::LifeOutcome out = wear::integrate_life(problem, from, driver);
+  return finish_cam_life(m, out, lift_loss, rate.energy_scale, hooks);
 }
 
 }  // namespace cam

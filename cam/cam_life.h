@@ -4,12 +4,13 @@
 //         caller's producer, DissipationOf) -> wear_per_revolution -> smoothed across the width (the wear
 //         loop's volume-conserving Gaussian filter, wear/profile_update.h, on the lateral cells' centres:
 //         wear features narrower than the cut-off are not kept, as running-in and debris spread them),
-// integrated by the project's integrator (wear/integrator.h: adaptive ARKODE, or fixed steps with their
-// stability control; the case's stepping keys are a wear case's) until a limit ends the life:
+// integrated by the one life driver (wear/life.h: the project's integrator, adaptive ARKODE or fixed steps with
+// their stability control; the case's stepping keys are a wear case's) until a limit ends the life:
 //   max_depth      the deepest wear of either body reaches max_depth_m;
 //   lift_loss      the follower's lift has dropped by max_lift_loss_m at some cam angle.
-// Both are signed, continuous functions of the state (g < 0 inside the life), so the integrator's root
-// finding locates them on its dense output (adaptive) or its Euler line (fixed), as wear_loop's limits.
+// Both are signed, continuous functions of the state (g < 0 inside the life), handed to the driver as its
+// limits, as the roller's wear loop hands its own: it locates them on the integrator's dense output
+// (adaptive) or its step's line (fixed).
 //
 // The lift loss. The roller's centre is the cam surface's offset by R_r along the contact normal n, which
 // makes the pressure angle phi with the follower's axis. Wear lowers the bodies' unloaded surfaces under
@@ -36,6 +37,7 @@
 #include "cam/worn_revolution.h"
 #include "lib/normal/profile.h"
 #include "wear/integrator.h"
+#include "wear/life.h"
 #include "wear/wear_case.h"
 
 namespace cam {
@@ -126,10 +128,6 @@ CamLifeModel make_cam_life_model(const std::string& name, const CamWearSpec& spe
                                  double circumference_m, const RevolutionDissipation& rev,
                                  std::vector<LiftLossSample> samples);
 
-enum class CamLifeEnd { NotRun, MaxDepth, LiftLoss, Revolutions, MaxSteps, Failed, Stopped };
-// max_depth, lift_loss, revolutions, max_steps, failed, not_run, stopped (CamLifeHooks::stop_after)
-std::string to_string(CamLifeEnd e);
-
 // Where a life starts: the unworn state (x empty, the default), or an accepted step's end saved by a
 // checkpoint (CamLifeStep::resume; docs/cam-follower.md §13, "Checkpoint and resume"). It holds everything
 // run_cam_life carries from step to step, so a fixed-stepping life resumed repeats the uninterrupted one's
@@ -156,12 +154,13 @@ struct CamLifeStep {
 struct CamLifeHooks {
   std::function<void(const CamLifeStep&)> on_step;                          // after each accepted step
   std::function<void(double N, const CamWearState& state)> on_snapshot;     // at 0, each snapshot, the end
-  // after on_step: true ends the life there, CamLifeEnd::Stopped, with no end snapshot (a kill's state)
+  // after on_step: true ends the life there, wear::LifeEnd::Stopped, with no end snapshot (a kill's state)
   std::function<bool(const CamLifeStep&)> stop_after;
 };
 
 struct CamLifeResult {
-  CamLifeEnd ended_by = CamLifeEnd::NotRun;
+  wear::LifeEnd ended_by = wear::LifeEnd::NotRun;  // the cam's limits: MaxDepth, LiftLoss
+  wear::LifeFailure failure = wear::LifeFailure::None;
   std::string message;
   double N = 0;
   CamWearState state;
@@ -180,6 +179,13 @@ struct CamLifeResult {
 // state the last accepted step's).
 CamLifeResult run_cam_life(const CamLifeModel& m, const DissipationOf& dissipation, const CamLifeHooks& hooks = {},
                            const CamLifeStart& start = {});
+
+// The life's report (report.txt, and printed): the keys every life writes (wear::life_report_text, its numbers
+// to 6 digits), then the cam's own: speed_rad_per_s, lift_loss_m, lift_loss_at_deg, worn_volume_track_m3,
+// worn_volume_roller_m3, revolutions_solved, and the worn revolutions' work (worn_angle_steps,
+// interpolated_angle_steps, normal_solves, approach_evaluations, creep_evaluations, cold_retries), cpu_s
+std::string cam_life_report_text(const std::string& case_name, double omega_rad_per_s, const CamLifeResult& life,
+                                 const WornRevolutionStats& worn, bool resumed, double cpu_s);
 
 // A case's life, set up: the unworn revolution (status Jump: nothing else is set), the roller's periodic
 // motion, the unworn quasi-steady dissipation (the same producer as on the worn geometry, so that the rate

@@ -139,26 +139,6 @@ std::unique_ptr<cam::CamLifeSetup> set_up_life(const cam::CamCase& c) {
   return setup;
 }
 
-// report.txt: the life and what ended it
-std::string cam_report_text(const cam::CamCase& c, const cam::CamLifeSetup& setup, const cam::CamLifeResult& life,
-                            bool resume, double cpu) {
-  const cam::CamModel& m = c.model;
-  const double hours = life.N * 2 * contact::kPi / m.omega_rad_per_s / 3600;
-  std::string report = fmt::format(
-      "case: {}\nlife: {:.6g} cam revolutions ({:.6g} h at {:.6g} rad/s)\nended by: {}\nwhy: {}\n"
-      "max depth: {:.6g} m\nmax lift loss: {:.6g} m at cam angle {:.4g} deg\n"
-      "worn volume: track {:.6g} m^3, roller {:.6g} m^3\ndissipated: {:.6g} J\n"
-      "steps: {} ({} rejected), evaluations of the wear rate: {}, revolutions solved: {}\n"
-      "worn revolutions: {} angle steps ({} interpolated by the skip), {} normal solves (the rest shared a contact), {} F(delta) and {} creep-law "
-      "evaluations, {} warm starts retried cold\nresumed: {}\ncpu: {:.3g} s\n",
-      c.name, life.N, hours, m.omega_rad_per_s, cam::to_string(life.ended_by), life.message, life.max_depth_m,
-      life.lift_loss.max_m, life.lift_loss.at_theta_rad * cam::kDegPerRad, life.cam_volume_m3, life.roller_volume_m3,
-      life.energy_J, life.steps, life.rejected, life.rhs_evals, life.revolutions_solved, setup.worn->stats().angles,
-      setup.worn->stats().interpolated_angles,
-      setup.worn->stats().contacts_solved, setup.worn->stats().approach_evaluations,
-      setup.worn->stats().creep_evaluations, setup.worn->stats().cold_retries, resume ? "true" : "false", cpu);
-  return report;
-}
 
 }  // namespace
 
@@ -257,7 +237,7 @@ LifeRunEnd run_cam_life_in_folder(const LifeRunOptions& o) {
       "\nrollwear: interrupted; the life stops after its current step and saves it (a second signal stops at once)\n");
   const cam::CamLifeResult life = cam::run_cam_life(life_model, setup->producer(), hooks, start);
   interrupted::stop_deferring();
-  if (life.ended_by == cam::CamLifeEnd::Stopped) {
+  if (life.ended_by == wear::LifeEnd::Stopped) {
     save({});
     spdlog::info("run: stopped after step {} at cam revolution {:.6g}; its state is saved in {}", last.steps, last.N,
                  folder.checkpoint_path().string());
@@ -265,18 +245,19 @@ LifeRunEnd run_cam_life_in_folder(const LifeRunOptions& o) {
   }
 
   // the end: life.csv and the report; the checkpoint goes (the run is complete) unless the life failed
-  const std::string report = cam_report_text(c, *setup, life, o.resume, earlier_cpu_s + cpu_seconds() - cpu0);
-  if (life.ended_by == cam::CamLifeEnd::Failed && life.steps > 0 && last.x.size() > 0) {
+  const std::string report = cam::cam_life_report_text(c.name, c.model.omega_rad_per_s, life, setup->worn->stats(),
+                                                       o.resume, earlier_cpu_s + cpu_seconds() - cpu0);
+  if (life.ended_by == wear::LifeEnd::Failed && life.steps > 0 && last.x.size() > 0) {
     save({});  // the last accepted step: --resume continues from there (e.g. with other settings)
     spdlog::error("run: the life failed after step {}; its state is saved in {}", last.steps,
                   folder.checkpoint_path().string());
   }
   contact::write_files_atomic({{folder.table_path(), life_csv}, {dir / "report.txt", report}});
-  if (life.ended_by != cam::CamLifeEnd::Failed) folder.remove_checkpoint();  // the run is complete
+  if (life.ended_by != wear::LifeEnd::Failed) folder.remove_checkpoint();  // the run is complete
   fmt::print("{}", report);
   fmt::print("wrote {} (revolution.csv, dissipation.csv, life.csv, report.txt, {} wear maps in snapshots/)\n",
              dir.string(), snapshots);
-  const bool failed = life.ended_by == cam::CamLifeEnd::Failed || life.ended_by == cam::CamLifeEnd::NotRun;
+  const bool failed = life.ended_by == wear::LifeEnd::Failed || life.ended_by == wear::LifeEnd::NotRun;
   if (failed) spdlog::error("the life failed: {}", life.message);
   return failed ? LifeRunEnd::Failed : LifeRunEnd::Ended;
 }

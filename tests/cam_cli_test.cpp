@@ -188,7 +188,7 @@ TEST_P(CamRunSignal, StopsAfterItsStepSavesItAndSaysResume) {
   const Ran resumed = rollwear("run -q " + quoted(c) + " -o " + quoted(out) + " --resume", dir_);
   ASSERT_EQ(resumed.exit_code, 0) << resumed.out << resumed.err;
   EXPECT_NE(resumed.err.find("resuming at cam revolution"), std::string::npos) << resumed.err;
-  EXPECT_NE(resumed.out.find("ended by: max_depth"), std::string::npos) << resumed.out;
+  EXPECT_NE(resumed.out.find("ended_by: max_depth"), std::string::npos) << resumed.out;
   EXPECT_NE(resumed.out.find("resumed: true"), std::string::npos) << resumed.out;
   EXPECT_FALSE(fs::exists(out / "checkpoint.txt"));
   const std::string rows = text_of(out / "life.csv");

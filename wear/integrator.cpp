@@ -451,28 +451,175 @@ std::pair<double, std::vector<int>> locate_on_line(const Roots& roots, int n_roo
   return {b, events(ga, gb)};
 }
 
+// what a fixed step carries from its stability control to its root search and its acceptance
+struct FixedStep {
+  double N_next = 0;           // where it ends
+  double dN = 0;               // its size
+  Eigen::VectorXd h_next;      // the solution at its end
+  Eigen::VectorXd rate_next;   // the rate there (the next step's slope)
+  Eigen::VectorXd curve;       // Heun: the step's solution is h(s) = h + dN (s rate + s^2 curve), s in [0, 1]
+  Eigen::VectorXd predicted;   // Heun: the rate at Euler's predictor
+  Eigen::VectorXd g_next;      // the limits at its end
+};
+
+// the step's end: the next multiple of fixed_step from N0 (no summed rounding in N), or the revolutions
+// that wear max_depth_step at the fastest node; a step ending within kEndTol of N_end ends there
+double fixed_step_end(const IntegratorOptions& o, const Eigen::VectorXd& rate, double N, double N0, long targets,
+                      double N_end) {
+  const bool by_depth = o.method == IntegratorOptions::Method::FixedDepth;
+  double dN = o.fixed_step;
+  if (by_depth) {
+    const double fastest = rate.cwiseAbs().maxCoeff();
+    dN = fastest > 0 ? o.max_depth_step / fastest : std::numeric_limits<double>::infinity();
+    if (o.max_step > 0) dN = std::min(dN, o.max_step);
+  }
+  double N_next = by_depth ? N + dN : N0 + static_cast<double>(targets + 1) * o.fixed_step;
+  if (N_next >= N_end - kEndTol * std::max(std::abs(N_end), dN)) N_next = N_end;
+  return N_next;
+}
+
+// Stability control: the step from r.N towards N_next is halved until the rate at its end exists (a far
+// too large step wears an absurd profile, on which the contact cannot be solved) and differs from the
+// rate at its start by at most the larger of the two rates' sizes. For a decaying mode dh/dN = lambda h
+// that is lambda dN >= -1: Euler's factor 1 + lambda dN stays in [0, 1], so the profile cannot oscillate;
+// a growing mode or a rate rising from 0 passes. A halved FixedStep goes on towards the same multiple of
+// fixed_step. (Heun: the rate at Euler's predictor is tested, then its corrector's end evaluated.) Sets
+// the step's end, size, solution and rate there; counts evaluations and halvings in r.
+void take_stable_step(const Rhs& f, const IntegratorOptions& o, const Eigen::VectorXd& rate, double N_next,
+                      FixedStep& s, IntegratorResult& r) {
+  using Scheme = IntegratorOptions::Scheme;
+  // the rate's change over a step is at most the larger of its sizes at the two ends (the stability test)
+  const auto stable_between = [](const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
+    return (b - a).cwiseAbs().maxCoeff() <= std::max(a.cwiseAbs().maxCoeff(), b.cwiseAbs().maxCoeff());
+  };
+  double dN = 0;
+  for (int halvings = 0;; ++halvings) {
+    dN = N_next - r.N;
+    bool stable = false;
+    try {
+      switch (o.scheme) {
+        case Scheme::Euler:
+          s.h_next = r.h_m + dN * rate;
+          ++r.rhs_evals;
+          evaluate_rate(f, N_next, s.h_next, s.rate_next);
+          stable = stable_between(rate, s.rate_next);
+          break;
+        case Scheme::Heun:
+          s.h_next = r.h_m + dN * rate;
+          ++r.rhs_evals;
+          evaluate_rate(f, N_next, s.h_next, s.predicted);
+          stable = stable_between(rate, s.predicted);
+          if (stable || halvings == kMaxHalvings) {
+            s.curve = 0.5 * (s.predicted - rate);
+            s.h_next = r.h_m + dN * (rate + s.curve);
+            ++r.rhs_evals;
+            evaluate_rate(f, N_next, s.h_next, s.rate_next);
+          }
+          break;
+      }
+    } catch (const std::exception&) {
+      if (halvings == kMaxHalvings) throw;
+      stable = false;
+    }
+    if (stable) break;
+    if (halvings == kMaxHalvings) {  // a jump of f itself, not the step's doing
+      spdlog::warn("wear::integrate: the rate changes by more than its size over a step of {:.4g} revolutions "
+                   "at N {:.10g}, halved {} times; taking it",
+                   dN, r.N, kMaxHalvings);
+      break;
+    }
+    ++r.rejected;
+    N_next = r.N + dN / 2;
+  }
+  s.N_next = N_next;
+  s.dN = dN;
+}
+
+// A lifetime limit inside the step, g changing sign between its ends (g at its start, updated to its end
+// when none does): located on the step's solution (Euler's line, exactly; Heun's quadratic extension).
+// Returns true with r at the root, the step counted.
+bool root_in_step(const Roots& roots, int n_roots, const IntegratorOptions& o, const Eigen::VectorXd& rate,
+                  FixedStep& s, Eigen::VectorXd& g, IntegratorResult& r) {
+  using Scheme = IntegratorOptions::Scheme;
+  evaluate_roots(roots, n_roots, s.N_next, s.h_next, s.g_next);
+  bool event = false;
+  for (int k = 0; k < n_roots; ++k) event = event || crosses(g[k], s.g_next[k]);
+  if (!event) {
+    g.swap(s.g_next);
+    return false;
+  }
+  const double dN = s.dN;
+  const Eigen::VectorXd& h = r.h_m;
+  const Eigen::VectorXd& curve = s.curve;
+  const StepPoint point = [&](double t, Eigen::VectorXd& hs) {
+    if (o.scheme == Scheme::Euler)
+      hs = h + (t * dN) * rate;
+    else
+      hs = h + dN * (t * rate + (t * t) * curve);
+  };
+  auto [t, found] = locate_on_line(roots, n_roots, r.N, point, h.size(), dN, g, s.g_next);
+  r.N = t == 1 ? s.N_next : r.N + t * dN;
+  if (t == 1) {
+    r.h_m = s.h_next;
+  } else {
+    Eigen::VectorXd hs(h.size());
+    point(t, hs);
+    r.h_m = std::move(hs);
+  }
+  ++r.steps;  // the step the root cut short counts, as in ARKODE
+  r.status.kind = IntegratorStatus::Kind::RootFound;
+  r.status.roots = std::move(found);
+  r.status.message = fmt::format("root {} at N {:.10g} after {} steps", root_list(r.status.roots), r.N, r.steps);
+  return true;
+}
+
+// The step accepted: r moves to its end, the rate at its end (evaluated by the stability control) becomes
+// the next step's slope and gives this step's error estimate (Euler's: trapezoid minus Euler; Heun's: its
+// update minus Euler's). Returns the step as reported to on_step.
+StepInfo accept_fixed_step(const IntegratorOptions& o, Eigen::VectorXd& rate, FixedStep& s, IntegratorResult& r) {
+  using Scheme = IntegratorOptions::Scheme;
+  const double dN = s.dN;
+  ++r.steps;
+  const Eigen::ArrayXd e = o.scheme == Scheme::Euler ? Eigen::ArrayXd(((0.5 * dN) * (s.rate_next - rate)).array())
+                                                     : Eigen::ArrayXd((dN * s.curve).array());
+  const Eigen::ArrayXd w = 1.0 / (o.rtol * r.h_m.array().abs() + o.atol);
+  StepInfo info;
+  info.N = s.N_next;
+  info.step = dN;
+  info.next_step = dN;
+  info.error_estimate = std::sqrt((e * w).square().mean());
+  info.max_local_error_m = e.abs().maxCoeff();
+  info.steps = r.steps;
+  info.rejected = r.rejected;
+  info.rhs_evals = r.rhs_evals;
+  r.N = s.N_next;
+  r.h_m.swap(s.h_next);
+  rate.swap(s.rate_next);
+  r.last_step = r.next_step = dN;
+  SPDLOG_TRACE("wear::integrate: fixed step {} to N {:.10g}, dN {:.4g}", r.steps, r.N, dN);
+  return info;
+}
+
 IntegratorResult integrate_fixed(const Rhs& f, const Roots& roots, int n_roots, double N0, const Eigen::VectorXd& h0,
                                  double N_end, const IntegratorOptions& o, const OnStep& on_step) {
-  using Scheme = IntegratorOptions::Scheme;
   const bool by_depth = o.method == IntegratorOptions::Method::FixedDepth;
   IntegratorResult r;
   r.N = N0;
   r.h_m = h0;
 
-  // the state and the rate at the start of the step
+  // the state, the rate and the limits at the start of the step
   const Eigen::Index n = h0.size();
-  Eigen::VectorXd rate(n), h_next(n), rate_next(n);
+  Eigen::VectorXd rate(n);
+  FixedStep s;
+  s.h_next.resize(n);
+  s.rate_next.resize(n);
+  s.curve = Eigen::VectorXd::Zero(n);
+  s.predicted.resize(n);
+  s.g_next.resize(n_roots);
   evaluate_rate(f, N0, h0, rate);
   r.rhs_evals = 1;
-  Eigen::VectorXd g(n_roots), g_next(n_roots);
+  Eigen::VectorXd g(n_roots);
   if (n_roots > 0) evaluate_roots(roots, n_roots, N0, h0, g);
-  // Heun: the step's solution is h(s) = h + dN (s rate + s^2 curve), s in [0, 1]
-  Eigen::VectorXd curve = Eigen::VectorXd::Zero(n);
-  Eigen::VectorXd predicted(n);  // Heun: the rate at Euler's predictor
-  // the rate's change over a step is at most the larger of its sizes at the two ends (the stability test)
-  const auto stable_between = [](const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
-    return (b - a).cwiseAbs().maxCoeff() <= std::max(a.cwiseAbs().maxCoeff(), b.cwiseAbs().maxCoeff());
-  };
 
   long targets = 0;  // FixedStep: multiples of fixed_step reached; N counts from N0 on them
   while (r.N < N_end) {
@@ -481,117 +628,16 @@ IntegratorResult integrate_fixed(const Rhs& f, const Roots& roots, int n_roots, 
       return r;
     }
 
-    // step: to the next multiple of fixed_step from N0 (no summed rounding in N), or the revolutions
-    // that wear max_depth_step at the fastest node
-    double dN = o.fixed_step;
-    if (by_depth) {
-      const double fastest = rate.cwiseAbs().maxCoeff();
-      dN = fastest > 0 ? o.max_depth_step / fastest : std::numeric_limits<double>::infinity();
-      if (o.max_step > 0) dN = std::min(dN, o.max_step);
-    }
-    double N_next = by_depth ? r.N + dN : N0 + static_cast<double>(targets + 1) * o.fixed_step;
-    if (N_next >= N_end - kEndTol * std::max(std::abs(N_end), dN)) N_next = N_end;
-    const double N_target = N_next;
+    // the step: its size, then halved until stable
+    const double N_target = fixed_step_end(o, rate, r.N, N0, targets, N_end);
+    take_stable_step(f, o, rate, N_target, s, r);
+    if (!by_depth && s.N_next == N_target) ++targets;
 
-    // Stability control: the step is halved until the rate at its end exists (a far too large step
-    // wears an absurd profile, on which the contact cannot be solved) and differs from the rate at its
-    // start by at most the larger of the two rates' sizes. For a decaying mode dh/dN = lambda h that is
-    // lambda dN >= -1: Euler's factor 1 + lambda dN stays in [0, 1], so the profile cannot oscillate;
-    // a growing mode or a rate rising from 0 passes. A halved FixedStep goes on towards the same
-    // multiple of fixed_step. (Heun: the rate at Euler's predictor is tested, then its corrector's end
-    // evaluated.)
-    for (int halvings = 0;; ++halvings) {
-      dN = N_next - r.N;
-      bool stable = false;
-      try {
-        switch (o.scheme) {
-          case Scheme::Euler:
-            h_next = r.h_m + dN * rate;
-            ++r.rhs_evals;
-            evaluate_rate(f, N_next, h_next, rate_next);
-            stable = stable_between(rate, rate_next);
-            break;
-          case Scheme::Heun:
-            h_next = r.h_m + dN * rate;
-            ++r.rhs_evals;
-            evaluate_rate(f, N_next, h_next, predicted);
-            stable = stable_between(rate, predicted);
-            if (stable || halvings == kMaxHalvings) {
-              curve = 0.5 * (predicted - rate);
-              h_next = r.h_m + dN * (rate + curve);
-              ++r.rhs_evals;
-              evaluate_rate(f, N_next, h_next, rate_next);
-            }
-            break;
-        }
-      } catch (const std::exception&) {
-        if (halvings == kMaxHalvings) throw;
-        stable = false;
-      }
-      if (stable) break;
-      if (halvings == kMaxHalvings) {  // a jump of f itself, not the step's doing
-        spdlog::warn("wear::integrate: the rate changes by more than its size over a step of {:.4g} revolutions "
-                     "at N {:.10g}, halved {} times; taking it",
-                     dN, r.N, kMaxHalvings);
-        break;
-      }
-      ++r.rejected;
-      N_next = r.N + dN / 2;
-    }
-    if (!by_depth && N_next == N_target) ++targets;
+    // a lifetime limit inside the step ends the integration there
+    if (n_roots > 0 && root_in_step(roots, n_roots, o, rate, s, g, r)) return r;
 
-    // a lifetime limit inside the step: located on the step's solution (Euler's line, exactly)
-    if (n_roots > 0) {
-      evaluate_roots(roots, n_roots, N_next, h_next, g_next);
-      bool event = false;
-      for (int k = 0; k < n_roots; ++k) event = event || crosses(g[k], g_next[k]);
-      if (event) {
-        const Eigen::VectorXd& h = r.h_m;
-        const StepPoint point = [&](double s, Eigen::VectorXd& hs) {
-          if (o.scheme == Scheme::Euler)
-            hs = h + (s * dN) * rate;
-          else
-            hs = h + dN * (s * rate + (s * s) * curve);
-        };
-        auto [s, found] = locate_on_line(roots, n_roots, r.N, point, n, dN, g, g_next);
-        r.N = s == 1 ? N_next : r.N + s * dN;
-        if (s == 1) {
-          r.h_m = h_next;
-        } else {
-          Eigen::VectorXd hs(n);
-          point(s, hs);
-          r.h_m = std::move(hs);
-        }
-        ++r.steps;  // the step the root cut short counts, as in ARKODE
-        r.status.kind = IntegratorStatus::Kind::RootFound;
-        r.status.roots = std::move(found);
-        r.status.message =
-            fmt::format("root {} at N {:.10g} after {} steps", root_list(r.status.roots), r.N, r.steps);
-        return r;
-      }
-      g.swap(g_next);
-    }
-
-    // the rate at the step's end (evaluated above): the next step's slope and this step's error estimate
-    // (Euler's: trapezoid minus Euler; Heun's: its update minus Euler's)
-    ++r.steps;
-    const Eigen::ArrayXd e = o.scheme == Scheme::Euler ? Eigen::ArrayXd(((0.5 * dN) * (rate_next - rate)).array())
-                                                       : Eigen::ArrayXd((dN * curve).array());
-    const Eigen::ArrayXd w = 1.0 / (o.rtol * r.h_m.array().abs() + o.atol);
-    StepInfo info;
-    info.N = N_next;
-    info.step = dN;
-    info.next_step = dN;
-    info.error_estimate = std::sqrt((e * w).square().mean());
-    info.max_local_error_m = e.abs().maxCoeff();
-    info.steps = r.steps;
-    info.rejected = r.rejected;
-    info.rhs_evals = r.rhs_evals;
-    r.N = N_next;
-    r.h_m.swap(h_next);
-    rate.swap(rate_next);
-    r.last_step = r.next_step = dN;
-    SPDLOG_TRACE("wear::integrate: fixed step {} to N {:.10g}, dN {:.4g}", r.steps, r.N, dN);
+    // the step accepted, reported
+    const StepInfo info = accept_fixed_step(o, rate, s, r);
     const bool go_on = on_step ? on_step(info, r.h_m) : true;
     if (!go_on && r.N < N_end) {
       r.status.kind = IntegratorStatus::Kind::Stopped;
@@ -602,7 +648,7 @@ IntegratorResult integrate_fixed(const Rhs& f, const Roots& roots, int n_roots, 
   }
   r.status.kind = IntegratorStatus::Kind::ReachedEnd;
   r.status.message = fmt::format("reached N_end {:.10g} after {} {} steps", N_end, r.steps,
-                                 o.scheme == Scheme::Euler ? "Euler" : "Heun");
+                                 o.scheme == IntegratorOptions::Scheme::Euler ? "Euler" : "Heun");
   return r;
 }
 }  // namespace

@@ -14,7 +14,6 @@
 #include <spdlog/spdlog.h>
 
 #include "lib/io/case.h"
-#include "lib/io/enum_names.h"
 #include "lib/numeric.h"
 #include "lib/io/errors.h"
 #include "lib/model/contact_model.h"
@@ -368,17 +367,6 @@ double dissipated_energy_J(const WearModel& m, const Eigen::VectorXd& state) {
 namespace {
 
 enum Limit { kDepth, kPressure, kEdge, kLimits };
-constexpr LifeEnd kLimitEnds[kLimits] = {LifeEnd::MaxDepth, LifeEnd::MaxPressure, LifeEnd::Edge};
-
-// the report's words (lib/io/enum_names.h)
-constexpr contact::EnumTable<LifeEnd, 8> kLifeEndWords = {
-    {{LifeEnd::NotRun, "not_run"}, {LifeEnd::MaxDepth, "max_depth"}, {LifeEnd::MaxPressure, "max_pressure"},
-     {LifeEnd::Edge, "edge"}, {LifeEnd::Revolutions, "revolutions"}, {LifeEnd::MaxSteps, "max_steps"},
-     {LifeEnd::Stopped, "stopped"}, {LifeEnd::Failed, "failed"}}};
-constexpr contact::EnumTable<LifeFailure, 5> kLifeFailureWords = {
-    {{LifeFailure::None, "none"}, {LifeFailure::Integrator, "integrator"},
-     {LifeFailure::UnresolvedContact, "unresolved_contact"}, {LifeFailure::WornThrough, "worn_through"},
-     {LifeFailure::NormalNotConverged, "normal_not_converged"}}};
 
 // The wear is carried by the worn bodies' profile nodes: a contact narrower than a few node spacings
 // would put a strip's wear on one node and the next solve could not see the worn shape. Throws
@@ -441,205 +429,66 @@ Eigen::VectorXd limit_values(const WearModel& m, const Eigen::VectorXd& h, WearC
   return g;
 }
 
-// the revolutions each integration runs to: each snapshot revolution ahead of N, then the budget
-std::vector<double> segment_ends(const WearCase& c, double N) {
-  std::vector<double> ends;
-  for (double snapshot : c.wear.snapshots_revolutions)
-    if (snapshot > N) ends.push_back(snapshot);
-  if (ends.empty() || ends.back() < c.wear.revolutions) ends.push_back(c.wear.revolutions);
-  return ends;
-}
-
-// The counters of a life in progress: the start's, plus what this process's integrations and solves
-// added. A continuation (a later segment, or a resumed run) starts at a step end whose f the life has
-// already evaluated: the integrator's first evaluation there is not counted again.
-struct LifeTally {
-  LifeCounters start;         // the life's counters where this call of run_life began
-  LifeCounters cache_start;   // the cache's counts then
-  LifeCounters segment_start; // the life's integrator counts where the current segment began
-  long repeated_evals = 0;    // 1 when the current segment continues from a step end
-
-  // the solve counts: the start's plus what this process's cache counted since
-  void add_solves(LifeCounters& c, const WearCache& cache) const {
-    c.rate_evaluations = start.rate_evaluations + cache.counters.rate_evaluations - cache_start.rate_evaluations;
-    c.limit_evaluations = start.limit_evaluations + cache.counters.limit_evaluations - cache_start.limit_evaluations;
-    c.normal_solves = start.normal_solves + cache.counters.normal_solves - cache_start.normal_solves;
-    c.tangential_solves = start.tangential_solves + cache.counters.tangential_solves - cache_start.tangential_solves;
-  }
-  // the life's counters, the current segment's integration having counted steps, rhs_evals and rejected
-  LifeCounters at(const WearCache& cache, long steps, long rhs_evals, long rejected) const {
-    LifeCounters c;
-    c.steps = segment_start.steps + steps;
-    c.rejected = segment_start.rejected + rejected;
-    c.rhs_evals = segment_start.rhs_evals + std::max(0L, rhs_evals - repeated_evals);
-    add_solves(c, cache);
-    return c;
-  }
-  void begin_segment(const LifeCounters& life) {
-    segment_start = life;
-    repeated_evals = life.rhs_evals > 0 ? 1 : 0;
-  }
-};
-
-// what run_life works with: the model, the case, the caller's hooks, the cache and the life's counters
-struct LifeRun {
-  const WearModel& m;
-  const WearCase& c;
-  const LifeHooks& hooks;
-  WearCache& cache;
-  LifeTally tally;
-};
-
-// how the life ended, in words
-struct LifeEnding {
-  LifeEnd why = LifeEnd::NotRun;
-  std::string message;
-};
-
-// the life ends here: why, in words, and the contact at its end
-LifeResult& end_life(LifeRun& run, LifeResult& life, const LifeEnding& ending) {
-  life.ended_by = ending.why;
-  life.message = ending.message;
-  life.contact = wear_rate(run.m, life.state, run.cache).contact;
-  run.tally.add_solves(life.counters, run.cache);
-  if (ending.why == LifeEnd::Edge)
-    spdlog::info("wear: the contact has spread to the edge of the narrower body at {:.6g} revolutions (step {}); "
-                 "the life ends there (wear.limits.edge)",
-                 life.N, life.counters.steps);
-  return life;
-}
-
-// the integrator's status as the life's end (Kind::ReachedEnd: none, the life goes on)
-std::optional<LifeEnd> life_end_of(const IntegratorResult& r) {
-  switch (r.status.kind) {
-    case IntegratorStatus::Kind::ReachedEnd: return std::nullopt;
-    case IntegratorStatus::Kind::RootFound: return kLimitEnds[r.status.roots.front()];
-    case IntegratorStatus::Kind::Stopped: return LifeEnd::Stopped;
-    case IntegratorStatus::Kind::MaxSteps: return LifeEnd::MaxSteps;
-    case IntegratorStatus::Kind::Failed: return LifeEnd::Failed;
-  }
-  return LifeEnd::Failed;
-}
-
-}  // namespace
-
-std::string to_string(LifeEnd e) { return contact::enum_name(kLifeEndWords, e); }
-
-LifeEnd parse_life_end(const std::string& word) {
-  if (const std::optional<LifeEnd> e = contact::enum_from_name(kLifeEndWords, word)) return *e;
-  throw std::invalid_argument(fmt::format("'{}' is not how a life ends (one of {})", contact::clipped(word),
-                                          contact::enum_names_list(kLifeEndWords)));
-}
-
-std::string to_string(LifeFailure f) { return contact::enum_name(kLifeFailureWords, f); }
-
-namespace {
-
-// a limit already reached where the life starts (a resumed run, or an unworn contact at the edge)
-std::optional<LifeEnding> limit_reached_at_start(LifeRun& run, const LifeResult& life) {
-  const Eigen::VectorXd g = limit_values(run.m, life.state, run.cache);
-  for (int k = 0; k < kLimits; ++k)
-    if (g(k) >= 0)
-      return LifeEnding{kLimitEnds[k], fmt::format("{} reached at the start, N {:.10g}", to_string(kLimitEnds[k]),
-                                                   life.N)};
-  return std::nullopt;
-}
-
-// The wear from life.N to N_end, step by step (each reported to the hooks with the life's counters),
-// up to N_end or the first limit, located. Returns how the life ended in it, or nothing at N_end. The
-// worn geometry ending the life (a contact the strips cannot resolve, a body worn through) ends it at
-// its last accepted step, failed.
-std::optional<LifeEnding> wear_until(LifeRun& run, double N_end, LifeResult& life) {
-  const WearModel& m = run.m;
-  WearCache& cache = run.cache;
-  IntegratorOptions options = integrator_options(run.c.wear.stepping);
-  options.initial_step = life.next_step;
-  options.max_steps = run.c.wear.stepping.max_steps - life.counters.steps;
-  if (options.max_steps <= 0)
-    return LifeEnding{LifeEnd::MaxSteps, fmt::format("max_steps {} reached", run.c.wear.stepping.max_steps)};
-  run.tally.begin_segment(life.counters);
-
-  // dh/dN = f(h), the limits g(h), and each accepted step, kept as the last accepted state
-  const Rhs f = [&](double, const Eigen::VectorXd& h, Eigen::VectorXd& dhdN) {
+// the roller's life as the driver's problem: dh/dN = wear_rate, the limits depth, pressure and edge, the
+// cache's solve counts; the worn geometry ending the life (a contact the strips cannot resolve, a body
+// worn through) ends it at its last accepted step, failed
+LifeProblem life_problem(const WearModel& m, const WearCase& c, WearCache& cache) {
+  LifeProblem p;
+  p.rate = [&m, &cache](double, const Eigen::VectorXd& h, Eigen::VectorXd& dhdN) {
     dhdN = wear_rate(m, h, cache).dstate_dN;
   };
-  const Roots roots = [&](double, const Eigen::VectorXd& h, Eigen::VectorXd& g) { g = limit_values(m, h, cache); };
-  LifeStart last{life.N, life.state, life.next_step, life.counters};
-  const OnStep on_step = [&](const StepInfo& info, const Eigen::VectorXd& h) {
-    LifeStep s;
-    s.N = info.N;
-    s.state = &h;
-    s.contact = wear_rate(m, h, cache).contact;
-    s.counters = run.tally.at(cache, info.steps, info.rhs_evals, info.rejected);
-    s.step = s.counters.steps;
-    s.info = info;
-    s.info.steps = s.counters.steps;
-    s.info.rhs_evals = s.counters.rhs_evals;
-    s.info.rejected = s.counters.rejected;
-    last = {s.N, h, info.next_step, s.counters};
-    return run.hooks.on_step ? run.hooks.on_step(s) : true;
+  p.limits = {LifeEnd::MaxDepth, LifeEnd::MaxPressure, LifeEnd::Edge};
+  p.limit_values = [&m, &cache](double, const Eigen::VectorXd& h, Eigen::VectorXd& g) {
+    g = limit_values(m, h, cache);
   };
-
-  IntegratorResult r;
-  try {
-    r = integrate(f, roots, kLimits, life.N, life.state, N_end, options, on_step);
-  } catch (const std::exception& e) {
+  p.options = integrator_options(c.wear.stepping);
+  p.revolutions = c.wear.revolutions;
+  p.budget_key = "wear.revolutions";
+  p.snapshots_revolutions = c.wear.snapshots_revolutions;
+  p.solves = [&cache] { return cache.counters; };
+  p.failure_of = [](const std::exception& e, double N_last) {
     const LifeFailure failure = geometry_failure(e);
-    if (failure == LifeFailure::None) throw;
-    life.N = last.N;
-    life.state = last.state;
-    life.counters = last.counters;
-    life.failure = failure;
-    spdlog::warn("wear: {}; the life ends at N {:.10g}, its last accepted step", e.what(), life.N);
-    return LifeEnding{LifeEnd::Failed, fmt::format("ended at N {:.10g}, the last accepted step: {}", life.N, e.what())};
-  }
-  life.N = r.N;
-  life.state = r.h_m;
-  life.counters = run.tally.at(cache, r.steps, r.rhs_evals, r.rejected);
-  if (r.next_step > 0) life.next_step = r.next_step;
-
-  const std::optional<LifeEnd> end = life_end_of(r);
-  if (!end) return std::nullopt;
-  if (*end == LifeEnd::Failed) life.failure = LifeFailure::Integrator;
-  if (r.status.kind != IntegratorStatus::Kind::RootFound) return LifeEnding{*end, r.status.message};
-  return LifeEnding{*end, fmt::format("{} reached at N {:.10g}, in step {}", to_string(*end), life.N,
-                                      life.counters.steps)};
-}
-
-// the worn profiles at a snapshot revolution, for the caller to write
-void take_snapshot(const LifeRun& run, double N_end, const LifeResult& life) {
-  const std::vector<double>& snapshots = run.c.wear.snapshots_revolutions;
-  if (run.hooks.on_snapshot && std::find(snapshots.begin(), snapshots.end(), N_end) != snapshots.end())
-    run.hooks.on_snapshot(life.N, life.state);
+    if (failure != LifeFailure::None)
+      spdlog::warn("wear: {}; the life ends at N {:.10g}, its last accepted step", e.what(), N_last);
+    return failure;
+  };
+  return p;
 }
 
 }  // namespace
 
 LifeResult run_life(const WearModel& m, const WearCase& c, const LifeStart& start, const LifeHooks& hooks,
                     WearCache& cache) {
-  LifeRun run{m, c, hooks, cache, LifeTally{start.counters, cache.counters, start.counters, 0}};
+  LifeStart from = start;
+  if (from.state.size() == 0) from.state = initial_state(m);
 
-  // where the life starts: the unworn state, or a checkpoint's state and counters
   LifeResult life;
-  life.N = start.N;
-  life.state = start.state.size() ? start.state : initial_state(m);
-  life.next_step = start.next_step;
-  life.counters = start.counters;
-
+  LifeDriverHooks driver;
   // the worn body's profile must resolve the contact: its nodes carry the wear
-  for_each_condition(m, cache, [&](const WearModel& mk, WearCache& ck) {
-    check_profile_resolves_contact(c, mk, solved_normal_state(mk, life.state, ck));
-  });
-  if (const std::optional<LifeEnding> reached = limit_reached_at_start(run, life)) return end_life(run, life, *reached);
-
-  // wear through each snapshot revolution, then to the budget: a limit, or a failure, ends the life
-  for (const double N_end : segment_ends(c, life.N)) {
-    if (const std::optional<LifeEnding> ending = wear_until(run, N_end, life)) return end_life(run, life, *ending);
-    take_snapshot(run, N_end, life);
-  }
-  return end_life(run, life,
-                  {LifeEnd::Revolutions, fmt::format("the life budget wear.revolutions = {:.10g} reached with no limit",
-                                                     c.wear.revolutions)});
+  driver.on_start = [&](double, const Eigen::VectorXd& state) {
+    for_each_condition(m, cache, [&](const WearModel& mk, WearCache& ck) {
+      check_profile_resolves_contact(c, mk, solved_normal_state(mk, state, ck));
+    });
+  };
+  // each accepted step reported with the contact at its end; the contact where the life ends
+  driver.on_step = [&](const LifeStepEnd& e) {
+    LifeStep s;
+    s.N = e.N;
+    s.state = e.state;
+    s.contact = wear_rate(m, *e.state, cache).contact;
+    s.counters = e.counters();
+    s.step = s.counters.steps;
+    s.info = e.info;
+    return hooks.on_step ? hooks.on_step(s) : true;
+  };
+  driver.on_snapshot = hooks.on_snapshot;
+  driver.on_end = [&](double, const Eigen::VectorXd& state) { life.contact = wear_rate(m, state, cache).contact; };
+  static_cast<LifeOutcome&>(life) = integrate_life(life_problem(m, c, cache), from, driver);
+  if (life.ended_by == LifeEnd::Edge)
+    spdlog::info("wear: the contact has spread to the edge of the narrower body at {:.6g} revolutions (step {}); "
+                 "the life ends there (wear.limits.edge)",
+                 life.N, life.counters.steps);
+  return life;
 }
 
 }  // namespace wear

@@ -31,6 +31,7 @@
 #include "lib/normal/semi_hertz.h"
 #include "lib/tangential/tangential.h"
 #include "wear/integrator.h"
+#include "wear/life.h"
 #include "wear/profile_update.h"
 #include "wear/wear_case.h"
 #include "wear/wear_law.h"
@@ -108,20 +109,6 @@ struct WearRate {
   ContactReport contact;
 };
 
-// A life's counters, in one place: what the integrator did (steps, rejected steps, evaluations of f)
-// and what the evaluations cost (solves). A resumed run starts from the checkpoint's counters, so every
-// count covers the whole life, all processes of a resumed run included (docs/wear-loop.md, "Counters").
-struct LifeCounters {
-  long steps = 0;              // accepted steps (the step a limit cut short included)
-  long rejected = 0;           // steps that failed the error test (adaptive) or were halved (fixed)
-  long rhs_evals = 0;          // evaluations of f the integrator made; a continuation's first one, at the
-                               // state the last step already evaluated, is not counted again
-  long rate_evaluations = 0;   // calls of wear_rate, cached or not (integrator, limits, report rows)
-  long limit_evaluations = 0;  // evaluations of the limit functions (root finding's probes included)
-  long normal_solves = 0;      // normal problems solved (cache misses)
-  long tangential_solves = 0;  // steady solves or Satran duty cycles (cache misses)
-};
-
 // the last results, keyed by the worn profiles' hash (an unchanged profile is not solved again)
 struct WearCache {
   bool reuse = true;  // false: every evaluation solves afresh (to show that reuse changes nothing)
@@ -177,14 +164,8 @@ double worn_volume_m3(const WearModel& m, const Eigen::VectorXd& state, int body
 double dissipated_energy_J(const WearModel& m, const Eigen::VectorXd& state);
 
 // ---- the life ----
-
-// where a run starts: the unworn state, or a checkpoint
-struct LifeStart {
-  double N = 0;
-  Eigen::VectorXd state;
-  double next_step = 0;   // adaptive: the step to try first (a checkpoint's), 0 = ARKODE's estimate
-  LifeCounters counters;  // so far (a checkpoint's)
-};
+// The roller's life on the one life driver (wear/life.h): its rate wear_rate, its limits depth, peak pressure
+// and edge; LifeStart, LifeCounters, LifeEnd and LifeFailure are the driver's.
 
 struct LifeStep {
   long step = 0;              // accepted steps so far, over the whole life
@@ -200,39 +181,7 @@ struct LifeHooks {
   std::function<void(double N, const Eigen::VectorXd& state)> on_snapshot;  // at each snapshot revolution
 };
 
-// what ended a life; the default is the pessimistic one
-enum class LifeEnd {
-  NotRun,       // run_life did not finish (default)
-  MaxDepth,     // wear.limits.max_depth_m reached (located)
-  MaxPressure,  // wear.limits.max_pressure_Pa exceeded (located)
-  Edge,         // the contact reached the end of the profiles' overlap (located)
-  Revolutions,  // the budget wear.revolutions, with no limit reached
-  MaxSteps,     // wear.stepping.max_steps
-  Stopped,      // on_step returned false
-  Failed,       // ARKODE gave up, or LifeEndingGeometry: the state is the last accepted step's
-};
-// why a life Failed (None for every other end)
-enum class LifeFailure {
-  None,
-  Integrator,         // ARKODE gave up (repeated error test failures, too much accuracy asked)
-  UnresolvedContact,  // wear::UnresolvedContact
-  WornThrough,        // wear::WornThrough
-  NormalNotConverged, // wear::NormalNotConverged
-};
-// the report's words: max_depth, max_pressure, edge, revolutions, max_steps, stopped, failed, not_run
-std::string to_string(LifeEnd e);
-// the inverse of to_string; throws std::invalid_argument naming the word and the valid ones
-LifeEnd parse_life_end(const std::string& word);
-std::string to_string(LifeFailure f);
-
-struct LifeResult {
-  LifeEnd ended_by = LifeEnd::NotRun;
-  LifeFailure failure = LifeFailure::None;
-  std::string message;
-  double N = 0;
-  Eigen::VectorXd state;
-  double next_step = 0;
-  LifeCounters counters;  // over the whole life (a resumed run's start included)
+struct LifeResult : LifeOutcome {
   ContactReport contact;  // at the end
 };
 

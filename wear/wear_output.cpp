@@ -103,30 +103,52 @@ std::filesystem::path wear_snapshot_path(int index, int body) {
   return std::filesystem::path("snapshots") / fmt::format("snapshot_{:04d}_body{}.csv", index, body);
 }
 
-std::string wear_report_text(const WearModel& m, const WearReport& r) {
-  const LifeResult& l = r.life;
+std::string life_report_text(const LifeReport& r) {
+  const auto number = [&](double v) { return r.digits > 0 ? fmt::format("{:.{}g}", v, r.digits) : round_trip(v); };
   std::string s;
   s += fmt::format("case: {}\n", r.case_name);
-  s += fmt::format("ended_by: {}\n", to_string(l.ended_by));
-  if (l.failure != LifeFailure::None) s += fmt::format("failure: {}\n", to_string(l.failure));
-  s += fmt::format("message: {}\n", l.message);
-  s += fmt::format("revolutions: {}\n", round_trip(l.N));
-  s += fmt::format("hours: {}\n", round_trip(l.N * r.hours_per_revolution));
-  s += fmt::format("reference_body: body{}\n", m.law1 ? 1 : 2);
-  s += fmt::format("max_depth_m: {}\n", round_trip(max_depth_m(m, l.state)));
-  if (m.law1) s += fmt::format("worn_volume_body1_m3: {}\n", round_trip(worn_volume_m3(m, l.state, 1)));
-  if (m.law2) s += fmt::format("worn_volume_body2_m3: {}\n", round_trip(worn_volume_m3(m, l.state, 2)));
-  s += fmt::format("dissipated_J: {}\n", round_trip(dissipated_energy_J(m, l.state)));
-  s += fmt::format("p0_Pa: {}\n", round_trip(l.contact.p0_Pa));
-  s += fmt::format("a_m: {}\nb_m: {}\n", round_trip(l.contact.a_m), round_trip(l.contact.b_m));
-  s += fmt::format("normal_solver: {}\n", contact::to_string(l.contact.normal_solver));
-  const LifeCounters& n = l.counters;
+  s += fmt::format("ended_by: {}\n", to_string(r.ended_by));
+  if (r.failure != LifeFailure::None) s += fmt::format("failure: {}\n", to_string(r.failure));
+  s += fmt::format("message: {}\n", r.message);
+  s += fmt::format("revolutions: {}\n", number(r.revolutions));
+  s += fmt::format("hours: {}\n", number(r.hours));
+  s += fmt::format("max_depth_m: {}\n", number(r.max_depth_m));
+  s += fmt::format("dissipated_J: {}\n", number(r.dissipated_J));
+  const LifeCounters& n = r.counters;
   s += fmt::format("steps: {}\nrejected_steps: {}\nrhs_evals: {}\n", n.steps, n.rejected, n.rhs_evals);
-  s += fmt::format("rate_evaluations: {}\nlimit_evaluations: {}\n", n.rate_evaluations, n.limit_evaluations);
-  s += fmt::format("normal_solves: {}\ntangential_solves: {}\n", n.normal_solves, n.tangential_solves);
   s += fmt::format("resumed: {}\n", r.resumed ? "true" : "false");
-  s += fmt::format("wall_s: {:.3f}\n", r.wall_s);
+  for (const auto& [key, value] : r.own) s += fmt::format("{}: {}\n", key, value);
   return s;
+}
+
+std::string wear_report_text(const WearModel& m, const WearReport& r) {
+  const LifeResult& l = r.life;
+  LifeReport report;
+  report.case_name = r.case_name;
+  report.ended_by = l.ended_by;
+  report.failure = l.failure;
+  report.message = l.message;
+  report.revolutions = l.N;
+  report.hours = l.N * r.hours_per_revolution;
+  report.max_depth_m = max_depth_m(m, l.state);
+  report.dissipated_J = dissipated_energy_J(m, l.state);
+  report.counters = l.counters;
+  report.resumed = r.resumed;
+  auto& own = report.own;
+  own.emplace_back("reference_body", fmt::format("body{}", m.law1 ? 1 : 2));
+  if (m.law1) own.emplace_back("worn_volume_body1_m3", round_trip(worn_volume_m3(m, l.state, 1)));
+  if (m.law2) own.emplace_back("worn_volume_body2_m3", round_trip(worn_volume_m3(m, l.state, 2)));
+  own.emplace_back("p0_Pa", round_trip(l.contact.p0_Pa));
+  own.emplace_back("a_m", round_trip(l.contact.a_m));
+  own.emplace_back("b_m", round_trip(l.contact.b_m));
+  own.emplace_back("normal_solver", contact::to_string(l.contact.normal_solver));
+  const LifeCounters& n = l.counters;
+  own.emplace_back("rate_evaluations", std::to_string(n.rate_evaluations));
+  own.emplace_back("limit_evaluations", std::to_string(n.limit_evaluations));
+  own.emplace_back("normal_solves", std::to_string(n.normal_solves));
+  own.emplace_back("tangential_solves", std::to_string(n.tangential_solves));
+  own.emplace_back("wall_s", fmt::format("{:.3f}", r.wall_s));
+  return life_report_text(report);
 }
 
 // ---- checkpoint ----

@@ -11,6 +11,7 @@
 //   snapshots/snapshot_KKKK_BODY.csv   '# case: ', '# body: ', '# revolutions: ', '# hours: ', then
 //     y_m,z_original_m,z_m,depth_m     one row per profile node of a worn body
 //   report.txt                         'key: value' lines: the predicted life and what ended it
+//                                      (life_report_text)
 //   checkpoint.txt                     the state to resume from (hexadecimal floats: bit-exact)
 #pragma once
 
@@ -19,6 +20,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "wear/wear_loop.h"
@@ -34,6 +36,28 @@ std::string wear_summary_row(const WearModel& m, const LifeStep& s, double hours
 std::string wear_snapshot_csv(const WearModel& m, int body, double N, double hours, const Eigen::VectorXd& state);
 // "snapshots/snapshot_0003_body1.csv"
 std::filesystem::path wear_snapshot_path(int index, int body);
+
+// The report of every life, the roller's and the cam's (report.txt, and printed as it is): 'key: value'
+// lines, first the keys every life writes, in this order,
+//   case, ended_by, failure (a failed life's only), message, revolutions, hours, max_depth_m, dissipated_J,
+//   steps, rejected_steps, rhs_evals, resumed,
+// then the life's own keys in its order (LifeReport::own). The shared numbers are written with `digits`
+// significant digits, or (0) at full precision: the shortest text that reads back as the same double.
+struct LifeReport {
+  std::string case_name;
+  LifeEnd ended_by = LifeEnd::NotRun;
+  LifeFailure failure = LifeFailure::None;
+  std::string message;
+  double revolutions = 0;   // of the life's reference body (the cam: cam revolutions)
+  double hours = 0;
+  double max_depth_m = 0;   // the deepest wear of either body
+  double dissipated_J = 0;  // over the life
+  LifeCounters counters;    // steps, rejected_steps, rhs_evals are written
+  bool resumed = false;
+  int digits = 0;
+  std::vector<std::pair<std::string, std::string>> own;  // the life's own keys and their values, as written
+};
+std::string life_report_text(const LifeReport& r);
 
 struct WearReport {
   std::string case_name;

@@ -253,9 +253,9 @@ int main(int argc, char** argv) {
         if (N_held == 0) N_held = life.N;
         std::printf("%-24s life %.6g revolutions (%+.2f %%), ended by %s, %ld steps, %ld evaluations, dissipated %.6g "
                     "J, max depth %.4g m; %.1f s CPU\n",
-                    name, life.N, 100 * (life.N / N_held - 1), cam::to_string(life.ended_by).c_str(), life.steps,
+                    name, life.N, 100 * (life.N / N_held - 1), wear::to_string(life.ended_by).c_str(), life.steps,
                     life.revolutions_solved, life.energy_J, life.max_depth_m, cpu_s() - t0);
-        if (life.ended_by == cam::CamLifeEnd::Failed) std::printf("  %s\n", life.message.c_str());
+        if (life.ended_by == wear::LifeEnd::Failed) std::printf("  %s\n", life.message.c_str());
       }
       return 0;
     }
@@ -271,13 +271,13 @@ int main(int argc, char** argv) {
       const cam::CamLifeModel& model = b.model;
       t0 = cpu_s();
       const cam::CamLifeResult life = cam::run_cam_life(model, b.producer);
-      if (life.ended_by == cam::CamLifeEnd::Failed || life.ended_by == cam::CamLifeEnd::NotRun) {
+      if (life.ended_by == wear::LifeEnd::Failed || life.ended_by == wear::LifeEnd::NotRun) {
         std::fprintf(stderr, "the life failed: %s\n", life.message.c_str());
         return 1;
       }
       s = life.state;
       std::printf("worn state: the life with fixed depth steps of 1e-6 m, %.6g revolutions, ended by %s (%.1f s CPU)\n",
-                  life.N, cam::to_string(life.ended_by).c_str(), cpu_s() - t0);
+                  life.N, wear::to_string(life.ended_by).c_str(), cpu_s() - t0);
     }
     const cam::Revolution& r = setup->revolution;
     const cam::LiftLoss loss_max = cam::max_lift_loss(setup->unworn_profiles, g, s, cam::lift_loss_samples(r));

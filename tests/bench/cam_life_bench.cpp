@@ -211,7 +211,7 @@ int main(int argc, char** argv) {
       std::printf("%-8s life %.6g revolutions (%s), %ld steps, %ld evaluations, %.2f s CPU, %.1f ms/revolution; "
                   "%.1f ms of it in the worn revolution; per revolution %.1f normal solves, %.1f F(delta), %.1f creep law; "
                   "%ld cold retries\n",
-                  v.name, life.N, cam::to_string(life.ended_by).c_str(), life.steps, life.revolutions_solved, cpu,
+                  v.name, life.N, wear::to_string(life.ended_by).c_str(), life.steps, life.revolutions_solved, cpu,
                   1e3 * cpu / std::max<long>(1, life.revolutions_solved),
                   1e3 * revolution_cpu / std::max<long>(1, st.evaluations),
                   static_cast<double>(st.contacts_solved) / std::max<long>(1, st.evaluations),
