@@ -11,7 +11,7 @@
 #include "cam/periodic_revolution.h"
 #include "cam/revolution.h"
 #include "lib/io/csv.h"
-#include "lib/io/errors.h"
+#include "lib/errors.h"
 #include "lib/numeric.h"
 #include "session/output_folder.h"
 

@@ -1,7 +1,7 @@
 // rollwear's subcommands (app/main.cpp wires them): each declares its options (add_<name>_command) and does its
 // work (run_<name>_command) in app/<name>_command.cpp. They parse and print; the output folder, the lives and the
 // sweeps are session/'s. Each returns the exit status; errors are thrown and mapped to a status by main
-// (lib/io/errors.h: 2 bad input, 1 any other failure).
+// (lib/errors.h: 2 bad input, 1 any other failure).
 #pragma once
 
 #include <string>

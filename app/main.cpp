@@ -1,6 +1,6 @@
 // rollwear: the command line. Wires the subcommands (app/commands.h, one file each: app/<name>_command.cpp),
 // sets up the logging, and maps what a command throws to the exit status.
-// Exit codes (lib/io/errors.h): 0 success, 2 bad input (case file, option: CaseError), 1 any other failure.
+// Exit codes (lib/errors.h): 0 success, 2 bad input (case file, option: CaseError), 1 any other failure.
 #include <cstdio>
 #include <exception>
 #include <string>
@@ -10,7 +10,7 @@
 #include <spdlog/spdlog.h>
 
 #include "app/commands.h"
-#include "lib/io/errors.h"
+#include "lib/errors.h"
 
 #ifndef ROLLWEAR_VERSION
 #define ROLLWEAR_VERSION "0.1.0"  // keep equal to project(VERSION) in CMakeLists.txt
@@ -94,7 +94,7 @@ int main(int argc, char** argv) {
     if (sweep_cmd->parsed()) return run_sweep_command(sweep_opt);
     print_error("no subcommand ran");
     return kExitBadInput;
-  } catch (const std::exception& e) {  // CaseError: bad input, 2; anything else 1 (lib/io/errors.h)
+  } catch (const std::exception& e) {  // CaseError: bad input, 2; anything else 1 (lib/errors.h)
     print_error(e.what());
     return contact::exit_status_of(e);
   } catch (...) {

@@ -30,8 +30,8 @@
 #include <spdlog/fmt/fmt.h>
 
 #include "lib/io/csv.h"
-#include "lib/io/csv_reader.h"
-#include "lib/io/errors.h"
+#include "lib/csv_reader.h"
+#include "lib/errors.h"
 #include "session/sweep_summary.h"
 #include "wear/wear_loop.h"
 #include "lib/numeric.h"
@@ -42,18 +42,18 @@ namespace {
 
 namespace fs = std::filesystem;
 
-using contact::kExitBadInput;  // the exit statuses: lib/io/errors.h
+using contact::kExitBadInput;  // the exit statuses: lib/errors.h
 using contact::kExitFailure;
 constexpr const char* kGnuplotPackage = "gnuplot-nox";
 
 // a failure the command reports as one line: bad input is a contact::CaseError (exit 2), any other
-// failure a std::runtime_error (exit 1); lib/io/errors.h maps them
+// failure a std::runtime_error (exit 1); lib/errors.h maps them
 contact::CaseError bad_input(const std::string& message) { return contact::CaseError(message); }
 
 // ---- reading the run's tables ------------------------------------------------------------------------
 
 using contact::csv_trim;
-using Table = contact::CsvTable;  // the one CSV reader, lib/io/csv_reader.h
+using Table = contact::CsvTable;  // the one CSV reader, lib/csv_reader.h
 
 std::string trim(const std::string& s) { return csv_trim(s); }
 

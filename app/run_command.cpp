@@ -1,6 +1,6 @@
 // rollwear run: a wear or cam life into its output folder (app/commands.h, session/life_run.h).
 #include "app/commands.h"
-#include "lib/io/errors.h"
+#include "lib/errors.h"
 #include "session/life_run.h"
 
 namespace app {

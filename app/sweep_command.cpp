@@ -15,7 +15,7 @@
 
 #include "lib/io/csv.h"
 #include "app/commands.h"
-#include "lib/io/errors.h"
+#include "lib/errors.h"
 #include "session/output_folder.h"
 #include "session/sweep.h"
 #include "session/sweep_summary.h"

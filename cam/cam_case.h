@@ -36,7 +36,7 @@
 #include "cam/periodic_revolution.h"
 #include "cam/cam_wear.h"
 #include "cam/revolution.h"
-#include "lib/io/errors.h"
+#include "lib/errors.h"
 #include "lib/io/key_locations.h"
 
 namespace cam {

@@ -9,8 +9,8 @@
 #include <spdlog/fmt/fmt.h>
 
 #include "cam/cam_error.h"
-#include "lib/io/enum_names.h"
-#include "lib/io/number.h"
+#include "lib/enum_names.h"
+#include "lib/number.h"
 #include "lib/io/yaml_reader.h"
 #include "lib/numeric.h"
 

@@ -8,7 +8,7 @@
 
 #include "cam/cam_error.h"
 #include "cam/revolution_dissipation.h"
-#include "lib/io/number.h"
+#include "lib/number.h"
 #include "lib/model/contact_model.h"
 
 namespace cam {

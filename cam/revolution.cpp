@@ -7,7 +7,7 @@
 #include <spdlog/fmt/fmt.h>
 
 #include "cam/cam_error.h"
-#include "lib/io/number.h"
+#include "lib/number.h"
 #include "lib/numeric.h"
 
 namespace cam {

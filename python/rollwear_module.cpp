@@ -5,7 +5,7 @@
 //   `rollwear contact`, `transient` and `run` (lib/io/case_run.h, session/wear_life_run.h) without their files; the
 //   results come back as dicts of NumPy arrays named as the commands' CSV columns.
 // - sweep: `rollwear sweep` (session/sweep.h), writing its folder as the command does.
-// - Errors by type (lib/io/errors.h), never by message: CaseError -> InputError (file, line, column, key from
+// - Errors by type (lib/errors.h), never by message: CaseError -> InputError (file, line, column, key from
 //   CaseError::location), SolverError and the solvers' own failures -> SolverError, anything else -> Error.
 // - The GIL is released while C++ runs; every ~50 ms a hook (the transient's step observer, the wear loop's
 //   on_step, the sweep's cancelled) takes it back to run PyErr_CheckSignals, so Ctrl-C interrupts.
@@ -33,7 +33,7 @@
 
 #include "lib/io/case_run.h"
 #include "lib/io/case.h"
-#include "lib/io/errors.h"
+#include "lib/errors.h"
 #include "lib/normal/normal.h"
 #include "lib/normal/semi_hertz.h"
 #include "session/output_folder.h"
@@ -82,7 +82,7 @@ void translate(std::exception_ptr p) {
     raise(g_solver_error, e.what(), {});
   } catch (const wear::LifeEndingGeometry& e) {
     raise(g_solver_error, e.what(), {});
-  } catch (const std::invalid_argument& e) {  // thrown inside a solver on valid input (lib/io/errors.h)
+  } catch (const std::invalid_argument& e) {  // thrown inside a solver on valid input (lib/errors.h)
     raise(g_solver_error, e.what(), {});
   } catch (const py::error_already_set&) {
     throw;  // pybind11 restores it

@@ -20,7 +20,7 @@
 #include "cam/cam_life.h"
 #include "cam/revolution_dissipation.h"
 #include "lib/io/csv.h"
-#include "lib/io/errors.h"
+#include "lib/errors.h"
 #include "lib/normal/profile.h"
 #include "lib/numeric.h"
 #include "session/life_folder.h"

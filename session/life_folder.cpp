@@ -3,7 +3,7 @@
 
 #include <spdlog/fmt/fmt.h>
 
-#include "lib/io/errors.h"
+#include "lib/errors.h"
 
 namespace session {
 

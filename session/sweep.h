@@ -91,7 +91,7 @@ std::vector<double> case_inputs(const Sweep& s, long i);
 
 // the base case's YAML with its relative profile files made absolute (the generated case lives elsewhere)
 YAML::Node load_base_case(const Sweep& s);
-// case i's YAML text: the base with the varied keys replaced (numbers as lib/io/number.h round_trip
+// case i's YAML text: the base with the varied keys replaced (numbers as lib/number.h round_trip
 // writes them) and name: <base name>-NNNN. CaseError at the key's entry in the sweep file when the
 // base case has no such mapping, or holds a mapping or a list there.
 std::string case_yaml(const Sweep& s, const YAML::Node& base, long i, const std::vector<double>& inputs);

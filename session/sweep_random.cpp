@@ -8,7 +8,7 @@
 #include <Eigen/Cholesky>
 #include <Eigen/Core>
 
-#include "lib/io/number.h"
+#include "lib/number.h"
 
 namespace session {
 

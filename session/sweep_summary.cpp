@@ -10,7 +10,7 @@
 
 #include <spdlog/fmt/fmt.h>
 
-#include "lib/io/number.h"
+#include "lib/number.h"
 #include "session/sweep.h"
 #include "session/sweep_random.h"
 #include "wear/wear_loop.h"

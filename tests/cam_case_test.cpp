@@ -16,7 +16,7 @@
 #include "cam/cam_case.h"
 #include "cam/lift_law.h"
 #include "cam/revolution.h"
-#include "lib/io/errors.h"
+#include "lib/errors.h"
 #include "lib/numeric.h"
 #include "tests/temp_dir.h"
 

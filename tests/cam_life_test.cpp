@@ -21,7 +21,7 @@
 #include <spdlog/fmt/fmt.h>
 
 #include "cam/cam_case.h"
-#include "lib/io/errors.h"
+#include "lib/errors.h"
 #include "tests/temp_dir.h"
 
 #include "cam/cam_life.h"

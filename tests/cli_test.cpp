@@ -24,7 +24,7 @@
 
 #include "lib/grid.h"
 #include "lib/io/case.h"
-#include "lib/io/errors.h"
+#include "lib/errors.h"
 #include "lib/normal/hertz.h"
 #include "lib/tangential/satran.h"
 #include "tests/test_text.h"
@@ -887,7 +887,7 @@ TEST_F(CommandLine, RunOnPaperWearWritesSummarySnapshotsAndReport) {
                         "snapshot_0003_body1.csv"})
     EXPECT_TRUE(fs::exists(out / "snapshots" / f)) << f;
   const std::vector<std::string> snap = lines_of(read_text(out / "snapshots" / "snapshot_0001_body1.csv"));
-  EXPECT_EQ(snap[2], "# revolutions: 1e+07");  // the shortest text of 1e7 (lib/io/number.h)
+  EXPECT_EQ(snap[2], "# revolutions: 1e+07");  // the shortest text of 1e7 (lib/number.h)
   EXPECT_EQ(snap[4], "y_m,z_original_m,z_m,depth_m");
   // and the plots of it
   const ProcessResult plot = rollwear("plot " + quoted(out), dir_);
@@ -1146,7 +1146,7 @@ TEST_F(CommandLine, RunArchardWithoutFrictionExitsTwoAtFrictionMu) {
   EXPECT_FALSE(fs::exists(dir_ / "w"));
 }
 
-// The exit status follows the error's type (lib/io/errors.h): bad input 2; a solver's refusal of what it
+// The exit status follows the error's type (lib/errors.h): bad input 2; a solver's refusal of what it
 // was given, std::invalid_argument included, 1.
 TEST(ExitStatus, FollowsTheErrorsTypeNotItsText) {
   EXPECT_EQ(exit_status_of(CaseError("case.yaml:3:5: friction.mu: must be in [0, 10]")), kExitBadInput);

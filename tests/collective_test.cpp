@@ -11,7 +11,7 @@
 #include <fstream>
 #include <string>
 
-#include "lib/io/errors.h"
+#include "lib/errors.h"
 #include "tests/log_capture.h"
 #include "tests/temp_dir.h"
 #include "session/sweep.h"

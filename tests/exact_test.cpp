@@ -17,7 +17,7 @@
 #include "lib/grid.h"
 #include "lib/history.h"
 #include "lib/normal/halfspace.h"
-#include "lib/io/csv_reader.h"
+#include "lib/csv_reader.h"
 #include "lib/normal/hertz.h"
 #include "lib/numeric.h"
 #include "lib/patch.h"
@@ -31,7 +31,7 @@ namespace {
 
 // rows of a CSV file with '#' comments and a header line, as strings
 std::vector<std::vector<std::string>> read_csv(const std::string& name) {
-  return read_csv_table(std::string(ROLLWEAR_SOURCE_DIR) + "/tests/data/exact/" + name).rows;  // lib/io/csv_reader.h
+  return read_csv_table(std::string(ROLLWEAR_SOURCE_DIR) + "/tests/data/exact/" + name).rows;  // lib/csv_reader.h
 }
 
 struct Coefficients {

@@ -1,4 +1,4 @@
-// round_trip (lib/io/number.h) writes std::to_chars(general)'s text from Dragonbox's digits: every byte is
+// round_trip (lib/number.h) writes std::to_chars(general)'s text from Dragonbox's digits: every byte is
 // checked against std::to_chars (the reference: the shortest text that reads back exactly, C++17
 // [charconv.to.chars]), and the text read back with strtod gives the same double.
 #include <gtest/gtest.h>
@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "lib/io/number.h"
+#include "lib/number.h"
 
 namespace {
 

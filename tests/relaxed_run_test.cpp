@@ -11,7 +11,7 @@
 
 #include "lib/elastic.h"
 #include "lib/history.h"
-#include "lib/io/errors.h"
+#include "lib/errors.h"
 #include "lib/normal/hertz.h"
 #include "lib/numeric.h"
 #include "lib/tangential/relaxed.h"

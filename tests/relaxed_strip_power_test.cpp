@@ -13,7 +13,7 @@
 #include "lib/io/case_run.h"
 #include "lib/history.h"
 #include "lib/io/case.h"
-#include "lib/io/csv_reader.h"
+#include "lib/csv_reader.h"
 
 namespace contact {
 namespace {

@@ -19,7 +19,7 @@
 #include "lib/elastic.h"
 #include "lib/grid.h"
 #include "lib/history.h"
-#include "lib/io/csv_reader.h"
+#include "lib/csv_reader.h"
 #include "lib/normal/hertz.h"
 #include "lib/numeric.h"
 #include "lib/tangential/kalker.h"
@@ -31,7 +31,7 @@ namespace {
 
 // rows of a CSV file of tests/data with '#' comments and a header line, as strings
 std::vector<std::vector<std::string>> read_csv(const std::string& name) {
-  return read_csv_table(std::string(ROLLWEAR_SOURCE_DIR) + "/tests/data/" + name).rows;  // lib/io/csv_reader.h
+  return read_csv_table(std::string(ROLLWEAR_SOURCE_DIR) + "/tests/data/" + name).rows;  // lib/csv_reader.h
 }
 
 std::map<std::string, double> contact_reference() {

@@ -15,7 +15,7 @@
 #include "lib/io/case_run.h"
 #include "lib/grid.h"
 #include "lib/io/case.h"
-#include "lib/io/csv_reader.h"
+#include "lib/csv_reader.h"
 #include "lib/normal/hertz.h"
 #include "lib/numeric.h"
 #include "lib/tangential/tangential.h"

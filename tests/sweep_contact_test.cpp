@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "lib/io/errors.h"
+#include "lib/errors.h"
 #include "temp_dir.h"
 #include "session/sweep.h"
 

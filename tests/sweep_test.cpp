@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-#include "lib/io/errors.h"
+#include "lib/errors.h"
 #include "temp_dir.h"
 #include "session/sweep.h"
 #include "session/sweep_summary.h"

@@ -179,7 +179,7 @@ TEST_F(WearCaseReader, WearRunTakesTheExactTheorySteadyOnly) {
   }
 }
 
-// wear.stepping.method's names come from one table (lib/io/enum_names.h): the reader's message lists them,
+// wear.stepping.method's names come from one table (lib/enum_names.h): the reader's message lists them,
 // and the parse refuses a name outside it instead of taking it for fixed-revolutions.
 TEST_F(WearCaseReader, SteppingMethodNamesComeFromOneTable) {
   WearStepping s;

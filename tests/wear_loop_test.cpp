@@ -834,7 +834,7 @@ namespace {
 class WearOutput : public rollwear_test::TempDirTest {};
 
 // A resumed run's summary.csv starts from the file's own text up to the checkpoint's step, byte for byte
-// (read by lib/io/csv_reader.h): comments and header as written, no row after that step.
+// (read by lib/csv_reader.h): comments and header as written, no row after that step.
 TEST_F(WearOutput, SummaryUpToKeepsTheFileTextToTheCheckpointStep) {
   const std::string head = "# case: x\n# revolutions of body1 (R 0.02 m); one row per accepted step\nstep,revolutions\n";
   const std::string rows = "0,0\n1,1e+06\n2,2.5e+06\n";

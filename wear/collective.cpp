@@ -7,8 +7,8 @@
 #include <thread>
 #include <utility>
 
-#include "lib/io/errors.h"
-#include "lib/io/number.h"
+#include "lib/errors.h"
+#include "lib/number.h"
 
 namespace wear {
 

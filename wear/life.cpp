@@ -8,14 +8,14 @@
 
 #include <spdlog/fmt/fmt.h>
 
-#include "lib/io/enum_names.h"
-#include "lib/io/errors.h"
+#include "lib/enum_names.h"
+#include "lib/errors.h"
 
 namespace wear {
 
 namespace {
 
-// the report's words (lib/io/enum_names.h)
+// the report's words (lib/enum_names.h)
 constexpr contact::EnumTable<LifeEnd, 9> kLifeEndWords = {
     {{LifeEnd::NotRun, "not_run"}, {LifeEnd::MaxDepth, "max_depth"}, {LifeEnd::MaxPressure, "max_pressure"},
      {LifeEnd::Edge, "edge"}, {LifeEnd::LiftLoss, "lift_loss"}, {LifeEnd::Revolutions, "revolutions"},

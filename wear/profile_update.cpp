@@ -14,7 +14,7 @@
 // row adds its terms in pairs from both ends inwards; on mirrored nodes the mirrored row holds the
 // same terms in reverse order, so the pairs are the same and the sums bit-identical.
 #include "wear/profile_update.h"
-#include "lib/io/number.h"
+#include "lib/number.h"
 #include "lib/numeric.h"
 
 #include <spdlog/fmt/fmt.h>
@@ -32,7 +32,7 @@ using contact::kPi;
 
 namespace {
 
-std::string number(double v) { return contact::six_digits(v); }  // lib/io/number.h
+std::string number(double v) { return contact::six_digits(v); }  // lib/number.h
 
 // at least 2 finite, strictly increasing nodes
 void check_nodes(const std::string& where, const Eigen::ArrayXd& y) {

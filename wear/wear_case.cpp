@@ -8,8 +8,8 @@
 
 #include <spdlog/fmt/fmt.h>
 
-#include "lib/io/enum_names.h"
-#include "lib/io/number.h"
+#include "lib/enum_names.h"
+#include "lib/number.h"
 #include "lib/io/yaml_reader.h"
 #include "lib/model/contact_model.h"
 #include "lib/normal/profile.h"
@@ -67,7 +67,7 @@ void read_law(YamlMap& m, WearLaw& law) {
   }
 }
 
-// wear.stepping.method's names (lib/io/enum_names.h)
+// wear.stepping.method's names (lib/enum_names.h)
 using Method = IntegratorOptions::Method;
 constexpr contact::EnumTable<Method, 3> kSteppingMethods = {
     {{Method::Adaptive, "adaptive"}, {Method::FixedDepth, "fixed-depth"}, {Method::FixedStep, "fixed-revolutions"}}};

@@ -7,9 +7,9 @@
 // KTH and USFD are sums over cells of the fields the tangential solver wrote; a stretch of duration
 // T at speed V counts V T / (2 pi R_w) passages.
 #include "wear/wear_law.h"
-#include "lib/io/number.h"
+#include "lib/number.h"
 #include "lib/numeric.h"
-#include "lib/io/errors.h"
+#include "lib/errors.h"
 
 #include <spdlog/fmt/fmt.h>
 #include <spdlog/spdlog.h>
@@ -30,7 +30,7 @@ constexpr double kKg_per_m2_per_ug_per_mm2 = 1e-3;
 // 1 Pa = 1e-6 N/mm^2 (MPa)
 constexpr double kN_per_mm2_per_Pa = 1e-6;
 
-std::string number(double v) { return contact::six_digits(v); }  // lib/io/number.h
+std::string number(double v) { return contact::six_digits(v); }  // lib/number.h
 
 [[noreturn]] void fail(const std::string& key, const std::string& range, double got) {
   throw contact::SettingError("wear", key, "must be " + range + ", got " + number(got));

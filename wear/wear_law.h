@@ -48,7 +48,7 @@
 #include <string>
 #include <vector>
 
-#include "lib/io/enum_names.h"
+#include "lib/enum_names.h"
 #include "lib/patch.h"
 #include "lib/tangential/satran.h"
 #include "lib/tangential/tangential.h"

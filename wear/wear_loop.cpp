@@ -15,7 +15,7 @@
 
 #include "lib/io/case.h"
 #include "lib/numeric.h"
-#include "lib/io/errors.h"
+#include "lib/errors.h"
 #include "lib/model/contact_model.h"
 #include "wear/collective.h"
 #include "wear/profile_update.h"

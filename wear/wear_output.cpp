@@ -13,9 +13,9 @@
 #include <spdlog/fmt/fmt.h>
 
 #include "lib/history.h"
-#include "lib/io/csv_reader.h"
-#include "lib/io/errors.h"
-#include "lib/io/number.h"
+#include "lib/csv_reader.h"
+#include "lib/errors.h"
+#include "lib/number.h"
 #include "lib/numeric.h"
 
 namespace wear {
@@ -26,7 +26,7 @@ namespace {
 
 constexpr const char* kCheckpointMagic = "rollwear-wear-checkpoint 2";  // 2: the life's counters
 
-// every number at full precision: the shortest text that reads back as the same double (lib/io/number.h)
+// every number at full precision: the shortest text that reads back as the same double (lib/number.h)
 using contact::round_trip;
 
 std::string law_text(const WearLaw& law) {
@@ -234,7 +234,7 @@ Checkpoint read_checkpoint(const std::filesystem::path& path) {
 }
 
 std::string summary_up_to(const std::filesystem::path& path, long steps) {
-  // the rows' steps from the one CSV reader (lib/io/csv_reader.h); the text kept is the file's own, line
+  // the rows' steps from the one CSV reader (lib/csv_reader.h); the text kept is the file's own, line
   // for line up to the last row kept, so that a resumed summary is byte for byte the uninterrupted one
   contact::CsvTable t;
   try {

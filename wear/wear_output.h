@@ -1,6 +1,6 @@
 // The files of a wear run (`rollwear run`, docs/wear-loop.md), built as text so they can be tested,
 // then written atomically (lib/io/csv.h). Numbers at full precision: the shortest text that reads back
-// as the same double (lib/io/number.h).
+// as the same double (lib/number.h).
 //
 //   summary.csv                        '# ' comment lines (case, bodies, law), then
 //     step,revolutions,hours,max_depth_m,worn_volume_m3,dissipated_J,a_m,b_m,p0_Pa,Fx_N,power_W,

@@ -16,7 +16,7 @@
 #include "lib/normal/semi_hertz.h"
 #include "lib/tangential/satran.h"
 #include "lib/tangential/tangential.h"
-#include "lib/io/number.h"
+#include "lib/number.h"
 #include "lib/io/yaml_reader.h"
 #include "lib/model/contact_model.h"
 

@@ -29,7 +29,7 @@
 #include "lib/normal/hertz.h"
 #include "lib/normal/normal.h"
 #include "lib/history.h"
-#include "lib/io/errors.h"
+#include "lib/errors.h"
 #include "lib/io/key_locations.h"
 #include "lib/patch.h"
 #include "lib/normal/profile.h"

@@ -5,7 +5,7 @@
 
 #include <spdlog/spdlog.h>
 
-#include "lib/io/errors.h"
+#include "lib/errors.h"
 #include "lib/model/contact_model.h"
 
 namespace contact {

@@ -1,5 +1,5 @@
 #include "lib/io/csv.h"
-#include "lib/io/number.h"
+#include "lib/number.h"
 
 #include <unistd.h>
 
@@ -17,7 +17,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// one number, exact on reading back, in the fewest characters (lib/io/number.h)
+// one number, exact on reading back, in the fewest characters (lib/number.h)
 void put(std::string& out, double v) { append_round_trip(out, v); }
 
 void check_shape(const char* what, Eigen::Index rows, Eigen::Index cols, Eigen::Index nx, Eigen::Index ny) {

@@ -1,5 +1,5 @@
 // Result files: CSV text built in memory (so it can be tested), then written atomically. SI units,
-// each in its column's name; numbers in the shortest text that reads back exactly (lib/io/number.h).
+// each in its column's name; numbers in the shortest text that reads back exactly (lib/number.h).
 #pragma once
 
 #include <filesystem>

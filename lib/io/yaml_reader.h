@@ -28,7 +28,7 @@
 #include <spdlog/fmt/fmt.h>
 #include <yaml-cpp/yaml.h>
 
-#include "lib/io/errors.h"
+#include "lib/errors.h"
 #include "lib/io/key_locations.h"
 
 namespace contact {

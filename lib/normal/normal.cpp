@@ -8,7 +8,7 @@
 #include <cmath>
 #include <optional>
 
-#include "lib/io/errors.h"
+#include "lib/errors.h"
 #include "lib/normal/halfspace.h"
 #include "lib/numeric.h"
 

@@ -15,7 +15,7 @@
 
 #include "lib/elastic.h"
 #include "lib/grid.h"
-#include "lib/io/enum_names.h"
+#include "lib/enum_names.h"
 #include "lib/normal/hertz.h"
 #include "lib/normal/profile.h"
 #include "lib/normal/semi_hertz.h"

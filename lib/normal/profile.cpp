@@ -7,9 +7,9 @@
 //   z = R - sign(R) sqrt(R^2 - y^2) = y^2 / (R + sign(R) sqrt(R^2 - y^2)),
 // the second form free of cancellation near the crown.
 #include "lib/normal/profile.h"
-#include "lib/io/csv_reader.h"
-#include "lib/io/errors.h"
-#include "lib/io/number.h"
+#include "lib/csv_reader.h"
+#include "lib/errors.h"
+#include "lib/number.h"
 
 #include <cstring>
 
@@ -30,7 +30,7 @@ namespace contact {
 
 namespace {
 
-// numbers as text (lib/io/number.h): six digits in messages, the shortest round trip in the CSV text
+// numbers as text (lib/number.h): six digits in messages, the shortest round trip in the CSV text
 std::string num(double v) { return six_digits(v); }
 
 
@@ -122,7 +122,7 @@ void validate_profile(const Profile& profile) {
 Profile read_profile_csv(const std::string& path) {
   CsvTable t;
   try {
-    t = read_csv_table(path);  // lib/io/csv_reader.h
+    t = read_csv_table(path);  // lib/csv_reader.h
   } catch (const std::runtime_error&) {
     throw std::invalid_argument(path + ": cannot open the profile file");
   }

@@ -49,7 +49,7 @@ void validate_profile(const Profile& profile);
 Profile read_profile_csv(const std::string& path);
 
 // the CSV text read_profile_csv reads: comment lines (each prefixed "# "), header, the shortest text that
-// reads back as the same double (lib/io/number.h)
+// reads back as the same double (lib/number.h)
 std::string profile_csv(const Profile& profile, const std::string& comment = "");
 
 // Generated profiles, centred on y = 0 over [-width/2, width/2]; node spacing as at the top.

@@ -31,7 +31,7 @@
 #include <string>
 #include <vector>
 
-#include "lib/io/number.h"
+#include "lib/number.h"
 #include "lib/normal/hertz.h"
 #include "lib/numeric.h"
 
@@ -53,7 +53,7 @@ constexpr double kJumpWidth = 1e-12;
 // the Galerkin rule's cells on the pieces of the contact other than an outer point's own (Solver::galerkin_p0)
 constexpr int kGalerkinFarCells = 4;  // the root find's bracket in ln delta: narrower is a jump of F(delta)
 
-std::string num(double v) { return six_digits(v); }  // lib/io/number.h
+std::string num(double v) { return six_digits(v); }  // lib/number.h
 
 // Hertz's ellipse against log(rho), rho = larger/smaller curvature >= 1: eps of the major semi-axis
 // and K(e), so that with C the smaller curvature

@@ -2,7 +2,7 @@
 // chooses it).
 #pragma once
 
-#include "lib/io/enum_names.h"
+#include "lib/enum_names.h"
 
 namespace contact {
 

@@ -61,7 +61,7 @@
 #include "lib/tangential/exact.h"
 #include "lib/numeric.h"
 #include "lib/history.h"
-#include "lib/io/errors.h"
+#include "lib/errors.h"
 #include "lib/normal/hertz.h"
 #include "lib/tangential/shift_run.h"
 

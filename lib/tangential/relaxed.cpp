@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "lib/history.h"
-#include "lib/io/errors.h"
+#include "lib/errors.h"
 #include "lib/normal/hertz.h"
 #include "lib/tangential/kalker.h"
 #include "lib/tangential/relaxed_mix_table.h"

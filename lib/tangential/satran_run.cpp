@@ -4,7 +4,7 @@
 // observer and the skip over steady running; every step is satran_step (satran_step.cpp).
 #include "lib/tangential/satran.h"
 #include "lib/tangential/satran_workspace.h"
-#include "lib/io/errors.h"
+#include "lib/errors.h"
 #include "lib/numeric.h"
 
 #include <spdlog/fmt/fmt.h>

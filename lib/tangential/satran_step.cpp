@@ -16,7 +16,7 @@
 // (0 outside the contact) and clip to mu p at the node; see explicit_strip for their energy.
 #include "lib/tangential/satran.h"
 #include "lib/tangential/satran_workspace.h"
-#include "lib/io/errors.h"
+#include "lib/errors.h"
 
 #include <spdlog/spdlog.h>
 
@@ -30,7 +30,7 @@
 #include <string>
 #include <vector>
 
-#include "lib/io/enum_names.h"
+#include "lib/enum_names.h"
 #include "lib/tangential/kalker.h"
 #include "lib/tangential/strip_march.h"
 

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "lib/history.h"
-#include "lib/io/errors.h"
+#include "lib/errors.h"
 #include "lib/normal/hertz.h"
 
 namespace contact {

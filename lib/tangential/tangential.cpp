@@ -5,7 +5,7 @@
 #include <optional>
 #include <stdexcept>
 
-#include "lib/io/enum_names.h"
+#include "lib/enum_names.h"
 #include "lib/numeric.h"
 
 namespace contact {
@@ -125,7 +125,7 @@ int mirrored_from_scratch(const ContactPatch& patch) {
   return ny - ny / 2;
 }
 
-// solver.tangential's names (lib/io/enum_names.h), in the order messages list them
+// solver.tangential's names (lib/enum_names.h), in the order messages list them
 constexpr EnumTable<TangentialScheme, 4> kTangentialSchemeNames = {{{TangentialScheme::Consistent, "consistent"},
                                                                     {TangentialScheme::Classic, "classic"},
                                                                     {TangentialScheme::Exact, "exact"},

@@ -177,7 +177,7 @@ def test_a_bad_value_in_a_dict_names_its_key():
                                              ("invalid_argument", rollwear.SolverError),
                                              ("runtime_error", rollwear.Error)])
 def test_each_cpp_error_type_is_its_exception(kind, exception):
-    # by the C++ type (lib/io/errors.h), as the program's exit status: 2 for CaseError, 1 for the others
+    # by the C++ type (lib/errors.h), as the program's exit status: 2 for CaseError, 1 for the others
     with pytest.raises(exception) as e:
         rollwear._rollwear._throw_for_test(kind)
     assert type(e.value) is exception

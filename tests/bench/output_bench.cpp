@@ -1,5 +1,5 @@
 // The cost of the result files' numbers (docs/benchmarks.md): a value formatted as the CSV files write it
-// (lib/io/number.h: std::to_chars, the shortest text that reads back exactly) against snprintf("%.17g"), a
+// (lib/number.h: std::to_chars, the shortest text that reads back exactly) against snprintf("%.17g"), a
 // format string parsed at run time for every value, and a whole 80 x 80 snapshot (snapshot_csv: five
 // fields and the cell coordinates per row). ns_per_value: the time over the values written.
 #include <benchmark/benchmark.h>
@@ -11,7 +11,7 @@
 
 #include "lib/io/case.h"
 #include "lib/io/csv.h"
-#include "lib/io/number.h"
+#include "lib/number.h"
 
 namespace {
 

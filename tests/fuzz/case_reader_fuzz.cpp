@@ -57,7 +57,7 @@ const std::string& case_path() {
 void check_rejection(const char* reader, const std::string& path, const std::exception& e) {
   const std::string m = e.what();
   if (m.compare(0, path.size(), path) != 0) finding(reader, "the rejection does not start with the file path: " + m);
-  // a message quotes values cut to 80 characters (lib/io/errors.h clipped): never the input whole
+  // a message quotes values cut to 80 characters (lib/errors.h clipped): never the input whole
   constexpr std::size_t kLongestMessage = 4096;
   if (m.size() > kLongestMessage + path.size()) finding(reader, "the rejection echoes too much: " + m.substr(0, 200));
 }

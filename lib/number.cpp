@@ -1,4 +1,4 @@
-#include "lib/io/number.h"
+#include "lib/number.h"
 
 #include <fmt/format.h>
 
