@@ -736,7 +736,7 @@ TEST(StressSatran, UpwindAndLaxFriedrichsRandomHistoriesKeepTheBoundAndTheEnergy
 // accepts: values >= 0, positive somewhere) meets such loads at its start whenever ny is even. Found by
 // StressSatran.ShiftRandomHistoriesKeepTheBoundAndTheEnergyBalance (base seed 20240606, case 117: load
 // ramp 0 -> 0.97 N, grid 2 x 4; case 142: ramp 123.6 -> 1.27 N, grid 13 x 4). Fixed: such a load has
-// no strip in contact and carries no traction, with a warning (lib/tangential/satran.cpp contact_at); the two
+// no strip in contact and carries no traction, with a warning (lib/tangential/satran_run.cpp contact_at); the two
 // cases run below, and the sweeps no longer allow a throw.
 // Finding "load fall" (stress suite, docs/stress-suite.md): when the load falls during a step, the final state's
 // tractions exceed mu p of the contact at the end: shift, case 223 (load ramp 90617 -> 6186 N ending

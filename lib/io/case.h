@@ -174,7 +174,7 @@ Creepages creepages_of(const ContactCase& c);
 TransientCase transient_case_of(const ContactCase& c);
 
 // the grid run_transient puts the contact on: it covers the largest contact of the run
-// (lib/tangential/satran.cpp); callers use it to label per-strip output while the run streams
+// (lib/tangential/satran_run.cpp); callers use it to label per-strip output while the run streams
 Grid transient_grid(const TransientCase& t);
 
 // What a transient run will write, estimated before it runs (an upper bound on the steps: one per dx
