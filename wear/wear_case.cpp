@@ -167,9 +167,9 @@ void validate(const WearCase& c) {
   if (!k.profiles)
     throw key_error(k, "wear", "wear, profiles: the worn body needs a lateral profile; give a profiles: "
                     "section (e.g. body1: { crowned: { Ry_m: 0.5, width_m: 0.02 } })");
-  if (k.solver.normal == contact::NormalChoice::Hertz || k.solver.normal == contact::NormalChoice::Halfspace)
+  if (k.solver.normal == contact::NormalChoice::Hertz)
     throw key_error(k, "solver.normal", "solver.normal: a wear run solves the worn profiles with auto "
-                    "(Hertz while the curvature is constant, then semi-Hertz) or semi-hertz, not " +
+                    "(Hertz while the curvature is constant, then semi-Hertz), semi-hertz or halfspace, not " +
                     std::string(to_string(k.solver.normal)));
   if (k.inertia) throw key_error(k, "inertia", "inertia: not supported in a wear run");
   for (const auto& [key, law, R] : {std::tuple<const char*, const std::optional<WearLaw>*, double>{

@@ -120,7 +120,7 @@ WearModel make_wear_model(const WearCase& c) {
   m.materials = contact::materials_of(k);
   m.grid = contact::grid_of(k);
   m.normal_options.heathcote_slip = k.profiles->heathcote_slip;
-  m.normal_choice = k.solver.normal;  // auto or semi-hertz (validate)
+  m.normal_choice = k.solver.normal;  // auto, semi-hertz or halfspace (validate)
   m.normal_load_N = k.load.normal_load_N.value.front();
   m.mu = k.friction.mu;
   m.scheme = k.solver.tangential;  // one the duty cycle can run (validate)
@@ -187,7 +187,7 @@ NormalState normal_state_on(const WearModel& m, const contact::Profiles& profile
   }
 
   // normal problem on the current worn geometry (contact::solve_normal chooses: Hertz while the unworn
-  // profiles have constant curvature, semi-Hertz once anything is worn)
+  // profiles have constant curvature, semi-Hertz once anything is worn; or the half-space throughout)
   contact::NormalProblem problem;
   problem.choice = m.normal_choice;
   problem.bodies = {{m.Rx1_m, contact::kFlat}, {m.Rx2_m, contact::kFlat}};
@@ -197,14 +197,36 @@ NormalState normal_state_on(const WearModel& m, const contact::Profiles& profile
   problem.normal_load_N = m.normal_load_N;
   problem.grid = m.grid;
   problem.semi_hertz = m.normal_options;
+  // the half-space starts from the last solve's pressures
+  if (cache.halfspace_warm_start && cache.normal_valid && cache.normal.solver == contact::NormalSolverKind::Halfspace)
+    problem.halfspace_start = &cache.normal.halfspace;
   NormalState n;
   bool converged = false;
+  std::string status_message;
   for (int refinement = 0;; ++refinement) {
     try {
-      const contact::NormalSolution s = contact::solve_normal(problem);
-      n.normal = s.on_profiles;
+      contact::NormalSolution s = contact::solve_normal(problem);
       n.solver = s.solver;
       converged = s.solve_converged;
+      status_message = s.status.message;
+      n.patch = std::move(s.patch);
+      n.grid_y0_m = s.grid_y0_m;
+      n.reaches_edge = s.reaches_edge;
+      if (s.solver == contact::NormalSolverKind::Halfspace) {
+        n.contact_y_min_m = s.halfspace.contact_y_min_m;
+        n.contact_y_max_m = s.halfspace.contact_y_max_m;
+        n.approach_m = n.patch.approach_m;
+        n.edge_limit_m = s.halfspace.edge_value_m;
+        cache.halfspace_solves += s.halfspace.solves;
+        cache.halfspace_iterations += s.halfspace.iterations;
+        n.halfspace = std::move(s.halfspace);
+      } else {
+        n.contact_y_min_m = s.on_profiles.contact_y_min_m;
+        n.contact_y_max_m = s.on_profiles.contact_y_max_m;
+        n.approach_m = s.on_profiles.approach_m;
+        if (converged) n.edge_limit_m = edge_limit_value_m(profiles, s.on_profiles);
+        n.profile_solve = std::move(s.on_profiles);
+      }
       break;
     } catch (const contact::NoStripCentreError& e) {
       // a worn profile can split the contact into narrow patches that no strip centre of the case's grid
@@ -223,14 +245,12 @@ NormalState normal_state_on(const WearModel& m, const contact::Profiles& profile
   // result to wear with; the life ends at its last accepted step (a contact cut at a body's edge is the
   // edge limit's, below, but only once its approach carries the load)
   if (!converged)
-    throw NormalNotConverged(fmt::format("the normal problem did not converge: {}", n.normal.status.message));
+    throw NormalNotConverged(fmt::format("the normal problem did not converge: {}", status_message));
   // the lifetime's edge limit: how far the contact is from the end of the profiles' overlap
   const double lo = std::max(profiles.body1.y_m(0), profiles.body2.y_m(0));
   const double hi = std::min(profiles.body1.y_m(profiles.body1.y_m.size() - 1),
                              profiles.body2.y_m(profiles.body2.y_m.size() - 1));
-  n.edge_margin_m = n.normal.reaches_edge
-                        ? 0.0
-                        : std::min(n.normal.contact_y_min_m - lo, hi - n.normal.contact_y_max_m);
+  n.edge_margin_m = n.reaches_edge ? 0.0 : std::min(n.contact_y_min_m - lo, hi - n.contact_y_max_m);
   ++cache.counters.normal_solves;
   cache.normal_key = key;
   cache.normal = n;
@@ -278,7 +298,7 @@ NormalState solved_normal_state_on(const WearModel& m, const contact::Profiles& 
   const long solves = cache.counters.normal_solves;
   const NormalState n = normal_state_on(m, worn, key, state, cache);
   if (cache.counters.normal_solves == solves) return n;  // from the cache: reported when it was solved
-  if (n.normal.reaches_edge && !m.limits.edge && !cache.edge_reported) {
+  if (n.reaches_edge && !m.limits.edge && !cache.edge_reported) {
     cache.edge_reported = true;
     spdlog::warn("wear: the contact reaches the end of the profiles' overlap (a body is narrower than the contact) "
                  "and wear.limits.edge is off: the contact is cut there from now on");
@@ -309,7 +329,7 @@ WearRate wear_rate(const WearModel& m, const Eigen::VectorXd& state, WearCache& 
 
   // normal problem on the current worn geometry (the profiles and their hash from above)
   const NormalState n = solved_normal_state_on(m, worn, key, state, cache);
-  const contact::ContactPatch& patch = n.normal.patch;
+  const contact::ContactPatch& patch = n.patch;
 
   // tangential problem over the duty cycle: dissipated energy per unit width
   const DutyCycleEnergy duty = duty_cycle_energy(m, patch, needs_fields(m.law1) || needs_fields(m.law2));
@@ -318,7 +338,7 @@ WearRate wear_rate(const WearModel& m, const Eigen::VectorXd& state, WearCache& 
   // wear law per strip, onto each worn body's nodes (volume-conserving smoothing), per revolution
   WearRate r;
   r.strip_energy_J_per_m = duty.strip_energy_J_per_m;
-  r.strip_y0_m = n.normal.grid_y0_m + patch.grid.y_edge(0);
+  r.strip_y0_m = n.grid_y0_m + patch.grid.y_edge(0);
   r.strip_dy_m = patch.grid.dy_m;
   r.cycles_per_revolution = 2 * kPi * m.reference_radius_m / duty.rolled_m;
   r.energy_per_revolution_J = duty.strip_energy_J_per_m.sum() * r.strip_dy_m * r.cycles_per_revolution;
@@ -337,7 +357,7 @@ WearRate wear_rate(const WearModel& m, const Eigen::VectorXd& state, WearCache& 
   r.contact.Fx_N = duty.Fx_N;
   r.contact.power_W = duty.duration_s > 0 ? duty.dissipated_J / duty.duration_s : 0;
   r.contact.edge_margin_m = n.edge_margin_m;
-  r.contact.edge_limit_m = edge_limit_value_m(worn, n.normal);
+  r.contact.edge_limit_m = n.edge_limit_m;
   r.contact.normal_solver = n.solver;
 
   if (cache.rates.size() >= kCachedRates) cache.rates.erase(cache.rates.begin());
@@ -383,7 +403,7 @@ void for_each_condition(const WearModel& m, WearCache& cache, F f) {
 }
 
 void check_profile_resolves_contact(const WearCase& c, const WearModel& m, const NormalState& n) {
-  const double width = n.normal.contact_y_max_m - n.normal.contact_y_min_m;
+  const double width = n.contact_y_max_m - n.contact_y_min_m;
   for (int body : {1, 2}) {
     if ((body == 1 ? m.n1 : m.n2) == 0) continue;
     const Eigen::ArrayXd& y = body == 1 ? m.profiles.body1.y_m : m.profiles.body2.y_m;
@@ -418,10 +438,10 @@ Eigen::VectorXd limit_values(const WearModel& m, const Eigen::VectorXd& h, WearC
   bool first = true;
   for_each_condition(m, cache, [&](const WearModel& mk, WearCache& ck) {
     const NormalState n = solved_normal_state(mk, h, ck);
-    const double pressure = n.normal.patch.p0_Pa - m.limits.max_pressure_Pa;
+    const double pressure = n.patch.p0_Pa - m.limits.max_pressure_Pa;
     if (m.limits.max_pressure_Pa > 0) g(kPressure) = first ? pressure : std::max(g(kPressure), pressure);
     if (m.limits.edge) {
-      const double edge = edge_limit_value_m(worn_profiles(mk, h), n.normal);
+      const double edge = n.edge_limit_m;
       g(kEdge) = first ? edge : std::max(g(kEdge), edge);
     }
     first = false;

@@ -46,7 +46,7 @@ struct WearModel {
   contact::ElasticPair materials;
   contact::GridSpec grid;
   contact::SemiHertzOptions normal_options;
-  // solver.normal: semi-hertz, or auto (Hertz while the curvature is constant and the profiles unworn)
+  // solver.normal: semi-hertz, halfspace, or auto (Hertz while the curvature is constant and the profiles unworn)
   contact::NormalChoice normal_choice = contact::NormalChoice::Auto;
   double normal_load_N = 0;
   double mu = 0;
@@ -83,11 +83,21 @@ Eigen::VectorXd initial_state(const WearModel& m);
 // the profiles worn by the state's depths
 contact::Profiles worn_profiles(const WearModel& m, const Eigen::VectorXd& state);
 
-// the normal problem on worn profiles, and what the lifetime limits read from it
+// the normal problem on worn profiles, and what the tangential problem and the lifetime limits read from it,
+// whichever solver ran
 struct NormalState {
-  contact::SemiHertzResult normal;
+  contact::ContactPatch patch;  // the patch the duty cycle runs on
   contact::NormalSolverKind solver = contact::NormalSolverKind::SemiHertz;  // the solver that ran
+  double grid_y0_m = 0;         // profiles' y of the patch grid's y = 0
+  double contact_y_min_m = 0, contact_y_max_m = 0;  // lateral extent of the contact (profiles' y)
+  double approach_m = 0;        // from the gap's minimum over the overlap
+  bool reaches_edge = false;    // the contact reaches an end of the profiles' overlap
   double edge_margin_m = 0;  // lateral distance from the contact to the nearest end of the profiles' overlap
+  // the edge limit's continuous function (< 0 inside, > 0 past the edge): edge_limit_value_m for Hertz and
+  // semi-Hertz, contact::HalfspaceOnProfiles::edge_value_m for the half-space
+  double edge_limit_m = 0;
+  contact::SemiHertzResult profile_solve;  // Hertz's or the semi-Hertzian solve (empty for the half-space)
+  contact::HalfspaceOnProfiles halfspace;  // the half-space's (its grids and pressures: the next solve's start)
 };
 
 // the contact's state after one evaluation
@@ -97,7 +107,7 @@ struct ContactReport {
   double power_W = 0;     // mean dissipated power over the duty cycle
   double edge_margin_m = 0;  // lateral, 0 once the contact reaches the edge
   double edge_limit_m = 0;   // edge_limit_value_m: < 0 inside, > 0 past the edge (the edge limit's function)
-  contact::NormalSolverKind normal_solver = contact::NormalSolverKind::SemiHertz;  // Hertz (constant curvature) or semi-Hertz
+  contact::NormalSolverKind normal_solver = contact::NormalSolverKind::SemiHertz;  // Hertz, semi-Hertz or half-space
 };
 
 struct WearRate {
@@ -118,6 +128,11 @@ struct WearCache {
   std::vector<std::pair<std::uint64_t, WearRate>> rates;  // the last few
   LifeCounters counters;  // only the solve and evaluation counts are kept here
   bool edge_reported = false;  // the contact at the edge of a life without the edge limit: warned once
+  // the half-space (solver.normal halfspace): each solve starts from the last one's pressures (normal's
+  // halfspace); false starts every solve cold (to show what the warm start saves and that it changes
+  // nothing beyond the solver's tolerance). Its solves and iterations, coarse and fine, over the run:
+  bool halfspace_warm_start = true;
+  long halfspace_solves = 0, halfspace_iterations = 0;
   std::vector<WearCache> conditions;  // a load collective's: one per running condition (its solves added above)
 };
 

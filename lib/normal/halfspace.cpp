@@ -218,17 +218,29 @@ void check_halfspace_inputs(const Grid& grid, const Eigen::ArrayXXd& gap_m, doub
   if (opt.max_iterations < 1)
     throw std::invalid_argument("halfspace: max_iterations must be at least 1, got " +
                                 std::to_string(opt.max_iterations));
+  if (opt.initial_pressure_Pa && (opt.initial_pressure_Pa->rows() != grid.nx || opt.initial_pressure_Pa->cols() != grid.ny))
+    throw std::invalid_argument("halfspace: initial pressure is " +
+                                size_text(opt.initial_pressure_Pa->rows(), opt.initial_pressure_Pa->cols()) +
+                                ", grid is " + size_text(grid.nx, grid.ny));
+  if (opt.initial_pressure_Pa && !opt.initial_pressure_Pa->allFinite())
+    throw std::invalid_argument("halfspace: initial pressure has a non-finite value");
 }
 
 // Polonsky & Keer's iteration (top of file), one stage per method: the state is the pressure p, the
 // displacement u = K p, the separation g and the conjugate direction t.
 class PolonskyKeer {
  public:
-  PolonskyKeer(const Grid& grid, const Eigen::ArrayXXd& h, double Estar_Pa, double F)
+  PolonskyKeer(const Grid& grid, const Eigen::ArrayXXd& h, double Estar_Pa, double F, const Eigen::ArrayXXd* start)
       : K_(grid, Estar_Pa), h_(h), cell_m2_(grid.dx_m * grid.dy_m), F_(F), h_min_(h.minCoeff()),
         // start: the load spread evenly over the grid
         p_(Eigen::ArrayXXd::Constant(grid.nx, grid.ny, F / (grid.nx * grid.ny * cell_m2_))),
         u_(grid.nx, grid.ny), g_(grid.nx, grid.ny), t_(Eigen::ArrayXXd::Zero(grid.nx, grid.ny)), Kt_(grid.nx, grid.ny) {
+    // or the caller's start, non-negative and carrying the load
+    if (start) {
+      const Eigen::ArrayXXd q = start->max(0.0);
+      const double carried = q.sum() * cell_m2_;
+      if (carried > 0 && std::isfinite(carried)) p_ = q * (F / carried);
+    }
     K_.apply(p_, u_);
   }
 
@@ -360,7 +372,7 @@ HalfspaceSolution solve_halfspace(const Grid& grid, const Eigen::ArrayXXd& gap_m
                                   double normal_load_N, const HalfspaceOptions& opt) {
   check_halfspace_inputs(grid, gap_m, Estar_Pa, normal_load_N, opt);
   const int nx = grid.nx, ny = grid.ny;
-  PolonskyKeer pk(grid, gap_m, Estar_Pa, normal_load_N);
+  PolonskyKeer pk(grid, gap_m, Estar_Pa, normal_load_N, opt.initial_pressure_Pa);
 
   int it = 0;
   HalfspaceSolution s;
@@ -416,11 +428,88 @@ HalfspaceSolution solve_halfspace(const Grid& grid, const Eigen::ArrayXXd& gap_m
   const Eigen::ArrayXXd& ps = s.pressure_Pa;
   s.reaches_border =
       (ps.row(0) > 0).any() || (ps.row(nx - 1) > 0).any() || (ps.col(0) > 0).any() || (ps.col(ny - 1) > 0).any();
-  if (s.reaches_border)
+  if (s.reaches_border && opt.warn_at_border)
     spdlog::warn("halfspace ({} x {}): the contact reaches the grid's border (half-sizes {:.3e} m x {:.3e} m): "
                  "enlarge the grid",
                  nx, ny, grid.half_x_m, grid.half_y_m);
   return s;
+}
+
+Eigen::ArrayXXd interpolate_pressure(const Eigen::ArrayXXd& p, const Grid& from, double from_y0_m, const Grid& to,
+                                     double to_y0_m) {
+  check_grid(from, "interpolate_pressure");
+  check_grid(to, "interpolate_pressure");
+  if (p.rows() != from.nx || p.cols() != from.ny)
+    throw std::invalid_argument("interpolate_pressure: pressure is " + size_text(p.rows(), p.cols()) + ", grid is " +
+                                size_text(from.nx, from.ny));
+  // position in `from`'s cells: u = (x - x_0)/dx, cell centres at integers 0..n-1; outside [0, n-1]: 0
+  const auto weights = [](double u, int n, int& k, double& t) {
+    if (!(u >= 0) || !(u <= n - 1)) return false;
+    k = std::min(static_cast<int>(std::floor(u)), std::max(n - 2, 0));
+    t = n > 1 ? u - k : 0.0;
+    return true;
+  };
+  Eigen::ArrayXXd q = Eigen::ArrayXXd::Zero(to.nx, to.ny);
+  for (int j = 0; j < to.ny; ++j) {
+    int l = 0;
+    double ty = 0;
+    if (!weights((to_y0_m + to.y_m(j) - from_y0_m - from.y_m(0)) / from.dy_m, from.ny, l, ty)) continue;
+    const int l1 = std::min(l + 1, from.ny - 1);
+    for (int i = 0; i < to.nx; ++i) {
+      int k = 0;
+      double tx = 0;
+      if (!weights((to.x_m(i) - from.x_m(0)) / from.dx_m, from.nx, k, tx)) continue;
+      const int k1 = std::min(k + 1, from.nx - 1);
+      q(i, j) = (1 - ty) * ((1 - tx) * p(k, l) + tx * p(k1, l)) + ty * ((1 - tx) * p(k, l1) + tx * p(k1, l1));
+    }
+  }
+  return q;
+}
+
+LoadedCells loaded_cells(const Eigen::ArrayXXd& P, double threshold_rel) {
+  const double peak = P.size() > 0 ? P.maxCoeff() : 0.0;
+  if (!(peak > 0)) throw std::invalid_argument("loaded_cells: no cell is loaded");
+  const double threshold = threshold_rel * peak;
+  LoadedCells c{static_cast<int>(P.rows()), -1, static_cast<int>(P.cols()), -1};
+  for (int j = 0; j < P.cols(); ++j)
+    for (int i = 0; i < P.rows(); ++i)
+      if (P(i, j) > threshold) {
+        c.i0 = std::min(c.i0, i);
+        c.i1 = std::max(c.i1, i);
+        c.j0 = std::min(c.j0, j);
+        c.j1 = std::max(c.j1, j);
+      }
+  return c;
+}
+
+void loaded_lateral_extent(const HalfspaceSolution& s, const Grid& grid, double& y_lo_m, double& y_hi_m) {
+  check_grid(grid, "loaded_lateral_extent");
+  const Eigen::ArrayXXd& P = s.pressure_Pa;
+  if (P.rows() != grid.nx || P.cols() != grid.ny)
+    throw std::invalid_argument("loaded_lateral_extent: pressure is " + size_text(P.rows(), P.cols()) + ", grid is " +
+                                size_text(grid.nx, grid.ny));
+  const Eigen::ArrayXd q = P.colwise().sum().transpose();  // strip loads (per dx)
+  if (!(q.maxCoeff() > 0)) throw std::invalid_argument("loaded_lateral_extent: no cell is loaded");
+  int j0 = 0, j1 = grid.ny - 1;
+  while (!(q(j0) > 0)) ++j0;
+  while (!(q(j1) > 0)) --j1;
+  const double dy = grid.dy_m;
+  y_lo_m = grid.y_m(j0) - dy / 2;
+  y_hi_m = grid.y_m(j1) + dy / 2;
+  if (j1 > j0) {
+    y_lo_m = grid.y_m(j0) - dy * edge_beyond_centre(q(j0), q(j0 + 1));
+    y_hi_m = grid.y_m(j1) + dy * edge_beyond_centre(q(j1), q(j1 - 1));
+  }
+}
+
+double displacement_at_m(const HalfspaceSolution& s, const Grid& grid, double x_m, double y_m, double Estar_Pa) {
+  const Eigen::ArrayXXd& P = s.pressure_Pa;
+  double u = 0;
+  for (int j = 0; j < grid.ny; ++j)
+    for (int i = 0; i < grid.nx; ++i)
+      if (P(i, j) > 0)
+        u += P(i, j) * rectangle_influence_m_per_Pa(x_m - grid.x_m(i), y_m - grid.y_m(j), grid.dx_m, grid.dy_m, Estar_Pa);
+  return u;
 }
 
 ContactPatch halfspace_patch(const HalfspaceSolution& s, const Grid& grid, double normal_load_N) {

@@ -29,6 +29,12 @@ namespace contact {
 struct HalfspaceOptions {
   double tol = 1e-9;         // on the complementarity residual above
   int max_iterations = 2000;  // conjugate-gradient iterations (one or two FFT convolutions each)
+  // warm start: the pressure to start from on this grid (nx x ny, e.g. the last solve's, or it
+  // interpolated onto this grid: interpolate_pressure), its negative values taken as 0 and the rest
+  // scaled to the load; null, or one that carries nothing, starts from the load spread evenly. The
+  // solve converges to the same tol either way: the start changes the result only within tol.
+  const Eigen::ArrayXXd* initial_pressure_Pa = nullptr;
+  bool warn_at_border = true;  // false: a contact that reaches the border is data only (a caller that enlarges)
 };
 
 struct HalfspaceSolution {
@@ -52,6 +58,30 @@ double rectangle_influence_m_per_Pa(double x_m, double y_m, double dx_m, double 
 // non-positive or non-finite load, an empty grid, tol <= 0 or max_iterations < 1
 HalfspaceSolution solve_halfspace(const Grid& grid, const Eigen::ArrayXXd& gap_m, double Estar_Pa,
                                   double normal_load_N, const HalfspaceOptions& opt = {});
+
+// The pressure p on `from` (nx x ny of that grid, centred on the profiles' y from_y0_m) as a start on
+// `to` (centred on to_y0_m): bilinear between cell centres, 0 beyond the outer centres of `from`.
+// throws std::invalid_argument for a pressure of the wrong size
+Eigen::ArrayXXd interpolate_pressure(const Eigen::ArrayXXd& p, const Grid& from, double from_y0_m, const Grid& to,
+                                     double to_y0_m);
+
+// The extent of the loaded cells (p > threshold_rel x the largest cell pressure), as cell indices:
+// i0..i1 along x over all strips, j0..j1 along y. A cell that carries less than threshold_rel of the
+// peak counts as unloaded: cells loaded only to the solver's tolerance do not move the extent.
+// throws std::invalid_argument when no cell is loaded
+struct LoadedCells {
+  int i0 = 0, i1 = 0, j0 = 0, j1 = 0;
+};
+LoadedCells loaded_cells(const Eigen::ArrayXXd& pressure_Pa, double threshold_rel = 1e-6);
+
+// The lateral extent of the loaded strips in the grid's y, each end refined like halfspace_patch's
+// (the strip load linear in the distance to the edge): [y_lo, y_hi]. throws std::invalid_argument as
+// loaded_cells
+void loaded_lateral_extent(const HalfspaceSolution& s, const Grid& grid, double& y_lo_m, double& y_hi_m);
+
+// The combined displacement of both surfaces at (x, y) (the grid's coordinates, anywhere) under the
+// solution's cell pressures, by direct summation of rectangle_influence_m_per_Pa (O(nx ny))
+double displacement_at_m(const HalfspaceSolution& s, const Grid& grid, double x_m, double y_m, double Estar_Pa);
 
 // The half-space solution as strips for the tangential solvers (patch.h), each strip recentred on x = 0:
 // - a_j: half of strip j's contact extent along x. The extent runs over its loaded cells (p > 0); each

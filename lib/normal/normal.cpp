@@ -16,8 +16,6 @@ namespace contact {
 
 namespace {
 
-constexpr double kBoxMargin = 1.25;  // the half-space grid: the semi-Hertzian contact's box enlarged by 25 %
-
 void take_profile_result(const SemiHertzResult& r, NormalSolution& n) {
   n.patch = r.patch;
   n.patches = r.patches;
@@ -34,52 +32,202 @@ bool profile_solve_converged(const SemiHertzResult& r, const SemiHertzOptions& o
   return r.status.kind != SolveStatus::Kind::MaxIterations && r.status.residual <= options.load_rtol;
 }
 
-// the half-space solver on the semi-Hertzian contact's box enlarged by 25 %, within the profiles' overlap
-void solve_on_halfspace(const NormalProblem& p, const SemiHertzResult& sh, NormalSolution& n) {
-  const Profiles& profiles = *p.profiles;
-  const double Rx1 = p.bodies.body1.Rx_m, Rx2 = p.bodies.body2.Rx_m;
-  const double lo = std::max(profiles.body1.y_m(0), profiles.body2.y_m(0));
-  const double hi = std::min(profiles.body1.y_m(profiles.body1.y_m.size() - 1),
-                             profiles.body2.y_m(profiles.body2.y_m.size() - 1));
-  const double centre = (sh.contact_y_min_m + sh.contact_y_max_m) / 2;
-  const double half_y = std::min({kBoxMargin * (sh.contact_y_max_m - sh.contact_y_min_m) / 2, centre - lo, hi - centre});
-  const Grid grid = make_grid(kBoxMargin * sh.patch.grid.half_x_m, half_y, p.grid);
+// ---- the half-space on profiles (normal.h, HalfspaceOnProfiles) ----
 
-  // gap: the profiles across, A x^2 along, zero at its minimum
-  const double A = (1 / Rx1 + 1 / Rx2) / 2;
-  Eigen::ArrayXXd gap(grid.nx, grid.ny);
-  for (int j = 0; j < grid.ny; ++j) {
-    const double y = centre + grid.y_m(j);
-    const double h = profile_z(profiles.body1, y) + profile_z(profiles.body2, y);
-    for (int i = 0; i < grid.nx; ++i) gap(i, j) = h + A * grid.x_m(i) * grid.x_m(i);
+constexpr double kLoadedRel = 1e-6;        // a cell carrying less than this of the peak counts as unloaded
+constexpr double kCoarseStartLineWidths = 3;  // the coarse box's first half-length, in line-contact half-widths
+constexpr int kMaxCoarseDoublings = 30;
+constexpr int kMaxEnlargements = 20;
+
+// the gap of the profiles and A x^2, measured from its minimum over the overlap, on a grid centred on y0
+struct ProfileGap {
+  const Profiles& profiles;
+  double lo, hi, A, minimum;
+
+  ProfileGap(const Profiles& p, double Rx1, double Rx2)
+      : profiles(p), lo(std::max(p.body1.y_m(0), p.body2.y_m(0))),
+        hi(std::min(p.body1.y_m(p.body1.y_m.size() - 1), p.body2.y_m(p.body2.y_m.size() - 1))),
+        A((1 / Rx1 + 1 / Rx2) / 2) {
+    // piecewise linear between either profile's nodes: its minimum is at one of them or an end
+    minimum = std::min(across(lo), across(hi));
+    for (const Profile* q : {&p.body1, &p.body2})
+      for (Eigen::Index i = 0; i < q->y_m.size(); ++i)
+        if (q->y_m(i) > lo && q->y_m(i) < hi) minimum = std::min(minimum, across(q->y_m(i)));
   }
-  gap -= gap.minCoeff();
+  double across(double y) const { return profile_z(profiles.body1, y) + profile_z(profiles.body2, y); }
+  Eigen::ArrayXXd on(const Grid& g, double y0) const {
+    Eigen::ArrayXXd gap(g.nx, g.ny);
+    for (int j = 0; j < g.ny; ++j) {
+      const double h = across(y0 + g.y_m(j)) - minimum;
+      for (int i = 0; i < g.nx; ++i) gap(i, j) = h + A * g.x_m(i) * g.x_m(i);
+    }
+    return gap;
+  }
+};
 
-  const HalfspaceSolution s = solve_halfspace(grid, gap, effective_modulus_Pa(p.pair), p.normal_load_N);
-  n.patch = halfspace_patch(s, grid, p.normal_load_N);
-  n.grid_y0_m = centre;
-  n.on_profiles = sh;
-  if (p.semi_hertz.heathcote_slip)
-    n.patch.strip_xi_offset = heathcote_xi_offset(profiles, Rx1, Rx2, centre + grid.y_m, sh.reference_y_m);
-  // patches: runs of strips in contact; the edge: the semi-Hertzian contact's, or a loaded end strip of a cut box
-  n.patches = 0;
-  for (int j = 0; j < grid.ny; ++j)
-    if (n.patch.half_length_m(j) > 0 && (j == 0 || !(n.patch.half_length_m(j - 1) > 0))) ++n.patches;
-  const bool cut = half_y < kBoxMargin * (sh.contact_y_max_m - sh.contact_y_min_m) / 2;
-  n.reaches_edge = sh.reaches_edge || (cut && (n.patch.half_length_m(0) > 0 || n.patch.half_length_m(grid.ny - 1) > 0));
-  // Failed is for geometry that cannot carry the load (a body narrower than the contact); the
-  // half-space's own Failed (a search direction lost, a non-finite residual) is a solve that did not
-  // converge
-  n.status = s.status;
-  n.solve_converged = s.status.converged();
+bool same_grid(const Grid& a, double a_y0, const Grid& b, double b_y0) {
+  return a.nx == b.nx && a.ny == b.ny && a.half_x_m == b.half_x_m && a.half_y_m == b.half_y_m && a_y0 == b_y0;
+}
+
+// the start on (grid, y0) from a previous solve's pressure on (from, from_y0): as it is on the same grid,
+// else interpolated; none without one
+const Eigen::ArrayXXd* start_on(const Grid& grid, double y0, const Grid& from, double from_y0,
+                                const Eigen::ArrayXXd& p, Eigen::ArrayXXd& buffer) {
+  if (p.size() == 0 || from.nx < 1) return nullptr;
+  if (same_grid(grid, y0, from, from_y0)) return &p;
+  buffer = interpolate_pressure(p, from, from_y0, grid, y0);
+  return &buffer;
+}
+
+// one solve, counted; false when it did not converge (the status says why)
+bool solve_counted(const Grid& grid, const Eigen::ArrayXXd& gap, double Estar, double F,
+                   const Eigen::ArrayXXd* start, HalfspaceOnProfiles& h, HalfspaceSolution& s) {
+  HalfspaceOptions opt;
+  opt.initial_pressure_Pa = start;
+  opt.warn_at_border = false;
+  s = solve_halfspace(grid, gap, Estar, F, opt);
+  h.solves += 1;
+  h.iterations += s.status.iterations;
+  return s.status.converged();
+}
+
+void fail_unconverged(NormalSolution& n, SolveStatus status, const std::string& which) {
+  n.status = std::move(status);
+  n.status.message = "half-space (" + which + "): " + n.status.message;
   if (n.status.kind == SolveStatus::Kind::Failed) n.status.kind = SolveStatus::Kind::MaxIterations;
-  if (n.reaches_edge) {
-    n.status.kind = SolveStatus::Kind::Failed;
-    n.status.message = "the contact reaches a body's edge; " + n.status.message;
-  }
+  n.solve_converged = false;
 }
 
 }  // namespace
+
+NormalSolution solve_halfspace_on_profiles(const NormalProblem& p) {
+  if (!p.profiles) throw std::invalid_argument("solve_halfspace_on_profiles: the half-space on profiles needs profiles");
+  NormalSolution n;
+  n.solver = NormalSolverKind::Halfspace;
+  HalfspaceOnProfiles& h = n.halfspace;
+  const Profiles& profiles = *p.profiles;
+  const double Rx1 = p.bodies.body1.Rx_m, Rx2 = p.bodies.body2.Rx_m;
+  const ProfileGap gap(profiles, Rx1, Rx2);
+  const double Estar = effective_modulus_Pa(p.pair);
+  const double F = p.normal_load_N;
+  if (!(gap.hi > gap.lo)) throw std::invalid_argument("solve_halfspace_on_profiles: the profiles do not overlap");
+  if (!(gap.A > 0) || !std::isfinite(gap.A))
+    throw std::invalid_argument("solve_halfspace_on_profiles: the rolling curvature (1/Rx1 + 1/Rx2)/2 must be positive");
+  const HalfspaceOnProfiles* warm = p.halfspace_start;
+  Eigen::ArrayXXd buffer;
+
+  // 1. coarse, over the whole overlap across; along x from a line contact as long as the overlap
+  const double width = gap.hi - gap.lo;
+  const double a_line = std::sqrt(4 * F / (2 * gap.A) / (kPi * Estar * width));
+  h.coarse_y0_m = (gap.lo + gap.hi) / 2;
+  HalfspaceSolution s;
+  LoadedCells cells;
+  double X = kCoarseStartLineWidths * a_line;
+  for (int doubling = 0;; ++doubling, X *= 2) {
+    h.coarse_grid = make_grid(X, width / 2, kHalfspaceCoarseGrid);
+    const Eigen::ArrayXXd* start =
+        warm ? start_on(h.coarse_grid, h.coarse_y0_m, warm->coarse_grid, warm->coarse_y0_m, warm->coarse_pressure_Pa, buffer)
+             : nullptr;
+    if (!solve_counted(h.coarse_grid, gap.on(h.coarse_grid, h.coarse_y0_m), Estar, F, start, h, s)) {
+      fail_unconverged(n, s.status, "coarse");
+      return n;
+    }
+    cells = loaded_cells(s.pressure_Pa, kLoadedRel);
+    if (cells.i0 > 0 && cells.i1 < h.coarse_grid.nx - 1) break;
+    if (doubling == kMaxCoarseDoublings) {
+      n.status = s.status;
+      n.status.kind = SolveStatus::Kind::MaxIterations;
+      n.status.message = fmt::format("half-space (coarse): the contact still reaches the box's ends along x at +-{:.3e} m",
+                                     X);
+      return n;
+    }
+  }
+  h.coarse_pressure_Pa = std::move(s.pressure_Pa);
+
+  // 2. fine: the coarse loaded cells and one coarse cell more, in whole coarse cells
+  const Grid& cg = h.coarse_grid;
+  const int mid = cg.nx / 2;  // the box is symmetric in x: half-length in coarse cells from the centre line
+  int kx = std::max(mid - cells.i0, cells.i1 + 1 - mid) + 1;
+  int jlo = std::max(cells.j0 - 1, 0), jhi = std::min(cells.j1 + 1, cg.ny - 1);
+  const Grid* previous = warm && warm->pressure_Pa.size() > 0 ? &warm->grid : nullptr;
+  double previous_y0 = warm ? warm->grid_y0_m : 0;
+  Eigen::ArrayXXd previous_p = warm ? warm->pressure_Pa : Eigen::ArrayXXd();
+  Grid grid;
+  double y0 = 0;
+  for (int enlargement = 0;; ++enlargement) {
+    const double y_lo = h.coarse_y0_m + cg.y_edge(jlo), y_hi = h.coarse_y0_m + cg.y_edge(jhi + 1);
+    grid = make_grid(kx * cg.dx_m, (y_hi - y_lo) / 2, p.grid);
+    y0 = (y_lo + y_hi) / 2;
+    const Eigen::ArrayXXd* start =
+        previous ? start_on(grid, y0, *previous, previous_y0, previous_p, buffer) : nullptr;
+    if (!solve_counted(grid, gap.on(grid, y0), Estar, F, start, h, s)) {
+      fail_unconverged(n, s.status, "fine");
+      return n;
+    }
+    const LoadedCells c = loaded_cells(s.pressure_Pa, kLoadedRel);
+    const bool x_cut = c.i0 == 0 || c.i1 == grid.nx - 1;
+    const bool lo_cut = c.j0 == 0 && jlo > 0, hi_cut = c.j1 == grid.ny - 1 && jhi < cg.ny - 1;
+    if (!x_cut && !lo_cut && !hi_cut) break;
+    if (enlargement == kMaxEnlargements) {
+      h.reaches_border = true;
+      break;
+    }
+    const int grow_y = std::max(1, (jhi - jlo + 1) / 4);
+    if (x_cut) kx += std::max(1, kx / 4);
+    if (lo_cut) jlo = std::max(0, jlo - grow_y);
+    if (hi_cut) jhi = std::min(cg.ny - 1, jhi + grow_y);
+    previous = &h.grid;  // the next attempt starts from this one's pressures
+    h.grid = grid;
+    previous_y0 = y0;
+    previous_p = s.pressure_Pa;
+  }
+  h.grid = grid;
+  h.grid_y0_m = y0;
+
+  // the patch and what the wear loop reads
+  n.patch = halfspace_patch(s, grid, F);
+  n.grid_y0_m = y0;
+  const Eigen::ArrayXd q = s.pressure_Pa.colwise().sum().transpose() * grid.dx_m;  // strip loads (N/m)
+  h.reference_y_m = y0 + (q * grid.y_m).sum() / q.sum();
+  double e_lo = 0, e_hi = 0;
+  loaded_lateral_extent(s, grid, e_lo, e_hi);
+  h.contact_y_min_m = y0 + e_lo;
+  h.contact_y_max_m = y0 + e_hi;
+  if (p.semi_hertz.heathcote_slip)
+    n.patch.strip_xi_offset = heathcote_xi_offset(profiles, Rx1, Rx2, y0 + grid.y_m, h.reference_y_m);
+  n.patches = 0;
+  for (int j = 0; j < grid.ny; ++j)
+    if (n.patch.half_length_m(j) > 0 && (j == 0 || !(n.patch.half_length_m(j - 1) > 0))) ++n.patches;
+  const LoadedCells c = loaded_cells(s.pressure_Pa, kLoadedRel);
+  const bool at_lo = jlo == 0 && c.j0 == 0, at_hi = jhi == cg.ny - 1 && c.j1 == grid.ny - 1;
+  n.reaches_edge = at_lo || at_hi;
+
+  // the edge value (HalfspaceOnProfiles::edge_value_m)
+  const double delta = s.approach_m;
+  const double q_max = q.maxCoeff();
+  const auto edge_value = [&](double y_end, bool grid_reaches_it, int j_end) {
+    const double separation = gap.across(y_end) - gap.minimum + displacement_at_m(s, grid, 0, y_end - y0, Estar) - delta;
+    return (grid_reaches_it ? delta * q(j_end) / q_max : 0.0) - separation;
+  };
+  h.edge_value_m = std::max(edge_value(gap.lo, jlo == 0, 0), edge_value(gap.hi, jhi == cg.ny - 1, grid.ny - 1));
+  h.pressure_Pa = std::move(s.pressure_Pa);
+
+  n.status = s.status;
+  n.status.iterations = h.iterations;
+  n.status.message = fmt::format("{} ({} half-space solves, {} iterations in all)", s.status.message, h.solves,
+                                 h.iterations);
+  n.solve_converged = s.status.converged() && !h.reaches_border;
+  if (h.reaches_border) {
+    n.status.kind = SolveStatus::Kind::MaxIterations;
+    n.status.message = fmt::format("the contact still reaches the grid's border after {} enlargements; ",
+                                   kMaxEnlargements) + n.status.message;
+  } else if (n.reaches_edge) {
+    n.status.kind = SolveStatus::Kind::Failed;
+    n.status.message = "the contact reaches a body's edge; " + n.status.message;
+  }
+  return n;
+}
+
 
 NormalChoice parse_normal_choice(const std::string& name) {
   if (const std::optional<NormalChoice> c = enum_from_name(kNormalChoiceNames, name)) return *c;
@@ -124,23 +272,16 @@ NormalSolution solve_normal(const NormalProblem& p) {
     return n;
   }
 
+  if (p.choice == NormalChoice::Halfspace) {
+    n = solve_halfspace_on_profiles(p);
+    n.reason = "solver.normal halfspace, on a grid sized from the geometry";
+    return n;
+  }
   const SemiHertzResult sh = solve_semi_hertz(profiles, Rx1, Rx2, p.pair, p.normal_load_N, p.grid, p.semi_hertz);
-  if (p.choice != NormalChoice::Halfspace) {
-    take_profile_result(sh, n);
-    n.solve_converged = profile_solve_converged(sh, p.semi_hertz);
-    n.solver = NormalSolverKind::SemiHertz;
-    n.reason = p.choice == NormalChoice::Auto ? "solver.normal auto: the geometry is worn" : "solver.normal semi-hertz";
-    return n;
-  }
-  if (sh.status.kind == SolveStatus::Kind::MaxIterations) {  // no box to put the half-space on
-    n.on_profiles = sh;
-    n.status = sh.status;
-    n.solver = NormalSolverKind::Halfspace;
-    return n;
-  }
-  solve_on_halfspace(p, sh, n);
-  n.solver = NormalSolverKind::Halfspace;
-  n.reason = "solver.normal halfspace, on the semi-Hertzian contact's box enlarged by 25 %";
+  take_profile_result(sh, n);
+  n.solve_converged = profile_solve_converged(sh, p.semi_hertz);
+  n.solver = NormalSolverKind::SemiHertz;
+  n.reason = p.choice == NormalChoice::Auto ? "solver.normal auto: the geometry is worn" : "solver.normal semi-hertz";
   return n;
 }
 

@@ -2,13 +2,15 @@
 //   Hertz       from the four radii (no profiles), or on profiles of constant curvature whose ellipse
 //               fits inside their overlap (Hertz's closed form with the fitted radii);
 //   semi-Hertz  on any lateral profiles (lib/normal/semi_hertz.h);
-//   half-space  the exact solver on the semi-Hertzian contact's box enlarged by 25 %, the gap built
-//               here from the profiles across and A x^2 along.
+//   half-space  the exact solver (halfspace.h) on a grid sized from the geometry alone, the gap built
+//               here from the profiles across and A x^2 along (solve_halfspace_on_profiles below).
 // NormalChoice::Auto: Hertz without profiles; with profiles Hertz's closed form while they have
 // constant curvature and are unworn, else semi-Hertz. Once worn, never back to Hertz: the switch is a
 // jump in the wear rate of up to 6.4e-4 (docs/semi-hertz.md), which the step control would meet at
 // every crossing. Which solver ran is NormalSolution::solver.
 #pragma once
+
+#include <Eigen/Core>
 
 #include <stdexcept>
 #include <string>
@@ -42,6 +44,44 @@ const char* to_string(NormalChoice c);
 // profiles of constant curvature within this (relative) tolerance are treated by Hertz
 constexpr double kConstantCurvatureRtol = 1e-3;
 
+// The half-space on profiles (NormalChoice::Halfspace), a deterministic function of the gap, the load and
+// the materials (the problem is convex, so the answer does not depend on where a solve starts):
+//  1. coarse: kHalfspaceCoarseGrid cells over the profiles' whole overlap across, and +-X along, X from
+//     3 times the half-width of a line contact as long as the overlap (no contact is narrower along x),
+//     doubled while loaded cells touch the x border; its loaded cells (more than 1e-6 of the peak) say
+//     where the load is, every lobe of it;
+//  2. fine: the case's nx x ny over the coarse loaded cells and one coarse cell more on every side (a
+//     box in whole coarse cells, inside the overlap), enlarged by a quarter on each side whose loaded
+//     cells touch the border (along y towards the overlap's ends, never past them) and solved again.
+// The gap is measured from its minimum over the overlap, so the approach is too. Each solve may start
+// from the pressures of a previous one (halfspace_start): on the same grid as they are, else
+// interpolated; converged to the same tol, so the start changes the result only within tol.
+struct HalfspaceOnProfiles {
+  Grid coarse_grid;                   // over the profiles' overlap across, centred on coarse_y0_m
+  double coarse_y0_m = 0;
+  Eigen::ArrayXXd coarse_pressure_Pa;
+  Grid grid;                          // the final grid (the patch's), centred on grid_y0_m (profiles' y)
+  double grid_y0_m = 0;
+  Eigen::ArrayXXd pressure_Pa;        // its cell pressures
+  double contact_y_min_m = 0, contact_y_max_m = 0;  // lateral extent (profiles' y), ends refined (halfspace.h)
+  double reference_y_m = 0;           // the strip loads' centroid: where the Heathcote offset vanishes
+  bool reaches_border = false;        // loaded cells still touch a border of the final grid that is not an
+                                      // end of the overlap (the enlargements ran out): not converged
+  // The edge limit as a continuous function of the gap (m): at each end y_e of the overlap,
+  //   f_e = delta q_e / q_max - s_e,  s_e = h(0, y_e) + u(0, y_e) - delta,
+  // s_e the separation there (u by direct summation of the cell pressures), q_e the load of the strip
+  // next to the end (0 when the grid does not reach it), q_max the largest strip load; the value is
+  // max(f_lo, f_hi). Inside, q_e = 0 and s_e > 0: negative. As the contact reaches the end, s_e -> 0
+  // and q_e rises from 0 (a cell enters the contact with zero pressure): 0 there, continuous. Past it,
+  // s_e = 0 (the end lies in the contact, cut by the body's edge) and q_e grows with the load the edge
+  // carries: positive and rising, so a root finder sees the sign change.
+  double edge_value_m = 0;
+  int solves = 0, iterations = 0;     // half-space solves (coarse, fine, enlargements) and their iterations
+};
+
+// coarse grid of the half-space on profiles (nx along x, ny across the overlap)
+constexpr GridSpec kHalfspaceCoarseGrid = {24, 64};
+
 struct NormalProblem {
   NormalChoice choice = NormalChoice::Auto;
   Bodies bodies;                       // Rx of both; Ry only without profiles
@@ -52,6 +92,7 @@ struct NormalProblem {
   GridSpec grid;
   SemiHertzOptions semi_hertz;         // also the half-space box's semi-Hertzian solve
   double curvature_rtol = kConstantCurvatureRtol;
+  const HalfspaceOnProfiles* halfspace_start = nullptr;  // the half-space's warm start (a previous solve's)
 };
 
 struct NormalSolution {
@@ -62,8 +103,9 @@ struct NormalSolution {
   bool reaches_edge = false;  // the contact reaches a body's edge (the end of the profiles' overlap)
   double grid_y0_m = 0;       // profiles' y of the grid's y = 0 (strip j at grid_y0_m + grid.y_m(j))
   // with profiles: the profile solve's diagnostics (reference point, lateral extent, approach, rule);
-  // its patch is this solution's patch except for the half-space, where it is the semi-Hertzian one
+  // (not filled by the half-space, which solves no semi-Hertzian problem: see halfspace)
   SemiHertzResult on_profiles;
+  HalfspaceOnProfiles halfspace;  // the half-space's on profiles (solver Halfspace)
   // Converged, MaxIterations (no approach carries the load, or the half-space did not converge: never
   // to be used as a result), Failed (the contact reaches a body's edge: a body narrower than the contact
   // cannot carry the load)
@@ -71,7 +113,7 @@ struct NormalSolution {
   // the solver's own convergence, whether or not the contact reaches an edge (status.residual against
   // the solver's tolerance): Hertz's closed form; the semi-Hertzian load residual |F(delta)/F - 1| within
   // SemiHertzOptions::load_rtol; the half-space's complementarity residual within its tol (and its box's
-  // semi-Hertzian solve converged). A solve that did not converge is never used as a result.
+  // enlargements ended inside the grid). A solve that did not converge is never used as a result.
   bool solve_converged = false;
 };
 
@@ -92,6 +134,10 @@ struct NormalSolveError : std::runtime_error {
 // ellipse does not fit, NoStripCentreError (semi_hertz.h) for a grid too coarse for the contact.
 // The status is the caller's to check.
 NormalSolution solve_normal(const NormalProblem& problem);
+
+// The half-space on the problem's profiles (HalfspaceOnProfiles above): what solve_normal runs for
+// NormalChoice::Halfspace. Throws std::invalid_argument without profiles.
+NormalSolution solve_halfspace_on_profiles(const NormalProblem& problem);
 
 // solve_normal, and a NormalSolveError naming the solver and its status unless the solve converged; a
 // converged contact cut at a body's edge comes back (reaches_edge, status Failed)

@@ -515,7 +515,7 @@ TransientCase start_stop_duty_cycle() {
   const wear::WearModel m = wear::make_wear_model(wear::read_wear_case(kSource + "/cases/start-stop-wear.yaml"));
   wear::WearCache cache;
   TransientCase t = *m.transient;
-  t.patch = wear::normal_state(m, wear::initial_state(m), cache).normal.patch;
+  t.patch = wear::normal_state(m, wear::initial_state(m), cache).patch;
   return t;
 }
 
