@@ -124,7 +124,7 @@ NormalSolution solve_halfspace_on_profiles(const NormalProblem& p) {
   LoadedCells cells;
   double X = kCoarseStartLineWidths * a_line;
   for (int doubling = 0;; ++doubling, X *= 2) {
-    h.coarse_grid = make_grid(X, width / 2, kHalfspaceCoarseGrid);
+    h.coarse_grid = make_grid(X, width / 2, p.halfspace_coarse_grid);
     const Eigen::ArrayXXd* start =
         warm ? start_on(h.coarse_grid, h.coarse_y0_m, warm->coarse_grid, warm->coarse_y0_m, warm->coarse_pressure_Pa, buffer)
              : nullptr;
@@ -146,9 +146,10 @@ NormalSolution solve_halfspace_on_profiles(const NormalProblem& p) {
 
   // 2. fine: the coarse loaded cells and one coarse cell more, in whole coarse cells
   const Grid& cg = h.coarse_grid;
-  const int mid = cg.nx / 2;  // the box is symmetric in x: half-length in coarse cells from the centre line
-  int kx = std::max(mid - cells.i0, cells.i1 + 1 - mid) + 1;
-  int jlo = std::max(cells.j0 - 1, 0), jhi = std::min(cells.j1 + 1, cg.ny - 1);
+  const int margin = std::max(p.halfspace_margin_cells, 0);
+  // the gap is even in x: the box is symmetric, its half-length to the farther loaded cell's outer edge
+  double half_x = std::max(std::abs(cg.x_edge(cells.i0)), std::abs(cg.x_edge(cells.i1 + 1))) + margin * cg.dx_m;
+  int jlo = std::max(cells.j0 - margin, 0), jhi = std::min(cells.j1 + margin, cg.ny - 1);
   const Grid* previous = warm && warm->pressure_Pa.size() > 0 ? &warm->grid : nullptr;
   double previous_y0 = warm ? warm->grid_y0_m : 0;
   Eigen::ArrayXXd previous_p = warm ? warm->pressure_Pa : Eigen::ArrayXXd();
@@ -156,7 +157,7 @@ NormalSolution solve_halfspace_on_profiles(const NormalProblem& p) {
   double y0 = 0;
   for (int enlargement = 0;; ++enlargement) {
     const double y_lo = h.coarse_y0_m + cg.y_edge(jlo), y_hi = h.coarse_y0_m + cg.y_edge(jhi + 1);
-    grid = make_grid(kx * cg.dx_m, (y_hi - y_lo) / 2, p.grid);
+    grid = make_grid(half_x, (y_hi - y_lo) / 2, p.grid);
     y0 = (y_lo + y_hi) / 2;
     const Eigen::ArrayXXd* start =
         previous ? start_on(grid, y0, *previous, previous_y0, previous_p, buffer) : nullptr;
@@ -173,7 +174,7 @@ NormalSolution solve_halfspace_on_profiles(const NormalProblem& p) {
       break;
     }
     const int grow_y = std::max(1, (jhi - jlo + 1) / 4);
-    if (x_cut) kx += std::max(1, kx / 4);
+    if (x_cut) half_x += std::max(cg.dx_m, half_x / 4);
     if (lo_cut) jlo = std::max(0, jlo - grow_y);
     if (hi_cut) jhi = std::min(cg.ny - 1, jhi + grow_y);
     previous = &h.grid;  // the next attempt starts from this one's pressures

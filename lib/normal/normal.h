@@ -93,6 +93,9 @@ struct NormalProblem {
   SemiHertzOptions semi_hertz;         // also the half-space box's semi-Hertzian solve
   double curvature_rtol = kConstantCurvatureRtol;
   const HalfspaceOnProfiles* halfspace_start = nullptr;  // the half-space's warm start (a previous solve's)
+  GridSpec halfspace_coarse_grid = kHalfspaceCoarseGrid;  // the half-space's coarse grid
+  int halfspace_margin_cells = 1;  // coarse cells added around the coarse loaded ones (0: the fine box is
+                                   // usually too small and enlarged, for the tests of the enlargement)
 };
 
 struct NormalSolution {
