@@ -187,6 +187,25 @@ TEST(HalfspaceOnProfiles, ContactCutAtTheBodysEdgeReachesTheEdge) {
   }
 }
 
+// Reference: the direct summation of Love's closed form (rectangle_influence_m_per_Pa, itself checked
+// against quadrature in halfspace_test.cpp). displacement_at_m switches to the expansion of the cell's
+// displacement beyond 4 cell sizes; near and far, it agrees with the closed form's sum within 1e-4.
+TEST(HalfspaceOnProfiles, DisplacementByDirectSummationMatchesLovesClosedForm) {
+  const Grid g = make_grid(1e-3, 3e-3, GridSpec{12, 10});  // cells 0.167 x 0.6 mm: dy/dx = 3.6
+  HalfspaceSolution s;
+  s.pressure_Pa = Eigen::ArrayXXd::Zero(12, 10);
+  for (int j = 0; j < 10; ++j)
+    for (int i = 0; i < 12; ++i) s.pressure_Pa(i, j) = std::max(0.0, 1e9 * (1 - 0.01 * (i - 5.5) * (i - 5.5) - 0.02 * (j - 4.5) * (j - 4.5)));
+  const double Estar = effective_modulus_Pa(steel());
+  for (const auto& [x, y] : {std::pair{0.0, 0.0}, {0.3e-3, 3.4e-3}, {0.0, 5e-3}, {2e-3, -6e-3}, {0.0, 20e-3}}) {
+    double exact = 0;
+    for (int j = 0; j < 10; ++j)
+      for (int i = 0; i < 12; ++i)
+        exact += s.pressure_Pa(i, j) * rectangle_influence_m_per_Pa(x - g.x_m(i), y - g.y_m(j), g.dx_m, g.dy_m, Estar);
+    EXPECT_NEAR(displacement_at_m(s, g, x, y, Estar) / exact, 1, 1e-4) << x << ", " << y;
+  }
+}
+
 }  // namespace
 }  // namespace contact
 

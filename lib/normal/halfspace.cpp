@@ -504,11 +504,28 @@ void loaded_lateral_extent(const HalfspaceSolution& s, const Grid& grid, double&
 
 double displacement_at_m(const HalfspaceSolution& s, const Grid& grid, double x_m, double y_m, double Estar_Pa) {
   const Eigen::ArrayXXd& P = s.pressure_Pa;
+  if (P.rows() != grid.nx || P.cols() != grid.ny)
+    throw std::invalid_argument("displacement_at_m: pressure is " + size_text(P.rows(), P.cols()) + ", grid is " +
+                                size_text(grid.nx, grid.ny));
+  // Love's closed form near the point; farther than kFar cell sizes, its expansion in the cell's size
+  //   dx dy/(pi E* r) [1 + (dx^2 (3 X^2/r^2 - 1) + dy^2 (3 Y^2/r^2 - 1)) / (24 r^2)],
+  // whose next term is O((d/r)^4): below 1e-4 of the cell's displacement there
+  constexpr double kFar = 4;
+  const double dx = grid.dx_m, dy = grid.dy_m, far2 = kFar * kFar * std::max(dx * dx, dy * dy);
+  const double point = dx * dy / (kPi * Estar_Pa);
   double u = 0;
-  for (int j = 0; j < grid.ny; ++j)
-    for (int i = 0; i < grid.nx; ++i)
-      if (P(i, j) > 0)
-        u += P(i, j) * rectangle_influence_m_per_Pa(x_m - grid.x_m(i), y_m - grid.y_m(j), grid.dx_m, grid.dy_m, Estar_Pa);
+  for (int j = 0; j < grid.ny; ++j) {
+    const double Y = y_m - grid.y_m(j);
+    for (int i = 0; i < grid.nx; ++i) {
+      if (!(P(i, j) > 0)) continue;
+      const double X = x_m - grid.x_m(i);
+      const double r2 = X * X + Y * Y;
+      if (r2 > far2)
+        u += P(i, j) * point / std::sqrt(r2) * (1 + (dx * dx * (3 * X * X / r2 - 1) + dy * dy * (3 * Y * Y / r2 - 1)) / (24 * r2));
+      else
+        u += P(i, j) * rectangle_influence_m_per_Pa(X, Y, dx, dy, Estar_Pa);
+    }
+  }
   return u;
 }
 
