@@ -28,6 +28,7 @@
 //   r = K t,  r -= mean_Ic r,  tau = sum_Ic g t / sum_Ic r t
 //   p -= tau t on Ic,  p = max(p, 0)
 //   Iol = {p = 0, g < 0} (overlap outside the contact): p = -tau g there, and restart the direction
+//   (a conjugate t with tau < 0, uphill, is replaced by the steepest descent t = g, whose tau >= 0)
 //   p *= F / (sum p dx dy)                     (prescribed load)
 // The residual of halfspace.h is measured on g at the start of each iteration. When a step clips no
 // cell and loads no overlap, p_new = scale (p - tau t) and so K p_new = scale (K p - tau K t): the
@@ -352,6 +353,13 @@ class PolonskyKeer {
     }
   }
 
+  // drop the conjugate direction (the next one is the steepest descent); false if it was that already
+  bool restart_direction() {
+    const bool was = conjugate_;
+    conjugate_ = false;
+    return was;
+  }
+
   double residual() const { return residual_; }
   double approach() const { return delta_; }
   Eigen::ArrayXXd& pressure() { return p_; }
@@ -397,7 +405,14 @@ HalfspaceSolution solve_halfspace(const Grid& grid, const Eigen::ArrayXXd& gap_m
     }
     pk.conjugate_direction();
     double tau = 0, rt = 0;
-    if (!pk.step_length(tau, rt)) {
+    bool descends = pk.step_length(tau, rt);
+    // a conjugate direction along which the step would go uphill (tau < 0: it would put negative
+    // pressure on the overlapping cells; seen from a warm start): start again from the steepest descent
+    if (descends && tau < 0 && pk.restart_direction()) {
+      pk.conjugate_direction();
+      descends = pk.step_length(tau, rt);
+    }
+    if (!descends) {
       s.status.kind = SolveStatus::Kind::Failed;
       s.status.message = fmt::format("search direction lost (r.t = {:.3g}) with residual {:.2g} after {} iterations",
                                      rt, residual, it);
@@ -444,9 +459,16 @@ Eigen::ArrayXXd interpolate_pressure(const Eigen::ArrayXXd& p, const Grid& from,
                                 size_text(from.nx, from.ny));
   // position in `from`'s cells: u = (x - x_0)/dx, cell centres at integers 0..n-1; outside [0, n-1]: 0
   const auto weights = [](double u, int n, int& k, double& t) {
+    if (u > -1e-9 && u < 0) u = 0;
+    if (u > n - 1 && u < n - 1 + 1e-9) u = n - 1;
     if (!(u >= 0) || !(u <= n - 1)) return false;
     k = std::min(static_cast<int>(std::floor(u)), std::max(n - 2, 0));
     t = n > 1 ? u - k : 0.0;
+    // a centre within rounding of a centre of `from` takes its value alone: no trace of the neighbour,
+    // which may be an unloaded cell (a trace there is a loaded cell with an open gap, for the solver to clip)
+    constexpr double kSnap = 1e-9;
+    if (t < kSnap) t = 0;
+    if (t > 1 - kSnap) t = 1;
     return true;
   };
   Eigen::ArrayXXd q = Eigen::ArrayXXd::Zero(to.nx, to.ny);

@@ -144,21 +144,29 @@ NormalSolution solve_halfspace_on_profiles(const NormalProblem& p) {
   }
   h.coarse_pressure_Pa = std::move(s.pressure_Pa);
 
-  // 2. fine: the coarse loaded cells and one coarse cell more, in whole coarse cells
+  // 2. fine: the coarse contact's refined extent (cells below kLoadedRel of the peak taken as unloaded),
+  // one coarse cell more on every side, within the overlap: continuous in the gap
   const Grid& cg = h.coarse_grid;
-  const int margin = std::max(p.halfspace_margin_cells, 0);
-  // the gap is even in x: the box is symmetric, its half-length to the farther loaded cell's outer edge
-  double half_x = std::max(std::abs(cg.x_edge(cells.i0)), std::abs(cg.x_edge(cells.i1 + 1))) + margin * cg.dx_m;
-  int jlo = std::max(cells.j0 - margin, 0), jhi = std::min(cells.j1 + margin, cg.ny - 1);
+  const double margin = std::max(p.halfspace_margin_cells, 0);
+  double half_x = 0, w_lo = 0, w_hi = 0;
+  {
+    HalfspaceSolution sc;
+    sc.pressure_Pa = (h.coarse_pressure_Pa > kLoadedRel * h.coarse_pressure_Pa.maxCoeff()).select(h.coarse_pressure_Pa, 0.0);
+    const double carried = sc.pressure_Pa.sum() * cg.dx_m * cg.dy_m;
+    half_x = halfspace_patch(sc, cg, carried).a_m + margin * cg.dx_m;
+    double e_lo = 0, e_hi = 0;
+    loaded_lateral_extent(sc, cg, e_lo, e_hi);
+    w_lo = std::max(gap.lo, h.coarse_y0_m + e_lo - margin * cg.dy_m);
+    w_hi = std::min(gap.hi, h.coarse_y0_m + e_hi + margin * cg.dy_m);
+  }
   const Grid* previous = warm && warm->pressure_Pa.size() > 0 ? &warm->grid : nullptr;
   double previous_y0 = warm ? warm->grid_y0_m : 0;
   Eigen::ArrayXXd previous_p = warm ? warm->pressure_Pa : Eigen::ArrayXXd();
   Grid grid;
   double y0 = 0;
   for (int enlargement = 0;; ++enlargement) {
-    const double y_lo = h.coarse_y0_m + cg.y_edge(jlo), y_hi = h.coarse_y0_m + cg.y_edge(jhi + 1);
-    grid = make_grid(half_x, (y_hi - y_lo) / 2, p.grid);
-    y0 = (y_lo + y_hi) / 2;
+    grid = make_grid(half_x, (w_hi - w_lo) / 2, p.grid);
+    y0 = (w_lo + w_hi) / 2;
     const Eigen::ArrayXXd* start =
         previous ? start_on(grid, y0, *previous, previous_y0, previous_p, buffer) : nullptr;
     if (!solve_counted(grid, gap.on(grid, y0), Estar, F, start, h, s)) {
@@ -167,16 +175,16 @@ NormalSolution solve_halfspace_on_profiles(const NormalProblem& p) {
     }
     const LoadedCells c = loaded_cells(s.pressure_Pa, kLoadedRel);
     const bool x_cut = c.i0 == 0 || c.i1 == grid.nx - 1;
-    const bool lo_cut = c.j0 == 0 && jlo > 0, hi_cut = c.j1 == grid.ny - 1 && jhi < cg.ny - 1;
+    const bool lo_cut = c.j0 == 0 && w_lo > gap.lo, hi_cut = c.j1 == grid.ny - 1 && w_hi < gap.hi;
     if (!x_cut && !lo_cut && !hi_cut) break;
     if (enlargement == kMaxEnlargements) {
       h.reaches_border = true;
       break;
     }
-    const int grow_y = std::max(1, (jhi - jlo + 1) / 4);
+    const double grow_y = std::max(cg.dy_m, (w_hi - w_lo) / 4);
     if (x_cut) half_x += std::max(cg.dx_m, half_x / 4);
-    if (lo_cut) jlo = std::max(0, jlo - grow_y);
-    if (hi_cut) jhi = std::min(cg.ny - 1, jhi + grow_y);
+    if (lo_cut) w_lo = std::max(gap.lo, w_lo - grow_y);
+    if (hi_cut) w_hi = std::min(gap.hi, w_hi + grow_y);
     previous = &h.grid;  // the next attempt starts from this one's pressures
     h.grid = grid;
     previous_y0 = y0;
@@ -200,7 +208,7 @@ NormalSolution solve_halfspace_on_profiles(const NormalProblem& p) {
   for (int j = 0; j < grid.ny; ++j)
     if (n.patch.half_length_m(j) > 0 && (j == 0 || !(n.patch.half_length_m(j - 1) > 0))) ++n.patches;
   const LoadedCells c = loaded_cells(s.pressure_Pa, kLoadedRel);
-  const bool at_lo = jlo == 0 && c.j0 == 0, at_hi = jhi == cg.ny - 1 && c.j1 == grid.ny - 1;
+  const bool at_lo = w_lo == gap.lo && c.j0 == 0, at_hi = w_hi == gap.hi && c.j1 == grid.ny - 1;
   n.reaches_edge = at_lo || at_hi;
 
   // the edge value (HalfspaceOnProfiles::edge_value_m)
@@ -210,7 +218,7 @@ NormalSolution solve_halfspace_on_profiles(const NormalProblem& p) {
     const double separation = gap.across(y_end) - gap.minimum + displacement_at_m(s, grid, 0, y_end - y0, Estar) - delta;
     return (grid_reaches_it ? delta * q(j_end) / q_max : 0.0) - separation;
   };
-  h.edge_value_m = std::max(edge_value(gap.lo, jlo == 0, 0), edge_value(gap.hi, jhi == cg.ny - 1, grid.ny - 1));
+  h.edge_value_m = std::max(edge_value(gap.lo, w_lo == gap.lo, 0), edge_value(gap.hi, w_hi == gap.hi, grid.ny - 1));
   h.pressure_Pa = std::move(s.pressure_Pa);
 
   n.status = s.status;
