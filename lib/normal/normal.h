@@ -50,9 +50,11 @@ constexpr double kConstantCurvatureRtol = 1e-3;
 //     3 times the half-width of a line contact as long as the overlap (no contact is narrower along x),
 //     doubled while loaded cells touch the x border; its loaded cells (more than 1e-6 of the peak) say
 //     where the load is, every lobe of it;
-//  2. fine: the case's nx x ny over the coarse loaded cells and one coarse cell more on every side (a
-//     box in whole coarse cells, inside the overlap), enlarged by a quarter on each side whose loaded
-//     cells touch the border (along y towards the overlap's ends, never past them) and solved again.
+//  2. fine: the case's nx x ny over the coarse contact's extent (its ends refined as halfspace_patch's,
+//     cells below 1e-6 of the peak taken as unloaded) and one coarse cell more on every side, inside the
+//     overlap: a box continuous in the gap, so the wear rate is too (up to cells entering the contact);
+//     enlarged by a quarter (at least a coarse cell) on each side whose loaded cells touch the border
+//     (along y towards the overlap's ends, never past them) and solved again.
 // The gap is measured from its minimum over the overlap, so the approach is too. Each solve may start
 // from the pressures of a previous one (halfspace_start): on the same grid as they are, else
 // interpolated; converged to the same tol, so the start changes the result only within tol.

@@ -12,8 +12,10 @@
 
 #include <spdlog/spdlog.h>
 
+#include <cmath>
 #include <string>
 
+#include "lib/normal/halfspace.h"
 #include "lib/normal/normal.h"
 #include "tests/bench/bench_common.h"
 #include "wear/wear_loop.h"
@@ -86,6 +88,44 @@ void BM_WornHalfspace(benchmark::State& state) {
   report(state, s);
 }
 BENCHMARK(BM_WornHalfspace)->ArgNames({"n", "warm"})->Args({80, 0})->Args({80, 1})->Unit(benchmark::kMillisecond);
+
+// the fine solve alone, on the evaluation's final grid: cold, and from the previous evaluation's fine
+// pressures interpolated onto it (what solve_normal's fine stage does); at the default tol 1e-9 and, to
+// show what the tolerance costs, at 1e-6
+void BM_WornHalfspaceFineOnly(benchmark::State& state) {
+  const WornRoller& r = roller();
+  const int n = static_cast<int>(state.range(0));
+  const contact::NormalSolution before = contact::solve_normal(problem_on(r, r.previous, n));
+  const contact::NormalSolution now = contact::solve_normal(problem_on(r, r.current, n));
+  const contact::Grid& g = now.halfspace.grid;
+  const double y0 = now.halfspace.grid_y0_m, A = (1 / r.model.Rx1_m + 1 / r.model.Rx2_m) / 2;
+  Eigen::ArrayXXd gap(g.nx, g.ny);
+  for (int j = 0; j < g.ny; ++j) {
+    const double h = contact::profile_z(r.current.body1, y0 + g.y_m(j)) + contact::profile_z(r.current.body2, y0 + g.y_m(j));
+    for (int i = 0; i < g.nx; ++i) gap(i, j) = h + A * g.x_m(i) * g.x_m(i);
+  }
+  gap -= gap.minCoeff();
+  const Eigen::ArrayXXd start =
+      contact::interpolate_pressure(before.halfspace.pressure_Pa, before.halfspace.grid, before.halfspace.grid_y0_m, g, y0);
+  contact::HalfspaceOptions opt;
+  if (state.range(1) != 0) opt.initial_pressure_Pa = &start;
+  opt.tol = std::pow(10.0, -static_cast<double>(state.range(2)));  // 1e-9 is the default
+  const double Estar = contact::effective_modulus_Pa(r.model.materials);
+  contact::HalfspaceSolution s;
+  for (auto _ : state) {
+    s = contact::solve_halfspace(g, gap, Estar, r.model.normal_load_N, opt);
+    bench::keep(s.approach_m);
+  }
+  state.counters["iterations"] = s.status.iterations;
+  if (!s.status.converged()) state.SkipWithError(("not converged: " + s.status.message).c_str());
+}
+BENCHMARK(BM_WornHalfspaceFineOnly)
+    ->ArgNames({"n", "warm", "tol_exp"})
+    ->Args({80, 0, 9})
+    ->Args({80, 1, 9})
+    ->Args({80, 0, 6})
+    ->Args({80, 1, 6})
+    ->Unit(benchmark::kMillisecond);
 
 // the paper's life to its end on the half-space at 40 x 40, with and without the warm start
 void BM_PaperWearHalfspaceLife(benchmark::State& state) {
