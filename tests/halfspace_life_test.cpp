@@ -288,6 +288,32 @@ TEST(HalfspaceLife, ShortLifeRunsAndItsFirstRateAgreesWithHertz) {
   EXPECT_GT(max_depth_m(mh, life.state), 0);
 }
 
+// The transient duty cycle (start-stop-wear) and the load collective (collective-duty-mix) run on the
+// half-space too, a few steps at 24 x 24, each condition of the collective with its own warm start
+TEST(HalfspaceLife, TransientAndCollectiveLivesRun) {
+  for (const char* name : {"start-stop-wear.yaml", "collective-duty-mix.yaml"}) {
+    WearCase c = read_wear_case((kSource / "cases" / name).string());
+    c.contact.solver.normal = contact::NormalChoice::Halfspace;
+    c.contact.solver.nx = c.contact.solver.ny = 24;
+    for (WearCondition& k : c.wear.collective) {
+      k.contact.solver.normal = contact::NormalChoice::Halfspace;
+      k.contact.solver.nx = k.contact.solver.ny = 24;
+    }
+    c.wear.revolutions = 2e6;
+    c.wear.snapshots_revolutions.clear();
+    const WearModel m = make_wear_model(c);
+    WearCache cache;
+    const LifeResult life = run_life(m, c, LifeStart{}, {}, cache);
+    EXPECT_EQ(life.ended_by, LifeEnd::Revolutions) << name << ": " << life.message;
+    EXPECT_EQ(life.contact.normal_solver, contact::NormalSolverKind::Halfspace) << name;
+    EXPECT_GT(max_depth_m(m, life.state), 0) << name;
+    if (!c.wear.collective.empty()) {
+      ASSERT_EQ(cache.conditions.size(), c.wear.collective.size());
+      for (const WearCache& k : cache.conditions) EXPECT_GT(k.halfspace_solves, 0) << name;
+    }
+  }
+}
+
 // Bad input: the half-space needs profiles in a wear run as anywhere (the case reader says so, at
 // solver.normal); Hertz is still refused, the message naming what a wear run takes
 TEST(HalfspaceLife, HalfspaceWithoutProfilesIsRefused) {
