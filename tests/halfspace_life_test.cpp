@@ -167,6 +167,25 @@ TEST(HalfspaceOnProfiles, BoxTooSmallIsEnlargedUntilItHoldsTheContact) {
   EXPECT_NEAR(s.patch.a_m / h.a_m, 1, 0.03);
 }
 
+// Separate lobes are one problem on one grid: a crown with a groove 20 um deep (more than the approach)
+// worn into its middle touches on both sides of it; the coarse grid over the whole overlap sees both,
+// and the fine box holds both (two patches, symmetric about the groove, the load carried)
+TEST(HalfspaceOnProfiles, TwoLobesAreOneProblemOnOneGrid) {
+  Profiles grooved{crowned_profile(kRy1, 0.020), flat_profile(0.030)};
+  grooved.body1.z_m += 20e-6 * (-(grooved.body1.y_m / 1e-3).square()).exp();
+  const NormalSolution n = solve_normal(halfspace_problem(&grooved, 24));
+  ASSERT_TRUE(n.solve_converged) << n.status.message;
+  EXPECT_EQ(n.patches, 2);
+  EXPECT_FALSE(n.halfspace.reaches_border);
+  EXPECT_LT(n.halfspace.contact_y_min_m, -1e-3);
+  EXPECT_GT(n.halfspace.contact_y_max_m, 1e-3);
+  const Eigen::ArrayXd q = strip_loads_N(n.patch);
+  EXPECT_NEAR(q.sum() / kLoad, 1, 1e-12);
+  const int ny = n.patch.grid.ny;
+  EXPECT_NEAR(q.head(ny / 2).sum() / q.tail(ny / 2).sum(), 1, 1e-6);  // the grid is centred on the groove
+  EXPECT_EQ(q(ny / 2), 0);  // the groove's bottom carries nothing
+}
+
 // A contact past the overlap's end: a roller 4 mm wide under the paper's load (its Hertz contact is
 // 5.2 mm wide) is cut at both ends; the edge value is positive and the status Failed (reaches_edge)
 TEST(HalfspaceOnProfiles, ContactCutAtTheBodysEdgeReachesTheEdge) {
