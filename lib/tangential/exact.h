@@ -65,9 +65,23 @@ struct ExactOptions {
 
 struct ExactSolution {
   TangentialSolution fields;  // tractions, slip, power, forces, as the fast solvers report them
-                              // (strip_trailing_W_per_m is zero: no energy leaves with the material)
+                              // (strip_trailing_W_per_m is zero: no energy leaves with the material).
+                              // The power is the trapezoidal one (docs/exact-theory.md §4, "Dissipation"):
+                              // per cell D_i = -(tau_prev,i + tau_i)/2 . S_i/dt, tau_prev,i the previous
+                              // traction of the material now at x_i (steady: tau_(i+1)), S_i its slip over
+                              // the step with the rigid slip at its mid position; power_W_per_m2 holds it per
+                              // cell (the release of the traction of material leaving the contact on the last
+                              // cell it was in), strip_power_W_per_m per strip. In steady rolling its sum is the
+                              // creep work -V (xi Fx + eta Fy + phi Mz) to rounding; over a rolling step by
+                              // dq = dx it is the work of the creepages minus the change of the elastic energy.
+                              // The slip fields are the solve's (Coulomb's law holds with them).
   Eigen::ArrayXXd u_x_m, u_y_m;  // ((nx + 1) x ny) displacement difference A tau at the cell centres,
                                  // the last row one cell ahead of the grid's leading edge
+  Eigen::ArrayXd u_behind_x_m, u_behind_y_m;  // (ny) A tau one cell behind the grid's trailing edge (row -1):
+                                              // computed when a traction lies on row 0 (the power of the
+                                              // material leaving there, now or at the next step); else empty
+  double grid_power_W = 0;                 // the solve's own product -sum tau . s dA (the upwind slip): it falls
+  Eigen::ArrayXd grid_strip_power_W_per_m;  // short of the creep work at first order (docs/exact-theory.md §4)
   SolveStatus status;
   int stick_iterations = 0;       // GMRES iterations of the all-stick start
   int active_set_iterations = 0;  // after it (0: the all-stick solution was admissible)
