@@ -205,9 +205,9 @@ TEST(WearLoop, DepthLimitIsLocated) {
 // difference between the theories (docs/exact-theory.md §7) of the consistent scheme's, on the unworn
 // contact and on the consistent life's worn crown (the same geometry for both). Measured on 20, 40,
 // 80 cells a side: Fx ratio 1.002, 0.980, 0.969 unworn and 1.123, 1.037, 1.013 on the worn crown
-// (the coarsest grid resolves the worn contact poorly: hence 40 here). The wear is not within that:
-// it follows the dissipated energy, which the exact theory's grid power undercounts at first order
-// (energy ratio 0.77, 0.86, 0.91 unworn; worn volume after 3e7 revolutions 0.84, 0.87, 0.96).
+// (the coarsest grid resolves the worn contact poorly: hence 40 here). The wear follows the dissipated
+// energy, the creep work (docs/exact-theory.md §4, "Dissipation"): energy per revolution 1.016, 0.994, 0.982
+// unworn and 1.160, 1.058, 1.029 on the worn crown; worn volume after 3e7 revolutions 1.116, 1.095, 1.072.
 TEST(WearLoop, ExactTheoryLifeRunsAndAgreesInForce) {
   constexpr double kForceDifference = 0.05;  // the theories' steady Fx differ by 2 to 4 % here (measured above)
   WearCase c = paper_wear(40);

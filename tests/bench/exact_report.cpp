@@ -6,7 +6,7 @@
 //   exact_report sweep       steady forces, power and creep work over creepages (paper's contact, sphere)
 //   exact_report transient N the start from rest at dq = dx on N x N: Fx/Fx_ss at q/a = 0.5, 2, 4, 8
 //   exact_report narrow      a/b = 0.02: the centre strip's Fx against Carter's over grids
-//   exact_report carter N R  plane strain, N cells, xi/xi_c = R: the solve's status, Fx against Carter
+//   exact_report carter N R  plane strain, N cells, xi/xi_c = R: the solve's status, Fx and the power against Carter
 //   exact_report paper [320] the paper's contact, xi = 1e-3: Fx, power and creep work on 20..160 (320)
 //   exact_report power xi|spin|eta [N...]  the paper's contact (xi = 1e-3; + phi = 1 1/m; + eta = 1e-3) on the
 //                            grids N (default 20 40 80 160): the total and per-strip power of the candidates
@@ -121,6 +121,18 @@ int main(int argc, char** argv) {
     const double a1 = a * (1 - r), Fx = -mu * kPi * a * p0 / 2 * (1 - (a1 / a) * (a1 / a));
     std::printf("carter n %d xi/xi_c %.2f: Fx/Fx_carter - 1 %+.2e, %s, %.0f ms\n", n, r,
                 s.fields.Fx_N / p.grid.dy_m / Fx - 1, s.status.message.c_str(), ms);
+    // the dissipation against Carter's, -V xi Fx (per unit width): the trapezoidal power (the creep work), the
+    // upwind product and the centred slip on the slip cells only
+    const double P_carter = -r * xi_c * Fx, dx = p.grid.dx_m;
+    double centred = 0;
+    for (int i = 0; i < n; ++i) {
+      if (s.fields.state(i, 0) != 2) continue;
+      const double um = i > 0 ? s.u_x_m(i - 1, 0) : s.u_behind_x_m(0);
+      centred -= s.fields.tau_x_Pa(i, 0) * (r * xi_c + (um - s.u_x_m(i + 1, 0)) / (2 * dx)) * dx;
+    }
+    std::printf("  power/P_carter - 1: trapezoidal %+.3e, upwind %+.3e, centred on the slip cells %+.3e\n",
+                s.fields.power_W / p.grid.dy_m / P_carter - 1, s.grid_power_W / p.grid.dy_m / P_carter - 1,
+                centred / P_carter - 1);
   } else if (what == "narrow") {
     const double E = 210e9, nu = 0.28, G = E / (2 * (1 + nu)), mu = 0.3;
     for (const double ab : {0.02, 0.01}) {
