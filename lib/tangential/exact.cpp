@@ -1560,10 +1560,21 @@ ExactSolution no_contact(const Grid& g) {
 
 }  // namespace
 
+// a transient run's state counts as steady (skip_steady) when the last step's tractions are within this share
+// of mu p_max of the steady solution's
+constexpr double kSettledTraction = 1e-3;
+
 ExactOptions exact_run_options() {
   ExactOptions o;
   o.tol = 1e-6;
   o.stick_tol = 1e-8;
+  return o;
+}
+
+ExactOptions exact_duty_cycle_options() {
+  ExactOptions o;
+  o.tol = 1e-4;
+  o.stick_tol = 1e-4;
   return o;
 }
 
@@ -1577,6 +1588,44 @@ TransientResult run_exact_transient(const TransientCase& c, const StepObserver& 
   const double G = combined_shear_modulus_Pa(c.materials), nu = combined_poisson(c.materials);
 
   std::optional<ExactSolution> prev;  // the previous step's solution (none: at rest)
+  // Steady running skipped (settings.skip_steady, docs/exact-theory.md §7): once the creepages, the load and
+  // with them the contact have stayed the same over 2a of rolling (the grid's nx steps), the steady solution
+  // of those inputs is solved (once per stretch), and the state counts as settled when the last step's
+  // tractions are within kSettledTraction mu p_max of it; the rest of the stretch is then that solution's
+  // power times its duration, and the state after it that solution.
+  struct Stretch {
+    const ContactPatch* patch = nullptr;
+    double load_N = 0;
+    Creepages creepages;
+    int whole_steps = 0;  // whole steps (dq = dx) in a row with these inputs
+    std::optional<ExactSolution> steady;  // solved at V = 1 m/s
+  } stretch;
+  ShiftSkip skip;
+  if (set.skip_steady) {
+    skip.settled = [&] {
+      if (!prev || !stretch.patch || stretch.whole_steps < stretch.patch->grid.nx) return false;
+      if (!stretch.steady) {
+        ExactSolution ss = solve_exact_steady(*stretch.patch, G, nu, stretch.creepages, c.mu, 1.0, opt);
+        if (!ss.status.converged())
+          throw std::runtime_error("exact transient: the steady solve of a stretch to skip did not converge: " +
+                                   ss.status.message);
+        ss.dtau_x_Pa = Eigen::ArrayXXd::Zero(ss.u_x_m.rows(), ss.u_x_m.cols());  // no change to carry on
+        ss.dtau_y_Pa = ss.dtau_x_Pa;
+        stretch.steady = std::move(ss);
+      }
+      const double bound = c.mu * stretch.patch->pressure_Pa.maxCoeff();
+      const TangentialSolution& a = prev->fields;
+      const TangentialSolution& b = stretch.steady->fields;
+      const double off = std::max((a.tau_x_Pa - b.tau_x_Pa).abs().maxCoeff(), (a.tau_y_Pa - b.tau_y_Pa).abs().maxCoeff());
+      return off <= kSettledTraction * bound;
+    };
+    skip.energy = [&](double span_s, double rolled_m, const TangentialSolution&, Eigen::ArrayXd& strip_J, double& J) {
+      const double V = rolled_m / span_s;  // the steady powers are at 1 m/s and proportional to the speed
+      strip_J = stretch.steady->fields.strip_power_W_per_m * (V * span_s);
+      J = stretch.steady->fields.power_W * V * span_s;
+    };
+    skip.skipped = [&](double) { prev = *stretch.steady; };
+  }
   const TransientResult res = run_shift_steps(
       c, observe,
       [&](const ContactPatch& patch, const ShiftStep& s) {
@@ -1585,9 +1634,20 @@ TransientResult run_exact_transient(const TransientCase& c, const StepObserver& 
           throw std::runtime_error(fmt::format("exact transient: step {} (t {:.6g} s) not converged: {}", s.step,
                                                s.t_s + s.dt_s, e.status.message));
         prev = std::move(e);
+        if (set.skip_steady) {
+          const Creepages& k = s.creepages;
+          const bool same = stretch.patch == &patch && stretch.load_N == s.normal_load_N && stretch.creepages.xi == k.xi &&
+                            stretch.creepages.eta == k.eta && stretch.creepages.phi_per_m == k.phi_per_m;
+          if (!same) stretch = Stretch{&patch, s.normal_load_N, k, 0, std::nullopt};
+          stretch.whole_steps = s.dq_m == patch.grid.dx_m ? stretch.whole_steps + 1 : 0;
+        }
         return prev->fields;
       },
-      [&](const Grid& g) { prev = no_contact(g); });
+      [&](const Grid& g) {
+        prev = no_contact(g);
+        stretch = Stretch{};
+      },
+      skip);
   spdlog::debug("exact transient: {} steps to t {:.6e} s, q {:.6e} m, dissipated {:.6e} J", res.steps, res.t_end_s,
                 res.q_end_m, res.dissipated_J);
   return res;

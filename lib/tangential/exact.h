@@ -140,6 +140,14 @@ ExactSolution solve_exact_roll(const ContactPatch& patch, double G_Pa, double nu
 // rolling step's forces are within 1e-8 of the step solved to 1e-12 already at tol 1e-4,
 // docs/exact-theory.md §5; the steady default 1e-9 would cost 2.5x the time per step).
 ExactOptions exact_run_options();
+// A wear life's duty cycle (settings.skip_steady): tol 1e-4 on the fixed-point residual, the linear solves to
+// 1e-4. The start-stop duty cycle of cases/start-stop-wear.yaml dissipates within 2e-6 (20 x 20) and 7e-8
+// (40 x 40) of its energy with exact_run_options(), in half the time (docs/exact-theory.md §7).
+ExactOptions exact_duty_cycle_options();
+// settings.skip_steady: once the creepages and the load have stayed the same over 2a of rolling (nx whole steps)
+// and the last step's tractions are within 1e-3 mu p_max of the steady solution of those inputs (solved once
+// per stretch), the rest of the stretch is that solution's power times its duration, and the state after it
+// that solution (run_shift_steps' skip, lib/tangential/shift_run.h).
 TransientResult run_exact_transient(const TransientCase& c, const StepObserver& observe = {},
                                     const ExactOptions& opt = exact_run_options());
 
