@@ -146,8 +146,9 @@ ExactOptions exact_run_options();
 ExactOptions exact_duty_cycle_options();
 // settings.skip_steady: once the creepages and the load have stayed the same over 2a of rolling (nx whole steps)
 // and the last step's tractions are within 1e-3 mu p_max of the steady solution of those inputs (solved once
-// per stretch), the rest of the stretch is that solution's power times its duration, and the state after it
-// that solution (run_shift_steps' skip, lib/tangential/shift_run.h).
+// per stretch), or within 1e-2 once a step no longer changes them (the steps stopped within their tolerance),
+// the rest of the stretch is that solution's power times its duration, and the state after it that solution
+// (run_shift_steps' skip, lib/tangential/shift_run.h).
 TransientResult run_exact_transient(const TransientCase& c, const StepObserver& observe = {},
                                     const ExactOptions& opt = exact_run_options());
 
