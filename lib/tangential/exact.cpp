@@ -1205,6 +1205,7 @@ ExactSolution solve_exact(const ContactPatch& patch, double G_Pa, double nu, con
   status.residual = residual;
 
   s.report(creepages, speed_m_per_s);
+  out.products = s.products;  // with the power's product of the row behind the grid, when it took one
   const TangentialSolution& f = out.fields;
   spdlog::debug("{} ({} x {}): {}; Fx {:.6e} N, Fy {:.6e} N, Mz {:.6e} N m, P {:.6e} W, stick {:.3f}", mode,
                 s.nx, s.ny, status.message, f.Fx_N, f.Fy_N, f.Mz_N_m, f.power_W, f.stick_fraction);
