@@ -11,7 +11,6 @@
 #include "lib/enum_names.h"
 #include "lib/number.h"
 #include "lib/io/yaml_reader.h"
-#include "lib/model/contact_model.h"
 #include "lib/normal/profile.h"
 #include "wear/collective.h"
 
@@ -207,12 +206,6 @@ void validate(const WearCase& c) {
   if (w.stepping.method == Method::FixedStep &&
       !(w.stepping.step_revolutions > 0))
     throw key_error(k, "wear.stepping", "wear.stepping.step_revolutions: fixed-revolutions needs a step > 0");
-  // a model a transient duty cycle cannot run: the exact theory, for reference lives with steady duty cycles
-  // (one exact solve per wear-rate evaluation)
-  if (const contact::TangentialModelTraits& model = contact::tangential_traits(k.solver.tangential);
-      k.transient && !model.wear_transient_duty_cycle)
-    throw key_error(k, "solver.tangential", std::string("solver.tangential: a wear run takes the ") + model.theory +
-                    " with a steady duty cycle only (no transient: section); use consistent or classic");
   if (!w.collective.empty()) validate_collective(c);
 }
 

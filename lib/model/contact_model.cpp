@@ -72,7 +72,8 @@ TransientResult relaxed_run(const TransientCase& t, const StepObserver& observe)
   return run_relaxed_transient(t, observe);
 }
 TransientResult exact_run(const TransientCase& t, const StepObserver& observe) {
-  return run_exact_transient(t, observe);
+  // a wear life's duty cycle (its steady stretches skipped) to the duty cycle's tolerances (exact.h)
+  return run_exact_transient(t, observe, t.settings.skip_steady ? exact_duty_cycle_options() : exact_run_options());
 }
 
 double one(const ContactPatch&) { return 1.0; }
@@ -103,7 +104,6 @@ TangentialModelTraits exact_traits() {
   TangentialModelTraits t;
   t.simplified_coefficients = false;
   t.needs_friction = true;
-  t.wear_transient_duty_cycle = false;  // one exact solve per wear-rate evaluation: steady duty cycles only
   t.theory = "exact theory";
   t.run_note = ", exact theory";
   t.needs_friction_as = "exact solver";

@@ -28,8 +28,6 @@ struct TangentialModelTraits {
   bool simplified_coefficients = true;
   // solves with friction only (mu > 0): the exact theory; validate names friction.mu
   bool needs_friction = false;
-  // a wear life's transient duty cycle runs it; the exact theory runs steady duty cycles only (reference lives)
-  bool wear_transient_duty_cycle = true;
   // the steady pure-xi strip has a closed form (solve_steady's skip): a wear life need not compute the
   // pressure fields for it (lib/tangential/steady.h)
   bool pure_xi_closed_form = false;

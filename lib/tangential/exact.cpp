@@ -355,12 +355,41 @@ struct ExactWarmStart {
   const Eigen::ArrayXXd* dtau_y = nullptr;
 };
 
+// What the trapezoidal power of a transient step pairs with (report): the previous step's tractions
+// (nx x ny), displacement ((nx + 1) x ny) and its row behind the trailing edge (ny, empty when not
+// computed), and theta, the cells the material moved over the step (1: a rolling step by dx, dq/dx, 0: a
+// shift or a standing step). Null tractions: from rest. A steady solve pairs with itself (theta 1).
+struct ExactPowerHistory {
+  const Eigen::ArrayXXd* tau_x = nullptr;
+  const Eigen::ArrayXXd* tau_y = nullptr;
+  const Eigen::ArrayXXd* u_x = nullptr;
+  const Eigen::ArrayXXd* u_y = nullptr;
+  const Eigen::ArrayXd* u_behind_x = nullptr;
+  const Eigen::ArrayXd* u_behind_y = nullptr;
+  double theta = 1;
+};
+
 struct ExactSolveSetup {
   const char* mode_name = nullptr;  // in messages; nullptr: "exact steady", "exact rolling step", "exact shift"
   ExactTransport transport;
   ExactWarmStart start;
+  ExactPowerHistory history;     // a transient step's previous state (the power's pairing); unused when steady
   bool warn_unconverged = true;  // spdlog::warn on a solve that did not converge
 };
+
+// the previous step's state for the power of a step that moved the material by theta cells (nullptr: at rest)
+ExactPowerHistory power_history(const ExactSolution* previous, double theta) {
+  ExactPowerHistory h;
+  h.theta = theta;
+  if (!previous) return h;
+  h.tau_x = &previous->fields.tau_x_Pa;
+  h.tau_y = &previous->fields.tau_y_Pa;
+  h.u_x = &previous->u_x_m;
+  h.u_y = &previous->u_y_m;
+  h.u_behind_x = &previous->u_behind_x_m;
+  h.u_behind_y = &previous->u_behind_y_m;
+  return h;
+}
 
 // a previous solution as the start: its tractions and their product; with_sets also its stick and
 // slip sets and its last change (a rolling step from the previous rolling step)
@@ -1031,6 +1060,71 @@ struct ExactSolve {
     return residual;
   }
 
+  // The dissipated power (docs/exact-theory.md §4, "Dissipation"): the material now at x_i was at
+  // x_i + theta dx at the previous step, with the traction tau_prev there (linear between the cells, as its
+  // displacement u_prev); over the step it slipped by S_i = w(x_i + theta dx/2) dq + u_i - u_prev, the rigid
+  // slip at its mid position, under the mean traction (tau_prev + tau_i)/2 (the trapezoidal rule). Per cell
+  //   D_i = -(tau_prev + tau_i)/2 . S_i/dt,
+  // on the contact cells and on the cells behind them that material left (tau_i = 0, tau_prev != 0: the release
+  // of its traction), the latter added to the cell upstream that it left when that one is in contact (steady:
+  // the strip's trailing cell). Steady rolling pairs the solution with itself (theta 1). The sum over the
+  // grid is the work of the rigid slip minus the change of the elastic energy sum tau . A tau dA/2 (A symmetric
+  // and commuting with the shift by one cell; steady: the creep work exactly); the first row behind the grid
+  // (row -1) needs u there: one product of the tractions shifted by one row, when any lies on row 0.
+  void trapezoidal_power(const Creepages& creepages, double V) {
+    TangentialSolution& s = out.fields;
+    const ExactPowerHistory self{&s.tau_x_Pa, &s.tau_y_Pa, &ux, &uy, &out.u_behind_x_m, &out.u_behind_y_m, 1.0};
+    const ExactPowerHistory& h = transient ? setup.history : self;
+    const double theta = h.theta, creep_scale = setup.transport.creep_scale;
+    const bool prev = h.tau_x != nullptr;
+    const bool prev_row0 = prev && theta > 0 && ((h.tau_x->row(0) != 0) || (h.tau_y->row(0) != 0)).any();
+    const bool now_row0 = ((tx.row(0) != 0) || (ty.row(0) != 0)).any();
+    if (now_row0 || prev_row0) {  // u on row -1: A of the tractions moved one row up, its row 0
+      Eigen::ArrayXXd sx = Eigen::ArrayXXd::Zero(nxe, ny), sy = sx, vx, vy;
+      sx.bottomRows(nx) = tx.topRows(nx);
+      sy.bottomRows(nx) = ty.topRows(nx);
+      A.apply(sx, sy, vx, vy);
+      ++products;
+      out.u_behind_x_m = vx.row(0).transpose();
+      out.u_behind_y_m = vy.row(0).transpose();
+    } else {
+      out.u_behind_x_m.resize(0);
+      out.u_behind_y_m.resize(0);
+    }
+    if (prev_row0 && (h.u_behind_x->size() != ny || h.u_behind_y->size() != ny))
+      throw std::logic_error(std::string(mode) + ": the previous step's displacement behind the grid is missing");
+    const Grid& grid = patch.grid;
+    const bool offsets = patch.strip_xi_offset.size() == ny;
+    s.power_W_per_m2.setZero();
+    s.strip_power_W_per_m.setZero();
+    // the previous step's traction and displacement at row i (-1 ... nx), zero beyond its rows
+    auto prev_tau = [&](const Eigen::ArrayXXd* t, int i, int j) { return prev && i >= 0 && i < nx ? (*t)(i, j) : 0.0; };
+    auto prev_u = [&](const Eigen::ArrayXXd* u, const Eigen::ArrayXd* ub, int i, int j) {
+      if (!prev) return 0.0;
+      return i < 0 ? (ub->size() == ny ? (*ub)(j) : 0.0) : (*u)(i, j);
+    };
+    for (int j = 0; j < ny; ++j) {
+      const double xi_j = creepages.xi + (offsets ? patch.strip_xi_offset(j) : 0.0);
+      for (int i = -1; i < nx; ++i) {
+        const double tpx = (1 - theta) * prev_tau(h.tau_x, i, j) + theta * prev_tau(h.tau_x, i + 1, j);
+        const double tpy = (1 - theta) * prev_tau(h.tau_y, i, j) + theta * prev_tau(h.tau_y, i + 1, j);
+        const double tnx = i >= 0 ? tx(i, j) : 0.0, tny = i >= 0 ? ty(i, j) : 0.0;
+        if (tpx == 0 && tpy == 0 && tnx == 0 && tny == 0) continue;
+        const double upx = (1 - theta) * prev_u(h.u_x, h.u_behind_x, i, j) + theta * prev_u(h.u_x, h.u_behind_x, i + 1, j);
+        const double upy = (1 - theta) * prev_u(h.u_y, h.u_behind_y, i, j) + theta * prev_u(h.u_y, h.u_behind_y, i + 1, j);
+        const double unx = i >= 0 ? ux(i, j) : out.u_behind_x_m(j), uny = i >= 0 ? uy(i, j) : out.u_behind_y_m(j);
+        const double x_mid = (i >= 0 ? grid.x_m(i) : grid.x_m(0) - dx) + theta * dx / 2;
+        const double Sx = V * (creep_scale * (xi_j - creepages.phi_per_m * grid.y_m(j)) + (unx - upx) / dx);
+        const double Sy = V * (creep_scale * (creepages.eta + creepages.phi_per_m * x_mid) + (uny - upy) / dx);
+        const double D = -0.5 * ((tpx + tnx) * Sx + (tpy + tny) * Sy);
+        auto contact_cell = [&](int k) { return k >= 0 && k < nx && patch.pressure_Pa(k, j) > 0; };
+        const int cell = contact_cell(i) ? i : (i + 1 < nx && (i < 0 || contact_cell(i + 1))) ? i + 1 : std::max(i, 0);
+        s.power_W_per_m2(cell, j) += D;
+        s.strip_power_W_per_m(j) += D * dx;
+      }
+    }
+  }
+
   // the solution as the fast solvers report it: tractions, slip velocities at speed V, power, forces
   void report(const Creepages& creepages, double V) {
     const Grid& grid = patch.grid;
@@ -1048,14 +1142,14 @@ struct ExactSolve {
     s.strip_force_x_N_per_m = Eigen::ArrayXd::Zero(ny);
     s.strip_force_y_N_per_m = Eigen::ArrayXd::Zero(ny);
     double stick = 0;
+    out.grid_strip_power_W_per_m = Eigen::ArrayXd::Zero(ny);
     for (const int q : cells) {
       const int i = q % nxe, j = q / nxe;
       const double sx = V * (WX[q] + (UX[q] - upstream * UX[q + 1]) / dx);
       const double sy = V * (WY[q] + (UY[q] - upstream * UY[q + 1]) / dx);
       s.slip_x_m_per_s(i, j) = sx;
       s.slip_y_m_per_s(i, j) = sy;
-      s.power_W_per_m2(i, j) = -(TX[q] * sx + TY[q] * sy);
-      s.strip_power_W_per_m(j) += s.power_W_per_m2(i, j) * dx;
+      out.grid_strip_power_W_per_m(j) += -(TX[q] * sx + TY[q] * sy) * dx;
       s.strip_creep_power_W_per_m(j) += -V * (TX[q] * RX[q] + TY[q] * RY[q]) * dx;
       s.strip_force_x_N_per_m(j) += TX[q] * dx;
       s.strip_force_y_N_per_m(j) += TY[q] * dx;
@@ -1064,6 +1158,8 @@ struct ExactSolve {
     }
     s.Fx_N = s.strip_force_x_N_per_m.sum() * dy;
     s.Fy_N = s.strip_force_y_N_per_m.sum() * dy;
+    out.grid_power_W = out.grid_strip_power_W_per_m.sum() * dy;
+    trapezoidal_power(creepages, V);
     s.power_W = s.strip_power_W_per_m.sum() * dy;
     s.stick_fraction = stick / nc;
     double xi_Fx = creepages.xi * s.Fx_N;
@@ -1109,6 +1205,7 @@ ExactSolution solve_exact(const ContactPatch& patch, double G_Pa, double nu, con
   status.residual = residual;
 
   s.report(creepages, speed_m_per_s);
+  out.products = s.products;  // with the power's product of the row behind the grid, when it took one
   const TangentialSolution& f = out.fields;
   spdlog::debug("{} ({} x {}): {}; Fx {:.6e} N, Fy {:.6e} N, Mz {:.6e} N m, P {:.6e} W, stick {:.3f}", mode,
                 s.nx, s.ny, status.message, f.Fx_N, f.Fy_N, f.Mz_N_m, f.power_W, f.stick_fraction);
@@ -1253,6 +1350,7 @@ ExactSolution solve_exact_rolling_step(const ContactPatch& patch, double G_Pa, d
   }
   setup.transport = {&previous->u_x_m, &previous->u_y_m, 1, 1.0};
   setup.start = warm_start_from(*previous, true);
+  setup.history = power_history(previous, 1.0);
   return solve_exact(patch, G_Pa, nu, creepages, mu, speed_m_per_s, opt, setup);
 }
 
@@ -1272,6 +1370,7 @@ ExactSolution solve_exact_shift(const ContactPatch& patch, double G_Pa, double n
   }
   setup.transport = {&previous->u_x_m, &previous->u_y_m, 0, 1.0};
   setup.start = warm_start_from(*previous, false);
+  setup.history = power_history(previous, 0.0);
   return solve_exact(patch, G_Pa, nu, c, mu, V, opt, setup);
 }
 
@@ -1348,6 +1447,7 @@ ExactShiftForce solve_exact_shift_force(const ContactPatch& patch, double G_Pa, 
     ExactSolveSetup setup;
     setup.mode_name = "exact shift";
     setup.transport = {&prev_ux, &prev_uy, 0, 1.0};
+    setup.history = power_history(previous, 0.0);
     if (start) setup.start = warm_start_from(*start, false);
     ExactSolution e = solve_exact(patch, G_Pa, nu, Creepages{sx / dx, sy / dx, 0}, mu, dx / dt_s, opt, setup);
     ++best.shift_solves;
@@ -1442,6 +1542,7 @@ ExactSolution solve_exact_roll(const ContactPatch& patch, double G_Pa, double nu
   ExactSolveSetup setup;
   setup.mode_name = "exact rolling step";
   setup.transport = {&px, &py, 0, theta};
+  setup.history = power_history(previous, theta);
   if (previous) setup.start = warm_start_from(*previous, true);
   return solve_exact(patch, G_Pa, nu, creepages, mu, dx / dt_s, opt, setup);
 }
@@ -1460,10 +1561,27 @@ ExactSolution no_contact(const Grid& g) {
 
 }  // namespace
 
+// a transient run's state counts as steady (skip_steady) when the last step's tractions are within this share
+// of mu p_max of the steady solution's
+constexpr double kSettledTraction = 1e-3;
+// or when the last step changed no traction by more than kStoppedChange mu p_max (it met its tolerance from the
+// previous step's tractions: the steps have stopped at their fixed point within their tolerance) and they are
+// within kStoppedTraction of the steady solution's (measured: a worn start-stop contact stopped at 1.005e-3 with
+// the duty cycle's tol 1e-4)
+constexpr double kStoppedTraction = 1e-2;
+constexpr double kStoppedChange = 1e-9;
+
 ExactOptions exact_run_options() {
   ExactOptions o;
   o.tol = 1e-6;
   o.stick_tol = 1e-8;
+  return o;
+}
+
+ExactOptions exact_duty_cycle_options() {
+  ExactOptions o;
+  o.tol = 1e-4;
+  o.stick_tol = 1e-4;
   return o;
 }
 
@@ -1477,6 +1595,49 @@ TransientResult run_exact_transient(const TransientCase& c, const StepObserver& 
   const double G = combined_shear_modulus_Pa(c.materials), nu = combined_poisson(c.materials);
 
   std::optional<ExactSolution> prev;  // the previous step's solution (none: at rest)
+  // Steady running skipped (settings.skip_steady, docs/exact-theory.md §7): once the creepages, the load and
+  // with them the contact have stayed the same over 2a of rolling (the grid's nx steps), the steady solution
+  // of those inputs is solved (once per stretch), and the state counts as settled when the last step's
+  // tractions are within kSettledTraction mu p_max of it; the rest of the stretch is then that solution's
+  // power times its duration, and the state after it that solution (or, once the steps have stopped changing
+  // within their tolerance, within kStoppedTraction of it).
+  struct Stretch {
+    const ContactPatch* patch = nullptr;
+    double load_N = 0;
+    Creepages creepages;
+    int whole_steps = 0;  // whole steps (dq = dx) in a row with these inputs
+    std::optional<ExactSolution> steady;  // solved at V = 1 m/s
+  } stretch;
+  ShiftSkip skip;
+  if (set.skip_steady) {
+    skip.settled = [&] {
+      if (!prev || !stretch.patch || stretch.whole_steps < stretch.patch->grid.nx) return false;
+      if (!stretch.steady) {
+        ExactSolution ss = solve_exact_steady(*stretch.patch, G, nu, stretch.creepages, c.mu, 1.0, opt);
+        if (!ss.status.converged())
+          throw std::runtime_error("exact transient: the steady solve of a stretch to skip did not converge: " +
+                                   ss.status.message);
+        ss.dtau_x_Pa = Eigen::ArrayXXd::Zero(ss.u_x_m.rows(), ss.u_x_m.cols());  // no change to carry on
+        ss.dtau_y_Pa = ss.dtau_x_Pa;
+        stretch.steady = std::move(ss);
+      }
+      const double bound = c.mu * stretch.patch->pressure_Pa.maxCoeff();
+      const TangentialSolution& a = prev->fields;
+      const TangentialSolution& b = stretch.steady->fields;
+      const double off = std::max((a.tau_x_Pa - b.tau_x_Pa).abs().maxCoeff(), (a.tau_y_Pa - b.tau_y_Pa).abs().maxCoeff());
+      // a step that met its tolerance at its start changes nothing: the steps have stopped within their
+      // tolerance of the fixed point, which can leave them a little further from the steady solve's
+      const double change = prev->dtau_x_Pa.size() == 0 ? bound
+                                                        : std::max(prev->dtau_x_Pa.abs().maxCoeff(), prev->dtau_y_Pa.abs().maxCoeff());
+      return off <= kSettledTraction * bound || (off <= kStoppedTraction * bound && change <= kStoppedChange * bound);
+    };
+    skip.energy = [&](double span_s, double rolled_m, const TangentialSolution&, Eigen::ArrayXd& strip_J, double& J) {
+      const double V = rolled_m / span_s;  // the steady powers are at 1 m/s and proportional to the speed
+      strip_J = stretch.steady->fields.strip_power_W_per_m * (V * span_s);
+      J = stretch.steady->fields.power_W * V * span_s;
+    };
+    skip.skipped = [&](double) { prev = *stretch.steady; };
+  }
   const TransientResult res = run_shift_steps(
       c, observe,
       [&](const ContactPatch& patch, const ShiftStep& s) {
@@ -1485,9 +1646,20 @@ TransientResult run_exact_transient(const TransientCase& c, const StepObserver& 
           throw std::runtime_error(fmt::format("exact transient: step {} (t {:.6g} s) not converged: {}", s.step,
                                                s.t_s + s.dt_s, e.status.message));
         prev = std::move(e);
+        if (set.skip_steady) {
+          const Creepages& k = s.creepages;
+          const bool same = stretch.patch == &patch && stretch.load_N == s.normal_load_N && stretch.creepages.xi == k.xi &&
+                            stretch.creepages.eta == k.eta && stretch.creepages.phi_per_m == k.phi_per_m;
+          if (!same) stretch = Stretch{&patch, s.normal_load_N, k, 0, std::nullopt};
+          stretch.whole_steps = s.dq_m == patch.grid.dx_m ? stretch.whole_steps + 1 : 0;
+        }
         return prev->fields;
       },
-      [&](const Grid& g) { prev = no_contact(g); });
+      [&](const Grid& g) {
+        prev = no_contact(g);
+        stretch = Stretch{};
+      },
+      skip);
   spdlog::debug("exact transient: {} steps to t {:.6e} s, q {:.6e} m, dissipated {:.6e} J", res.steps, res.t_end_s,
                 res.q_end_m, res.dissipated_J);
   return res;

@@ -65,9 +65,23 @@ struct ExactOptions {
 
 struct ExactSolution {
   TangentialSolution fields;  // tractions, slip, power, forces, as the fast solvers report them
-                              // (strip_trailing_W_per_m is zero: no energy leaves with the material)
+                              // (strip_trailing_W_per_m is zero: no energy leaves with the material).
+                              // The power is the trapezoidal one (docs/exact-theory.md §4, "Dissipation"):
+                              // per cell D_i = -(tau_prev,i + tau_i)/2 . S_i/dt, tau_prev,i the previous
+                              // traction of the material now at x_i (steady: tau_(i+1)), S_i its slip over
+                              // the step with the rigid slip at its mid position; power_W_per_m2 holds it per
+                              // cell (the release of the traction of material leaving the contact on the last
+                              // cell it was in), strip_power_W_per_m per strip. In steady rolling its sum is the
+                              // creep work -V (xi Fx + eta Fy + phi Mz) to rounding; over a rolling step by
+                              // dq = dx it is the work of the creepages minus the change of the elastic energy.
+                              // The slip fields are the solve's (Coulomb's law holds with them).
   Eigen::ArrayXXd u_x_m, u_y_m;  // ((nx + 1) x ny) displacement difference A tau at the cell centres,
                                  // the last row one cell ahead of the grid's leading edge
+  Eigen::ArrayXd u_behind_x_m, u_behind_y_m;  // (ny) A tau one cell behind the grid's trailing edge (row -1):
+                                              // computed when a traction lies on row 0 (the power of the
+                                              // material leaving there, now or at the next step); else empty
+  double grid_power_W = 0;                 // the solve's own product -sum tau . s dA (the upwind slip): it falls
+  Eigen::ArrayXd grid_strip_power_W_per_m;  // short of the creep work at first order (docs/exact-theory.md §4)
   SolveStatus status;
   int stick_iterations = 0;       // GMRES iterations of the all-stick start
   int active_set_iterations = 0;  // after it (0: the all-stick solution was admissible)
@@ -126,6 +140,15 @@ ExactSolution solve_exact_roll(const ContactPatch& patch, double G_Pa, double nu
 // rolling step's forces are within 1e-8 of the step solved to 1e-12 already at tol 1e-4,
 // docs/exact-theory.md §5; the steady default 1e-9 would cost 2.5x the time per step).
 ExactOptions exact_run_options();
+// A wear life's duty cycle (settings.skip_steady): tol 1e-4 on the fixed-point residual, the linear solves to
+// 1e-4. The start-stop duty cycle of cases/start-stop-wear.yaml dissipates within 2e-6 (20 x 20) and 7e-8
+// (40 x 40) of its energy with exact_run_options(), in half the time (docs/exact-theory.md §7).
+ExactOptions exact_duty_cycle_options();
+// settings.skip_steady: once the creepages and the load have stayed the same over 2a of rolling (nx whole steps)
+// and the last step's tractions are within 1e-3 mu p_max of the steady solution of those inputs (solved once
+// per stretch), or within 1e-2 once a step no longer changes them (the steps stopped within their tolerance),
+// the rest of the stretch is that solution's power times its duration, and the state after it that solution
+// (run_shift_steps' skip, lib/tangential/shift_run.h).
 TransientResult run_exact_transient(const TransientCase& c, const StepObserver& observe = {},
                                     const ExactOptions& opt = exact_run_options());
 

@@ -6,8 +6,12 @@
 //   exact_report sweep       steady forces, power and creep work over creepages (paper's contact, sphere)
 //   exact_report transient N the start from rest at dq = dx on N x N: Fx/Fx_ss at q/a = 0.5, 2, 4, 8
 //   exact_report narrow      a/b = 0.02: the centre strip's Fx against Carter's over grids
-//   exact_report carter N R  plane strain, N cells, xi/xi_c = R: the solve's status, Fx against Carter
+//   exact_report carter N R  plane strain, N cells, xi/xi_c = R: the solve's status, Fx and the power against Carter
 //   exact_report paper [320] the paper's contact, xi = 1e-3: Fx, power and creep work on 20..160 (320)
+//   exact_report power xi|spin|eta [N...]  the paper's contact (xi = 1e-3; + phi = 1 1/m; + eta = 1e-3) on the
+//                            grids N (default 20 40 80 160): the total and per-strip power of the candidates
+//                            (docs/exact-theory.md §4, "Dissipation") against the creep work, the finest grid
+//                            and between successive grids (the observed order on each three)
 #include "lib/tangential/exact.h"
 #include "lib/elastic.h"
 #include "lib/grid.h"
@@ -20,6 +24,7 @@
 #include <cstdlib>
 #include <string>
 #include <utility>
+#include <vector>
 using namespace contact;
 ContactPatch ellipse_patch(double ab, int n) {
   HertzContact h; h.b_m = 1e-3; h.a_m = ab * h.b_m; h.p0_Pa = 1e9;
@@ -116,6 +121,18 @@ int main(int argc, char** argv) {
     const double a1 = a * (1 - r), Fx = -mu * kPi * a * p0 / 2 * (1 - (a1 / a) * (a1 / a));
     std::printf("carter n %d xi/xi_c %.2f: Fx/Fx_carter - 1 %+.2e, %s, %.0f ms\n", n, r,
                 s.fields.Fx_N / p.grid.dy_m / Fx - 1, s.status.message.c_str(), ms);
+    // the dissipation against Carter's, -V xi Fx (per unit width): the trapezoidal power (the creep work), the
+    // upwind product and the centred slip on the slip cells only
+    const double P_carter = -r * xi_c * Fx, dx = p.grid.dx_m;
+    double centred = 0;
+    for (int i = 0; i < n; ++i) {
+      if (s.fields.state(i, 0) != 2) continue;
+      const double um = i > 0 ? s.u_x_m(i - 1, 0) : s.u_behind_x_m(0);
+      centred -= s.fields.tau_x_Pa(i, 0) * (r * xi_c + (um - s.u_x_m(i + 1, 0)) / (2 * dx)) * dx;
+    }
+    std::printf("  power/P_carter - 1: trapezoidal %+.3e, upwind %+.3e, centred on the slip cells %+.3e\n",
+                s.fields.power_W / p.grid.dy_m / P_carter - 1, s.grid_power_W / p.grid.dy_m / P_carter - 1,
+                centred / P_carter - 1);
   } else if (what == "narrow") {
     const double E = 210e9, nu = 0.28, G = E / (2 * (1 + nu)), mu = 0.3;
     for (const double ab : {0.02, 0.01}) {
@@ -185,6 +202,80 @@ int main(int argc, char** argv) {
       std::printf("  (%.2f ms per step wall, %.2f ms CPU, tol %.0e, linear %.0e)\n", total_ms / steps,
                   1e3 * static_cast<double>(std::clock() - c0) / CLOCKS_PER_SEC / steps, o.tol, o.stick_tol);
     }
+  } else if (what == "power") {
+    const ElasticPair pair{{210e9, 0.28}, {210e9, 0.28}};
+    const double G = combined_shear_modulus_Pa(pair), nu = combined_poisson(pair);
+    const std::string load = argc > 2 ? argv[2] : "xi";
+    Creepages cr{1e-3, 0, 0};
+    if (load == "spin") cr.phi_per_m = 1.0;
+    if (load == "eta") cr.eta = 1e-3;
+    std::vector<int> grids;
+    for (int k = 3; k < argc; ++k) grids.push_back(std::atoi(argv[k]));
+    if (grids.empty()) grids = {20, 40, 80, 160};
+    // per grid: the candidates' strip powers (W/m)
+    const char* names[] = {"upwind (grid)", "trapezoidal", "upwind rescaled", "creep per strip", "centred, slip only"};
+    constexpr int kNames = 5;
+    std::vector<std::vector<Eigen::ArrayXd>> strips(kNames);
+    std::vector<double> work;
+    for (const int n : grids) {
+      const ContactPatch p = paper_patch(n);
+      const std::clock_t c0 = std::clock();
+      const ExactSolution s = solve_exact_steady(p, G, nu, cr, 0.3, 1.0);
+      const double ms = 1e3 * static_cast<double>(std::clock() - c0) / CLOCKS_PER_SEC;
+      const TangentialSolution& f = s.fields;
+      const double W = -f.creep_work_W, dx = p.grid.dx_m, dy = p.grid.dy_m;
+      work.push_back(W);
+      // the centred slip w + (u_(i-1) - u_(i+1))/(2 dx) on the slip cells only
+      Eigen::ArrayXd central = Eigen::ArrayXd::Zero(n);
+      for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+          if (f.state(i, j) != 2) continue;
+          const double umx = i > 0 ? s.u_x_m(i - 1, j) : s.u_behind_x_m(j), umy = i > 0 ? s.u_y_m(i - 1, j) : s.u_behind_y_m(j);
+          const double sx = cr.xi - cr.phi_per_m * p.grid.y_m(j) + (umx - s.u_x_m(i + 1, j)) / (2 * dx);
+          const double sy = cr.eta + cr.phi_per_m * p.grid.x_m(i) + (umy - s.u_y_m(i + 1, j)) / (2 * dx);
+          central(j) -= (f.tau_x_Pa(i, j) * sx + f.tau_y_Pa(i, j) * sy) * dx;
+        }
+      const Eigen::ArrayXd c[kNames] = {s.grid_strip_power_W_per_m, f.strip_power_W_per_m,
+                                        s.grid_strip_power_W_per_m * (W / s.grid_power_W), f.strip_creep_power_W_per_m,
+                                        central};
+      std::printf("%s %dx%d: Fx %.4f N, creep work %.6e W, %.0f ms CPU\n", load.c_str(), n, n, f.Fx_N, W, ms);
+      for (int k = 0; k < kNames; ++k) {
+        strips[k].push_back(c[k]);
+        std::printf("  %-20s total %.6e W, /work - 1 %+.3e\n", names[k], c[k].sum() * dy, c[k].sum() * dy / W - 1);
+      }
+    }
+    // the strips summed onto the coarsest grid's (the grids nest: 2^k strips in one), per unit width
+    const int nc = grids.front();
+    auto coarse = [nc](const Eigen::ArrayXd& a) {
+      const int m = static_cast<int>(a.size()) / nc;
+      Eigen::ArrayXd c = Eigen::ArrayXd::Zero(nc);
+      for (int k = 0; k < a.size(); ++k) c(k / m) += a(k) / m;
+      return c;
+    };
+    const std::size_t last = grids.size() - 1;
+    std::printf("creep work against the finest grid's:");
+    for (std::size_t g = 0; g < last; ++g) std::printf(" %d: %+.3e", grids[g], work[g] / work[last] - 1);
+    std::printf("\n");
+    for (int k = 0; k < kNames; ++k) {
+      const Eigen::ArrayXd ref = coarse(strips[k][last]);
+      const double norm = ref.abs().sum();
+      std::printf("%-20s L1 against %d:", names[k], grids[last]);
+      for (std::size_t g = 0; g < last; ++g) std::printf(" %d: %.3e", grids[g], (coarse(strips[k][g]) - ref).abs().sum() / norm);
+      std::vector<double> d;
+      for (std::size_t g = 0; g < last; ++g) d.push_back((coarse(strips[k][g]) - coarse(strips[k][g + 1])).abs().sum() / norm);
+      std::printf(" | successive:");
+      for (std::size_t g = 0; g < d.size(); ++g) std::printf(" %.3e", d[g]);
+      std::printf(" | order:");
+      for (std::size_t g = 0; g + 1 < d.size(); ++g) std::printf(" (%d,%d,%d) %.2f", grids[g], grids[g + 1], grids[g + 2], std::log2(d[g] / d[g + 1]));
+      // the shape (each grid's strips over its own total)
+      std::printf(" | shape L1 against %d:", grids[last]);
+      const Eigen::ArrayXd rs = ref / ref.sum();
+      for (std::size_t g = 0; g < last; ++g) {
+        const Eigen::ArrayXd a = coarse(strips[k][g]);
+        std::printf(" %.3e", (a / a.sum() - rs).abs().sum() / rs.abs().sum());
+      }
+      std::printf("\n");
+    }
   } else if (what == "paper") {
     const ElasticPair pair{{210e9, 0.28}, {210e9, 0.28}};
     for (int n : {20, 40, 80, 160, 320}) {
@@ -193,9 +284,9 @@ int main(int argc, char** argv) {
       auto t0 = std::chrono::steady_clock::now();
       ExactSolution s = solve_exact_steady(p, combined_shear_modulus_Pa(pair), combined_poisson(pair), {1e-3, 0, 0}, 0.3, 1.0);
       double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-      std::printf("paper %dx%d: Fx %.3f N, P %.5f W, -creep work %.5f W, P/work-1 %+.4f, stick %.3f, Newton %d, GMRES %d, %s, %.0f ms wall\n",
-                  n, n, s.fields.Fx_N, s.fields.power_W, -s.fields.creep_work_W,
-                  s.fields.power_W / -s.fields.creep_work_W - 1, s.fields.stick_fraction, s.active_set_iterations,
+      std::printf("paper %dx%d: Fx %.3f N, P %.5f W (grid %.5f W), -creep work %.5f W, P/work-1 %+.1e (grid %+.4f), stick %.3f, Newton %d, GMRES %d, %s, %.0f ms wall\n",
+                  n, n, s.fields.Fx_N, s.fields.power_W, s.grid_power_W, -s.fields.creep_work_W,
+                  s.fields.power_W / -s.fields.creep_work_W - 1, s.grid_power_W / -s.fields.creep_work_W - 1, s.fields.stick_fraction, s.active_set_iterations,
                   s.status.iterations, s.status.message.c_str(), ms);
     }
   }
