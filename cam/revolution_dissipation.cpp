@@ -42,12 +42,21 @@ RevolutionDissipation revolution_dissipation(const CamModel& m, const Revolution
   if (s.grid.ny < 2) throw std::invalid_argument("revolution_dissipation: ny must be >= 2");
   const contact::Profiles profiles = roller_and_track_profiles(m.bodies);
   const double duration = 2 * contact::kPi / m.angle_steps / m.omega_rad_per_s;
+  const bool own_creepage = is_motion_law(s);  // the motion's creepage is this law's
   RevolutionDissipation out;
   out.reserve(r.rows.size());
   for (std::size_t i = 0; i < r.rows.size(); ++i) {
     const AngleContact c = angle_contact(m.bodies, profiles, m.geometry.roller_radius_m, r.rows[i].kin,
                                          motion.angles[i].normal_N, m.mu, s);
-    out.push_back(angle_dissipation(c, r.rows[i], motion.angles[i], duration));
+    RollerAngle roller = motion.angles[i];
+    if (!own_creepage) {  // the creepage that carries the motion's F_t with this law, on this contact
+      const CreepageForForce xi = creepage_for_force(c, roller.tangential_N);
+      if (xi.found) {
+        roller.xi = xi.xi;
+        roller.slip_speed_m_per_s = xi.xi * roller.speed_m_per_s;
+      }
+    }
+    out.push_back(angle_dissipation(c, r.rows[i], roller, duration));
   }
   return out;
 }

@@ -20,6 +20,9 @@ struct DissipationTotals {
   double max_power_theta_rad = 0;
 };
 
+// With a law that is not the motion's own (is_motion_law: the exact theory, the half-space) each row's creepage is
+// the one whose steady force on its contact is the motion's F_t (creepage_for_force; the motion's where the law
+// cannot give it), as the worn revolution's rows (cam/cam_life.h).
 // throws std::invalid_argument when the motion does not match the revolution
 RevolutionDissipation revolution_dissipation(const CamModel& m, const Revolution& r, const RollerMotion& motion,
                                              const CreepLawSettings& s = {});

@@ -104,6 +104,7 @@ TangentialModelTraits exact_traits() {
   t.simplified_coefficients = false;
   t.needs_friction = true;
   t.wear_transient_duty_cycle = false;  // one exact solve per wear-rate evaluation: steady duty cycles only
+  t.cam = true;  // the cam's creep law per angle (its quasi-steady rows; the roller's motion on the relaxed model)
   t.theory = "exact theory";
   t.run_note = ", exact theory";
   t.needs_friction_as = "exact solver";
