@@ -176,6 +176,9 @@ double linear_stiffness_N(const AngleContact& c) {
 }  // namespace
 
 CreepageForForce creepage_for_force(const AngleContact& c, double force_N) {
+  // the exact theory's solves are dear: from the linear law's root by its slope (the guessed start's path, two
+  // solves and the root between them where the law is nearly linear, as here)
+  if (c.scheme == contact::TangentialScheme::Exact) return creepage_for_force(c, force_N, -force_N / linear_stiffness_N(c));
   // the linear law's xi is where to start
   const double stiffness = linear_stiffness_N(c);
   double width = std::abs(force_N) / stiffness;

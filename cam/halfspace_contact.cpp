@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include <spdlog/fmt/fmt.h>
+#include <spdlog/spdlog.h>
 
 #include "lib/normal/halfspace.h"
 #include "lib/normal/hertz.h"
@@ -70,7 +71,7 @@ contact::NormalSolution halfspace_angle_normal(const RollerAndTrack& bodies, con
       }
     const int j0 = std::max(0, jmin - 1), j1 = std::min(strips - 1, jmax + 1);
     const int ny = j1 - j0 + 1;
-    const int half_nx = static_cast<int>(std::ceil(std::sqrt(bound / A) / dx)) + 1;
+    const int half_nx = static_cast<int>(std::ceil(std::sqrt(kHalfspaceWindowX * bound / A) / dx)) + 1;
     const contact::Grid g = contact::make_grid(half_nx * dx, ny * dy / 2, {2 * half_nx, ny});
     Eigen::ArrayXXd gap(g.nx, g.ny);
     for (int j = 0; j < ny; ++j)
@@ -96,21 +97,42 @@ contact::NormalSolution halfspace_angle_normal(const RollerAndTrack& bodies, con
       bound = std::max(bound, hs.approach_m) * kHalfspaceWindowGrowth;
       continue;
     }
+    // the patch on the loaded cells' box and one cell more each way (symmetric in x, on the same lattice): the
+    // tangential solvers' grid, no larger than the contact needs
+    int i_lo = g.nx, i_hi = -1, c_lo = ny, c_hi = -1;
+    for (int j = 0; j < ny; ++j)
+      for (int i = 0; i < g.nx; ++i)
+        if (hs.pressure_Pa(i, j) > 0) {
+          i_lo = std::min(i_lo, i);
+          i_hi = std::max(i_hi, i);
+          c_lo = std::min(c_lo, j);
+          c_hi = std::max(c_hi, j);
+        }
+    if (i_hi < 0) throw contact::NormalSolveError("the cam's half-space contact: no cell carries the load");
+    const int keep_half = std::min(half_nx, std::max(half_nx - i_lo, i_hi + 1 - half_nx) + 1);
+    c_lo = std::max(0, c_lo - 1);
+    c_hi = std::min(ny - 1, c_hi + 1);
+    const int cny = c_hi - c_lo + 1;
+    const contact::Grid cg = contact::make_grid(keep_half * dx, cny * dy / 2, {2 * keep_half, cny});
+    contact::HalfspaceSolution crop = hs;
+    crop.pressure_Pa = hs.pressure_Pa.block(half_nx - keep_half, c_lo, 2 * keep_half, cny);
+    spdlog::debug("cam half-space: window {} x {} cells (attempt {}), patch {} x {}, {} iterations, approach {:.4e} m",
+                  g.nx, g.ny, attempt, cg.nx, cg.ny, hs.status.iterations, hs.approach_m);
     contact::NormalSolution n;
     n.solver = contact::NormalSolverKind::Halfspace;
     n.reason = "cam: the half-space on the angle's fixed lattice";
-    n.patch = contact::halfspace_patch(hs, g, normal_load_N);
-    n.grid_y0_m = lo + (j0 + 0.5 * ny) * dy;
+    n.patch = contact::halfspace_patch(crop, cg, normal_load_N);
+    n.grid_y0_m = lo + (j0 + c_lo + 0.5 * cny) * dy;
     // the strips' loads: their centroid is the Heathcote offsets' reference, their extent the contact's
     double load = 0, moment = 0, y_min = 0, y_max = 0;
     bool any = false;
     n.patches = 0;
-    for (int j = 0; j < ny; ++j) {
+    for (int j = 0; j < cny; ++j) {
       const bool loaded = n.patch.half_length_m(j) > 0;
       if (loaded && (j == 0 || !(n.patch.half_length_m(j - 1) > 0))) ++n.patches;
       if (!loaded) continue;
-      const double y = n.grid_y0_m + g.y_m(j);
-      const double Lj = hs.pressure_Pa.col(j).sum();
+      const double y = n.grid_y0_m + cg.y_m(j);
+      const double Lj = crop.pressure_Pa.col(j).sum();
       load += Lj;
       moment += Lj * y;
       if (!any) y_min = y - dy / 2;
@@ -120,7 +142,7 @@ contact::NormalSolution halfspace_angle_normal(const RollerAndTrack& bodies, con
     const double reference = load > 0 ? moment / load : n.grid_y0_m;
     if (s.heathcote_slip)
       n.patch.strip_xi_offset =
-          contact::heathcote_xi_offset(profiles, roller_radius_m, cam_radius_m, n.grid_y0_m + g.y_m, reference);
+          contact::heathcote_xi_offset(profiles, roller_radius_m, cam_radius_m, n.grid_y0_m + cg.y_m, reference);
     n.on_profiles.approach_m = hs.approach_m;
     n.on_profiles.reference_y_m = reference;
     n.on_profiles.contact_y_min_m = y_min;

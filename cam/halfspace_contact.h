@@ -10,12 +10,16 @@
 //     same lattice at that angle over the whole life.
 // The problem is solved on the part of that lattice where the contact can be: every loaded cell has
 // h(y) + A x^2 < delta (the separation h + u - delta vanishes there and u > 0), so the window holds the strips
-// with h(y_j) < bound and the cells with A x^2 < bound, one more cell each way, bound >= the approach. It starts
+// with h(y_j) < bound, one more each way, bound >= the approach. Along x, where the gap is convex on every strip,
+// it holds the cells with A x^2 < kHalfspaceWindowX bound and one more (Hertz's ellipse has A a^2 < delta; a cut
+// shows as a loaded cell on the window's first or last row, and the window grows). It starts
 // from the caller's approach (the angle's last one in a life, else Hertz's) and, where the solution's approach
 // exceeds the bound or a loaded cell touches the window's border, is enlarged (bound = 1.3 x the approach) and
 // solved again. Cells added outside the contact carry nothing, so the solution does not depend on the window:
 // it is the lattice's (to the solver's tolerance), whatever the history of the life. Separate lobes across the
-// width are one problem (the window spans every strip below the bound).
+// width are one problem (the window spans every strip below the bound). The patch handed to the tangential
+// solvers (halfspace_patch) lies on the loaded cells' box and one cell more each way, on the same lattice
+// (symmetric in x): the exact theory's cost is its grid's.
 #pragma once
 
 #include "cam/roller_contact.h"
@@ -49,6 +53,8 @@ contact::NormalSolution halfspace_angle_normal(const RollerAndTrack& bodies, con
                                                double roller_radius_m, double cam_radius_m, double normal_load_N,
                                                const HalfspaceAngleSettings& s, HalfspaceAngleStats* stats = nullptr);
 
+// the window along x: A x^2 < this times the bound (a tighter box than the sure one, grown where it cuts)
+constexpr double kHalfspaceWindowX = 0.6;
 // the window's enlargement factor on the approach, and the most enlargements tried
 constexpr double kHalfspaceWindowGrowth = 1.3;
 constexpr int kHalfspaceWindowTries = 8;

@@ -29,6 +29,10 @@ AngleDissipation angle_dissipation(const AngleContact& c, const RevolutionRow& r
   AngleDissipation d = angle_step(row, roller, duration_s);
   d.y_m = c.normal.grid_y0_m + patch.grid.y_m;
   d.power_W_per_m = steady.strip_power_W_per_m;
+  // an iterative solve's (the exact theory's) strips outside its slip carry rounding of either sign: below
+  // kStripPowerRounding of the largest strip they are nothing (a real negative power is left for the wear to refuse)
+  const double floor = -kStripPowerRounding * d.power_W_per_m.abs().maxCoeff();
+  d.power_W_per_m = (d.power_W_per_m < 0 && d.power_W_per_m >= floor).select(0.0, d.power_W_per_m);
   d.mean_pressure_Pa = (patch.half_length_m > 0).select(contact::kPi / 4 * patch.strip_peak_Pa, 0.0);
   return d;
 }

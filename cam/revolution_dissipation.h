@@ -27,6 +27,9 @@ struct DissipationTotals {
 RevolutionDissipation revolution_dissipation(const CamModel& m, const Revolution& r, const RollerMotion& motion,
                                              const CreepLawSettings& s = {});
 
+// a strip's power of either sign within this fraction of the largest strip's is rounding, taken as 0
+constexpr double kStripPowerRounding = 1e-9;
+
 // one angle step: the contact c of row `row`, the roller's state there
 AngleDissipation angle_dissipation(const AngleContact& c, const RevolutionRow& row, const RollerAngle& roller,
                                    double duration_s);
