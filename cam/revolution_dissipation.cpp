@@ -1,6 +1,7 @@
 // The quasi-steady dissipation over the revolution (docs/cam-follower.md §8).
 #include "cam/revolution_dissipation.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -30,8 +31,11 @@ AngleDissipation angle_dissipation(const AngleContact& c, const RevolutionRow& r
   d.y_m = c.normal.grid_y0_m + patch.grid.y_m;
   d.power_W_per_m = steady.strip_power_W_per_m;
   // an iterative solve's (the exact theory's) strips outside its slip carry rounding of either sign: below
-  // kStripPowerRounding of the largest strip they are nothing (a real negative power is left for the wear to refuse)
-  const double floor = -kStripPowerRounding * d.power_W_per_m.abs().maxCoeff();
+  // kStripPowerRounding of the largest strip, or of the full slide's mean mu F_n V / (2 b) where the whole step
+  // dissipates next to nothing, they are nothing (a real negative power is left for the wear to refuse)
+  const double slide = c.problem.mu * patch.normal_load_N * std::abs(roller.speed_m_per_s) / (2 * patch.b_m);
+  const double floor =
+      -kStripPowerRounding * std::max(d.power_W_per_m.abs().maxCoeff(), std::isfinite(slide) ? slide : 0.0);
   d.power_W_per_m = (d.power_W_per_m < 0 && d.power_W_per_m >= floor).select(0.0, d.power_W_per_m);
   d.mean_pressure_Pa = (patch.half_length_m > 0).select(contact::kPi / 4 * patch.strip_peak_Pa, 0.0);
   return d;

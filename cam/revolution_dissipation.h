@@ -27,7 +27,8 @@ struct DissipationTotals {
 RevolutionDissipation revolution_dissipation(const CamModel& m, const Revolution& r, const RollerMotion& motion,
                                              const CreepLawSettings& s = {});
 
-// a strip's power of either sign within this fraction of the largest strip's is rounding, taken as 0
+// a strip's power of either sign within this fraction of the largest strip's (or of the full slide's mean
+// mu F_n V / 2b, whichever is larger) is rounding, taken as 0
 constexpr double kStripPowerRounding = 1e-9;
 
 // one angle step: the contact c of row `row`, the roller's state there

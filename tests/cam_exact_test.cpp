@@ -17,6 +17,8 @@
 #include "cam/creep_law.h"
 #include "cam/halfspace_contact.h"
 #include "cam/revolution.h"
+#include "cam/revolution_dissipation.h"
+#include "cam/roller_motion.h"
 #include "lib/errors.h"
 #include "lib/normal/hertz.h"
 #include "lib/numeric.h"
@@ -180,6 +182,30 @@ TEST(CamExactCreepLaw, SaturatesAtMuTimesTheLoad) {
   const double half = steady_creep_force_N(c, 0.3 * xi_sat);
   EXPECT_LT(std::abs(half), 0.99 * mu * F);
   EXPECT_GT(std::abs(half), 0.3 * mu * F);
+}
+
+// The exact solve's strips carry rounding of either sign where nothing slips: within 1e-9 of the step's scale it is
+// taken as 0 (also when the whole step dissipates next to nothing), a real negative power is kept for the wear to
+// refuse.
+TEST(CamExactCreepLaw, StripRoundingIsZeroARealNegativePowerIsKept) {
+  const RollerAndTrack bodies = shipped_bodies();
+  const contact::Profiles profiles = roller_and_track_profiles(bodies);
+  CreepLawSettings s;
+  s.grid = {8, 8};
+  s.scheme = contact::TangentialScheme::Consistent;
+  const AngleContact c = angle_contact(bodies, profiles, 0.013, dwell_kinematics(), 150, 0.1, s);
+  RevolutionRow row;
+  RollerAngle roller;
+  roller.speed_m_per_s = 2.5;
+  contact::TangentialSolution sol;
+  sol.strip_power_W_per_m = Eigen::ArrayXd::Zero(c.normal.patch.grid.ny);
+  sol.strip_power_W_per_m(0) = -3e-18;  // all of the step's power is rounding
+  EXPECT_EQ(angle_dissipation(c, row, roller, 1e-4, sol).power_W_per_m(0), 0.0);
+  sol.strip_power_W_per_m(1) = 10;
+  sol.strip_power_W_per_m(2) = -1e-3;  // 1e-4 of the largest: not rounding
+  const AngleDissipation d = angle_dissipation(c, row, roller, 1e-4, sol);
+  EXPECT_EQ(d.power_W_per_m(0), 0.0);
+  EXPECT_EQ(d.power_W_per_m(2), -1e-3);
 }
 
 // cam.normal.solver and cam.tangential.scheme: exact and halfspace read; hertz, an unknown solver and classic refused

@@ -6,7 +6,8 @@
 // exact, sx: semi-Hertz (auto) + exact, hr: half-space + relaxed) on cam.tangential nx x ny:
 //   1. the life's set-up (set_up_cam_life: the unworn revolution, the roller's motion), CPU timed;
 //   2. the worn state's revolution by the life's evaluator (WornRevolution, the case's skip or STRIDE, power_rtol
-//      the case's), cold (its first evaluation), CPU timed, with its solves;
+//      the case's), cold (its first evaluation), CPU timed, with its solves; then warm, on the state x 1.001 (the
+//      life's next evaluation, from this one's approaches and creepages);
 // and prints the dissipated energy per revolution of both, from the strips' power (what the wear reads).
 #include <algorithm>
 #include <cmath>
@@ -175,6 +176,18 @@ int main(int argc, char** argv) {
                 cam::dissipation_totals(d).energy_J, cpu_worn, st.angles - before.angles,
                 st.interpolated_angles - before.interpolated_angles, st.contacts_solved - before.contacts_solved,
                 st.creep_evaluations - before.creep_evaluations);
+    // the life's next evaluation: the state scaled by 1 + 1e-3, warm-started from this one (approaches, creepages)
+    cam::CamWearState s2 = s;
+    s2.cam_depth_m *= 1 + 1e-3;
+    s2.roller_depth_m *= 1 + 1e-3;
+    const cam::WornRevolutionStats mid = setup->worn->stats();
+    t0 = cpu_s();
+    const cam::RevolutionDissipation d2 = (*setup->worn)(s2);
+    const double cpu_warm = cpu_s() - t0;
+    const cam::WornRevolutionStats& st2 = setup->worn->stats();
+    std::printf("%s   warm (the state x 1.001): %.6g J, %.3g s CPU, %ld normal solves, %ld creep-law solves\n",
+                m->code.c_str(), cam::dissipation_totals(d2).energy_J, cpu_warm,
+                st2.contacts_solved - mid.contacts_solved, st2.creep_evaluations - mid.creep_evaluations);
     std::fflush(stdout);
   }
   return 0;
