@@ -233,6 +233,13 @@ TEST_F(CamExactCaseTest, NormalSolverAndExactSchemeReadBadOnesRefusedAtTheirKey)
     std::ofstream(f) << shipped;
     EXPECT_EQ(read_cam_case(f.string()).solver.normal, contact::NormalChoice::Auto);
   }
+  {  // the shipped exact case
+    const CamCase c = read_cam_case((fs::path(ROLLWEAR_SOURCE_DIR) / "cases" / "cam-follower-exact.yaml").string());
+    EXPECT_EQ(c.solver.scheme, contact::TangentialScheme::Exact);
+    EXPECT_EQ(c.solver.normal, contact::NormalChoice::Halfspace);
+    EXPECT_EQ(c.model.angle_steps, 720);
+    ASSERT_TRUE(c.wear.has_value());
+  }
   const auto refused = [&](const std::string& lines, const std::string& bad, const std::string& key_path,
                            const std::string& also) {
     const std::string t = with(lines);
