@@ -194,8 +194,26 @@ CamCase read_cam_case(const std::string& path) {
             }
           } catch (const std::invalid_argument&) {
           }
-          return "must be relaxed (the default: the model matched to the exact theory) or consistent (the simplified "
-                 "theory); a cam takes neither classic nor exact";
+          return "must be relaxed (the default: the model matched to the exact theory), consistent (the simplified "
+                 "theory) or exact (Kalker's exact theory); a cam does not take classic";
+        });
+      });
+      // the normal solver of every angle's contact: auto (Hertz's closed form on the unworn profiles, semi-Hertz on
+      // worn ones), semi-hertz, or halfspace (the exact normal problem on the angle's fixed lattice,
+      // cam/halfspace_contact.h); parsed once, as it is read
+      s.optional_section("normal", [&](YamlMap& nm) {
+        std::string solver = contact::to_string(c.solver.normal);
+        nm.optional("solver", solver, [&c](const std::string& v) -> std::string {
+          try {
+            const contact::NormalChoice k = contact::parse_normal_choice(v);
+            if (k != contact::NormalChoice::Hertz) {
+              c.solver.normal = k;
+              return "";
+            }
+          } catch (const std::invalid_argument&) {
+          }
+          return "must be auto (the default: Hertz's closed form on the unworn profiles, semi-Hertz on worn ones), "
+                 "semi-hertz or halfspace (the exact normal problem); hertz is what auto takes where it holds";
         });
       });
       s.optional_section("wear", [&](YamlMap& w) { read_cam_wear(w, c.wear.emplace()); });

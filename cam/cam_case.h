@@ -21,7 +21,8 @@
 //     follower: { spring_rate_N_per_m: 2.0e4, preload_N: 150, moving_mass_kg: 0.4, guide_mu: 0.05 }
 //     tangential: { scheme: relaxed, nx: 40, ny: 40, quasi_steady_tolerance: 1e-3, periodic_rtol: 1e-9,
 //                   max_revolutions: 30, compare_full_transient: true }    # optional, these defaults;
-//                   # scheme: relaxed (kDefaultTangentialScheme) | consistent (classic and exact refused)
+//                   # scheme: relaxed (kDefaultTangentialScheme) | consistent | exact (classic refused)
+//     normal: { solver: auto }             # optional: auto | semi-hertz | halfspace (hertz refused: auto takes it)
 //     lift: { rise_law: cycloidal, lift_m: 0.010, rise_rad: 1.7453, dwell_high_rad: 0.6981,
 //             return_law: polynomial-345, return_rad: 1.7453 }
 //     # or lift: { table: [[0, 0.0], [0.0174533, 1.2e-6], ...] }  # [angle_rad, lift_m], steps of 2 pi/n from 0
@@ -46,7 +47,7 @@ struct CamCase {
   std::string name;             // name: or the file's stem
   std::string output_directory; // output.directory, or "" (out/<name>)
   CamModel model;
-  CamSolverSettings solver;     // cam.tangential
+  CamSolverSettings solver;     // cam.tangential, cam.normal
   std::optional<CamWearSpec> wear;  // cam.wear: the wear and life inputs (cam/cam_wear.h), if given
   contact::KeyLocations locations;
 };

@@ -210,6 +210,9 @@ std::unique_ptr<CamLifeSetup> set_up_cam_life(const std::string& name, const Cam
   worn_options.skip_power_rtol = spec.skip_power_rtol;
   u.worn = std::make_shared<WornRevolution>(u.model, u.revolution, u.motion.motion, u.unworn_profiles, u.life.grid,
                                             u.dynamics.law, worn_options);
+  // on the half-space the unworn revolution is the worn one's at no wear (its fixed lattice, cam/halfspace_contact.h),
+  // so the rate is continuous at the start of the life
+  if (u.dynamics.law.normal == contact::NormalChoice::Halfspace) u.unworn = (*u.worn)(unworn_state(u.life.grid));
   return setup;
 }
 

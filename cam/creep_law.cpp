@@ -5,6 +5,9 @@
 #include <cmath>
 #include <stdexcept>
 
+#include <spdlog/fmt/fmt.h>
+
+#include "cam/halfspace_contact.h"
 #include "lib/numeric.h"
 #include "lib/model/contact_model.h"
 
@@ -12,14 +15,50 @@ namespace cam {
 
 void check_cam_scheme(contact::TangentialScheme scheme) {
   if (!contact::tangential_traits(scheme).cam)
-    throw std::invalid_argument("the cam's tangential model is relaxed or consistent, not " + contact::to_string(scheme));
+    throw std::invalid_argument("the cam's tangential model is relaxed, consistent or exact, not " +
+                                contact::to_string(scheme));
 }
+
+CreepLawSettings motion_law(const CreepLawSettings& s) {
+  CreepLawSettings m = s;
+  m.normal = contact::NormalChoice::Auto;
+  if (s.scheme == contact::TangentialScheme::Exact) m.scheme = contact::TangentialScheme::Relaxed;
+  return m;
+}
+
+bool is_motion_law(const CreepLawSettings& s) {
+  const CreepLawSettings m = motion_law(s);
+  return m.scheme == s.scheme && m.normal == s.normal;
+}
+
+double creep_force_tolerance_N(const AngleContact& c) {
+  const double rtol = c.scheme == contact::TangentialScheme::Exact ? kExactCreepForceRtol : kCreepForceRtol;
+  return rtol * c.problem.mu * c.normal.patch.normal_load_N;
+}
+
+namespace {
+contact::NormalSolution halfspace_normal(const RollerAndTrack& bodies, const contact::Profiles& profiles,
+                                         double roller_radius_m, const CamKinematics& k, double normal_load_N,
+                                         const CreepLawSettings& s) {
+  HalfspaceAngleSettings h;
+  h.grid = s.grid;
+  h.fixed_y_lo_m = s.fixed_grid_y_lo_m;
+  h.fixed_y_hi_m = s.fixed_grid_y_hi_m;
+  h.fixed_strips = s.grid.ny;
+  h.initial_approach_m = s.initial_approach_m;
+  h.heathcote_slip = s.heathcote_slip;
+  return halfspace_angle_normal(bodies, profiles, roller_radius_m, cam_radius_m(k), normal_load_N, h);
+}
+}  // namespace
 
 AngleContact angle_contact(const RollerAndTrack& bodies, const contact::Profiles& profiles, double roller_radius_m,
                            const CamKinematics& k, double normal_load_N, double mu, const CreepLawSettings& s) {
   check_cam_scheme(s.scheme);
+  if (s.normal == contact::NormalChoice::Hertz)
+    throw std::invalid_argument("the cam's normal solver is auto, semi-hertz or halfspace (auto takes Hertz's closed "
+                                "form where it holds)");
   contact::NormalProblem np;
-  np.choice = contact::NormalChoice::Auto;
+  np.choice = s.normal;
   np.bodies.body1.Rx_m = roller_radius_m;
   np.bodies.body2.Rx_m = cam_radius_m(k);
   np.profiles = &profiles;
@@ -38,7 +77,9 @@ AngleContact angle_contact(const RollerAndTrack& bodies, const contact::Profiles
   np.semi_hertz.load_rtol = s.normal_load_rtol;
   np.worn = s.worn;
   AngleContact c;
-  c.normal = contact::solve_normal_converged(np);
+  c.normal = s.normal == contact::NormalChoice::Halfspace
+                 ? halfspace_normal(bodies, profiles, roller_radius_m, k, normal_load_N, s)
+                 : contact::solve_normal_converged(np);
   c.problem = contact::make_tangential_problem(c.normal.patch, bodies.pair, {}, mu, 0);
   c.G_Pa = contact::combined_shear_modulus_Pa(bodies.pair);
   c.scheme = s.scheme;
@@ -89,8 +130,13 @@ contact::TangentialSolution steady_creep(const AngleContact& c, double xi, doubl
   p.creepages = {xi, 0, 0};
   p.L_m_per_Pa = contact::mean_flexibility_m_per_Pa(p.flex, p.creepages, c.normal.patch.a_m, c.normal.patch.b_m);
   p.speed_m_per_s = speed_m_per_s;
-  // the contact's model (lib/model/contact_model.h): strips and totals, no fields
-  return contact::solve_tangential_steady(c.scheme, c.normal.patch, c.pair, p, false).solution;
+  // the contact's model (lib/model/contact_model.h): strips and totals, no fields; an iterative model's (the exact
+  // theory's) solve that did not converge is no result
+  contact::SteadyModelSolution sol = contact::solve_tangential_steady(c.scheme, c.normal.patch, c.pair, p, false);
+  if (!sol.status.converged())
+    throw std::runtime_error(fmt::format("the cam's steady {} solve at xi {:.6g} did not converge: {}",
+                                         contact::to_string(c.scheme), xi, sol.status.message));
+  return std::move(sol.solution);
 }
 
 double steady_creep_force_N(const AngleContact& c, double xi) { return steady_creep(c, xi, 1.0).Fx_N; }
@@ -99,7 +145,6 @@ namespace {
 // the root of F(xi) = force_N in a bracket grown from [centre - width, centre + width]
 CreepageForForce creepage_in_bracket(const AngleContact& c, double force_N, double centre, double width) {
   CreepageForForce r;
-  const double sat = c.problem.mu * c.normal.patch.normal_load_N;
   const auto f = [&](double xi) {
     ++r.evaluations;
     return steady_creep_force_N(c, xi) - force_N;
@@ -116,7 +161,7 @@ CreepageForForce creepage_in_bracket(const AngleContact& c, double force_N, doub
     f_hi = f(hi);
   }
   if (f_lo < 0 || f_hi > 0) return r;  // beyond the law's reach
-  const contact::RootResult root = contact::find_root_bracketed(f, lo, hi, f_lo, f_hi, 0, kCreepForceRtol * sat);
+  const contact::RootResult root = contact::find_root_bracketed(f, lo, hi, f_lo, f_hi, 0, creep_force_tolerance_N(c));
   r.xi = root.x;
   r.found = root.converged;
   return r;
@@ -131,6 +176,9 @@ double linear_stiffness_N(const AngleContact& c) {
 }  // namespace
 
 CreepageForForce creepage_for_force(const AngleContact& c, double force_N) {
+  // the exact theory's solves are dear: from the linear law's root by its slope (the guessed start's path, two
+  // solves and the root between them where the law is nearly linear, as here)
+  if (c.scheme == contact::TangentialScheme::Exact) return creepage_for_force(c, force_N, -force_N / linear_stiffness_N(c));
   // the linear law's xi is where to start
   const double stiffness = linear_stiffness_N(c);
   double width = std::abs(force_N) / stiffness;
@@ -145,7 +193,7 @@ CreepageForForce creepage_for_force(const AngleContact& c, double force_N, doubl
   // from the guess one step of the linear law's slope, then the root in the bracket they make (the law is
   // nearly linear over so small a change), else the bracket grown around the step's end
   CreepageForForce r;
-  const double tol = kCreepForceRtol * c.problem.mu * c.normal.patch.normal_load_N;
+  const double tol = creep_force_tolerance_N(c);
   const auto f = [&](double xi) {
     ++r.evaluations;
     return steady_creep_force_N(c, xi) - force_N;

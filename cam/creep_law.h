@@ -3,8 +3,9 @@
 // offsets of the crowned roller, docs/physics.md §2.4) and the project's steady tangential model on it with the
 // longitudinal creepage xi alone: the default model (contact::kDefaultTangentialScheme, the relaxed model of
 // lib/tangential/relaxed.h, matched to the exact theory, with the worn contacts' shape factor and strip weights of
-// lib/tangential/relaxed_shape.h) or the simplified theory (lib/tangential/steady.h, consistent scheme), as
-// CreepLawSettings::scheme says (the case's cam.tangential.scheme). The contact's
+// lib/tangential/relaxed_shape.h), the simplified theory (lib/tangential/steady.h, consistent scheme) or Kalker's
+// exact theory (lib/tangential/exact.h), as CreepLawSettings::scheme says (the case's cam.tangential.scheme); the
+// contact by the normal solver CreepLawSettings::normal asks for (cam.normal.solver). The contact's
 // x runs along the pitch tangent t of cam/kinematics.h, so the solver's Fx is the cam's F_t on the roller and
 // its xi the cam's (docs/physics.md §1: xi = w_x/V, w_x = R_r (omega_r - omega_r,kin) the roller's slip
 // velocity over the cam, xi > 0 a roller lagging the cam, Fx = -G a b C11 xi in the linear range: the consistent
@@ -38,9 +39,24 @@ struct CreepLawSettings {
   bool worn = false;
   // the semi-Hertzian search's load tolerance (SemiHertzOptions::load_rtol)
   double normal_load_rtol = contact::SemiHertzOptions{}.load_rtol;
-  // the steady tangential model: Relaxed (the default) or Consistent; angle_contact refuses the others
+  // the steady tangential model: Relaxed (the default), Consistent or Exact (Kalker's exact theory on the patch's
+  // grid, lib/tangential/exact.h); angle_contact refuses the others
   contact::TangentialScheme scheme = contact::kDefaultTangentialScheme;
+  // the normal problem (cam.normal.solver): Auto (Hertz's closed form on the unworn profiles, semi-Hertz on worn
+  // ones), SemiHertz, or Halfspace (cam/halfspace_contact.h: the exact normal problem on the angle's fixed lattice,
+  // grid.nx cells over the unworn contact's length; over the fixed lateral window above, grid.ny strips there)
+  contact::NormalChoice normal = contact::NormalChoice::Auto;
 };
+
+// The law the roller's motion (cam/roller_dynamics.h) is solved with for a case whose law is s: on the unworn
+// profiles, so the normal problem is Hertz's closed form (auto: the half-space reproduces it to its grid's error,
+// docs/halfspace.md), and the exact theory's place taken by the relaxed model matched to it (the motion needs
+// some 10^4 steady solves; on the shipped case the roller rolls at every angle, so its F_t is what rolling needs
+// whatever the law, docs/cam-follower.md §16). The relaxed and consistent models are their own.
+CreepLawSettings motion_law(const CreepLawSettings& s);
+// s is its own motion's law: the revolution's rows may take the motion's creepage as it is; otherwise each row's
+// creepage is the one whose steady force is the motion's F_t on the row's contact (creepage_for_force)
+bool is_motion_law(const CreepLawSettings& s);
 
 struct AngleContact {
   contact::NormalSolution normal;      // the contact, its strips on the grid
@@ -56,7 +72,7 @@ struct AngleContact {
   contact::ElasticPair pair;
 };
 
-// the cam's tangential models: Relaxed and Consistent (std::invalid_argument naming them otherwise)
+// the cam's tangential models: Relaxed, Consistent and Exact (std::invalid_argument naming them otherwise)
 void check_cam_scheme(contact::TangentialScheme scheme);
 
 // the creep force on the roller along t and its torque's correction for the strips' radii:
@@ -99,6 +115,12 @@ CreepageForForce creepage_for_force(const AngleContact& c, double force_N, doubl
 // the inversion's tolerance on the force: a fraction of the saturated force mu F_n (the steady strip is
 // exact to rounding, so the root finder, not the law, sets it)
 constexpr double kCreepForceRtol = 1e-10;
+// the exact theory's: its solve is iterative (fixed-point residual 1e-9, lib/tangential/exact.h), its force
+// known to some 1e-9 of mu F_n, and each dear: the inversion stops at this (on the shipped cam, F_t is 1-2 % of
+// mu F_n: the force to 1e-4 of itself)
+constexpr double kExactCreepForceRtol = 1e-6;
+// the inversion's tolerance on the force for the contact's model (N)
+double creep_force_tolerance_N(const AngleContact& c);
 // the largest |xi| the inversion searches: a gross slide (the roller's surface at a third of the cam's)
 constexpr double kMaxCreepage = 1.0;
 

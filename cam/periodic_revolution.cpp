@@ -23,6 +23,7 @@ RollerDynamicsSettings roller_dynamics_of(const CamSolverSettings& s) {
   RollerDynamicsSettings ds;
   ds.law.grid = {s.nx, s.ny};
   ds.law.scheme = s.scheme;
+  ds.law.normal = s.normal;
   ds.periodicity_rtol = s.periodic_rtol;
   ds.max_revolutions = s.max_revolutions;
   return ds;
@@ -48,6 +49,14 @@ CamRun run_cam(const CamModel& m, const CamSolverSettings& s) {
     run.loads.back().regime = a.regime;
     run.loads.back().shaft_torque_N_m = shaft_torque_N_m(run.loads.back(), run.revolution.rows[i].kin,
                                                          a.track_depth_moment_N_m);
+  }
+  const CreepLawSettings law = roller_dynamics_of(s).law;
+  if (!is_motion_law(law)) {  // the half-space or the exact theory: the rows quasi-steady, each on its own contact
+    run.transient = quasi_steady_revolution(m, run.revolution, run.motion.motion, law);
+    run.cpu_dynamics_s = t1 - t0;
+    run.cpu_transient_s = cpu_s() - t1;
+    run.energy = revolution_energy(m, run.revolution, run.motion, &run.transient);
+    return run;
   }
   TransientRevolutionSettings ts;
   ts.grid = {s.nx, s.ny};
@@ -78,11 +87,17 @@ std::string cam_summary(const CamRun& run) {
                      p.revolutions, p.periodicity_residual_rad_per_s, p.tolerance_rad_per_s, p.sliding_steps,
                      p.motion.angles.size(), p.motion.creep_law_evaluations, run.cpu_dynamics_s);
   const contact::TangentialModelTraits& model = contact::tangential_traits(t.scheme);
-  out += fmt::format("transient: grid {} x {}, {}, {} {} steps + {} warm-up, {} of {} angle steps quasi-steady "
-                     "(skipped), {:.3g} s CPU\n",
-                     t.grid.nx, t.grid.ny, model.theory, t.transient_steps,
-                     model.steps_name, t.warmup_steps, t.skipped_rows, t.dissipation.size(),
-                     run.cpu_transient_s);
+  if (t.quasi_steady_only)
+    out += fmt::format("quasi-steady: every angle step the steady {} on its own {} contact (no transient along the "
+                       "revolution on these), {} steady solves ({} for the creepages carrying the motion's F_t), "
+                       "{:.3g} s CPU\n",
+                       model.theory, contact::to_string(t.normal_solver), t.steady_solves + t.creep_evaluations,
+                       t.creep_evaluations, run.cpu_transient_s);
+  else
+    out += fmt::format("transient: grid {} x {}, {}, {} {} steps + {} warm-up, {} of {} angle steps quasi-steady "
+                       "(skipped), {:.3g} s CPU\n",
+                       t.grid.nx, t.grid.ny, model.theory, t.transient_steps, model.steps_name, t.warmup_steps,
+                       t.skipped_rows, t.dissipation.size(), run.cpu_transient_s);
   if (!run.full.dissipation.empty())
     out += fmt::format("quasi-steady skip against the full transient ({} steps, {:.3g} s CPU): {:.1f} % of the steps "
                        "saved; power error {:.3g} of the peak, energy error {:.3g}\n",

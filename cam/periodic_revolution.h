@@ -23,6 +23,8 @@ struct CamSolverSettings {
   bool compare_full_transient = true;    // also run the revolution without the skip, to measure the skip's error
   // the tangential model (cam.tangential.scheme): relaxed (the default, kDefaultTangentialScheme) or consistent
   contact::TangentialScheme scheme = contact::kDefaultTangentialScheme;
+  // the normal solver (cam.normal.solver): auto (the default), semi-hertz or halfspace
+  contact::NormalChoice normal = contact::NormalChoice::Auto;
 };
 
 // The roller's spin did not become periodic within max_revolutions: a solver's failure (exit 1)

@@ -20,9 +20,16 @@ struct DissipationTotals {
   double max_power_theta_rad = 0;
 };
 
+// With a law that is not the motion's own (is_motion_law: the exact theory, the half-space) each row's creepage is
+// the one whose steady force on its contact is the motion's F_t (creepage_for_force; the motion's where the law
+// cannot give it), as the worn revolution's rows (cam/cam_life.h).
 // throws std::invalid_argument when the motion does not match the revolution
 RevolutionDissipation revolution_dissipation(const CamModel& m, const Revolution& r, const RollerMotion& motion,
                                              const CreepLawSettings& s = {});
+
+// a strip's power of either sign within this fraction of the largest strip's (or of the full slide's mean
+// mu F_n V / 2b, whichever is larger) is rounding, taken as 0
+constexpr double kStripPowerRounding = 1e-9;
 
 // one angle step: the contact c of row `row`, the roller's state there
 AngleDissipation angle_dissipation(const AngleContact& c, const RevolutionRow& row, const RollerAngle& roller,

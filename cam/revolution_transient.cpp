@@ -390,6 +390,45 @@ TransientRevolution worn_transient_revolution(const CamModel& m, const Revolutio
   return out;
 }
 
+TransientRevolution quasi_steady_revolution(const CamModel& m, const Revolution& r, const RollerMotion& motion,
+                                            const CreepLawSettings& law) {
+  const std::size_t n = r.rows.size();
+  if (motion.angles.size() != n || n < 2)
+    throw std::invalid_argument("quasi_steady_revolution: the roller's motion does not match the revolution");
+  const double dt_row = 2 * contact::kPi / static_cast<double>(n) / m.omega_rad_per_s;
+  const contact::Profiles profiles = roller_and_track_profiles(m.bodies);
+  const bool own_creepage = is_motion_law(law);
+  TransientRevolution out;
+  out.scheme = law.scheme;
+  out.quasi_steady_only = true;
+  out.dissipation.resize(n);
+  out.unsteadiness.assign(n, 0);
+  out.skipped.assign(n, 1);
+  out.skipped_rows = static_cast<int>(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const RevolutionRow& row = r.rows[i];
+    RollerAngle a = motion.angles[i];
+    const AngleContact c = angle_contact(m.bodies, profiles, m.geometry.roller_radius_m, row.kin, a.normal_N, m.mu, law);
+    if (!own_creepage) {
+      const CreepageForForce xi = creepage_for_force(c, a.tangential_N);
+      out.creep_evaluations += xi.evaluations;
+      if (xi.found) {
+        a.xi = xi.xi;
+        a.slip_speed_m_per_s = xi.xi * a.speed_m_per_s;
+      }
+    }
+    add_quasi_steady_row(c, row, a, dt_row, i, out);
+    const contact::ContactPatch& p = c.normal.patch;
+    out.a_m.push_back(p.a_m);
+    out.b_m.push_back(p.b_m);
+    out.p0_Pa.push_back(p.p0_Pa);
+    out.xi.push_back(a.xi);
+    out.normal_solver = c.normal.solver;
+    if (i == 0) out.grid = p.grid;
+  }
+  return out;
+}
+
 SkipComparison compare_dissipation(const RevolutionDissipation& d, const RevolutionDissipation& full) {
   SkipComparison c;
   if (d.size() != full.size()) throw std::invalid_argument("compare_dissipation: the revolutions differ in steps");

@@ -40,6 +40,7 @@
 #include "cam/revolution.h"
 #include "cam/roller_motion.h"
 #include "lib/grid.h"
+#include "lib/normal/solver_kind.h"
 #include "lib/patch.h"
 #include "lib/tangential/tangential.h"
 
@@ -88,6 +89,10 @@ struct TransientRevolution {
   long warmup_steps = 0;              // Satran steps run from rest before a transient stretch (not counted)
   long steady_solves = 0;
   TransientEnergy energy;
+  // every row quasi-steady on its own contact (quasi_steady_revolution): no transient was run
+  bool quasi_steady_only = false;
+  long creep_evaluations = 0;        // ... the steady solves of its creepages' inversions
+  contact::NormalSolverKind normal_solver = contact::NormalSolverKind::Hertz;  // ... its rows' normal solver
 };
 
 // The contact of angle k under normal_load_N on `grid` (Hertz on the profiles' fitted radii, centred on the
@@ -113,6 +118,15 @@ TransientRevolution worn_transient_revolution(const CamModel& m, const Revolutio
                                               const contact::Profiles& unworn, const CamWearGrid& g,
                                               const CamWearState& worn, const CreepLawSettings& law,
                                               const TransientRevolutionSettings& s = {});
+
+// The revolution's rows quasi-steady, each the steady solution of the law (angle_contact: its normal solver and
+// model, e.g. the half-space and the exact theory) on its own contact, at the creepage whose steady force is the
+// motion's F_t there where the law is not the motion's own (is_motion_law), else at the motion's creepage. What
+// `rollwear cam` runs where the transient along the revolution is not built: Satran and the relaxed model's steps
+// run on the common grid's Hertz contacts, and the exact theory's rolling steps along the revolution are not
+// built. Throws what the solvers throw.
+TransientRevolution quasi_steady_revolution(const CamModel& m, const Revolution& r, const RollerMotion& motion,
+                                            const CreepLawSettings& law);
 
 // the skip's error against the full transient: the largest difference in a step's total power over the largest
 // power, the revolution's dissipated energy's relative difference, and the steps saved

@@ -90,8 +90,8 @@ TEST_F(CamCaseTest, UnknownKeysAndBadValuesNameFileLineAndKey) {
 }
 
 // cam.tangential.scheme chooses the tangential model as a wear case's solver.tangential does: relaxed by default,
-// consistent on request (the shipped case asks for it: docs/cam-follower.md §9); classic, exact and a misspelling
-// refused at the key's line
+// consistent or exact on request (the shipped case asks for consistent: docs/cam-follower.md §9); classic and a
+// misspelling refused at the key's line
 TEST_F(CamCaseTest, TangentialSchemeIsRelaxedByDefaultConsistentOnRequestOthersRefused) {
   const fs::path f = dir_ / "cam.yaml";
   const cam::CamCase shipped = cam::read_cam_case((kSource / "cases" / "cam-follower.yaml").string());
@@ -103,7 +103,10 @@ TEST_F(CamCaseTest, TangentialSchemeIsRelaxedByDefaultConsistentOnRequestOthersR
   t = shipped_with(key, "  tangential: { scheme: relaxed }");
   { std::ofstream(f) << t; }
   EXPECT_EQ(cam::read_cam_case(f.string()).solver.scheme, contact::TangentialScheme::Relaxed);
-  for (const char* bad : {"exact", "classic", "relaxd"}) {
+  t = shipped_with(key, "  tangential: { scheme: exact }");
+  { std::ofstream(f) << t; }
+  EXPECT_EQ(cam::read_cam_case(f.string()).solver.scheme, contact::TangentialScheme::Exact);
+  for (const char* bad : {"classic", "relaxd"}) {
     t = shipped_with(key, std::string("  tangential: { scheme: ") + bad + " }");
     expect_case_error(f, t, "cam.tangential.scheme", line_of(t, "scheme: " + std::string(bad)), "must be relaxed");
   }

@@ -47,11 +47,11 @@ TEST(ContactModel, EverySchemeHasItsModel) {
   EXPECT_EQ(transient_run_name(TangentialScheme::Exact, TransientScheme::Shift), "exact");
   EXPECT_EQ(transient_run_name(TangentialScheme::Relaxed, TransientScheme::Shift), "shift");
   EXPECT_EQ(transient_run_name(TangentialScheme::Consistent, TransientScheme::Upwind), "upwind");
-  // the cam takes the relaxed model and the simplified theory's consistent scheme only
+  // the cam takes the relaxed model, the simplified theory's consistent scheme and the exact theory
   EXPECT_TRUE(tangential_traits(TangentialScheme::Relaxed).cam);
   EXPECT_TRUE(tangential_traits(TangentialScheme::Consistent).cam);
   EXPECT_FALSE(tangential_traits(TangentialScheme::Classic).cam);
-  EXPECT_FALSE(tangential_traits(TangentialScheme::Exact).cam);
+  EXPECT_TRUE(tangential_traits(TangentialScheme::Exact).cam);
 }
 
 // The steady solve through the seam is each model's own solver, to the bit; the exact theory's reported

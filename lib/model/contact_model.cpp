@@ -104,6 +104,7 @@ TangentialModelTraits exact_traits() {
   TangentialModelTraits t;
   t.simplified_coefficients = false;
   t.needs_friction = true;
+  t.cam = true;  // the cam's creep law per angle (its quasi-steady rows; the roller's motion on the relaxed model)
   t.theory = "exact theory";
   t.run_note = ", exact theory";
   t.needs_friction_as = "exact solver";

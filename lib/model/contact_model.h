@@ -31,7 +31,7 @@ struct TangentialModelTraits {
   // the steady pure-xi strip has a closed form (solve_steady's skip): a wear life need not compute the
   // pressure fields for it (lib/tangential/steady.h)
   bool pure_xi_closed_form = false;
-  // the cam's creep law and revolution take it (cam/creep_law.h): relaxed and consistent
+  // the cam's creep law and revolution take it (cam/creep_law.h): relaxed, consistent and exact
   bool cam = false;
   // its transient relaxes the steady law over the rolled distance (the relaxed model: the cam's revolution
   // steps its rows with the steady solves), else it is Satran's strip march in time

@@ -4,7 +4,16 @@
 // and stays so when the shipped case's stepping changes.
 #pragma once
 
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
 #include <memory>
+#include <regex>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
 
 #include "cam/cam_life.h"
 #include "cam/worn_revolution.h"
@@ -39,6 +48,55 @@ inline cam::CamLifeResult cam_worn_to_depth(const cam::CamLifeSetup& setup, doub
   b.model.max_depth_m = depth_m;
   b.model.max_lift_loss_m = 0;
   return cam::run_cam_life(b.model, b.producer);
+}
+
+// the numbers of a CSV file's data rows (comment lines and the header skipped), row by row
+inline std::vector<std::vector<double>> csv_rows(const std::filesystem::path& p) {
+  std::ifstream in(p);
+  if (!in) throw std::runtime_error(p.string() + ": cannot read");
+  std::vector<std::vector<double>> rows;
+  std::string line;
+  bool header = true;
+  while (std::getline(in, line)) {
+    if (line.empty() || line[0] == '#') continue;
+    if (header) {
+      header = false;
+      continue;
+    }
+    std::vector<double> row;
+    std::stringstream cells(line);
+    std::string cell;
+    while (std::getline(cells, cell, ',')) row.push_back(std::stod(cell));
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+// a wear map of a rollwear run's folder (by default its highest number: the life's end) on the life's grid
+// snapshot: its number KKKK, or -1 for the last
+inline cam::CamWearState cam_state_of_folder(const std::filesystem::path& dir, const cam::CamWearGrid& g,
+                                              std::string& which, int snapshot = -1) {
+  static const std::regex kMap("wear_map_([0-9]{4})\\.csv");
+  int last = -1;
+  for (const auto& e : std::filesystem::directory_iterator(dir / "snapshots")) {
+    std::smatch m;
+    const std::string name = e.path().filename().string();
+    if (std::regex_match(name, m, kMap)) last = std::max(last, std::stoi(m[1].str()));
+  }
+  if (snapshot >= 0) last = snapshot;
+  if (last < 0) throw std::runtime_error(dir.string() + "/snapshots: no wear map");
+  char k[16];
+  std::snprintf(k, sizeof k, "%04d", last);
+  which = (dir / "snapshots" / ("wear_map_" + std::string(k) + ".csv")).string();
+  cam::CamWearState s = cam::unworn_state(g);
+  const auto map = csv_rows(which), roller = csv_rows(dir / "snapshots" / ("roller_wear_" + std::string(k) + ".csv"));
+  if (static_cast<long>(map.size()) != static_cast<long>(g.arc_cells) * g.track_cells ||
+      static_cast<int>(roller.size()) != g.roller_cells)
+    throw std::runtime_error(which + ": not this case's grid");
+  for (int i = 0; i < g.arc_cells; ++i)
+    for (int j = 0; j < g.track_cells; ++j) s.cam_depth_m(i, j) = map[static_cast<std::size_t>(i * g.track_cells + j)][3];
+  for (int j = 0; j < g.roller_cells; ++j) s.roller_depth_m(j) = roller[static_cast<std::size_t>(j)][1];
+  return s;
 }
 
 }  // namespace bench

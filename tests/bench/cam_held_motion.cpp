@@ -44,52 +44,6 @@ constexpr double kDeg = 57.29577951308232;
 
 double cpu_s() { return static_cast<double>(std::clock()) / CLOCKS_PER_SEC; }
 
-// the numbers of a CSV file's data rows (comment lines and the header skipped), row by row
-std::vector<std::vector<double>> csv_rows(const fs::path& p) {
-  std::ifstream in(p);
-  if (!in) throw std::runtime_error(p.string() + ": cannot read");
-  std::vector<std::vector<double>> rows;
-  std::string line;
-  bool header = true;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#') continue;
-    if (header) {
-      header = false;
-      continue;
-    }
-    std::vector<double> row;
-    std::stringstream cells(line);
-    std::string cell;
-    while (std::getline(cells, cell, ',')) row.push_back(std::stod(cell));
-    rows.push_back(row);
-  }
-  return rows;
-}
-
-// the last wear map of a rollwear run's folder (its highest number: the life's end) on the life's grid
-cam::CamWearState state_of_folder(const fs::path& dir, const cam::CamWearGrid& g, std::string& which) {
-  static const std::regex kMap("wear_map_([0-9]{4})\\.csv");
-  int last = -1;
-  for (const auto& e : fs::directory_iterator(dir / "snapshots")) {
-    std::smatch m;
-    const std::string name = e.path().filename().string();
-    if (std::regex_match(name, m, kMap)) last = std::max(last, std::stoi(m[1].str()));
-  }
-  if (last < 0) throw std::runtime_error(dir.string() + "/snapshots: no wear map");
-  char k[16];
-  std::snprintf(k, sizeof k, "%04d", last);
-  which = (dir / "snapshots" / ("wear_map_" + std::string(k) + ".csv")).string();
-  cam::CamWearState s = cam::unworn_state(g);
-  const auto map = csv_rows(which), roller = csv_rows(dir / "snapshots" / ("roller_wear_" + std::string(k) + ".csv"));
-  if (static_cast<long>(map.size()) != static_cast<long>(g.arc_cells) * g.track_cells ||
-      static_cast<int>(roller.size()) != g.roller_cells)
-    throw std::runtime_error(which + ": not this case's grid");
-  for (int i = 0; i < g.arc_cells; ++i)
-    for (int j = 0; j < g.track_cells; ++j) s.cam_depth_m(i, j) = map[static_cast<std::size_t>(i * g.track_cells + j)][3];
-  for (int j = 0; j < g.roller_cells; ++j) s.roller_depth_m(j) = roller[static_cast<std::size_t>(j)][1];
-  return s;
-}
-
 // the life's quasi-steady dissipation of state s on revolution r with motion (worn_revolution_dissipation's
 // loop, cam/cam_life.cpp), its strips fixed by the held revolution's narrowest contact: all three revolutions
 // are evaluated on the same strips, so that only the kinematics, loads and motion differ
@@ -264,7 +218,7 @@ int main(int argc, char** argv) {
     cam::CamWearState s;
     if (argc > 2) {
       std::string which;
-      s = state_of_folder(argv[2], g, which);
+      s = bench::cam_state_of_folder(argv[2], g, which);
       std::printf("worn state: %s\n", which.c_str());
     } else {
       const bench::CamBenchLife b = bench::cam_bench_life(*setup);
