@@ -88,7 +88,8 @@ struct ExactSolution {
 // start (optional): a previous steady solution on a grid of the same cell counts (nx x ny; otherwise it
 // is not used), e.g. the last evaluation of a life on a slightly changed patch: the Newton iteration
 // starts from its tractions (clipped to the new bound) and its stick and slip sets instead of the
-// all-stick solve; when that has not converged within 12 Newton iterations the solve starts again cold.
+// all-stick solve; when that has not converged within 3 Newton iterations the solve starts again cold
+// (it pays on small changes: docs/exact-theory.md §5).
 // The answer is the same to the tolerance (the problem is solved to the same fixed-point residual).
 ExactSolution solve_exact_steady(const ContactPatch& patch, double G_Pa, double nu, const Creepages& creepages,
                                  double mu, double speed_m_per_s, const ExactOptions& opt = {},
