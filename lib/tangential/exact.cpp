@@ -297,21 +297,6 @@ TangentialOperator& cached_operator(int nxe, int ny, double dx, double dy, doubl
   return *cache.front().op;
 }
 
-// GMRES's basis and the displacement of each Krylov vector's traction, kept per thread from one solve to
-// the next: at 80 x 80 they are 5 MB and 6 MB, and allocated afresh for every solve their pages were
-// faulted in again each time (the rolling step's GMRES touches only a few of them). A solve takes the
-// thread's workspace when no other solve of the thread holds it, else its own.
-struct GmresWorkspace {
-  Eigen::MatrixXd V;                 // the basis, one column per Krylov vector (rows: at least the unknowns)
-  std::vector<Eigen::ArrayXXd> Ux, Uy;  // u = A of each Krylov vector's traction
-  bool in_use = false;
-};
-
-GmresWorkspace& thread_gmres_workspace() {
-  thread_local GmresWorkspace w;
-  return w;
-}
-
 // a contact cell's Coulomb problem with everything else frozen: slip s = r + B tau (per unit V),
 // |tau| <= g. Returns true for stick.
 bool element_solve(double rx, double ry, double bx, double by, double g, double& tx, double& ty) {
@@ -552,8 +537,10 @@ struct ExactSolve {
   int gmres_total = 0;
   int products = 0;  // FFT products A tau
   Eigen::ArrayXXd u0x, u0y, uzx, uzy;
-  GmresWorkspace own_workspace;  // used when the thread's is held by another solve
-  GmresWorkspace* ws = nullptr;   // GMRES's basis and the Krylov vectors' u
+  // allocated per solve: kept per thread instead, the rolling step took 8 % longer (glibc then trims
+  // and faults in again the solve's smaller arrays, which the free of these large ones prevents)
+  std::vector<Eigen::ArrayXXd> Ukx, Uky;  // the u of each Krylov vector's traction
+  Eigen::MatrixXd Vbuf;                   // GMRES's basis, rows for up to 2 nc unknowns
 
   Eigen::ArrayXXi state;  // per cell of the extended grid: 1 stick, 2 slip, 0 outside
   ExactSolution out;
@@ -598,12 +585,6 @@ struct ExactSolve {
     px = tx;
     py = ty;
     state = Eigen::ArrayXXi::Zero(nxe, ny);
-    GmresWorkspace& thread_ws = thread_gmres_workspace();
-    ws = thread_ws.in_use ? &own_workspace : &thread_ws;
-    ws->in_use = true;
-  }
-  ~ExactSolve() {
-    if (ws) ws->in_use = false;
   }
   ExactSolve(const ExactSolve&) = delete;
   ExactSolve& operator=(const ExactSolve&) = delete;
@@ -759,11 +740,8 @@ struct ExactSolve {
     };
     double rel = 0;
     const int m = kGmresRestart;
-    Eigen::MatrixXd& Vbuf = ws->V;
-    if (Vbuf.rows() < n || Vbuf.cols() < m + 1) Vbuf.resize(std::max<Eigen::Index>(Vbuf.rows(), 2 * nc), m + 1);
+    if (Vbuf.rows() < n) Vbuf.resize(2 * nc, m + 1);
     auto Vk = Vbuf.topRows(n);
-    std::vector<Eigen::ArrayXXd>& Ukx = ws->Ux;
-    std::vector<Eigen::ArrayXXd>& Uky = ws->Uy;
     if (static_cast<int>(Ukx.size()) < m + 1) {
       Ukx.resize(static_cast<std::size_t>(m) + 1);
       Uky.resize(static_cast<std::size_t>(m) + 1);
