@@ -56,7 +56,7 @@ struct ExactOptions {
   int max_iterations = 200;       // active-set iterations (each one GMRES solve on the stick cells)
   int max_stick_iterations = 20000;  // GMRES iterations (FFT products) over the whole solve
   double stick_tol = 1e-11;       // GMRES: relative residual of the all-stick solve (the linear theory);
-                                  // later solves go to max(stick_tol, min(0.1, max(residual, tol/residual)))
+                                  // later solves go to max(stick_tol, min(0.3, max(residual, tol/residual)))
   bool plane_strain = false;      // two-dimensional (Carter's problem): one strip (ny = 1) of infinite
                                   // width with line_load_influence; forces are those of the strip's dy
                                   // (the steady solve from 400 cells on starts from its own solution on
