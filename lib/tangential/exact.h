@@ -56,7 +56,7 @@ struct ExactOptions {
   int max_iterations = 200;       // active-set iterations (each one GMRES solve on the stick cells)
   int max_stick_iterations = 20000;  // GMRES iterations (FFT products) over the whole solve
   double stick_tol = 1e-11;       // GMRES: relative residual of the all-stick solve (the linear theory);
-                                  // later solves go to max(stick_tol, residual / 100)
+                                  // later solves go to max(stick_tol, min(0.3, max(residual, tol/residual)))
   bool plane_strain = false;      // two-dimensional (Carter's problem): one strip (ny = 1) of infinite
                                   // width with line_load_influence; forces are those of the strip's dy
                                   // (the steady solve from 400 cells on starts from its own solution on
@@ -99,8 +99,15 @@ struct ExactSolution {
 // the caller decides. From 40 x 40 cells on (both even), a solve not converged within 12 Newton
 // iterations from the all-stick start starts again from its own solution on half the cells each way
 // (grid sequencing, docs/exact-theory.md §3); its status then counts the fine grid's last solve.
+// start (optional): a previous steady solution on a grid of the same cell counts (nx x ny; otherwise it
+// is not used), e.g. the last evaluation of a life on a slightly changed patch: the Newton iteration
+// starts from its tractions (clipped to the new bound) and its stick and slip sets instead of the
+// all-stick solve; when that has not converged within 3 Newton iterations the solve starts again cold
+// (it pays on small changes: docs/exact-theory.md §5).
+// The answer is the same to the tolerance (the problem is solved to the same fixed-point residual).
 ExactSolution solve_exact_steady(const ContactPatch& patch, double G_Pa, double nu, const Creepages& creepages,
-                                 double mu, double speed_m_per_s, const ExactOptions& opt = {});
+                                 double mu, double speed_m_per_s, const ExactOptions& opt = {},
+                                 const ExactSolution* start = nullptr);
 
 // One step of transient rolling by one cell, dq = dx (Kalker's transient discretisation): the
 // previous step's displacement difference (previous->u_x_m, u_y_m; previous == nullptr: a start
