@@ -4,6 +4,8 @@
 // (docs/physics.md §4.2: the stick zone shrinks as m^2), and P = V xi |F_t| for pure xi (docs/physics.md §4.1).
 #include <gtest/gtest.h>
 
+#include "tests/cam_shipped_law.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -27,13 +29,7 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 CamModel shipped_like(double bearing_torque_N_m) {
   CamModel m;
   m.geometry = {0.04, 0.013, 0};
-  DwellRiseDwellReturn d;
-  d.lift_m = 0.01;
-  d.rise_rad = 100 * kDeg;
-  d.dwell_high_rad = 40 * kDeg;
-  d.return_law = SegmentLaw::Polynomial345;
-  d.return_rad = 100 * kDeg;
-  m.law = make_dwell_rise_dwell_return(d);
+  m.law = shipped_lift_law();
   m.train = {2e4, 150, 0.4, 0.05, 3.8e-6, bearing_torque_N_m, 1e-5};
   m.bodies = {0.011, 0.5, 0.014, kInf, {{2.1e11, 0.3}, {2.1e11, 0.3}}};
   m.omega_rad_per_s = 62.8;

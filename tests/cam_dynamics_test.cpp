@@ -4,6 +4,8 @@
 // force saturated; the revolution repeats until omega_r(2 pi) = omega_r(0).
 #include <gtest/gtest.h>
 
+#include "tests/cam_shipped_law.h"
+
 #include <cmath>
 #include <limits>
 
@@ -23,13 +25,7 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 CamModel model(double inertia_kg_m2, double omega_rad_per_s, int steps) {
   CamModel m;
   m.geometry = {0.04, 0.013, 0};
-  DwellRiseDwellReturn d;
-  d.lift_m = 0.01;
-  d.rise_rad = 100 * kDeg;
-  d.dwell_high_rad = 40 * kDeg;
-  d.return_law = SegmentLaw::Polynomial345;
-  d.return_rad = 100 * kDeg;
-  m.law = make_dwell_rise_dwell_return(d);
+  m.law = shipped_lift_law();
   m.train = {2e4, 150, 0.4, 0.05, inertia_kg_m2, 0.004, 1e-5};
   m.bodies = {0.011, 0.5, 0.014, kInf, {{2.1e11, 0.3}, {2.1e11, 0.3}}};
   m.omega_rad_per_s = omega_rad_per_s;

@@ -5,6 +5,8 @@
 // docs/exact-theory.md checks the exact solver) and its saturation at mu times the grid's load; the case keys.
 #include <gtest/gtest.h>
 
+#include "tests/cam_shipped_law.h"
+
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -40,13 +42,7 @@ RollerAndTrack shipped_bodies() { return {0.011, 0.5, 0.014, kInf, {{2.1e11, 0.3
 
 // the kinematics on the base circle (r_b 40 mm, roller 13 mm, radial follower) at 300 deg
 CamKinematics dwell_kinematics() {
-  DwellRiseDwellReturn d;
-  d.lift_m = 0.01;
-  d.rise_rad = 100 * kDeg;
-  d.dwell_high_rad = 40 * kDeg;
-  d.return_law = SegmentLaw::Polynomial345;
-  d.return_rad = 100 * kDeg;
-  const LiftLaw law = make_dwell_rise_dwell_return(d);
+  const LiftLaw law = shipped_lift_law();
   CamGeometry g;
   g.base_radius_m = 0.04;
   g.roller_radius_m = 0.013;
