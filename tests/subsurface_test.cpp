@@ -330,6 +330,29 @@ TEST(SubsurfaceGrid, LargestShearConvergesWithTheGrid) {
   EXPECT_LT(errors[2], 1e-3);
 }
 
+// Between planes a peak's depth and value come from the parabola through three planes: exact for a stress
+// that is a parabola in depth (sigma_zz = -(10 - (z - 2.3)^2) on one cell, sigma_xz = 4 - (z - 1.6)^2 on another)
+TEST(Subsurface, PeaksBetweenPlanesAreRefinedByAParabola) {
+  constexpr double kRounding = 1e-12;
+  const Grid g = make_grid(1, 1, {2, 1});
+  std::vector<StressPlane> planes;
+  for (int k = 0; k < 5; ++k) {
+    StressPlane p;
+    p.z_m = k;
+    for (Eigen::ArrayXXd* a : {&p.xx, &p.yy, &p.zz, &p.xy, &p.xz, &p.yz}) *a = Eigen::ArrayXXd::Zero(2, 1);
+    p.zz(0, 0) = -(10 - (k - 2.3) * (k - 2.3));
+    p.xz(1, 0) = 4 - (k - 1.6) * (k - 1.6);
+    planes.push_back(p);
+  }
+  const SubsurfaceMaxima m = subsurface_maxima(planes, g);
+  EXPECT_NEAR(m.compression.value_Pa, -10, kRounding);
+  EXPECT_NEAR(m.compression.z_m, 2.3, kRounding);
+  EXPECT_NEAR(m.orthogonal_shear.value_Pa, 4, kRounding);
+  EXPECT_NEAR(m.orthogonal_shear.z_m, 1.6, kRounding);
+  EXPECT_EQ(m.compression.x_m, g.x_m(0));
+  EXPECT_EQ(m.orthogonal_shear.x_m, g.x_m(1));
+}
+
 TEST(Subsurface, RejectsBadInput) {
   const ContactPatch patch = circle_patch(9);
   const SurfaceTractions t = surface_tractions(patch, nullptr, 2);

@@ -198,14 +198,15 @@ struct Candidate {
   int plane = -1, i = 0, j = 0;
 };
 
-// the peak's depth and value from the parabola through the plane and its two neighbours (evenly spaced)
+// the peak's depth and value from the parabola through the plane and its two neighbours (evenly spaced);
+// measure is what was maximised (c.value), sign turns it into the peak's value (-1: the compression's -sigma3)
 template <class Measure>
 StressPeak refine(const std::vector<StressPlane>& planes, const Grid& g, const Candidate& c, Measure measure,
                   double sign) {
   StressPeak peak{sign * c.value, g.x_m(c.i), g.y_m(c.j), planes[c.plane].z_m};
   const int k = c.plane;
   if (k <= 0 || k + 1 >= static_cast<int>(planes.size())) return peak;
-  const double f0 = c.value, fm = sign * measure(planes[k - 1].at(c.i, c.j)), fp = sign * measure(planes[k + 1].at(c.i, c.j));
+  const double f0 = c.value, fm = measure(planes[k - 1].at(c.i, c.j)), fp = measure(planes[k + 1].at(c.i, c.j));
   const double curvature = fm - 2 * f0 + fp;
   if (!(curvature < 0)) return peak;
   const double dz = planes[k + 1].z_m - planes[k].z_m;
