@@ -137,7 +137,8 @@ int run_contact_command(const ContactOptions& opt) {
     below = subsurface_of_contact(c, run);
     const std::vector<const Subsurface*> bodies = {&below[0].stresses, &below[1].stresses};
     files.push_back({dir / "subsurface.csv", subsurface_csv(bodies)});
-    files.push_back({dir / "subsurface_section.csv", subsurface_section_csv(patch.grid, bodies)});
+    files.push_back({dir / "subsurface_section.csv",
+                     subsurface_section_csv(in_profile_coordinates(normal).grid, bodies)});  // y as strips.csv's
     fatigue = below[0].fatigue || below[1].fatigue;
     if (fatigue)
       files.push_back({dir / "fatigue.csv", fatigue_csv({below[0].fatigue ? &*below[0].fatigue : nullptr,

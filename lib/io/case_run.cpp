@@ -47,6 +47,11 @@ std::array<BodySubsurface, 2> subsurface_of_contact(const ContactCase& c, const 
     out[k].stresses = twin ? out[0].stresses : solve_subsurface(t, bodies[k]->nu, semi_axis, options);
     if (bodies[k]->shear_yield_Pa > 0)
       out[k].fatigue = fatigue_indicators(patch, run.solution, bodies[k]->shear_yield_Pa);
+    // where: in the profiles' lateral coordinate, as strips.csv's y_m
+    SubsurfaceMaxima& m = out[k].stresses.maxima;
+    for (StressPeak* p : {&m.von_mises, &m.tresca, &m.orthogonal_shear, &m.tension, &m.compression})
+      p->y_m += run.normal.grid_y0_m;
+    if (out[k].fatigue) out[k].fatigue->cell_y_m += run.normal.grid_y0_m;
   }
   return out;
 }

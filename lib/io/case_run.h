@@ -35,7 +35,8 @@ ContactRun solve_contact_case(const ContactCase& c, bool fields);
 // carries the solution's tractions, body 2 their reverse, each at its own Poisson's ratio; planes to
 // options.depth_over_semi_axis times min(a, b)), and the fatigue indicators of each body with a shear yield
 // stress (bodies.bodyN.shear_yield_Pa; lib/subsurface/shakedown.h). The run must have its fields (solved with
-// fields true), else the tractions are taken as frictionless. [0] is body 1, [1] body 2.
+// fields true), else the tractions are taken as frictionless. [0] is body 1, [1] body 2. The maxima's and the
+// cell index's y are in the profiles' lateral coordinate (strips.csv's y_m); the planes stay on the patch's grid.
 struct BodySubsurface {
   Subsurface stresses;
   std::optional<FatigueIndicators> fatigue;

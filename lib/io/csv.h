@@ -75,7 +75,8 @@ std::string summary_csv(const std::string& name, const ContactPatch& patch, cons
 
 // ---- below the surface (lib/subsurface/) ----
 
-// subsurface.csv: the maxima of each body's stresses below the surface, one row per body and measure:
+// subsurface.csv: the maxima of each body's stresses below the surface, one row per body and measure (y_m in
+// the coordinate the caller gave them: `rollwear contact` the profiles', as strips.csv's):
 //   body,nu,measure,value_Pa,x_m,y_m,z_m
 // measure: von_mises, tresca ((sigma1 - sigma3)/2), orthogonal_shear (|sigma_xz|), tension (largest sigma1),
 // compression (smallest sigma3); z_m the depth into that body. bodies[k] is body k + 1.
