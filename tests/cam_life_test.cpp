@@ -594,8 +594,11 @@ struct ResumableLife {
       return (*w)(s);
     };
   }
+  cam::ProducerMemory memory() const {
+    return {[w = worn] { return w->memory(); }, [w = worn](const std::vector<double>& v) { w->restore(v); }};
+  }
 };
-ResumableLife resumable_life(bool warm_start) {
+ResumableLife resumable_life(cam::WornRevolutionOptions o) {
   const cam::CamLifeSetup& u = *coarse_shipped().setup;
   ResumableLife l;
   l.model = u.life;
@@ -604,8 +607,18 @@ ResumableLife resumable_life(bool warm_start) {
   l.model.stepping.method = wear::IntegratorOptions::Method::FixedDepth;
   l.model.stepping.max_depth_step_m = 0.5e-6;
   l.model.snapshots_revolutions.clear();
-  l.worn = std::make_shared<cam::WornRevolution>(worn_revolution(coarse_shipped(), {true, warm_start}));
+  l.worn = std::make_shared<cam::WornRevolution>(worn_revolution(coarse_shipped(), o));
   return l;
+}
+ResumableLife resumable_life(bool warm_start) { return resumable_life(cam::WornRevolutionOptions{true, warm_start}); }
+// the shipped case's producer: shared contacts, warm starts with the slope, the case's skip (every 4th angle
+// step computed)
+cam::WornRevolutionOptions shipped_worn_options() {
+  const cam::CamCase file = cam::read_cam_case((kSource / "cases" / "cam-follower.yaml").string());
+  cam::WornRevolutionOptions o;
+  o.skip_stride = file.wear->skip_stride;
+  o.skip_power_rtol = file.wear->skip_power_rtol;
+  return o;
 }
 
 // the life run from the unworn state, stopped after k steps, and continued from that step's CamLifeStart
@@ -614,35 +627,38 @@ struct Interrupted {
   cam::CamLifeResult whole, first, resumed;
   std::vector<double> whole_snapshots, resumed_snapshots;
 };
-Interrupted interrupt_and_resume(bool warm_start, long k) {
+Interrupted interrupt_and_resume(cam::WornRevolutionOptions o, long k) {
   Interrupted out;
   cam::CamLifeHooks whole_hooks;
   whole_hooks.on_snapshot = [&](double N, const cam::CamWearState&) { out.whole_snapshots.push_back(N); };
   {
-    const ResumableLife l = resumable_life(warm_start);
-    out.whole = cam::run_cam_life(l.model, l.producer(), whole_hooks);
+    const ResumableLife l = resumable_life(o);
+    out.whole = cam::run_cam_life(l.model, l.producer(), whole_hooks, {}, l.memory());
   }
   cam::CamLifeStart saved;
   {
-    const ResumableLife l = resumable_life(warm_start);
+    const ResumableLife l = resumable_life(o);
     cam::CamLifeHooks hooks;
     hooks.stop_after = [&](const cam::CamLifeStep& s) {
       saved = s.resume;
       return s.step == k;
     };
-    out.first = cam::run_cam_life(l.model, l.producer(), hooks);
+    out.first = cam::run_cam_life(l.model, l.producer(), hooks, {}, l.memory());
   }
   {
-    const ResumableLife l = resumable_life(warm_start);
+    const ResumableLife l = resumable_life(o);
     cam::CamLifeHooks hooks;
     hooks.on_snapshot = [&](double N, const cam::CamWearState&) { out.resumed_snapshots.push_back(N); };
-    out.resumed = cam::run_cam_life(l.model, l.producer(), hooks, saved);
+    out.resumed = cam::run_cam_life(l.model, l.producer(), hooks, saved, l.memory());
   }
   return out;
 }
+Interrupted interrupt_and_resume(bool warm_start, long k) {
+  return interrupt_and_resume(cam::WornRevolutionOptions{true, warm_start}, k);
+}
 
 // Complete state: with cold evaluations the resumed life is the uninterrupted one to the bit (the state, N,
-// the energy, the counters but the one evaluation the resumed process makes again at its start).
+// the energy, the counters).
 TEST(CamLifeResume, AColdLifeStoppedAndResumedIsTheUninterruptedOneToTheBit) {
   const Interrupted r = interrupt_and_resume(false, 2);
   ASSERT_EQ(r.whole.ended_by, wear::LifeEnd::MaxDepth) << r.whole.message;
@@ -658,35 +674,41 @@ TEST(CamLifeResume, AColdLifeStoppedAndResumedIsTheUninterruptedOneToTheBit) {
   EXPECT_EQ(r.resumed.steps, r.whole.steps);
   EXPECT_EQ(r.resumed.rejected, r.whole.rejected);
   EXPECT_EQ(r.resumed.rhs_evals, r.whole.rhs_evals);
-  EXPECT_EQ(r.resumed.revolutions_solved, r.whole.revolutions_solved + 1);  // its start's state, solved again
+  EXPECT_EQ(r.resumed.revolutions_solved, r.whole.revolutions_solved);  // its start's rate is the checkpoint's
   // no snapshot at 0 again: only the end's
   ASSERT_EQ(r.resumed_snapshots.size(), 1u);
   EXPECT_EQ(r.resumed_snapshots.back(), r.whole_snapshots.back());
 }
 
-// The life's own producer warm-starts each angle's searches from its last evaluation, which a resumed
-// process does not have; the searches converge to their tolerances from either start, so the resumed life
-// agrees with the uninterrupted one to within kResumeTol of the life and of the deepest wear (measured:
-// see docs/cam-follower.md §13, "Checkpoint and resume"), not to the bit.
-TEST(CamLifeResume, AWarmStartedLifeResumedAgreesWithTheUninterruptedOneToTheSolveTolerance) {
-  // measured 5.7e-12 (life) and 1.5e-10 (depths) on this set-up: the warm and the cold searches meet the
-  // same tolerances (the semi-Hertzian approach within 1e-12 of the load, the creepage's root); 60x margin
-  constexpr double kResumeTol = 1e-8;
-  const Interrupted r = interrupt_and_resume(true, 2);
-  ASSERT_EQ(r.whole.ended_by, wear::LifeEnd::MaxDepth) << r.whole.message;
-  EXPECT_EQ(r.first.ended_by, wear::LifeEnd::Stopped);
-  EXPECT_EQ(r.resumed.ended_by, r.whole.ended_by) << r.resumed.message;
-  // the depth limit falls on a fixed-depth step's end: depths 1e-10 apart may end it on that step or on a
-  // sliver after it (with the semi-Hertz slope in the warm start: 5 steps against 4), so one step either way
-  EXPECT_LE(std::abs(r.resumed.steps - r.whole.steps), 1);
-  const double deepest = std::max(r.whole.state.cam_depth_m.maxCoeff(), r.whole.state.roller_depth_m.maxCoeff());
-  const double dN = std::abs(r.resumed.N - r.whole.N) / r.whole.N;
-  const double dh = std::max((r.resumed.state.cam_depth_m - r.whole.state.cam_depth_m).abs().maxCoeff(),
-                             (r.resumed.state.roller_depth_m - r.whole.state.roller_depth_m).abs().maxCoeff()) /
-                    deepest;
-  std::cout << "[ resumed ] life " << dN << ", depths " << dh << " of the uninterrupted life's\n";
-  EXPECT_LT(dN, kResumeTol);
-  EXPECT_LT(dh, kResumeTol);
+// The shipped producer (warm starts with the slope, shared contacts, the skip) and Heun's fixed depth steps, as
+// `rollwear run` on the shipped case: a life stopped after 1, 2, 3 or 4 steps and resumed on a new producer
+// (a new process) is the uninterrupted one to the bit: N, every depth, the energy, the lift loss, the steps and
+// the evaluations. The producer's per-angle warm starts travel in the step's CamLifeStart; without them
+// the resumed searches start cold and end elsewhere within their tolerances (1e-12 of N here, up to 2 % of
+// the shipped life where the worn gap has several roots: docs/cam-follower.md §13).
+TEST(CamLifeResume, TheShippedProducerStoppedAtAnyStepAndResumedIsTheUninterruptedOneToTheBit) {
+  const cam::WornRevolutionOptions o = shipped_worn_options();
+  ASSERT_GT(o.skip_stride, 1);
+  ASSERT_EQ(coarse_shipped().setup->life.scheme, wear::IntegratorOptions::Scheme::Heun);
+  for (const long k : {1L, 2L, 3L, 4L}) {
+    SCOPED_TRACE("stopped after step " + std::to_string(k));
+    const Interrupted r = interrupt_and_resume(o, k);
+    ASSERT_EQ(r.whole.ended_by, wear::LifeEnd::MaxDepth) << r.whole.message;
+    ASSERT_GT(r.whole.steps, k);  // the interruption falls inside the life
+    ASSERT_EQ(r.first.ended_by, wear::LifeEnd::Stopped) << r.first.message;
+    EXPECT_EQ(r.first.steps, k);
+    EXPECT_EQ(r.resumed.ended_by, r.whole.ended_by) << r.resumed.message;
+    EXPECT_EQ(r.resumed.N, r.whole.N);
+    EXPECT_TRUE((r.resumed.state.cam_depth_m == r.whole.state.cam_depth_m).all());
+    EXPECT_TRUE((r.resumed.state.roller_depth_m == r.whole.state.roller_depth_m).all());
+    EXPECT_EQ(r.resumed.energy_J, r.whole.energy_J);
+    EXPECT_EQ(r.resumed.lift_loss.max_m, r.whole.lift_loss.max_m);
+    EXPECT_EQ(r.resumed.steps, r.whole.steps);
+    EXPECT_EQ(r.resumed.rejected, r.whole.rejected);
+    EXPECT_EQ(r.resumed.rhs_evals, r.whole.rhs_evals);
+    EXPECT_EQ(r.resumed.revolutions_solved, r.whole.revolutions_solved);
+    EXPECT_EQ(r.resumed_snapshots, std::vector<double>{r.whole_snapshots.back()});
+  }
 }
 
 // A start that is not this model's is refused, naming the sizes.
