@@ -12,6 +12,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <initializer_list>
 #include <iostream>
 #include <limits>
 #include <map>
@@ -378,24 +379,35 @@ struct CoarseShipped {
   std::unique_ptr<cam::CamLifeSetup> setup;
   cam::CamWearState worn;
 };
+CoarseShipped make_coarse_shipped(bool halfspace) {
+  const cam::CamCase file = cam::read_cam_case((kSource / "cases" / "cam-follower.yaml").string());
+  cam::CamModel model = file.model;
+  model.angle_steps = 72;
+  cam::CamWearSpec spec = *file.wear;
+  spec.arc_cells = 72;
+  spec.lateral_cells = 28;
+  cam::RollerDynamicsSettings dynamics = cam::roller_dynamics_of(file.solver);
+  if (halfspace) {  // the half-space contact at each angle on a coarse lattice (cam.normal.solver: halfspace)
+    dynamics.law.normal = contact::NormalChoice::Halfspace;
+    dynamics.law.grid = {16, 16};
+  }
+  CoarseShipped out;
+  out.setup = cam::set_up_cam_life(file.name, model, spec, dynamics);
+  const cam::CamWearRate rate = cam::wear_per_revolution(out.setup->unworn, out.setup->life.grid, out.setup->life.laws);
+  const double N = 3e-6 / std::max(rate.depth_per_revolution.cam_depth_m.maxCoeff(),
+                                   rate.depth_per_revolution.roller_depth_m.maxCoeff());
+  out.worn = rate.depth_per_revolution;
+  out.worn.cam_depth_m *= N;
+  out.worn.roller_depth_m *= N;
+  return out;
+}
 const CoarseShipped& coarse_shipped() {
-  static const CoarseShipped c = [] {
-    const cam::CamCase file = cam::read_cam_case((kSource / "cases" / "cam-follower.yaml").string());
-    cam::CamModel model = file.model;
-    model.angle_steps = 72;
-    cam::CamWearSpec spec = *file.wear;
-    spec.arc_cells = 72;
-    spec.lateral_cells = 28;
-    CoarseShipped out;
-    out.setup = cam::set_up_cam_life(file.name, model, spec, cam::roller_dynamics_of(file.solver));
-    const cam::CamWearRate rate = cam::wear_per_revolution(out.setup->unworn, out.setup->life.grid, out.setup->life.laws);
-    const double N = 3e-6 / std::max(rate.depth_per_revolution.cam_depth_m.maxCoeff(),
-                                     rate.depth_per_revolution.roller_depth_m.maxCoeff());
-    out.worn = rate.depth_per_revolution;
-    out.worn.cam_depth_m *= N;
-    out.worn.roller_depth_m *= N;
-    return out;
-  }();
+  static const CoarseShipped c = make_coarse_shipped(false);
+  return c;
+}
+// the same on the half-space (its contacts' windows start from the angles' last approaches)
+const CoarseShipped& coarse_halfspace() {
+  static const CoarseShipped c = make_coarse_shipped(true);
   return c;
 }
 
@@ -586,11 +598,11 @@ TEST(WornRevolution, WornContactsNeverTakeHertzsClosedForm) {
 // producer of its own: a new WornRevolution, as a new process has. warm_start false: every evaluation is the
 // cold one, a function of the state alone (WornRevolution.WithoutSavingsIsTheColdRevolutionToTheBit).
 struct ResumableLife {
+  const cam::CamLifeSetup* u = nullptr;
   cam::CamLifeModel model;
   std::shared_ptr<cam::WornRevolution> worn;
   cam::DissipationOf producer() const {
-    const cam::CamLifeSetup* u = coarse_shipped().setup.get();
-    return [u, w = worn](const cam::CamWearState& s) {
+    return [u = u, w = worn](const cam::CamWearState& s) {
       if ((s.cam_depth_m == 0).all() && (s.roller_depth_m == 0).all()) return u->unworn;
       return (*w)(s);
     };
@@ -599,16 +611,17 @@ struct ResumableLife {
     return {[w = worn] { return w->memory(); }, [w = worn](const std::vector<double>& v) { w->restore(v); }};
   }
 };
-ResumableLife resumable_life(cam::WornRevolutionOptions o) {
-  const cam::CamLifeSetup& u = *coarse_shipped().setup;
+ResumableLife resumable_life(cam::WornRevolutionOptions o, const CoarseShipped& c = coarse_shipped()) {
+  const cam::CamLifeSetup& u = *c.setup;
   ResumableLife l;
+  l.u = &u;
   l.model = u.life;
   l.model.max_depth_m = 2e-6;
   l.model.max_lift_loss_m = 0;
   l.model.stepping.method = wear::IntegratorOptions::Method::FixedDepth;
   l.model.stepping.max_depth_step_m = 0.5e-6;
   l.model.snapshots_revolutions.clear();
-  l.worn = std::make_shared<cam::WornRevolution>(worn_revolution(coarse_shipped(), o));
+  l.worn = std::make_shared<cam::WornRevolution>(worn_revolution(c, o));
   return l;
 }
 ResumableLife resumable_life(bool warm_start) { return resumable_life(cam::WornRevolutionOptions{true, warm_start}); }
@@ -628,17 +641,17 @@ struct Interrupted {
   cam::CamLifeResult whole, first, resumed;
   std::vector<double> whole_snapshots, resumed_snapshots;
 };
-Interrupted interrupt_and_resume(cam::WornRevolutionOptions o, long k) {
+Interrupted interrupt_and_resume(cam::WornRevolutionOptions o, long k, const CoarseShipped& c = coarse_shipped()) {
   Interrupted out;
   cam::CamLifeHooks whole_hooks;
   whole_hooks.on_snapshot = [&](double N, const cam::CamWearState&) { out.whole_snapshots.push_back(N); };
   {
-    const ResumableLife l = resumable_life(o);
+    const ResumableLife l = resumable_life(o, c);
     out.whole = cam::run_cam_life(l.model, l.producer(), whole_hooks, {}, l.memory());
   }
   cam::CamLifeStart saved;
   {
-    const ResumableLife l = resumable_life(o);
+    const ResumableLife l = resumable_life(o, c);
     cam::CamLifeHooks hooks;
     hooks.stop_after = [&](const cam::CamLifeStep& s) {
       saved = s.resume;
@@ -647,7 +660,7 @@ Interrupted interrupt_and_resume(cam::WornRevolutionOptions o, long k) {
     out.first = cam::run_cam_life(l.model, l.producer(), hooks, {}, l.memory());
   }
   {
-    const ResumableLife l = resumable_life(o);
+    const ResumableLife l = resumable_life(o, c);
     cam::CamLifeHooks hooks;
     hooks.on_snapshot = [&](double N, const cam::CamWearState&) { out.resumed_snapshots.push_back(N); };
     out.resumed = cam::run_cam_life(l.model, l.producer(), hooks, saved, l.memory());
@@ -687,13 +700,15 @@ TEST(CamLifeResume, AColdLifeStoppedAndResumedIsTheUninterruptedOneToTheBit) {
 // the evaluations. The producer's per-angle warm starts travel in the step's CamLifeStart; without them
 // the resumed searches start cold and end elsewhere within their tolerances (1e-12 of N here, up to 2 % of
 // the shipped life where the worn gap has several roots: docs/cam-follower.md §13).
-TEST(CamLifeResume, TheShippedProducerStoppedAtAnyStepAndResumedIsTheUninterruptedOneToTheBit) {
+// The half-space path (cam.normal.solver: halfspace) keeps the same per-angle memory (its windows start from the
+// angles' last approaches) and is checked alike, on a 16 x 16 lattice.
+void expect_resumed_to_the_bit(const CoarseShipped& c, std::initializer_list<long> stops) {
   const cam::WornRevolutionOptions o = shipped_worn_options();
   ASSERT_GT(o.skip_stride, 1);
-  ASSERT_EQ(coarse_shipped().setup->life.scheme, wear::IntegratorOptions::Scheme::Heun);
-  for (const long k : {1L, 2L, 3L, 4L}) {
+  ASSERT_EQ(c.setup->life.scheme, wear::IntegratorOptions::Scheme::Heun);
+  for (const long k : stops) {
     SCOPED_TRACE("stopped after step " + std::to_string(k));
-    const Interrupted r = interrupt_and_resume(o, k);
+    const Interrupted r = interrupt_and_resume(o, k, c);
     ASSERT_EQ(r.whole.ended_by, wear::LifeEnd::MaxDepth) << r.whole.message;
     ASSERT_GT(r.whole.steps, k);  // the interruption falls inside the life
     ASSERT_EQ(r.first.ended_by, wear::LifeEnd::Stopped) << r.first.message;
@@ -710,6 +725,13 @@ TEST(CamLifeResume, TheShippedProducerStoppedAtAnyStepAndResumedIsTheUninterrupt
     EXPECT_EQ(r.resumed.revolutions_solved, r.whole.revolutions_solved);
     EXPECT_EQ(r.resumed_snapshots, std::vector<double>{r.whole_snapshots.back()});
   }
+}
+TEST(CamLifeResume, TheShippedProducerStoppedAtAnyStepAndResumedIsTheUninterruptedOneToTheBit) {
+  expect_resumed_to_the_bit(coarse_shipped(), {1, 2, 3, 4});
+}
+TEST(CamLifeResume, TheHalfspaceProducerStoppedAndResumedIsTheUninterruptedOneToTheBit) {
+  ASSERT_EQ(coarse_halfspace().setup->dynamics.law.normal, contact::NormalChoice::Halfspace);
+  expect_resumed_to_the_bit(coarse_halfspace(), {2});
 }
 
 // A start that is not this model's is refused, naming the sizes.
