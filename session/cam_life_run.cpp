@@ -188,8 +188,8 @@ LifeRunEnd run_cam_life_in_folder(const LifeRunOptions& o) {
     spdlog::info("run: resuming at cam revolution {:.6g} (step {}) from {}", start.N, start.steps,
                  folder.checkpoint_path().string());
     if (start.producer_memory.empty() || start.rate.size() == 0)
-      spdlog::warn("run: {} holds no warm starts (an earlier version's checkpoint): the resumed life agrees with "
-                   "the uninterrupted one to the contact solves' tolerance, not to the bit",
+      spdlog::warn("run: {} holds no warm starts (an earlier version's checkpoint): the worn contacts start cold, "
+                   "and the resumed life may end elsewhere than the uninterrupted one would (docs/cam-follower.md §13)",
                    folder.checkpoint_path().string());
   } else {
     folder.start_afresh(std::regex("(wear_map|roller_wear)_[0-9]{4}\\.csv"));
