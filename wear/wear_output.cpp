@@ -174,6 +174,10 @@ std::string checkpoint_text(const Checkpoint& c) {
   t += fmt::format("wall_s {:a}\n", c.wall_s);
   t += fmt::format("state {}\n", s.state.size());
   for (Eigen::Index i = 0; i < s.state.size(); ++i) t += fmt::format("{:a}\n", s.state(i));
+  for (const CheckpointBlock& b : c.blocks) {
+    t += fmt::format("block {} {}\n", b.name, b.values.size());
+    for (Eigen::Index i = 0; i < b.values.size(); ++i) t += fmt::format("{:a}\n", b.values(i));
+  }
   t += "end\n";
   return t;
 }
@@ -228,7 +232,21 @@ Checkpoint read_checkpoint(const std::filesystem::path& path) {
     next();
     c.start.state(i) = number(line);
   }
-  next();
+  // the named blocks, each "block NAME COUNT" and its numbers, then the end
+  for (next(); line.compare(0, 6, "block ") == 0; next()) {
+    std::istringstream words(line.substr(6));
+    CheckpointBlock b;
+    std::string count_word, rest;
+    if (!(words >> b.name >> count_word) || (words >> rest)) fail("expected 'block NAME COUNT', got '" + line + "'");
+    const long size = static_cast<long>(number(count_word));
+    if (size < 0 || size > 100000000) fail("bad block size " + count_word);
+    b.values.resize(size);
+    for (long i = 0; i < size; ++i) {
+      next();
+      b.values(i) = number(line);
+    }
+    c.blocks.push_back(std::move(b));
+  }
   if (line != "end") fail("expected 'end', got '" + line + "'");
   return c;
 }

@@ -73,11 +73,19 @@ double hours_per_revolution(const WearModel& m);
 
 // ---- checkpoint ----
 
+// what a life's rate carries from step to step besides the state, as a named block of numbers (the cam's: the
+// rate at the state and its producer's warm starts, session/cam_life_run.cpp)
+struct CheckpointBlock {
+  std::string name;  // one word
+  Eigen::VectorXd values;
+};
+
 struct Checkpoint {
   std::uint64_t case_hash = 0;  // the case as read (files and profiles): a resume of another case is refused
   LifeStart start;
   int snapshots_written = 0;    // snapshot files written so far (the initial one included)
   double wall_s = 0;            // run time so far
+  std::vector<CheckpointBlock> blocks;  // after the state, in this order; none for the wear loop's life
 };
 
 // the case's fingerprint: its file's text, the model's state size and its profiles
