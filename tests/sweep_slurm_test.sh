@@ -26,7 +26,8 @@ wait_job() {
 }
 
 # rollwear on the PATH of the jobs (sbatch passes its environment on), as the docs say
-export PATH="$(dirname "$exe"):$PATH"
+PATH="$(dirname "$exe"):$PATH"
+export PATH
 sweep="$src/cases/sweep-grid.yaml"
 out="$dir/out/sweep-grid"
 mkdir -p "$dir/logs" "$out"
