@@ -158,6 +158,7 @@ WearModel make_wear_model(const WearCase& c) {
   // cycles with friction: the exact theory's transient duty cycle costs a minute per solve)
   m.fidelity = k.solver.fidelity;
   m.correction_tolerance = k.solver.correction_tolerance;
+  m.error_estimate = k.solver.error_estimate;
   if (m.fidelity != contact::Fidelity::Exact && !m.transient && k.friction.mu > 0) {
     WearCase exact = c;
     exact.contact.solver.normal = contact::NormalChoice::Halfspace;
@@ -669,7 +670,7 @@ LifeResult run_life(const WearModel& m, const WearCase& c, const LifeStart& star
     life.contact = wear_rate(m, state, cache).contact;
     // the fast fidelity's error estimate: one exact-physics solve on the final worn state (the corrected one's
     // is its last correction's); a solve that fails leaves it NaN
-    if (m.fidelity == contact::Fidelity::Fast && !m.exact_physics.empty()) try {
+    if (m.fidelity == contact::Fidelity::Fast && m.error_estimate && !m.exact_physics.empty()) try {
         cache.error = fast_model_error(m, N, state, cache);
         ++cache.correction.solves;
       } catch (const std::exception& e) {

@@ -75,6 +75,7 @@ struct WearModel {
   // exact physics on a schedule, correction_tolerance) or exact (the models above are the exact physics)
   contact::Fidelity fidelity = contact::Fidelity::Fast;
   double correction_tolerance = 0.1;
+  bool error_estimate = true;  // the fast fidelity's estimate at the end of the life (solver.error_estimate)
   // the exact physics on the same case (half-space normal, Kalker's exact theory, the case's grid): the
   // corrected fidelity's corrections and the fast fidelity's error estimate at the end of the life; empty for
   // the exact fidelity, transient duty cycles and collectives (no estimate)

@@ -247,6 +247,7 @@ void read_solver(YamlMap& m, SolverSection& s) {
   m.optional("ny", s.ny, in_closed(1, 4096));
   read_choice(m, "fidelity", s.fidelity, parse_fidelity);
   m.optional("correction_tolerance", s.correction_tolerance, in_closed(1e-6, 10));
+  m.optional("error_estimate", s.error_estimate);
   // the exact fidelity is the exact physics: the half-space normal problem and Kalker's exact theory
   if (s.fidelity == Fidelity::Exact) {
     if (s.normal != NormalChoice::Auto && s.normal != NormalChoice::Halfspace)

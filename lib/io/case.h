@@ -85,6 +85,9 @@ struct SolverSection {
   // corrected: the exact physics is solved again once the worn depth has moved by more than this fraction of
   // the contact's approach at the last correction somewhere, or the fast model's power by more than it
   double correction_tolerance = 0.1;
+  // the fast fidelity's error estimate at the end of a wear life: one exact-physics solve on the final worn state
+  // (about 70 ms on the paper's roller at 80 x 80); false leaves it out (large sweeps)
+  bool error_estimate = true;
 };
 struct TransientSection {  // the 'transient' command's run (lib/tangential/satran.h)
   TransientScheme scheme = TransientScheme::Shift;  // shift | upwind | lax-friedrichs
