@@ -164,6 +164,7 @@ WearModel make_wear_model(const WearCase& c) {
     exact.contact.solver.normal = contact::NormalChoice::Halfspace;
     exact.contact.solver.tangential = contact::TangentialScheme::Exact;
     exact.contact.solver.fidelity = contact::Fidelity::Exact;
+    if (k.solver.correction_grid > 0) exact.contact.solver.nx = exact.contact.solver.ny = k.solver.correction_grid;
     m.exact_physics.push_back(make_wear_model(exact));
   }
   return m;

@@ -248,6 +248,7 @@ void read_solver(YamlMap& m, SolverSection& s) {
   read_choice(m, "fidelity", s.fidelity, parse_fidelity);
   m.optional("correction_tolerance", s.correction_tolerance, in_closed(1e-6, 10));
   m.optional("error_estimate", s.error_estimate);
+  m.optional("correction_grid", s.correction_grid, in_closed(0, 4096));
   // the exact fidelity is the exact physics: the half-space normal problem and Kalker's exact theory
   if (s.fidelity == Fidelity::Exact) {
     if (s.normal != NormalChoice::Auto && s.normal != NormalChoice::Halfspace)

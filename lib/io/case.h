@@ -85,6 +85,8 @@ struct SolverSection {
   // corrected: the exact physics is solved again once the worn depth has moved by more than this fraction of
   // the contact's approach at the last correction somewhere, or the fast model's power by more than it
   double correction_tolerance = 0.1;
+  // the exact physics' grid (n x n) for the corrections and the error estimate; 0 = the case's nx x ny
+  int correction_grid = 0;
   // the fast fidelity's error estimate at the end of a wear life: one exact-physics solve on the final worn state
   // (about 70 ms on the paper's roller at 80 x 80); false leaves it out (large sweeps)
   bool error_estimate = true;
