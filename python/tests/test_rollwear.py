@@ -131,6 +131,9 @@ def test_run_equals_the_command_line(source, cli, tmp_path):
     assert r["summary"]["exact_solves"] == int(report["exact_solves"]) == 1
     for key in ("error_estimate_N", "error_power_rel", "error_power_l1"):
         assert r["summary"][key] == float(report[key]), key
+    text = (tmp_path / "summary.csv").read_text()
+    assert "# models: normal auto, tangential relaxed, fidelity fast\n" in text
+    assert f"per-strip power L1 {report['error_power_l1']}\n" in text
     body1 = r["profiles"]["body1"]
     last = sorted((tmp_path / "snapshots").glob("snapshot_*_body1.csv"))[-1]
     worn = read_csv(last)
