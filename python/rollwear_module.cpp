@@ -480,6 +480,13 @@ py::dict run_result(const CaseSource& source) {
   summary["rejected"] = life.counters.rejected;
   summary["normal_solves"] = life.counters.normal_solves;
   summary["tangential_solves"] = life.counters.tangential_solves;
+  // which models ran and the fast models' error estimate: report.txt's keys (wear::fidelity_report)
+  summary["tangential_model"] = contact::to_string(m->scheme);
+  summary["fidelity"] = contact::to_string(m->fidelity);
+  summary["exact_solves"] = life.exact_solves;
+  summary["error_estimate_N"] = life.error.N;
+  summary["error_power_rel"] = life.error.power_rel;
+  summary["error_power_l1"] = life.error.power_l1;
   py::dict out;
   out["summary"] = summary;
   out["steps"] = steps;

@@ -245,6 +245,21 @@ void read_solver(YamlMap& m, SolverSection& s) {
   read_choice(m, "tangential", s.tangential, parse_tangential_scheme, 200);
   m.optional("nx", s.nx, in_closed(1, 4096));
   m.optional("ny", s.ny, in_closed(1, 4096));
+  read_choice(m, "fidelity", s.fidelity, parse_fidelity);
+  m.optional("correction_tolerance", s.correction_tolerance, in_closed(1e-6, 10));
+  m.optional("error_estimate", s.error_estimate);
+  m.optional("correction_grid", s.correction_grid, in_closed(0, 4096));
+  // the exact fidelity is the exact physics: the half-space normal problem and Kalker's exact theory
+  if (s.fidelity == Fidelity::Exact) {
+    if (s.normal != NormalChoice::Auto && s.normal != NormalChoice::Halfspace)
+      m.fail("normal", "solver.normal, solver.fidelity: the exact fidelity solves the half-space, not " +
+                           std::string(to_string(s.normal)) + " (leave solver.normal out)");
+    if (s.tangential != kDefaultTangentialScheme && s.tangential != TangentialScheme::Exact)
+      m.fail("tangential", "solver.tangential, solver.fidelity: the exact fidelity solves Kalker's exact theory, not " +
+                               to_string(s.tangential) + " (leave solver.tangential out)");
+    s.normal = NormalChoice::Halfspace;
+    s.tangential = TangentialScheme::Exact;
+  }
 }
 
 }  // namespace

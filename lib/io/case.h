@@ -30,6 +30,7 @@
 #include "lib/normal/normal.h"
 #include "lib/history.h"
 #include "lib/errors.h"
+#include "lib/fidelity.h"
 #include "lib/io/key_locations.h"
 #include "lib/patch.h"
 #include "lib/normal/profile.h"
@@ -78,6 +79,17 @@ struct SolverSection {
   // relaxed (the default: lib/tangential/relaxed.h) | consistent | classic | exact
   TangentialScheme tangential = kDefaultTangentialScheme;
   int nx = 80, ny = 80;
+  // a wear life's physics (lib/fidelity.h, docs/fidelity.md): fast (the models above), corrected (them,
+  // corrected by the exact physics on a schedule) or exact (sets normal halfspace and tangential exact)
+  Fidelity fidelity = Fidelity::Fast;
+  // corrected: the exact physics is solved again once the worn depth has moved by more than this fraction of
+  // the contact's approach at the last correction somewhere, or the fast model's power by more than it
+  double correction_tolerance = 0.1;
+  // the exact physics' grid (n x n) for the corrections and the error estimate; 0 = the case's nx x ny
+  int correction_grid = 0;
+  // the fast fidelity's error estimate at the end of a wear life: one exact-physics solve on the final worn state
+  // (about 70 ms on the paper's roller at 80 x 80); false leaves it out (large sweeps)
+  bool error_estimate = true;
 };
 struct TransientSection {  // the 'transient' command's run (lib/tangential/satran.h)
   TransientScheme scheme = TransientScheme::Shift;  // shift | upwind | lax-friedrichs

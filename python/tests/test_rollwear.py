@@ -125,6 +125,15 @@ def test_run_equals_the_command_line(source, cli, tmp_path):
     report = dict(line.split(": ", 1) for line in (tmp_path / "report.txt").read_text().splitlines() if ": " in line)
     assert r["summary"]["ended_by"] == report["ended_by"] == "edge"
     assert r["summary"]["revolutions"] == float(report["revolutions"])
+    # which models ran and the fast models' error estimate (docs/fidelity.md), as report.txt says
+    for key in ("tangential_model", "fidelity"):
+        assert r["summary"][key] == report[key]
+    assert r["summary"]["exact_solves"] == int(report["exact_solves"]) == 1
+    for key in ("error_estimate_N", "error_power_rel", "error_power_l1"):
+        assert r["summary"][key] == float(report[key]), key
+    text = (tmp_path / "summary.csv").read_text()
+    assert "# models: normal auto, tangential relaxed, fidelity fast\n" in text
+    assert f"per-strip power L1 {report['error_power_l1']}\n" in text
     body1 = r["profiles"]["body1"]
     last = sorted((tmp_path / "snapshots").glob("snapshot_*_body1.csv"))[-1]
     worn = read_csv(last)
