@@ -86,7 +86,7 @@ TEST(FilmThickness, PointFormulaSaturatesInEllipticityAsALineContact) {
 // At the end of Hamrock and Dowson's range (k near 8) an elongated Hertz contact's centre line carries
 // the line load w' = (pi/2) p0 a = 3F/(4b); Dowson and Higginson's line formula on it and Hamrock and
 // Dowson's point formula are two independent fits, and agree there to a few per cent (measured: the
-// paper's rollers with Ry1 = 0.5 m, k = b/a = 11.3: ratio 1.005, docs/lubrication-and-temperature.md §1).
+// paper's rollers with Ry1 = 0.5 m, k = b/a = 11.3: ratio 1.008, docs/lubrication-and-temperature.md §1).
 TEST(FilmThickness, PointFormulaNearItsRangeEndMatchesLineFormulaOnTheCentreLineLoad) {
   constexpr double kFitsAgree = 0.05;  // two regressions of different numerical solutions, each a few % off them
   const ElasticPair steel{{210e9, 0.28}, {210e9, 0.28}};
