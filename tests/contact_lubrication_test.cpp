@@ -6,6 +6,7 @@
 #include "lib/io/case_run.h"
 #include "lib/io/csv.h"
 #include "lib/elastic.h"
+#include "wear/wear_case.h"
 
 #include <gtest/gtest.h>
 
@@ -120,6 +121,21 @@ TEST(ContactLubrication, TransientRefusesTheSectionsItDoesNotUse) {
     ADD_FAILURE() << "no error";
   } catch (const CaseError& e) {
     EXPECT_NE(std::string(e.what()).find("lubricant: the 'transient' command does not use this section"),
+              std::string::npos) << e.what();
+  }
+}
+
+TEST(ContactLubrication, WearRunRefusesTheSectionsItDoesNotUse) {
+  // the lubricated case with the wear section of cases/paper-wear.yaml (profiles left out: radii only)
+  const std::string text = text_of(kCase) +
+                           "wear:\n"
+                           "  body1: { law: archard, archard_k: 1.0e-4, hardness_Pa: 6.0e9 }\n"
+                           "  revolutions: 1.0e10\n";
+  try {
+    wear::read_wear_case_text(text, "case.yaml", ".");
+    ADD_FAILURE() << "no error";
+  } catch (const CaseError& e) {
+    EXPECT_NE(std::string(e.what()).find("lubricant: the 'run' command does not use this section"),
               std::string::npos) << e.what();
   }
 }
