@@ -524,8 +524,9 @@ void validate_steady(const ContactCase& c) {
 }
 
 void refuse_lubrication_and_thermal(const ContactCase& c, const std::string& command) {
-  for (const char* section : {"lubricant", "thermal"})
-    if ((std::string(section) == "lubricant" && c.lubricant) || (std::string(section) == "thermal" && c.thermal))
+  for (const auto& [section, present] : {std::pair<const char*, bool>{"lubricant", c.lubricant.has_value()},
+                                         {"thermal", c.thermal.has_value()}})
+    if (present)
       throw key_error(c, section, std::string(section) + ": the '" + command + "' command does not use this "
                       "section yet (the film, the regime and the flash temperature are reported by 'contact'); "
                       "remove it");
