@@ -628,7 +628,7 @@ CaseOutcome run_contact_case(const contact::ContactCase& c, const std::string& t
     o.contact = {p.a_m, p.b_m, p.p0_Pa, p.approach_m, t.Fx_N, t.Fy_N, t.Mz_N_m, t.power_W, t.stick_fraction};
     o.status = CaseStatus::Ok;
     if (files) {  // rollwear contact's files
-      out.push_back({dir / "summary.csv", contact::summary_csv(c.name, p, r.problem, t, r.scheme)});
+      out.push_back({dir / "summary.csv", contact::contact_summary_csv(c.name, r)});
       out.push_back({dir / "strips.csv", contact::strips_csv(contact::in_profile_coordinates(r.normal), t)});
       if (fields) out.push_back({dir / "fields.csv", contact::fields_csv(p, t)});
     }

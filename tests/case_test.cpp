@@ -151,8 +151,8 @@ TEST_F(CaseReader, UnknownKeyReportsKeyAndLine) {
             path() + ":6:5: bodies.body2.Rz_m: unknown key, did you mean 'Rx_m'? (valid: E_Pa, Rx_m, Ry_m, nu)");
   // a section that does not exist (yet)
   EXPECT_EQ(error_of(kMinimalCase + "wear: { law: archard }\n"),  // 6
-            path() + ":6:1: wear: unknown key (valid: bodies, friction, inertia, kinematics, load, name, output, "
-                      "profiles, solver, transient)");
+            path() + ":6:1: wear: unknown key (valid: bodies, friction, inertia, kinematics, load, lubricant, "
+                      "name, output, profiles, solver, thermal, transient)");
 }
 
 // The place of an error is data too (CaseError::location), for callers that must not read the message (the

@@ -163,6 +163,7 @@ void validate(const WearCase& c) {
   using contact::where;
   const contact::ContactCase& k = c.contact;
   const WearSection& w = c.wear;
+  contact::refuse_lubrication_and_thermal(k, "run");  // the wear loop does not take the regime yet
   if (!k.profiles)
     throw key_error(k, "wear", "wear, profiles: the worn body needs a lateral profile; give a profiles: "
                     "section (e.g. body1: { crowned: { Ry_m: 0.5, width_m: 0.02 } })");

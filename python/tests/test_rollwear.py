@@ -63,6 +63,20 @@ def test_contact_equals_the_command_line(source, cli, tmp_path, monkeypatch):
     assert r["summary"]["normal_solver"] == "hertz"
 
 
+def test_lubricated_contact_film_and_flash_temperature_equal_the_command_line(source, cli, tmp_path):
+    case = "tests/data/lubrication/paper-lubricated.yaml"
+    r = rollwear.contact(str(source / case), fields=False)
+    p = cli("contact", case, "-o", tmp_path, "--no-fields")
+    assert p.returncode == 0, p.stderr
+    summary = read_csv(tmp_path / "summary.csv")
+    for key in ("entrainment_m_per_s", "Rx_m", "ellipticity_k", "h_min_m", "h_central_m", "lambda", "regime_mu",
+                "regime_wear_factor", "v1_m_per_s", "v2_m_per_s", "flash_max_K", "heat_share_body1",
+                "peclet_body1", "peclet_body2", "contact_temperature_C", "scuffing_margin_K"):
+        assert r["summary"][key] == float(summary[key][0]), key
+    assert r["summary"]["regime"] == summary["regime"][0] == "boundary"
+    assert "h_min_m" not in rollwear.contact(str(source / "cases" / "paper.yaml"), fields=False)["summary"]
+
+
 def test_contact_fields_equal_the_command_lines_and_are_hertz(source, cli, tmp_path):
     r = rollwear.contact(str(source / "cases" / "paper.yaml"))
     s, f = r["summary"], r["fields"]
