@@ -22,6 +22,7 @@ struct ContactOptions {
   std::string case_path;
   std::string output_directory;  // overrides output.directory
   bool no_fields = false;
+  bool no_subsurface = false;  // overrides output.subsurface
 };
 CLI::App* add_contact_command(CLI::App& app, ContactOptions& opt, CommonOptions& common);
 int run_contact_command(const ContactOptions& opt);

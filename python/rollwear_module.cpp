@@ -21,6 +21,7 @@
 #include <filesystem>
 #include <memory>
 #include <mutex>
+#include <array>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -228,14 +229,17 @@ wear::WearCase read_wear(const CaseSource& s) {
 
 // ---- contact -------------------------------------------------------------------------------------------
 
-py::dict contact_result(const CaseSource& source, bool fields) {
+py::dict contact_result(const CaseSource& source, bool fields, bool subsurface) {
   sync_log_level();
   std::optional<contact::ContactCase> c;
   std::optional<contact::ContactRun> r;
+  std::array<contact::BodySubsurface, 2> below;
   {
     py::gil_scoped_release release;
     c.emplace(read_case(source));
-    r.emplace(contact::solve_contact_case(*c, fields));
+    subsurface = subsurface && c->output.subsurface;
+    r.emplace(contact::solve_contact_case(*c, fields || subsurface));  // the subsurface needs the tractions
+    if (subsurface) below = contact::subsurface_of_contact(*c, *r);
   }
   const contact::ContactPatch& p = r->normal.patch;
   const contact::TangentialSolution& s = r->solution;
@@ -311,6 +315,39 @@ py::dict contact_result(const CaseSource& source, bool fields) {
     f["power_W_per_m2"] = array(s.power_W_per_m2);
     f["state"] = array(s.state);
     out["fields"] = f;
+  }
+  if (subsurface) {  // subsurface.csv's maxima and fatigue.csv's values, per body ("body1", "body2")
+    py::dict bodies;
+    for (int k = 0; k < 2; ++k) {
+      const contact::Subsurface& sub = below[k].stresses;
+      py::dict b;
+      b["nu"] = sub.nu;
+      const auto peak = [](const contact::StressPeak& q) {
+        py::dict d;
+        d["value_Pa"] = q.value_Pa, d["x_m"] = q.x_m, d["y_m"] = q.y_m, d["z_m"] = q.z_m;
+        return d;
+      };
+      b["von_mises"] = peak(sub.maxima.von_mises);
+      b["tresca"] = peak(sub.maxima.tresca);
+      b["orthogonal_shear"] = peak(sub.maxima.orthogonal_shear);
+      b["tension"] = peak(sub.maxima.tension);
+      b["compression"] = peak(sub.maxima.compression);
+      if (const std::optional<contact::FatigueIndicators>& fi = below[k].fatigue) {
+        py::dict d;
+        d["shear_yield_Pa"] = fi->shear_yield_Pa;
+        d["contact"] = contact::to_string(fi->contact);
+        d["traction_coefficient"] = fi->traction_coefficient;
+        d["p0_over_k"] = fi->p0_over_k;
+        d["limit_p0_over_k"] = fi->limit_p0_over_k;
+        d["surface_limit"] = fi->surface_limit;
+        d["margin"] = fi->margin;
+        d["FI_surf"] = fi->FI_surf;
+        d["cell_index_max"] = fi->cell_index_max;
+        b["fatigue"] = d;
+      }
+      bodies[k == 0 ? "body1" : "body2"] = b;
+    }
+    out["subsurface"] = bodies;
   }
   return out;
 }
@@ -572,10 +609,10 @@ PYBIND11_MODULE(_rollwear, m) {
   // at exit no message may reach a Python that is going away
   py::module_::import("atexit").attr("register")(py::cpp_function([] { PythonLogSink::closed() = true; }));
 
-  m.def("contact", [](const std::string& c, bool is_text, const std::string& base_dir, bool fields) {
-          return contact_result({c, is_text, base_dir}, fields);
+  m.def("contact", [](const std::string& c, bool is_text, const std::string& base_dir, bool fields, bool subsurface) {
+          return contact_result({c, is_text, base_dir}, fields, subsurface);
         },
-        py::arg("case"), py::arg("is_text"), py::arg("base_dir"), py::arg("fields"));
+        py::arg("case"), py::arg("is_text"), py::arg("base_dir"), py::arg("fields"), py::arg("subsurface"));
   m.def("transient", [](const std::string& c, bool is_text, const std::string& base_dir, bool fields) {
           return transient_result({c, is_text, base_dir}, fields);
         },

@@ -2,6 +2,7 @@
 // cross-key checks of validate(). The generic machinery (marking keys, locations) is yaml_reader.h.
 #include "lib/io/case.h"
 #include "lib/io/case_node.h"
+#include "lib/subsurface/shakedown.h"
 
 #include <algorithm>
 #include <array>
@@ -44,6 +45,7 @@ void read_body(YamlMap& m, BodySection& b, bool with_profiles) {
   else m.required("Ry_m", b.Ry_m, radius);
   m.required("E_Pa", b.E_Pa, positive_finite);
   m.required("nu", b.nu, in_half_open(0, 0.5));
+  m.optional("shear_yield_Pa", b.shear_yield_Pa, in_closed(kShearYieldMin_Pa, kShearYieldMax_Pa));
 }
 
 // ---- lateral profiles ----
@@ -426,6 +428,7 @@ ContactCase read_contact_document(const YAML::Node& doc, const std::string& path
     m.optional_section("output", [&](YamlMap& s) {
       s.optional("directory", c.output.directory);
       s.optional("fields", c.output.fields);
+      s.optional("subsurface", c.output.subsurface);
       s.optional("max_bytes", c.output.max_bytes, positive_finite);
     });
     if (extra) extra(m);

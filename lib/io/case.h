@@ -47,6 +47,9 @@ struct BodySection {                  // bodies.body1 / bodies.body2
   double Rx_m = kFlat, Ry_m = kFlat;  // required (Ry_m: only without profiles:); .inf for flat, negative for concave
   double E_Pa = 0;                    // required
   double nu = 0;                      // required, [0, 0.5)
+  // optional: the shear yield stress k for the fatigue indicators (lib/subsurface/shakedown.h), in
+  // [kShearYieldMin_Pa, kShearYieldMax_Pa]; 0 (absent): none for this body
+  double shear_yield_Pa = 0;
 };
 struct BodiesSection {
   BodySection body1;  // upper body (roller)
@@ -138,6 +141,7 @@ struct ThermalSection {
 struct OutputSection {
   std::string directory;  // default: out/<case name>, relative to the working directory
   bool fields = true;     // write the fields on the grid (fields.csv)
+  bool subsurface = true;  // 'contact': the stresses below the surface (subsurface.csv, subsurface_section.csv)
   double max_bytes = 1024.0 * 1024 * 1024;  // 'transient' refuses a run estimated to write more (1 GiB)
 };
 

@@ -1,5 +1,6 @@
 #include "lib/io/case_run.h"
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 
@@ -33,6 +34,30 @@ ContactRun solve_contact_case(const ContactCase& c, bool fields) {
   if (c.lubricant) r.lubrication = lubrication_of(c, patch);
   if (c.thermal) r.thermal = thermal_of(c, patch, r.solution);
   return r;
+}
+
+std::array<BodySubsurface, 2> subsurface_of_contact(const ContactCase& c, const ContactRun& run,
+                                                    const SubsurfaceOptions& options) {
+  const ContactPatch& patch = run.normal.patch;
+  const double semi_axis = std::min(patch.a_m, patch.b_m);
+  std::array<BodySubsurface, 2> out;
+  const std::array<const BodySection*, 2> bodies = {&c.bodies.body1, &c.bodies.body2};
+  for (int k = 0; k < 2; ++k) {
+    const SurfaceTractions t = surface_tractions(patch, &run.solution, k + 1);
+    // body 2 under the same tractions and Poisson's ratio as body 1 without friction is body 1's twin
+    const bool frictionless = t.shear_x_Pa.size() == 0 ||
+                              (t.shear_x_Pa.abs().maxCoeff() == 0 && t.shear_y_Pa.abs().maxCoeff() == 0);
+    const bool twin = k == 1 && bodies[1]->nu == bodies[0]->nu && frictionless;
+    out[k].stresses = twin ? out[0].stresses : solve_subsurface(t, bodies[k]->nu, semi_axis, options);
+    if (bodies[k]->shear_yield_Pa > 0)
+      out[k].fatigue = fatigue_indicators(patch, run.solution, bodies[k]->shear_yield_Pa);
+    // where: in the profiles' lateral coordinate, as strips.csv's y_m
+    SubsurfaceMaxima& m = out[k].stresses.maxima;
+    for (StressPeak* p : {&m.von_mises, &m.tresca, &m.orthogonal_shear, &m.tension, &m.compression})
+      p->y_m += run.normal.grid_y0_m;
+    if (out[k].fatigue) out[k].fatigue->cell_y_m += run.normal.grid_y0_m;
+  }
+  return out;
 }
 
 ContactLubrication lubrication_of(const ContactCase& c, const ContactPatch& patch) {

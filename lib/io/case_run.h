@@ -3,6 +3,7 @@
 // (python/). The case's tangential model is solved by lib/model/contact_model.h.
 #pragma once
 
+#include <array>
 #include <optional>
 #include <string>
 
@@ -11,6 +12,8 @@
 #include "lib/lubrication/regime.h"
 #include "lib/thermal/flash_temperature.h"
 #include "lib/normal/normal.h"
+#include "lib/subsurface/shakedown.h"
+#include "lib/subsurface/subsurface.h"
 #include "lib/tangential/satran.h"
 #include "lib/tangential/tangential.h"
 
@@ -58,6 +61,19 @@ struct ContactRun {
 // empty; computed anyway with thermal:, whose heat source is the power field). Throws CaseError for bad input, SolverError or NormalSolveError for a
 // solver's failure.
 ContactRun solve_contact_case(const ContactCase& c, bool fields);
+
+// The stresses below the surface of each body under the run's tractions (lib/subsurface/subsurface.h: body 1
+// carries the solution's tractions, body 2 their reverse, each at its own Poisson's ratio; planes to
+// options.depth_over_semi_axis times min(a, b)), and the fatigue indicators of each body with a shear yield
+// stress (bodies.bodyN.shear_yield_Pa; lib/subsurface/shakedown.h). The run must have its fields (solved with
+// fields true), else the tractions are taken as frictionless. [0] is body 1, [1] body 2. The maxima's and the
+// cell index's y are in the profiles' lateral coordinate (strips.csv's y_m); the planes stay on the patch's grid.
+struct BodySubsurface {
+  Subsurface stresses;
+  std::optional<FatigueIndicators> fatigue;
+};
+std::array<BodySubsurface, 2> subsurface_of_contact(const ContactCase& c, const ContactRun& run,
+                                                    const SubsurfaceOptions& options = {});
 
 // the patch with its strips at the profiles' lateral positions (strips.csv's y_m, as `rollwear contact` writes it)
 ContactPatch in_profile_coordinates(const NormalSolution& normal);

@@ -33,6 +33,7 @@
 // The residual of halfspace.h is measured on g at the start of each iteration. When a step clips no
 // cell and loads no overlap, p_new = scale (p - tau t) and so K p_new = scale (K p - tau K t): the
 // next iteration needs no convolution for g. The final residual is always judged on a fresh K p.
+#include "lib/fftw_planner.h"
 #include "lib/normal/halfspace.h"
 #include "lib/numeric.h"
 
@@ -58,12 +59,6 @@ double love_antiderivative(double X, double Y) {
   if (X != 0) G += X * std::asinh(Y / std::abs(X));
   if (Y != 0) G += Y * std::asinh(X / std::abs(Y));
   return G;
-}
-
-// FFTW's planner keeps global state: plans are made and destroyed one at a time
-std::mutex& fftw_planner_mutex() {
-  static std::mutex m;
-  return m;
 }
 
 struct FftwFree {

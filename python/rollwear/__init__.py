@@ -89,12 +89,15 @@ def _source(case, base_dir):
     raise TypeError("rollwear: a case is a path (str, os.PathLike) or a dict")
 
 
-def contact(case, *, fields=True, base_dir=None):
+def contact(case, *, fields=True, subsurface=True, base_dir=None):
     """One steady contact (`rollwear contact`): {"summary": summary.csv's values, "strips": strips.csv's
-    columns, "fields": fields.csv's as (nx, ny) arrays, a[i, j] at x_m[i], y_m[j] (with fields=True)}.
-    base_dir: the folder a dict case's profile files are relative to (default: the working directory)."""
+    columns, "fields": fields.csv's as (nx, ny) arrays, a[i, j] at x_m[i], y_m[j] (with fields=True),
+    "subsurface": {"body1", "body2"}: subsurface.csv's maxima, each {"value_Pa", "x_m", "y_m", "z_m"}, and
+    with the body's shear_yield_Pa fatigue.csv's values as "fatigue" (with subsurface=True and the case's
+    output.subsurface)}. base_dir: the folder a dict case's profile files are relative to (default: the
+    working directory)."""
     text, is_text, base = _source(case, base_dir)
-    return _rollwear.contact(text, is_text, base, fields)
+    return _rollwear.contact(text, is_text, base, fields, subsurface)
 
 
 def transient(case, *, fields=True, base_dir=None):

@@ -47,7 +47,8 @@ PAPER = {  # cases/paper.yaml as a dict
 
 def test_contact_equals_the_command_line(source, cli, tmp_path, monkeypatch):
     monkeypatch.chdir(source)
-    # without fields, as --no-fields (with the fields the steady march sums Fx in another order: 1 ulp apart)
+    # without fields, as --no-fields (both still solve with the fields, which the subsurface stresses need;
+    # with subsurface=False, --no-subsurface, neither would: the march sums Fx in another order, 1 ulp apart)
     r = rollwear.contact("cases/paper.yaml", fields=False)  # the path as written in the issue and the README
     p = cli("contact", "cases/paper.yaml", "-o", tmp_path, "--no-fields")
     assert p.returncode == 0, p.stderr
@@ -61,6 +62,15 @@ def test_contact_equals_the_command_line(source, cli, tmp_path, monkeypatch):
     for key, column in strips.items():
         np.testing.assert_array_equal(r["strips"][key], numbers(column), err_msg=key)
     assert r["summary"]["normal_solver"] == "hertz"
+    # the subsurface maxima, as subsurface.csv's (body, measure) rows
+    maxima = read_csv(tmp_path / "subsurface.csv")
+    assert len(maxima["body"]) == 10
+    for body, measure, value, z in zip(maxima["body"], maxima["measure"], maxima["value_Pa"], maxima["z_m"]):
+        peak = r["subsurface"]["body" + body][measure]
+        assert peak["value_Pa"] == float(value), (body, measure)
+        assert peak["z_m"] == float(z), (body, measure)
+    assert "fatigue" not in r["subsurface"]["body1"]  # no shear_yield_Pa in the case
+    assert "subsurface" not in rollwear.contact("cases/paper.yaml", fields=False, subsurface=False)
 
 
 def test_lubricated_contact_film_and_flash_temperature_equal_the_command_line(source, cli, tmp_path):
