@@ -296,7 +296,7 @@ py::dict contact_result(const CaseSource& source, bool fields) {
 
 // ---- transient -----------------------------------------------------------------------------------------
 
-py::dict transient_result(const CaseSource& source, bool fields) {
+py::dict transient_result(const CaseSource& source, bool fields, bool force) {
   sync_log_level();
   SignalCheck signals;
   std::optional<contact::ContactCase> c;
@@ -309,6 +309,8 @@ py::dict transient_result(const CaseSource& source, bool fields) {
     c.emplace(read_case(source));
     t.emplace(contact::transient_case_of(*c));
     if (!fields) t->settings.snapshot_times_s.clear();  // not computed either
+    // the arrays returned hold every step: refused above output.max_bytes before the run, as the command refuses
+    contact::check_transient_output(*c, *t, fields, force);
     const contact::StepObserver observe = [&](const contact::TransientRecord& r, const Eigen::ArrayXd& power) {
       records.push_back(r);
       strip_power.insert(strip_power.end(), power.data(), power.data() + power.size());
@@ -548,10 +550,10 @@ PYBIND11_MODULE(_rollwear, m) {
           return contact_result({c, is_text, base_dir}, fields);
         },
         py::arg("case"), py::arg("is_text"), py::arg("base_dir"), py::arg("fields"));
-  m.def("transient", [](const std::string& c, bool is_text, const std::string& base_dir, bool fields) {
-          return transient_result({c, is_text, base_dir}, fields);
+  m.def("transient", [](const std::string& c, bool is_text, const std::string& base_dir, bool fields, bool force) {
+          return transient_result({c, is_text, base_dir}, fields, force);
         },
-        py::arg("case"), py::arg("is_text"), py::arg("base_dir"), py::arg("fields"));
+        py::arg("case"), py::arg("is_text"), py::arg("base_dir"), py::arg("fields"), py::arg("force") = false);
   m.def("run", [](const std::string& c, bool is_text, const std::string& base_dir) {
           return run_result({c, is_text, base_dir});
         },

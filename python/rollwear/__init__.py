@@ -97,11 +97,13 @@ def contact(case, *, fields=True, base_dir=None):
     return _rollwear.contact(text, is_text, base, fields)
 
 
-def transient(case, *, fields=True, base_dir=None):
+def transient(case, *, fields=True, base_dir=None, force=False):
     """One transient run (`rollwear transient`): {"summary", "timeseries": timeseries.csv's columns,
-    "strips": {"y_m", "energy_J_per_m", "power_W_per_m" (steps, ny)}, "snapshots": a list of fields}."""
+    "strips": {"y_m", "energy_J_per_m", "power_W_per_m" (steps, ny)}, "snapshots": a list of fields}.
+    A run whose output is estimated above output.max_bytes (default 1 GiB) raises InputError before it
+    starts, as the command refuses it; force=True runs it (`--force`)."""
     text, is_text, base = _source(case, base_dir)
-    return _rollwear.transient(text, is_text, base, fields)
+    return _rollwear.transient(text, is_text, base, fields, bool(force))
 
 
 def run(case, *, base_dir=None):
