@@ -499,7 +499,7 @@ py::dict run_result(const CaseSource& source) {
 
 // runs the sweep into output_directory (written as `rollwear sweep` writes it); returns that folder
 std::string sweep_run(const std::string& path, const std::string& output_directory, int threads, int shard_k,
-                      int shard_n) {
+                      int shard_n, bool force) {
   sync_log_level();
   SignalCheck signals;
   std::string dir;
@@ -517,6 +517,7 @@ std::string sweep_run(const std::string& path, const std::string& output_directo
     dir = o.output_directory.string();
     o.threads = threads > 0 ? threads : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
     o.progress_interval_s = 0.05;
+    o.force = force;  // above session::kSweepMaxCases cases, as --force
     o.cancelled = [&] { return signals.interrupted(); };
     session::run_sweep(s, o);
   } catch (const session::SweepCancelled&) {
@@ -567,5 +568,5 @@ PYBIND11_MODULE(_rollwear, m) {
     if (kind == "runtime_error") throw std::runtime_error("out/x is in use by another rollwear run");
   });
   m.def("sweep", &sweep_run, py::arg("path"), py::arg("output_directory"), py::arg("threads"), py::arg("shard_k"),
-        py::arg("shard_n"));
+        py::arg("shard_n"), py::arg("force") = false);
 }
