@@ -64,6 +64,7 @@ struct SweepOptions {
   std::string shard = "1/1";     // K/N
   int threads = 0;               // 0: every core (std::thread::hardware_concurrency)
   bool quiet = false;
+  bool force = false;            // run a shard of more than session::kSweepMaxCases cases
   std::vector<std::string> merge;  // --merge DIR...
 };
 CLI::App* add_sweep_command(CLI::App& app, SweepOptions& opt, CommonOptions& common);

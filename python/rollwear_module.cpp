@@ -354,7 +354,7 @@ py::dict contact_result(const CaseSource& source, bool fields, bool subsurface) 
 
 // ---- transient -----------------------------------------------------------------------------------------
 
-py::dict transient_result(const CaseSource& source, bool fields) {
+py::dict transient_result(const CaseSource& source, bool fields, bool force) {
   sync_log_level();
   SignalCheck signals;
   std::optional<contact::ContactCase> c;
@@ -367,6 +367,8 @@ py::dict transient_result(const CaseSource& source, bool fields) {
     c.emplace(read_case(source));
     t.emplace(contact::transient_case_of(*c));
     if (!fields) t->settings.snapshot_times_s.clear();  // not computed either
+    // the arrays returned hold every step: refused above output.max_bytes before the run, as the command refuses
+    contact::check_transient_output(*c, *t, fields, force);
     const contact::StepObserver observe = [&](const contact::TransientRecord& r, const Eigen::ArrayXd& power) {
       records.push_back(r);
       strip_power.insert(strip_power.end(), power.data(), power.data() + power.size());
@@ -562,7 +564,7 @@ py::dict run_result(const CaseSource& source) {
 
 // runs the sweep into output_directory (written as `rollwear sweep` writes it); returns that folder
 std::string sweep_run(const std::string& path, const std::string& output_directory, int threads, int shard_k,
-                      int shard_n) {
+                      int shard_n, bool force) {
   sync_log_level();
   SignalCheck signals;
   std::string dir;
@@ -580,6 +582,7 @@ std::string sweep_run(const std::string& path, const std::string& output_directo
     dir = o.output_directory.string();
     o.threads = threads > 0 ? threads : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
     o.progress_interval_s = 0.05;
+    o.force = force;  // above session::kSweepMaxCases cases, as --force
     o.cancelled = [&] { return signals.interrupted(); };
     session::run_sweep(s, o);
   } catch (const session::SweepCancelled&) {
@@ -613,10 +616,10 @@ PYBIND11_MODULE(_rollwear, m) {
           return contact_result({c, is_text, base_dir}, fields, subsurface);
         },
         py::arg("case"), py::arg("is_text"), py::arg("base_dir"), py::arg("fields"), py::arg("subsurface"));
-  m.def("transient", [](const std::string& c, bool is_text, const std::string& base_dir, bool fields) {
-          return transient_result({c, is_text, base_dir}, fields);
+  m.def("transient", [](const std::string& c, bool is_text, const std::string& base_dir, bool fields, bool force) {
+          return transient_result({c, is_text, base_dir}, fields, force);
         },
-        py::arg("case"), py::arg("is_text"), py::arg("base_dir"), py::arg("fields"));
+        py::arg("case"), py::arg("is_text"), py::arg("base_dir"), py::arg("fields"), py::arg("force") = false);
   m.def("run", [](const std::string& c, bool is_text, const std::string& base_dir) {
           return run_result({c, is_text, base_dir});
         },
@@ -630,5 +633,5 @@ PYBIND11_MODULE(_rollwear, m) {
     if (kind == "runtime_error") throw std::runtime_error("out/x is in use by another rollwear run");
   });
   m.def("sweep", &sweep_run, py::arg("path"), py::arg("output_directory"), py::arg("threads"), py::arg("shard_k"),
-        py::arg("shard_n"));
+        py::arg("shard_n"), py::arg("force") = false);
 }

@@ -754,10 +754,10 @@ TEST_F(CaseReader, TypoInARequiredKeyNamesItAndTheClosestKey) {
                                      "section is missing)");
   // inside a section: an optional key misspelt is named with the closest one
   EXPECT_EQ(error_of(kMinimalCase + "solver: { nx: 20, nyy: 20 }\n"),
-            path() + ":6:19: solver.nyy: unknown key, did you mean 'ny'? (valid: correction_grid, correction_tolerance, error_estimate, fidelity, normal, nx, ny, tangential)");
+            path() + ":6:19: solver.nyy: unknown key, did you mean 'ny'? (valid: correction_grid, correction_tolerance, error_estimate, fidelity, max_memory_bytes, normal, nx, ny, tangential)");
   // a key like none: no suggestion
   EXPECT_EQ(error_of(kMinimalCase + "solver: { grid_size: 20 }\n"),
-            path() + ":6:11: solver.grid_size: unknown key (valid: correction_grid, correction_tolerance, error_estimate, fidelity, normal, nx, ny, tangential)");
+            path() + ":6:11: solver.grid_size: unknown key (valid: correction_grid, correction_tolerance, error_estimate, fidelity, max_memory_bytes, normal, nx, ny, tangential)");
 }
 
 // A message never echoes a huge value whole: its first 80 characters and its size.

@@ -1257,6 +1257,23 @@ TEST_F(CommandLine, TransientRefusesAnAbsurdRunUnlessForced) {
   EXPECT_TRUE(fs::exists(out / "timeseries.csv"));
 }
 
+// The size check is the library's (lib/io/case.h), which the Python bindings call too: t_end_s 1e9 is refused
+// before the run at transient.t_end_s's key, naming output.max_bytes; force lets it through (issue 26).
+TEST(TransientOutputCheck, LibraryRefusesAnAbsurdRunUnlessForced) {
+  const ContactCase cc = read_contact_case(std::string(ROLLWEAR_SOURCE_DIR) + "/cases/paper-startup.yaml");
+  TransientCase t = transient_case_of(cc);
+  EXPECT_NO_THROW(check_transient_output(cc, t, true, false));  // the shipped case passes
+  t.settings.t_end_s = 1e9;
+  try {
+    check_transient_output(cc, t, true, false);
+    ADD_FAILURE() << "t_end_s 1e9 passed the library's check";
+  } catch (const CaseError& e) {
+    EXPECT_EQ(e.location.key, "transient.t_end_s");
+    EXPECT_NE(std::string(e.what()).find("output.max_bytes = 1073741824"), std::string::npos) << e.what();
+  }
+  EXPECT_NO_THROW(check_transient_output(cc, t, true, true));
+}
+
 // the output of a run is at most its estimate (an upper bound: every number at full precision)
 TEST_F(CommandLine, TransientOutputIsWithinItsEstimate) {
   const fs::path c = dir_ / "startup.yaml";

@@ -109,7 +109,49 @@ bool needs_fields(const std::optional<WearLaw>& law) {
 
 }  // namespace
 
+double estimate_memory_bytes(const WearCase& c) {
+  const contact::ContactCase& k = c.contact;
+  if (!k.profiles) return 0;
+  double per_condition = 0;
+  const double lc = c.wear.smoothing_wavelength_m;
+  for (const auto& [law, profile] : {std::pair{&c.wear.body1, &k.profiles->profiles.body1},
+                                     std::pair{&c.wear.body2, &k.profiles->profiles.body2}}) {
+    if (!*law) continue;
+    const double n = static_cast<double>(profile->y_m.size());
+    // the kernel's values (8 bytes each) and its per-row indices (first, count: 4 bytes each; offset: 8)
+    per_condition += 8 * smoothing_kernel_entries(profile->y_m, lc) + 16 * n + 8 * kStateCopiesPerNode * n;
+  }
+  const double conditions = c.wear.collective.empty() ? 1.0 : static_cast<double>(c.wear.collective.size());
+  return per_condition * conditions;
+}
+
+void check_memory(const WearCase& c) {
+  const contact::ContactCase& k = c.contact;
+  const double bytes = estimate_memory_bytes(c);
+  const double limit = k.solver.max_memory_bytes;
+  if (!(bytes > limit)) return;
+  // the wearing body of the larger kernel names the profile
+  const double lc = c.wear.smoothing_wavelength_m;
+  const double entries1 = c.wear.body1 ? smoothing_kernel_entries(k.profiles->profiles.body1.y_m, lc) : -1;
+  const double entries2 = c.wear.body2 ? smoothing_kernel_entries(k.profiles->profiles.body2.y_m, lc) : -1;
+  const int body = entries1 >= entries2 ? 1 : 2;
+  const contact::Profile& p = body == 1 ? k.profiles->profiles.body1 : k.profiles->profiles.body2;
+  const double entries = std::max(entries1, entries2);
+  const std::string key = fmt::format("profiles.body{}", body);
+  throw contact::key_error(
+      k, key,
+      fmt::format("{}, wear.smoothing_wavelength_m, solver.max_memory_bytes: the run would need about {:.3g} bytes "
+                  "({:.3g} GB), more than solver.max_memory_bytes = {:.0f}: the smoothing filter of body {}'s {} nodes "
+                  "pairs each with {:.0f} others within wear.smoothing_wavelength_m = {:.3g} m{}; give a profile of "
+                  "fewer nodes, a shorter smoothing_wavelength_m, or raise solver.max_memory_bytes",
+                  key, bytes, bytes / 1e9, limit, body, p.y_m.size(),
+                  p.y_m.size() > 0 ? entries / static_cast<double>(p.y_m.size()) : 0.0, c.wear.smoothing_wavelength_m,
+                  c.wear.collective.empty() ? std::string()
+                                            : fmt::format(", for each of {} running conditions", c.wear.collective.size())));
+}
+
 WearModel make_wear_model(const WearCase& c) {
+  check_memory(c);  // before any kernel is built
   if (!c.wear.collective.empty()) return make_collective_model(c);
   validate(c);
   const contact::ContactCase& k = c.contact;

@@ -85,7 +85,20 @@ struct WearModel {
   int energy_index() const { return n1 + n2; }
 };
 
-// throws contact::CaseError for what validate(WearCase) refuses
+// The memory a wear run needs, estimated before its model is built (bytes): what grows with the worn
+// profiles' nodes. Per wearing body of n nodes, the smoothing kernel (wear/profile_update.h: 8 bytes per pair
+// of nodes within wear.smoothing_wavelength_m, smoothing_kernel_entries, n^2 lc / width on uniform nodes)
+// and kStateCopiesPerNode copies of the state and the worn profile; times the running conditions of a load
+// collective (each has its own model). The grid's fields (solver.nx x ny) do not grow with the nodes and
+// are not counted.
+constexpr double kStateCopiesPerNode = 32;  // doubles per node: integrator stages, the cache's worn profiles, rows
+double estimate_memory_bytes(const WearCase& c);
+
+// estimate_memory_bytes against the case's solver.max_memory_bytes: contact::CaseError at the worn profile's
+// line naming profiles.body<N>, wear.smoothing_wavelength_m and solver.max_memory_bytes when above it
+void check_memory(const WearCase& c);
+
+// throws contact::CaseError for what validate(WearCase) refuses, and check_memory's refusal
 WearModel make_wear_model(const WearCase& c);
 
 // the unworn state (zeros)

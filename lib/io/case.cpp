@@ -304,6 +304,7 @@ void read_solver(YamlMap& m, SolverSection& s) {
     s.normal = NormalChoice::Halfspace;
     s.tangential = TangentialScheme::Exact;
   }
+  m.optional("max_memory_bytes", s.max_memory_bytes, positive_finite);
 }
 
 }  // namespace
@@ -680,6 +681,18 @@ TransientOutputEstimate estimate_transient_output(const TransientCase& t, bool f
                          (fields ? static_cast<double>(s.snapshot_times_s.size()) * kSnapshotColumns * cells : 0);
   e.bytes = numbers * kCsvBytesPerNumber;
   return e;
+}
+
+void check_transient_output(const ContactCase& c, const TransientCase& t, bool fields, bool force) {
+  const TransientOutputEstimate estimate = estimate_transient_output(t, fields);
+  if (force || !(estimate.bytes > c.output.max_bytes)) return;
+  throw key_error(
+      c, "transient.t_end_s",
+      fmt::format("transient.t_end_s, transient.dt_s, solver.nx, solver.ny, output.max_bytes: the run would write "
+                  "about {:.3g} bytes ({:.3g} GB: about {:.3g} steps of {} strips), more than output.max_bytes = {:.0f}; "
+                  "shorten t_end_s, coarsen the grid, raise output.max_bytes, or run with --force (Python: force=True)",
+                  estimate.bytes, estimate.bytes / 1e9, estimate.steps, transient_grid(t).y_m.size(),
+                  c.output.max_bytes));
 }
 
 CaseError transient_error(const ContactCase& c, const SettingError& e) {

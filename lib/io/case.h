@@ -96,6 +96,9 @@ struct SolverSection {
   // the fast fidelity's error estimate at the end of a wear life: one exact-physics solve on the final worn state
   // (about 70 ms on the paper's roller at 80 x 80); false leaves it out (large sweeps)
   bool error_estimate = true;
+  // a run whose memory is estimated above this is refused before it starts, naming the keys that drive the
+  // estimate (a wear run: wear/wear_loop.h estimate_memory_bytes); 2 GiB
+  double max_memory_bytes = 2.0 * 1024 * 1024 * 1024;
 };
 struct TransientSection {  // the 'transient' command's run (lib/tangential/satran.h)
   TransientScheme scheme = TransientScheme::Shift;  // shift | upwind | lax-friedrichs
@@ -238,6 +241,11 @@ struct TransientOutputEstimate {
 // bytes of one number at full precision with its separator: "-1.2345678901234567e-05," (lib/io/csv.h)
 constexpr double kCsvBytesPerNumber = 24;
 TransientOutputEstimate estimate_transient_output(const TransientCase& t, bool fields);
+// The estimate against output.max_bytes, before the run: a CaseError at transient.t_end_s's line naming the keys
+// that drive it (transient.t_end_s, transient.dt_s, solver.nx, solver.ny, output.max_bytes) unless force. The
+// command line (which also checks the free disk: session/output_folder.h) and the Python bindings (whose
+// arrays hold the same numbers as doubles, a third of the text's bytes) share it.
+void check_transient_output(const ContactCase& c, const TransientCase& t, bool fields, bool force);
 
 // run_transient's refusal of the settings (a SettingError: the setting's key as data) as a CaseError at
 // the case's key and line: "FILE:LINE:COL: transient.dt_s: ... the largest allowed dt_s is ... s"

@@ -100,11 +100,13 @@ def contact(case, *, fields=True, subsurface=True, base_dir=None):
     return _rollwear.contact(text, is_text, base, fields, subsurface)
 
 
-def transient(case, *, fields=True, base_dir=None):
+def transient(case, *, fields=True, base_dir=None, force=False):
     """One transient run (`rollwear transient`): {"summary", "timeseries": timeseries.csv's columns,
-    "strips": {"y_m", "energy_J_per_m", "power_W_per_m" (steps, ny)}, "snapshots": a list of fields}."""
+    "strips": {"y_m", "energy_J_per_m", "power_W_per_m" (steps, ny)}, "snapshots": a list of fields}.
+    A run whose output is estimated above output.max_bytes (default 1 GiB) raises InputError before it
+    starts, as the command refuses it; force=True runs it (`--force`)."""
     text, is_text, base = _source(case, base_dir)
-    return _rollwear.transient(text, is_text, base, fields)
+    return _rollwear.transient(text, is_text, base, fields, bool(force))
 
 
 def run(case, *, base_dir=None):
@@ -116,15 +118,16 @@ def run(case, *, base_dir=None):
     return _rollwear.run(text, is_text, base)
 
 
-def sweep(path, *, output_dir=None, threads=0, shard=(1, 1)):
+def sweep(path, *, output_dir=None, threads=0, shard=(1, 1), force=False):
     """A sweep (`rollwear sweep`, docs/sweeps.md): runs it into its folder (output_dir, else the sweep's
     output.directory, else out/<sweep file stem>; a finished case is not run again) and returns
     {"directory": the folder, "results": results.csv's columns (numbers as arrays, ended_by, status and
     message as lists of str)}. threads 0: every core. Ctrl-C stops it after the running cases; the same
-    call resumes it."""
+    call resumes it. A shard of more than 10000 cases raises InputError before any case is read, unless
+    force=True (`--force`)."""
     k, n = shard
     directory = _rollwear.sweep(os.fspath(path), os.fspath(output_dir) if output_dir is not None else "",
-                                int(threads), int(k), int(n))
+                                int(threads), int(k), int(n), bool(force))
     return {"directory": directory, "results": read_results(os.path.join(directory, "results.csv"))}
 
 

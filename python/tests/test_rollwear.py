@@ -233,6 +233,39 @@ def test_ctrl_c_interrupts_a_long_call_with_the_gil_released():
     timer.join()
 
 
+def test_transient_refuses_an_absurd_run_at_once_as_the_command_line():
+    # t_end_s 1e9 s at 1 m/s: about 1.8e14 shift steps; the arrays would grow without bound (issue 26). The
+    # library's check of output.max_bytes refuses it before the run, naming the key and its line.
+    case = dict(PAPER, transient={"t_end_s": 1.0e9})
+    start = time.monotonic()
+    with pytest.raises(rollwear.InputError) as e:
+        rollwear.transient(case, fields=False)
+    assert time.monotonic() - start < 2
+    assert e.value.key == "transient.t_end_s"
+    assert "output.max_bytes = 1073741824" in str(e.value) and "force=True" in str(e.value)
+    # a small run above a small limit is refused too, and runs with force=True
+    small = dict(PAPER, transient={"t_end_s": 2.0e-5}, output={"max_bytes": 1000})
+    with pytest.raises(rollwear.InputError):
+        rollwear.transient(small, fields=False)
+    assert rollwear.transient(small, fields=False, force=True)["summary"]["steps"] > 0
+
+
+def test_wear_run_refuses_above_solver_max_memory_bytes(source, tmp_path):
+    # the memory a wear run needs (the smoothing kernel of the worn profile's nodes) is estimated before the
+    # run and refused above solver.max_memory_bytes, naming the profile's key (issue 26)
+    text = (source / "cases" / "paper-wear.yaml").read_text().replace(
+        "solver:     { normal: auto, nx: 80, ny: 80 }", "solver:     { normal: auto, nx: 80, ny: 80, max_memory_bytes: 1.0e4 }")
+    assert "max_memory_bytes" in text
+    case = tmp_path / "limited-wear.yaml"
+    case.write_text(text)
+    start = time.monotonic()
+    with pytest.raises(rollwear.InputError) as e:
+        rollwear.run(case)
+    assert time.monotonic() - start < 2
+    assert e.value.key == "profiles.body1"
+    assert "solver.max_memory_bytes = 10000" in str(e.value)
+
+
 def test_messages_go_to_python_logging(source, caplog):
     with caplog.at_level(logging.DEBUG, logger="rollwear"):
         rollwear.contact(str(source / "cases" / "paper.yaml"), fields=False)
