@@ -505,6 +505,27 @@ TEST_F(CommandLine, TransientOnSmallStartupWritesEveryTable) {
   EXPECT_EQ(std::distance(fs::directory_iterator(bare), fs::directory_iterator()), 3);
 }
 
+// cases/roller-spinup.yaml: the roller at rest slides over the whole contact (|Fx| = mu F) until its
+// surface catches up with the path; with omega1 = mu F R1 t / J1 (docs/physics.md §4.5) that is at
+// t* = J1 V2 / (mu F R1^2) = 0.2192 ms. The run's first steps build the tractions up from none (stick at
+// the leading edge): that is not the end of gross sliding.
+TEST_F(CommandLine, TransientGrossSlidingEndsWhenTheRollerCatchesUpWithThePath) {
+  constexpr double kJ1 = 3.9458e-5, kR1 = 0.020, kMuF = 0.3 * 1500, kV2 = 1.0, kDt = 2.0e-6;  // the case's
+  const double t_catch_s = kJ1 * kV2 / (kMuF * kR1 * kR1);
+  const fs::path out = dir_ / "spin";
+  const ProcessResult r = rollwear("transient " + quoted(kSource / "cases" / "roller-spinup.yaml") + " -o " +
+                                       quoted(out) + " --no-fields -q --log-level warn",
+                                   dir_);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::vector<std::string> summary = lines_of(read_text(out / "summary.csv"));
+  ASSERT_EQ(summary.size(), 2u);
+  const double end_s = std::strtod(split(summary[1])[14].c_str(), nullptr);
+  // the first step off the bound: the one that reaches t* or the next (the force leaves mu F within a step)
+  EXPECT_GE(end_s, t_catch_s) << summary[1];
+  EXPECT_LE(end_s, t_catch_s + 2 * kDt) << summary[1];
+  EXPECT_NE(r.out.find("ended at t = 0.00022 s (step 110: |F| < mu F)"), std::string::npos) << r.out;
+}
+
 TEST_F(CommandLine, TransientCflBreachExitsTwoNamingDtAndAllowedStep) {
   const fs::path case_path = dir_ / "breach.yaml";
   std::ofstream(case_path) << "bodies:\n"                                                        // 1

@@ -102,8 +102,8 @@ std::string snapshot_csv(const Grid& grid, const Snapshot& s);
 //   name,scheme,nx,ny,steps,t_end_s,q_end_m,dissipated_J,Fx_N,Fy_N,Mz_N_m,power_W,stick_fraction,
 //   omega1_rad_per_s,sliding_end_s,end_step,fallback_steps
 // Fx_N ... omega1_rad_per_s: the run's end values, result.end (the last whole step's record, not the
-// step cut short to end at t_end_s), whose number is end_step; sliding_end_s: t_s of the first step
-// with stick_fraction > 0 (the end of gross sliding), nan if no step had stick; fallback_steps: the
+// step cut short to end at t_end_s), whose number is end_step; sliding_end_s: the end of gross sliding,
+// GrossSliding::end_s (lib/tangential/satran.h), nan if the contact never slid whole or slid to the end; fallback_steps: the
 // shift run's steps that ran upwind at CFL < 1.
 std::string transient_summary_csv(const std::string& name, TransientScheme scheme, const TransientResult& result,
                                   double sliding_end_s);
