@@ -67,15 +67,16 @@ void read_lift(YamlMap& s, CamCase& c, double table_tolerance) {
     return;
   DwellRiseDwellReturn d;
   std::string rise_law, return_law;
-  // a segment's law, parsed once as it is read into `law`
+  // a segment's law, parsed once as it is read into `law`; a rise or a return is no dwell (the reader adds
+  // what it got)
   const auto law_name = [](SegmentLaw& law) {
     return [&law](const std::string& v) -> std::string {
       try {
         law = parse_segment_law(v);
-        return law == SegmentLaw::Dwell ? "must be cycloidal, polynomial-345 or harmonic" : "";
-      } catch (const std::invalid_argument& e) {
-        return e.what();
+      } catch (const std::invalid_argument&) {
+        law = SegmentLaw::Dwell;
       }
+      return law == SegmentLaw::Dwell ? "must be cycloidal, polynomial-345 or harmonic" : "";
     };
   };
   s.required("rise_law", rise_law, law_name(d.rise_law));

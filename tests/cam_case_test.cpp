@@ -86,7 +86,24 @@ TEST_F(CamCaseTest, UnknownKeysAndBadValuesNameFileLineAndKey) {
   t = shipped_with("  mu: 0.1", "  mu: -0.1");
   expect_case_error(f, t, "cam.mu", line_of(t, "  mu: -0.1"), "must be in [0, 2]");
   t = shipped_with("    rise_law: cycloidal", "    rise_law: parabolic");
-  expect_case_error(f, t, "cam.lift.rise_law", line_of(t, "parabolic"), "must be one of");
+  expect_case_error(f, t, "cam.lift.rise_law", line_of(t, "parabolic"), "must be cycloidal, polynomial-345 or harmonic");
+}
+
+// a segment law the lift does not know is named once, with the laws a rise or a return can take: not dwell,
+// which it refuses there
+TEST_F(CamCaseTest, UnknownRiseLawListsTheLawsARiseTakesOnce) {
+  const fs::path f = dir_ / "cam.yaml";
+  for (const std::string law : {"cycloid", "dwell"}) {
+    const std::string t = shipped_with("    rise_law: cycloidal", "    rise_law: " + law);
+    expect_case_error(f, t, "cam.lift.rise_law: must be cycloidal, polynomial-345 or harmonic, got '" + law + "'",
+                      line_of(t, "rise_law: " + law));
+    try {
+      cam::read_cam_case(f.string());
+    } catch (const contact::CaseError& e) {
+      const std::string what = e.what();
+      EXPECT_EQ(what.find("got"), what.rfind("got")) << what;
+    }
+  }
 }
 
 // cam.tangential.scheme chooses the tangential model as a wear case's solver.tangential does: relaxed by default,
