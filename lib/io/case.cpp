@@ -446,7 +446,20 @@ void validate(const ContactCase& c) {
   }
 }
 
-void validate_steady(const ContactCase& c) {
+void validate_steady(const ContactCase& c, SteadyRunner runner) {
+  if (runner == SteadyRunner::WearRun) {
+    for (const auto& [h, key] : {std::pair<const History*, const char*>{&c.load.normal_load_N, "load.normal_load_N"},
+                                 {&c.kinematics.speed_m_per_s, "kinematics.speed_m_per_s"},
+                                 {&c.kinematics.xi, "kinematics.xi"},
+                                 {&c.kinematics.eta, "kinematics.eta"},
+                                 {&c.kinematics.phi_per_m, "kinematics.phi_per_m"}})
+      if (h->value.empty() || !is_constant(*h))
+        throw key_error(c, key, std::string(key) + ": a history runs as a duty cycle, which needs a transient: "
+                        "section (e.g. transient: { scheme: shift, t_end_s: 0.5 }); steady running needs a constant");
+    if (c.inertia)
+      throw key_error(c, "inertia", "inertia: a wear run has no roller inertia");
+    return;
+  }
   steady_value(c, c.load.normal_load_N, "load.normal_load_N");
   steady_value(c, c.kinematics.speed_m_per_s, "kinematics.speed_m_per_s");
   steady_value(c, c.kinematics.xi, "kinematics.xi");

@@ -144,8 +144,11 @@ bool given(const ContactCase& c, const std::string& key);
 
 // cross-key checks of any case (read_contact_case runs them); throws CaseError naming every key involved
 void validate(const ContactCase& c);
-// what the steady 'contact' command needs besides: every history constant, no inertia
-void validate_steady(const ContactCase& c);
+// what steady running needs besides: every history constant, no inertia. Who runs it steadily: the
+// 'contact' command (the refusal points to 'transient'), or a wear run's steady condition (it points to
+// the condition's transient: section, its duty cycle)
+enum class SteadyRunner { ContactCommand, WearRun };
+void validate_steady(const ContactCase& c, SteadyRunner runner = SteadyRunner::ContactCommand);
 // what the 'transient' command needs besides: a transient: section
 void validate_transient(const ContactCase& c);
 
