@@ -37,6 +37,8 @@ CLI::App* add_contact_command(CLI::App& app, ContactOptions& opt, CommonOptions&
   sub->add_option("-o,--output", opt.output_directory,
                   "Output directory (default: the case's output.directory, else out/<case name>)");
   sub->add_flag("--no-fields", opt.no_fields, "Do not write fields.csv (the per-cell fields)");
+  sub->add_flag("-q,--quiet", opt.quiet,
+                "No progress line on stderr: contact shows none (taken as run, transient and sweep take it)");
   add_log_level_option(*sub, common);
   return sub;
 }

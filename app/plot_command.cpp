@@ -10,6 +10,9 @@ CLI::App* add_plot_command(CLI::App& app, PlotOptions& opt) {
                                              "revolutions, written to OUTPUT_DIR/plots/; of a sweep's folder: the life "
                                              "against each varied key and its distribution (docs/sweeps.md)");
   sub->add_option("output_dir", opt.output_dir, "The folder a 'rollwear run' wrote, e.g. out/paper-wear")->required();
+  sub->add_flag("-q,--quiet", opt.quiet,
+                "No progress line on stderr: plot shows none (taken as run, transient and sweep take it); the "
+                "PNGs written are still listed on stdout");
   return sub;
 }
 

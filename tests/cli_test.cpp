@@ -388,6 +388,28 @@ TEST_F(CommandLine, HelpMentionsEveryOption) {
     EXPECT_NE(contact.out.find(word), std::string::npos) << word << " missing from:\n" << contact.out;
 }
 
+// -q is every command's: contact, cam and plot take it as run, transient and sweep do (they show no progress line)
+TEST_F(CommandLine, EveryCommandTakesQuiet) {
+  for (const std::string command : {"contact", "transient", "run", "cam", "sweep", "plot"}) {
+    const ProcessResult help = rollwear(command + " --help", dir_);
+    EXPECT_EQ(help.exit_code, 0) << command;
+    EXPECT_NE(help.out.find("-q,--quiet"), std::string::npos) << command << ":\n" << help.out;
+  }
+  const ProcessResult contact = rollwear("contact -q " + quoted(kSource / "cases" / "paper.yaml") + " -o " +
+                                             quoted(dir_ / "c") + " --no-fields --log-level warn",
+                                         dir_);
+  EXPECT_EQ(contact.exit_code, 0) << contact.err;
+  EXPECT_NE(contact.out.find("peak pressure"), std::string::npos) << contact.out;  // the summary still printed
+  const ProcessResult cam = rollwear("cam -q " + quoted(kSource / "cases" / "cam-follower.yaml") + " -o " +
+                                         quoted(dir_ / "cam") + " --log-level warn",
+                                     dir_);
+  EXPECT_EQ(cam.exit_code, 0) << cam.err;
+  EXPECT_TRUE(fs::exists(dir_ / "cam" / "revolution.csv"));
+  const ProcessResult plot = rollwear("plot -q " + quoted(dir_ / "none"), dir_);
+  EXPECT_EQ(plot.exit_code, 2) << plot.err;
+  EXPECT_EQ(plot.err.find("not expected"), std::string::npos) << plot.err;  // refused for the folder, not for -q
+}
+
 TEST_F(CommandLine, VersionPrintsVersion) {
   const ProcessResult r = rollwear("--version", dir_);
   EXPECT_EQ(r.exit_code, 0);
