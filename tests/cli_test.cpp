@@ -7,6 +7,7 @@
 #include "tests/temp_dir.h"
 #include <fcntl.h>
 #include <sys/file.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <csignal>
 #include <cstdio>
@@ -27,6 +28,7 @@
 #include "lib/errors.h"
 #include "lib/normal/hertz.h"
 #include "lib/tangential/satran.h"
+#include "session/output_folder.h"
 #include "tests/test_text.h"
 
 namespace contact {
@@ -148,6 +150,40 @@ TEST_F(AtomicWrite, StreamedFileAppearsWholeOnlyWhenCommitted) {
   EXPECT_FALSE(fs::exists(tmp));
   EXPECT_EQ(read_text(p), "step\n1\n");
   EXPECT_EQ(std::distance(fs::directory_iterator(dir_ / "run"), fs::directory_iterator()), 2);
+}
+
+// A signal that ends the process (the program's handler: session/output_folder.h) while write_files_atomic is
+// writing leaves none of its temporaries (a checkpoint.txt.tmp.PID once outlived a SIGINT). Constructed so that
+// the signal falls inside the write: the second file's temporary is a FIFO, whose opening for writing blocks
+// (no reader comes), so the child is held after the first temporary is written and before any rename.
+TEST_F(AtomicWrite, ASignalDuringTheWriteLeavesNoTemporary) {
+  int go[2];
+  ASSERT_EQ(::pipe(go), 0);
+  const pid_t pid = ::fork();
+  ASSERT_GE(pid, 0);
+  if (pid == 0) {
+    ::close(go[1]);
+    session::interrupted::say_on_signal("");  // installs the handler as every command does
+    char c = 0;
+    if (::read(go[0], &c, 1) != 1) ::_exit(3);
+    write_files_atomic({{dir_ / "a.csv", "a\n"}, {dir_ / "b.csv", "b\n"}});
+    ::_exit(0);
+  }
+  ::close(go[0]);
+  const fs::path tmp_a = dir_ / ("a.csv.tmp." + std::to_string(pid)), tmp_b = dir_ / ("b.csv.tmp." + std::to_string(pid));
+  ASSERT_EQ(::mkfifo(tmp_b.c_str(), 0600), 0);
+  ASSERT_EQ(::write(go[1], "x", 1), 1);
+  for (int k = 0; k < 1000 && !fs::exists(tmp_a); ++k) ::usleep(10000);
+  EXPECT_TRUE(fs::exists(tmp_a));  // the child is inside the write
+  ::usleep(20000);                 // and held at the FIFO
+  ::kill(pid, SIGINT);
+  int status = 0;
+  ASSERT_EQ(::waitpid(pid, &status, 0), pid);
+  ::close(go[1]);
+  EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGINT) << status;
+  std::vector<std::string> left;
+  for (const auto& e : fs::directory_iterator(dir_)) left.push_back(e.path().filename().string());
+  EXPECT_TRUE(left.empty()) << left.front();
 }
 
 // a 3 x 2 patch and solution with distinct values in every cell

@@ -45,6 +45,7 @@ class StreamedFile {
   void close();  // flushes and closes; throws naming path on failure
 
   std::filesystem::path path_, tmp_;
+  int in_flight_slot_ = -1;  // tmp_'s registration for unlink_temporaries_in_flight
   std::ofstream out_;
   bool committed_ = false;
 };
@@ -53,6 +54,12 @@ class StreamedFile {
 // writing (disk full, no permission) replaces none of them. Streamed files are closed first and
 // renamed with the others.
 void write_files_atomic(const std::vector<OutputFile>& files, const std::vector<StreamedFile*>& streamed = {});
+
+// Unlinks every temporary file that write_files_atomic or a StreamedFile has open at this moment (each is
+// registered from before it is created until it is renamed or removed). Async-signal-safe (atomic flags,
+// fixed buffers, unlink(2)): for a handler that ends the process on a signal (session/output_folder.h), so
+// that no temporary outlives the stop, whichever write the signal fell into.
+void unlink_temporaries_in_flight() noexcept;
 
 // fields.csv: one row per grid cell, strip by strip (j outer, i inner):
 //   x_m,y_m,pressure_Pa,tau_x_Pa,tau_y_Pa,slip_x_m_per_s,slip_y_m_per_s,power_W_per_m2,state
