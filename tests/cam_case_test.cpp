@@ -106,6 +106,31 @@ TEST_F(CamCaseTest, UnknownRiseLawListsTheLawsARiseTakesOnce) {
   }
 }
 
+// Plausibility bounds on the lengths, forces and moduli refuse a unit slip at its key, naming the slip: a 40 m
+// base circle (millimetres written as metres) stalled the roller (exit 1); a roller 2 pm wide was solved
+// (p0 = 3.5e17 Pa). The shipped values sit well inside every bound.
+TEST_F(CamCaseTest, ImplausibleValuesNameTheirKeyAndTheLikelySlip) {
+  const fs::path f = dir_ / "cam.yaml";
+  struct Slip {
+    std::string from, to, key, slip;
+  };
+  for (const Slip& k : std::vector<Slip>{
+           {"  base_radius_m: 0.040", "  base_radius_m: 40", "cam.base_radius_m", "millimetres written as metres?"},
+           {"    width_m: 0.011", "    width_m: 2.0e-12", "cam.roller.width_m", "a slip in the exponent"},
+           {"    width_m: 0.014", "    width_m: 14", "cam.track.width_m", "millimetres written as metres?"},
+           {"    radius_m: 0.013", "    radius_m: 13", "cam.roller.radius_m", "millimetres written as metres?"},
+           {"    E_Pa: 2.1e11\n    nu: 0.3\n    inertia", "    E_Pa: 210\n    nu: 0.3\n    inertia",
+            "cam.roller.E_Pa", "GPa or MPa written as Pa"},
+           {"    lift_m: 0.010", "    lift_m: 1.0e-8", "cam.lift.lift_m", "millimetres converted to metres twice?"},
+           {"    preload_N: 150", "    preload_N: 1.5e9", "cam.follower.preload_N", "a slip in the exponent"},
+           {"    moving_mass_kg: 0.4", "    moving_mass_kg: 400000", "cam.follower.moving_mass_kg",
+            "grams written as kilograms?"}}) {
+    const std::string t = shipped_with(k.from, k.to);
+    const std::string to_line = k.to.substr(0, k.to.find('\n'));
+    expect_case_error(f, t, k.key + ": is not plausible: must be in [", line_of(t, to_line), k.slip);
+  }
+}
+
 // cam.tangential.scheme chooses the tangential model as a wear case's solver.tangential does: relaxed by default,
 // consistent or exact on request (the shipped case asks for consistent: docs/cam-follower.md §9); classic and a
 // misspelling refused at the key's line

@@ -446,6 +446,23 @@ TEST_F(CommandLine, EveryCommandTakesQuiet) {
   EXPECT_EQ(plot.err.find("not expected"), std::string::npos) << plot.err;  // refused for the folder, not for -q
 }
 
+// a cam case with its base circle in millimetres written as metres: bad input at the key (exit 2), not a roller
+// that stalls (exit 1)
+TEST_F(CommandLine, CamRefusesAUnitSlipAtItsKey) {
+  std::string text = read_text(kSource / "cases" / "cam-follower.yaml");
+  text.replace(text.find("base_radius_m: 0.040"), 20, "base_radius_m: 40");
+  std::ofstream(dir_ / "cam.yaml") << text;
+  for (const std::string command : {"cam", "run"}) {
+    const ProcessResult r = rollwear(command + " -q " + quoted(dir_ / "cam.yaml") + " -o " + quoted(dir_ / "o"), dir_);
+    EXPECT_EQ(r.exit_code, 2) << command << ": " << r.err;
+    EXPECT_NE(r.err.find("cam.yaml:14:18: cam.base_radius_m: is not plausible: must be in [0.0001, 10] m "
+                         "(millimetres written as metres?), got 40"),
+              std::string::npos)
+        << command << ": " << r.err;
+  }
+  EXPECT_FALSE(fs::exists(dir_ / "o"));
+}
+
 TEST_F(CommandLine, VersionPrintsVersion) {
   const ProcessResult r = rollwear("--version", dir_);
   EXPECT_EQ(r.exit_code, 0);
