@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """The wear life of the paper's roller (cases/paper-wear.yaml) against its normal load, plotted with matplotlib.
 
-    PYTHONPATH=build/release/python python3 python/examples/life_vs_load.py [life_vs_load.png]
+    scripts/python python/examples/life_vs_load.py [life_vs_load.png]
 
 The case is a dict here, so the load is one key to change. The lives run on a thread pool: rollwear releases
 the GIL while it computes, so they run on all cores. For many cases, or to resume, `rollwear sweep` (or
