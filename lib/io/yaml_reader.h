@@ -166,7 +166,9 @@ inline auto in_half_open(double lo, double hi) {  // [lo, hi)
 enum class Quantity { Length, Force, Modulus, Mass, Stiffness };
 inline auto plausible(Quantity q, double lo, double hi) {
   return [q, lo, hi](double v) -> std::string {
-    if (!std::isfinite(v)) return "must be finite";
+    // a sign or a non-number first, as positive_finite and nonnegative_finite say it
+    if (!std::isfinite(v) || (lo > 0 && v <= 0) || (lo >= 0 && v < 0))
+      return lo > 0 ? "must be > 0 and finite" : "must be >= 0 and finite";
     if (v >= lo && v <= hi) return "";
     const bool high = v > hi;
     const char* unit = "m";

@@ -173,6 +173,14 @@ def test_sweep_arguments_are_checked_as_the_command_line_checks_them(source, tmp
     np.testing.assert_array_equal(s["results"]["index"], [1])
 
 
+def test_a_unit_slip_is_refused_by_the_library_as_by_the_command_line():
+    # E in GPa written as Pa: the reader's plausibility bound, the same in Python as in the program
+    bodies = dict(PAPER["bodies"], body1=dict(PAPER["bodies"]["body1"], E_Pa=210))
+    with pytest.raises(rollwear.InputError) as e:
+        rollwear.contact(dict(PAPER, bodies=bodies))
+    assert e.value.key == "bodies.body1.E_Pa" and "GPa or MPa written as Pa" in str(e.value), str(e.value)
+
+
 def test_a_cam_case_is_refused_naming_where_it_runs(source):
     cam = source / "cases" / "cam-follower.yaml"
     line = 1 + next(i for i, l in enumerate(cam.read_text().splitlines()) if l.startswith("cam:"))
