@@ -32,6 +32,9 @@ CLI::App* add_contact_command(CLI::App& app, ContactOptions& opt, CommonOptions&
       "A contact that reaches a body's edge (the end of its profile) is a warning line in the summary; the\n"
       "outputs are written and the exit status stays 0 (if its normal solve converged; an unconverged one,\n"
       "at an edge or not, is exit 1).\n"
+      "With a lubricant: section the summary adds the EHL film thickness, the film parameter lambda and the\n"
+      "regime with its friction and wear factors; with a thermal: section the flash temperature (Blok's\n"
+      "partition) and, with critical_temperature_C, the scuffing margin (docs/lubrication-and-temperature.md).\n"
       "Exit status: 0 success, 2 bad input (case file, options), 1 any other failure.");
   sub->add_option("case", opt.case_path, "Case file (YAML), e.g. cases/paper.yaml")->required();
   sub->add_option("-o,--output", opt.output_directory,
@@ -75,6 +78,29 @@ void print_contact_summary(const ContactCase& c, const NormalSolution& normal, c
   fmt::print("  stick fraction     {:.4f}\n", s.stick_fraction);
 }
 
+// the film and the regime (lubricant:), the flash temperature (thermal:)
+void print_lubrication_and_thermal(const ContactRun& run) {
+  if (const auto& l = run.lubrication) {
+    fmt::print("  EHL film (Hamrock-Dowson, Rx = {:.4g} mm, k = {:.3g}{}, u = {:.4g} m/s)\n", l->Rx_m * 1e3,
+               l->film.ellipticity_k, l->within_fit_range ? "" : ", outside the fitted 1-8", l->entrainment_m_per_s);
+    fmt::print("  film thickness  h_min = {:.4g} um, h_c = {:.4g} um\n", l->film.h_min_m * 1e6,
+               l->film.h_central_m * 1e6);
+    fmt::print("  film parameter  lambda = {:.4g}: {} regime, mu = {:.4g}, wear factor = {:.4g}"
+               " (the solve above uses friction.mu)\n",
+               l->lambda, to_string(l->regime), l->mu, l->wear_factor);
+  }
+  if (const auto& t = run.thermal) {
+    const FlashTemperature& f = t->flash;
+    fmt::print("  flash temperature  max {:.4g} K above bulk (Blok: {:.3g} of the heat into body 1; "
+               "Peclet L1 = {:.3g}, L2 = {:.3g})\n",
+               f.max_rise_K, f.share_body1, f.peclet_body1, f.peclet_body2);
+    if (t->contact_temperature_C) fmt::print("  contact temperature  {:.4g} C\n", *t->contact_temperature_C);
+    if (t->scuffing_margin_K)
+      fmt::print("  scuffing margin    {:.4g} K below Blok's critical temperature{}\n", *t->scuffing_margin_K,
+                 *t->scuffing_margin_K < 0 ? " (past it: scuffing expected)" : "");
+  }
+}
+
 }  // namespace
 
 int run_contact_command(const ContactOptions& opt) {
@@ -91,12 +117,13 @@ int run_contact_command(const ContactOptions& opt) {
   // every output computed before anything is written
   const std::filesystem::path dir = session::output_directory(opt.output_directory, c.output.directory, c.name);
   std::vector<OutputFile> files = {
-      {dir / "summary.csv", summary_csv(c.name, patch, problem, solution, scheme)},
+      {dir / "summary.csv", contact_summary_csv(c.name, run)},
       {dir / "strips.csv", strips_csv(in_profile_coordinates(normal), solution)},
   };
   if (fields) files.push_back({dir / "fields.csv", fields_csv(patch, solution)});
 
   print_contact_summary(c, normal, problem, solution, scheme, exact_solve);
+  print_lubrication_and_thermal(run);
   const session::OutputLock lock(dir);
   write_files_atomic(files);
   if (!fields) std::filesystem::remove(dir / "fields.csv");  // an earlier run's: not this run's fields

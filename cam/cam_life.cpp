@@ -187,6 +187,13 @@ DissipationOf CamLifeSetup::producer() const {
   };
 }
 
+ProducerMemory CamLifeSetup::memory() const {
+  ProducerMemory m;
+  m.save = [w = worn] { return w->memory(); };
+  m.restore = [w = worn](const std::vector<double>& v) { w->restore(v); };
+  return m;
+}
+
 std::unique_ptr<CamLifeSetup> set_up_cam_life(const std::string& name, const CamModel& model, const CamWearSpec& spec,
                                               const RollerDynamicsSettings& dynamics) {
   auto setup = std::make_unique<CamLifeSetup>();
@@ -334,6 +341,16 @@ class CamRate {
     return last_f_;
   }
 
+  // the rate at h when it is the last one evaluated (a step's end: its slope), else nullptr
+  const Eigen::VectorXd* last_at(const Eigen::VectorXd& h) const {
+    return last_x_.size() == h.size() && last_x_ == h ? &last_f_ : nullptr;
+  }
+  // the rate at h as an earlier evaluation made it (a checkpoint's), asked for again without the producer
+  void remember(const Eigen::VectorXd& h, const Eigen::VectorXd& f) {
+    last_x_ = h;
+    last_f_ = f;
+  }
+
   double energy_scale = 0;  // e = E energy_scale
   long solved = 0;          // calls of the producer
 
@@ -375,12 +392,19 @@ wear::LifeProblem cam_life_problem(const CamLifeModel& m, CamRate& rate, const L
 
 // the driver's start from the caller's (a checkpoint's content, checked against the model), the producer's
 // revolutions solved counted as the life's tangential solves
-wear::LifeStart driver_start(const CamLifeModel& m, const CamLifeStart& start, CamRate& rate) {
+// (its rate at the state remembered, so that the first step does not evaluate it again, and the producer's
+// memory restored: the uninterrupted life's next evaluation starts from the same)
+wear::LifeStart driver_start(const CamLifeModel& m, const CamLifeStart& start, CamRate& rate,
+                             const ProducerMemory& memory) {
   const Layout lay = layout(m.grid);
-  if (start.x.size() != lay.size() || !(start.energy_scale > 0) || !(start.N >= 0) || !(start.N <= m.revolutions))
+  if (start.x.size() != lay.size() || !(start.energy_scale > 0) || !(start.N >= 0) || !(start.N <= m.revolutions) ||
+      (start.rate.size() != 0 && start.rate.size() != lay.size()))
     throw std::invalid_argument(fmt::format("cam life: the start (state of {} values at N {:.10g}, energy scale "
-                                            "{:.3g}) is not one of this model (state of {} values)",
-                                            start.x.size(), start.N, start.energy_scale, lay.size()));
+                                            "{:.3g}, rate of {} values) is not one of this model (state of {} values)",
+                                            start.x.size(), start.N, start.energy_scale, start.rate.size(),
+                                            lay.size()));
+  if (!start.producer_memory.empty() && memory.restore) memory.restore(start.producer_memory);
+  if (start.rate.size() != 0) rate.remember(start.x, start.rate);
   rate.energy_scale = start.energy_scale;
   wear::LifeStart s;
   s.N = start.N;
@@ -396,7 +420,8 @@ wear::LifeStart driver_start(const CamLifeModel& m, const CamLifeStart& start, C
 // the step as the cam's hooks see it: the worn state, its depth, lift loss and energy, and the start that
 // continues the life from there
 CamLifeStep cam_life_step(const CamLifeModel& m, const wear::LifeStepEnd& e, const CamWearState& s,
-                          const LiftLossProbe& lift_loss, double energy_scale) {
+                          const LiftLossProbe& lift_loss, const CamRate& rate, const ProducerMemory& memory) {
+  const double energy_scale = rate.energy_scale;
   const wear::LifeCounters counters = e.counters();
   CamLifeStep step;
   step.step = counters.steps;
@@ -413,6 +438,8 @@ CamLifeStep cam_life_step(const CamLifeModel& m, const wear::LifeStepEnd& e, con
   step.resume.rejected = counters.rejected;
   step.resume.rhs_evals = counters.rhs_evals;
   step.resume.revolutions_solved = counters.tangential_solves;
+  if (const Eigen::VectorXd* f = rate.last_at(*e.state)) step.resume.rate = *f;
+  if (memory.save) step.resume.producer_memory = memory.save();
   return step;
 }
 
@@ -441,7 +468,7 @@ CamLifeResult finish_cam_life(const CamLifeModel& m, const wear::LifeOutcome& ou
 }  // namespace
 
 CamLifeResult run_cam_life(const CamLifeModel& m, const DissipationOf& dissipation, const CamLifeHooks& hooks,
-                           const CamLifeStart& start) {
+                           const CamLifeStart& start, const ProducerMemory& memory) {
   check_life_model(m);
   CamRate rate(m, dissipation);
   const LiftLossProbe lift_loss(m.unworn, m.grid, m.samples);
@@ -451,7 +478,7 @@ CamLifeResult run_cam_life(const CamLifeModel& m, const DissipationOf& dissipati
   // scale (and fails early on a bad producer)
   wear::LifeStart from;
   if (start.x.size() > 0) {
-    from = driver_start(m, start, rate);
+    from = driver_start(m, start, rate, memory);
   } else {
     from.state = Eigen::VectorXd::Zero(layout(m.grid).size());
     if (hooks.on_snapshot) hooks.on_snapshot(0, unworn_state(m.grid));
@@ -474,7 +501,7 @@ CamLifeResult run_cam_life(const CamLifeModel& m, const DissipationOf& dissipati
   if (hooks.on_step || hooks.stop_after)
     driver.on_step = [&](const wear::LifeStepEnd& e) {
       const CamWearState s = state_of(m.grid, *e.state);
-      const CamLifeStep step = cam_life_step(m, e, s, lift_loss, rate.energy_scale);
+      const CamLifeStep step = cam_life_step(m, e, s, lift_loss, rate, memory);
       if (hooks.on_step) hooks.on_step(step);
       return !(hooks.stop_after && hooks.stop_after(step));
     };

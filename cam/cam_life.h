@@ -128,17 +128,27 @@ CamLifeModel make_cam_life_model(const std::string& name, const CamWearSpec& spe
                                  double circumference_m, const RevolutionDissipation& rev,
                                  std::vector<LiftLossSample> samples);
 
+// A producer with a memory (WornRevolution's warm starts: what one evaluation leaves to the next), as numbers:
+// save gives it, restore puts it back. Both empty: a producer without one (a function of the state alone).
+struct ProducerMemory {
+  std::function<std::vector<double>()> save;
+  std::function<void(const std::vector<double>&)> restore;
+};
+
 // Where a life starts: the unworn state (x empty, the default), or an accepted step's end saved by a
 // checkpoint (CamLifeStep::resume; docs/cam-follower.md §13, "Checkpoint and resume"). It holds everything
-// run_cam_life carries from step to step, so a fixed-stepping life resumed repeats the uninterrupted one's
-// arithmetic, except the producer's own memory (WornRevolution's per-angle warm starts, which a new process
-// does not have: they move the rates at the contact solves' tolerance).
+// run_cam_life and its producer carry from step to step: a fixed-stepping life resumed from it repeats the
+// uninterrupted one's arithmetic, to the bit.
 struct CamLifeStart {
   double N = 0;
   Eigen::VectorXd x;          // the integrated state: track map (column-major) | roller | scaled energy
   double energy_scale = 0;    // e = E energy_scale, fixed by the unworn revolution's rate
   double next_step = 0;       // adaptive: the step ARKODE would have tried next (0: its estimate)
   long steps = 0, rejected = 0, rhs_evals = 0, revolutions_solved = 0;  // the life's so far
+  // the rate at x as the step evaluated it (the next step's slope; sized as x), empty: evaluated again. With a
+  // producer that has a memory it is not a function of x alone, and evaluating it again would move the memory
+  Eigen::VectorXd rate;
+  std::vector<double> producer_memory;  // the producer's memory after that evaluation (ProducerMemory::save)
 };
 
 struct CamLifeStep {
@@ -174,11 +184,12 @@ struct CamLifeResult {
 };
 
 // Integrates from the unworn state (or start: no snapshot at 0 then, the snapshots after start.N only) to the
-// first limit (located) or the budget. Throws std::invalid_argument for a bad model or a start of another
-// size; an exception of the producer or the integrator's failure ends the life Failed with its message (the
-// state the last accepted step's).
+// first limit (located) or the budget. memory: the producer's, saved into each step's CamLifeStart and restored
+// from start's. Throws std::invalid_argument for a bad model or a start of another size (its rate or its
+// producer's memory included); an exception of the producer or the integrator's failure ends the life Failed
+// with its message (the state the last accepted step's).
 CamLifeResult run_cam_life(const CamLifeModel& m, const DissipationOf& dissipation, const CamLifeHooks& hooks = {},
-                           const CamLifeStart& start = {});
+                           const CamLifeStart& start = {}, const ProducerMemory& memory = {});
 
 // The life's report (report.txt, and printed): the keys every life writes (wear::life_report_text, its numbers
 // to 6 digits), then the cam's own: speed_rad_per_s, lift_loss_m, lift_loss_at_deg, worn_volume_track_m3,
@@ -203,6 +214,7 @@ struct CamLifeSetup {
   CamLifeModel life;
   std::shared_ptr<WornRevolution> worn;  // the producer's evaluator (its statistics: worn->stats())
   DissipationOf producer() const;
+  ProducerMemory memory() const;         // the evaluator's (WornRevolution::memory, restore)
 };
 // Throws CamError for a design the model refuses (the caller places it in the case), std::runtime_error
 // when the roller's motion is not periodic, and what the solvers throw.

@@ -6,6 +6,7 @@
 #include <functional>
 #include <limits>
 #include <stdexcept>
+#include <string>
 
 #include "cam/cam_life.h"
 #include "lib/normal/normal.h"
@@ -70,6 +71,41 @@ WornRevolution::WornRevolution(const CamModel& m, const Revolution& r, const Rol
   solved_track_z_.resize(angles_.size());
   if (options_.skip_stride < 1 || !(options_.skip_power_rtol >= 0))
     throw std::invalid_argument("WornRevolution: skip_stride must be >= 1 and skip_power_rtol >= 0");
+}
+
+std::vector<double> WornRevolution::memory() const {
+  const WornRevolutionStats& t = stats_;
+  std::vector<double> m = {static_cast<double>(t.evaluations),     static_cast<double>(t.same_input_angles),
+                           static_cast<double>(t.angles),          static_cast<double>(t.contacts_solved),
+                           static_cast<double>(t.approach_evaluations), static_cast<double>(t.creep_evaluations),
+                           static_cast<double>(t.cold_retries),    static_cast<double>(t.interpolated_angles)};
+  m.reserve(kMemoryHead + kMemoryPerAngle * angles_.size());
+  for (const Angle& a : angles_) {
+    m.push_back(a.approach_m);
+    m.push_back(a.approach_slope);
+    m.push_back(a.xi);
+    m.push_back(a.xi_known ? 1 : 0);
+  }
+  return m;
+}
+
+void WornRevolution::restore(const std::vector<double>& m) {
+  if (m.size() != kMemoryHead + kMemoryPerAngle * angles_.size())
+    throw std::invalid_argument("WornRevolution: a memory of " + std::to_string(m.size()) + " numbers is not one of " +
+                                std::to_string(angles_.size()) + " angle steps (" +
+                                std::to_string(kMemoryHead + kMemoryPerAngle * angles_.size()) + " numbers)");
+  const auto count = [&](std::size_t i) { return static_cast<long>(m[i]); };
+  stats_ = {count(0), count(1), count(2), count(3), count(4), count(5), count(6), count(7)};
+  for (std::size_t i = 0; i < angles_.size(); ++i) {
+    Angle& a = angles_[i];
+    const double* v = m.data() + kMemoryHead + kMemoryPerAngle * i;
+    a.approach_m = v[0];
+    a.approach_slope = v[1];
+    a.xi = v[2];
+    a.xi_known = v[3] != 0;
+  }
+  // the rows made at an evaluation of the same count are another process's
+  std::fill(track_row_made_.begin(), track_row_made_.end(), -1);
 }
 
 const Eigen::ArrayXd& WornRevolution::track_row_at_nodes(int arc_cell, const CamWearState& s) {

@@ -30,6 +30,7 @@
 
 #include <Eigen/Core>
 
+#include <cstddef>
 #include <vector>
 
 #include "cam/cam_wear.h"
@@ -82,6 +83,16 @@ class WornRevolution {
   RevolutionDissipation operator()(const CamWearState& s);
 
   const WornRevolutionStats& stats() const { return stats_; }
+
+  // What an evaluation leaves to the next: per angle step its warm starts (the approach, the slope, the
+  // creepage and whether it has one) and the statistics so far, as numbers (kMemoryHead statistics, then
+  // kMemoryPerAngle per angle step). Everything else the evaluator keeps is made once or within an
+  // evaluation, so an evaluator restored with another's memory evaluates as that one would, to the bit: a
+  // resumed life's checkpoint holds it (docs/cam-follower.md §13, "Checkpoint and resume"). restore throws
+  // std::invalid_argument for a memory of another size (another revolution's).
+  std::vector<double> memory() const;
+  void restore(const std::vector<double>& memory);
+  static constexpr std::size_t kMemoryHead = 8, kMemoryPerAngle = 4;
 
  private:
   struct Angle {

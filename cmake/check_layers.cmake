@@ -6,7 +6,9 @@
 # the grid, the elastic pair, the patch, histories)
 function(rollwear_stage_rank path out)
   set(rank -1)
-  if(path MATCHES "^lib/normal/")
+  if(path MATCHES "^lib/(normal|lubrication|thermal)/")
+    # the normal problem, and beside it the film thickness and the flash temperature (plain inputs:
+    # radii, loads, a grid and a heat flux)
     set(rank 1)
   elseif(path MATCHES "^lib/tangential/")
     set(rank 2)
@@ -47,7 +49,8 @@ foreach(source IN LISTS sources)
   endforeach()
 endforeach()
 if(violations)
-  message(FATAL_ERROR "Includes against the order of the stages (lib/ base -> lib/normal -> lib/tangential -> "
+  message(FATAL_ERROR "Includes against the order of the stages (lib/ base -> lib/normal, lib/lubrication, lib/thermal -> "
+                      "lib/tangential -> "
                       "lib/model -> lib/io -> wear -> cam -> session -> app, python):\n${violations}")
 endif()
 if(STAMP)

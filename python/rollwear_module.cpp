@@ -294,6 +294,27 @@ py::dict contact_result(const CaseSource& source, bool fields) {
   summary["normal_solver_reason"] = r->normal.reason;
   summary["patches"] = r->normal.patches;
   summary["reaches_edge"] = r->normal.reaches_edge;
+  if (const auto& l = r->lubrication) {  // summary.csv's film columns (lubricant:)
+    summary["entrainment_m_per_s"] = l->entrainment_m_per_s;
+    summary["Rx_m"] = l->Rx_m;
+    summary["ellipticity_k"] = l->film.ellipticity_k;
+    summary["h_min_m"] = l->film.h_min_m;
+    summary["h_central_m"] = l->film.h_central_m;
+    summary["lambda"] = l->lambda;
+    summary["regime"] = contact::to_string(l->regime);
+    summary["regime_mu"] = l->mu;
+    summary["regime_wear_factor"] = l->wear_factor;
+  }
+  if (const auto& t = r->thermal) {  // and its flash temperature columns (thermal:); None where not asked
+    summary["v1_m_per_s"] = t->v1_m_per_s;
+    summary["v2_m_per_s"] = t->v2_m_per_s;
+    summary["flash_max_K"] = t->flash.max_rise_K;
+    summary["heat_share_body1"] = t->flash.share_body1;
+    summary["peclet_body1"] = t->flash.peclet_body1;
+    summary["peclet_body2"] = t->flash.peclet_body2;
+    summary["contact_temperature_C"] = t->contact_temperature_C ? py::cast(*t->contact_temperature_C) : py::none();
+    summary["scuffing_margin_K"] = t->scuffing_margin_K ? py::cast(*t->scuffing_margin_K) : py::none();
+  }
 
   py::dict strips;  // strips.csv's columns; y_m in the profiles' lateral coordinate
   strips["y_m"] = array(Eigen::ArrayXd(p.grid.y_m + r->normal.grid_y0_m));
@@ -510,6 +531,13 @@ py::dict run_result(const CaseSource& source) {
   summary["rejected"] = life.counters.rejected;
   summary["normal_solves"] = life.counters.normal_solves;
   summary["tangential_solves"] = life.counters.tangential_solves;
+  // which models ran and the fast models' error estimate: report.txt's keys (wear::fidelity_report)
+  summary["tangential_model"] = contact::to_string(m->scheme);
+  summary["fidelity"] = contact::to_string(m->fidelity);
+  summary["exact_solves"] = life.exact_solves;
+  summary["error_estimate_N"] = life.error.N;
+  summary["error_power_rel"] = life.error.power_rel;
+  summary["error_power_l1"] = life.error.power_l1;
   py::dict out;
   out["summary"] = summary;
   out["steps"] = steps;

@@ -80,7 +80,11 @@ std::uint64_t cam_case_fingerprint(const std::string& case_path) {
 
 // The cam life's state in the wear loop's checkpoint (wear/wear_output.h, hexadecimal floats: bit-exact):
 // its state is the integrated state followed by the energy scale; rate_evaluations holds revolutions_solved
-// and wall_s the CPU seconds so far.
+// and wall_s the CPU seconds so far; the blocks "rate" (the rate at the state, the next step's slope) and
+// "warm_starts" (the worn revolution's memory: its per-angle warm starts and statistics) are what the rate
+// carries to the next step, so that the resumed life is the uninterrupted one to the bit.
+constexpr const char* kRateBlock = "rate";
+constexpr const char* kWarmStartsBlock = "warm_starts";
 wear::Checkpoint to_checkpoint(std::uint64_t hash, const cam::CamLifeStart& s, int snapshots, double cpu_s) {
   wear::Checkpoint c;
   c.case_hash = hash;
@@ -95,6 +99,11 @@ wear::Checkpoint to_checkpoint(std::uint64_t hash, const cam::CamLifeStart& s, i
   c.start.counters.rate_evaluations = s.revolutions_solved;
   c.snapshots_written = snapshots;
   c.wall_s = cpu_s;
+  if (s.rate.size() > 0) c.blocks.push_back({kRateBlock, s.rate});
+  if (!s.producer_memory.empty())
+    c.blocks.push_back({kWarmStartsBlock, Eigen::Map<const Eigen::VectorXd>(
+                                              s.producer_memory.data(),
+                                              static_cast<Eigen::Index>(s.producer_memory.size()))});
   return c;
 }
 cam::CamLifeStart from_checkpoint(const wear::Checkpoint& c) {
@@ -108,6 +117,10 @@ cam::CamLifeStart from_checkpoint(const wear::Checkpoint& c) {
   s.rejected = c.start.counters.rejected;
   s.rhs_evals = c.start.counters.rhs_evals;
   s.revolutions_solved = c.start.counters.rate_evaluations;
+  for (const wear::CheckpointBlock& b : c.blocks) {
+    if (b.name == kRateBlock) s.rate = b.values;
+    if (b.name == kWarmStartsBlock) s.producer_memory.assign(b.values.data(), b.values.data() + b.values.size());
+  }
   return s;
 }
 
@@ -174,6 +187,10 @@ LifeRunEnd run_cam_life_in_folder(const LifeRunOptions& o) {
     life_csv = folder.table_up_to(start.steps);  // rows after the checkpoint are written again
     spdlog::info("run: resuming at cam revolution {:.6g} (step {}) from {}", start.N, start.steps,
                  folder.checkpoint_path().string());
+    if (start.producer_memory.empty() || start.rate.size() == 0)
+      spdlog::warn("run: {} holds no warm starts (an earlier version's checkpoint): the worn contacts start cold, "
+                   "and the resumed life may end elsewhere than the uninterrupted one would (docs/cam-follower.md §13)",
+                   folder.checkpoint_path().string());
   } else {
     folder.start_afresh(std::regex("(wear_map|roller_wear)_[0-9]{4}\\.csv"));
     life_csv = "# case: " + c.name +
@@ -241,7 +258,7 @@ LifeRunEnd run_cam_life_in_folder(const LifeRunOptions& o) {
   };
   interrupted::defer_next_signal(
       "\nrollwear: interrupted; the life stops after its current step and saves it (a second signal stops at once)\n");
-  const cam::CamLifeResult life = cam::run_cam_life(life_model, setup->producer(), hooks, start);
+  const cam::CamLifeResult life = cam::run_cam_life(life_model, setup->producer(), hooks, start, setup->memory());
   interrupted::stop_deferring();
   if (life.ended_by == wear::LifeEnd::Stopped) {
     save({});

@@ -628,7 +628,7 @@ CaseOutcome run_contact_case(const contact::ContactCase& c, const std::string& t
     o.contact = {p.a_m, p.b_m, p.p0_Pa, p.approach_m, t.Fx_N, t.Fy_N, t.Mz_N_m, t.power_W, t.stick_fraction};
     o.status = CaseStatus::Ok;
     if (files) {  // rollwear contact's files
-      out.push_back({dir / "summary.csv", contact::summary_csv(c.name, p, r.problem, t, r.scheme)});
+      out.push_back({dir / "summary.csv", contact::contact_summary_csv(c.name, r)});
       out.push_back({dir / "strips.csv", contact::strips_csv(contact::in_profile_coordinates(r.normal), t)});
       if (fields) out.push_back({dir / "fields.csv", contact::fields_csv(p, t)});
     }
@@ -756,6 +756,30 @@ class Journal {
   int fd_ = -1;
 };
 
+// OUT/shard.txt: which shard of how many the folder holds ("shard K/N"), written before its first case
+// runs (a finished folder's sweep.txt says it too). Another shard's folder is refused, as is a whole
+// sweep's (shard 1/1) for a shard: its finished cases are not this shard's, and a merge would find them
+// twice.
+void claim_shard_folder(const std::filesystem::path& out, int k, int n, const std::string& sweep_path) {
+  const std::string asked = fmt::format("{}/{}", k, n);
+  for (const char* name : {"shard.txt", "sweep.txt"}) {
+    const std::filesystem::path p = out / name;
+    std::error_code ec;
+    if (!std::filesystem::exists(p, ec)) continue;
+    std::istringstream in(read_text(p));
+    std::string word, held;
+    while (in >> word)
+      if (word == "shard" && in >> held) break;
+    if (held.empty()) continue;
+    if (held != asked)
+      throw CaseError(sweep_path + ": " + out.string() + " holds shard " + held + " of a sweep (" + p.string() +
+                      "), asked for shard " + asked + ": run shard " + held + " there, or give shard " + asked +
+                      " a folder of its own");
+    return;
+  }
+  contact::write_files_atomic({{out / "shard.txt", "shard " + asked + "\n"}});
+}
+
 }  // namespace
 
 SweepRunSummary run_sweep(const Sweep& s, const SweepRunOptions& o) {
@@ -765,6 +789,7 @@ SweepRunSummary run_sweep(const Sweep& s, const SweepRunOptions& o) {
   std::filesystem::create_directories(out);
   remove_stale_temporaries(out);
   const std::vector<SweepCase> cases = validate_cases(s, indices);
+  claim_shard_folder(out, o.shard_k, o.shard_n, s.path);
 
   // what is finished (row.csv next to the same case.yaml, or its row in finished.csv) and what is to run
   const YAML::Node base = load_base_case(s);

@@ -1111,6 +1111,29 @@ TEST_F(CommandLine, RunKilledAndResumedEndsBitIdenticalWithFixedStepping) {
   }
 }
 
+// The corrected fidelity (docs/fidelity.md) keeps its correction in the checkpoint: killed and resumed, a
+// fixed-stepping corrected run ends bit-identical to an uninterrupted one, its exact-physics solves and its error
+// estimate included.
+TEST_F(CommandLine, CorrectedRunKilledAndResumedEndsBitIdentical) {
+  const fs::path c = wear_case(dir_, "corrected.yaml", "fidelity: corrected, correction_tolerance: 0.5, nx: 20, ny: 20",
+                               "stepping: { method: fixed-depth, max_depth_step_m: 1.0e-6 }",
+                               "limits: { max_depth_m: 3.0e-5, edge: true }");
+  const fs::path whole = dir_ / "whole", killed = dir_ / "killed";
+  ASSERT_EQ(rollwear("run " + quoted(c) + " -o " + quoted(whole) + " --log-level error", dir_).exit_code, 0);
+  run_and_kill({"run", c.string(), "-o", killed.string(), "--quiet"}, killed / "checkpoint.txt", 12,
+               dir_ / "killed.log");
+  ASSERT_TRUE(fs::exists(killed / "checkpoint.txt"));
+  const ProcessResult r = rollwear("run " + quoted(c) + " -o " + quoted(killed) + " --resume --log-level error", dir_);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string a = read_text(whole / "report.txt"), b = read_text(killed / "report.txt");
+  EXPECT_EQ(report_value(b, "resumed"), "true");
+  EXPECT_EQ(report_value(a, "fidelity"), "corrected");
+  EXPECT_GT(std::stol(report_value(a, "exact_solves")), 2);
+  for (const char* key : {"ended_by", "revolutions", "max_depth_m", "worn_volume_body1_m3", "dissipated_J", "steps",
+                          "exact_solves", "error_estimate_N", "error_power_rel", "error_power_l1"})
+    EXPECT_EQ(report_value(a, key), report_value(b, key)) << key;
+}
+
 // Adaptive stepping: resumed from the checkpoint, the run restarts ARKODE with the step it had reached;
 // it ends within the tolerance of an uninterrupted run.
 TEST_F(CommandLine, RunKilledAndResumedEndsWithinToleranceWithAdaptiveStepping) {

@@ -387,24 +387,80 @@ TEST_F(SweepFile, BadAxisIsExitTwoBeforeAnyCaseRuns) {
 }
 
 TEST_F(SweepFile, SlurmArrayScriptShardsMergeToTheWholeTable) {
-  // scripts/sweep-slurm.sh as Slurm runs it: each task with its array variables (an array 0-2, so the
-  // script's K counts from SLURM_ARRAY_TASK_MIN), then --merge of the shard folders
+  // scripts/sweep-slurm.sh as Slurm runs it: each task of an array 1-3 with its array variables, then
+  // --merge of the shard folders
   const fs::path sweep = sweep_file("axes:\n  - { key: load.normal_load_N, linear: { from: 1000, to: 2400, count: 8 } }\n");
   const Process whole = rollwear("sweep " + q(sweep) + " -o " + q(dir_ / "whole") + " -q --log-level warn", dir_);
   ASSERT_EQ(whole.exit_code, 0) << whole.err;
-  for (int task = 0; task < 3; ++task) {
-    const std::string command = "SLURM_ARRAY_TASK_ID=" + std::to_string(task) +
-                                " SLURM_ARRAY_TASK_MIN=0 SLURM_ARRAY_TASK_COUNT=3 SLURM_CPUS_PER_TASK=2 ROLLWEAR='" +
-                                std::string(ROLLWEAR_EXE) + "' " + q(kSource / "scripts" / "sweep-slurm.sh") + " " + q(sweep) +
-                                " " + q(dir_ / "array") + " 2>/dev/null";
-    ASSERT_EQ(std::system(command.c_str()), 0) << command;
-  }
+  // task K of an array MIN-MAX (COUNT tasks), as Slurm sets its variables
+  const auto task = [&](int k, int min, int max) {
+    const std::string command = "SLURM_ARRAY_TASK_ID=" + std::to_string(k) + " SLURM_ARRAY_TASK_MIN=" + std::to_string(min) +
+                                " SLURM_ARRAY_TASK_MAX=" + std::to_string(max) + " SLURM_ARRAY_TASK_COUNT=" +
+                                std::to_string(max - min + 1) + " SLURM_CPUS_PER_TASK=2 ROLLWEAR='" + std::string(ROLLWEAR_EXE) +
+                                "' " + q(kSource / "scripts" / "sweep-slurm.sh") + " " + q(sweep) + " " + q(dir_ / "array") +
+                                " 3 >>" + q(dir_ / "tasks.log") + " 2>&1";
+    return std::system(command.c_str());
+  };
+  for (int k = 1; k <= 3; ++k) ASSERT_EQ(task(k, 1, 3), 0) << read_text(dir_ / "tasks.log");
   EXPECT_TRUE(fs::exists(dir_ / "array" / "shard_3" / "results.csv"));
-  const Process merged = rollwear("sweep --merge " + q(dir_ / "array" / "shard_1") + " " + q(dir_ / "array" / "shard_2") +
-                                      " " + q(dir_ / "array" / "shard_3") + " -o " + q(dir_ / "array"),
-                                  dir_);
+  const std::string merge = "sweep --merge " + q(dir_ / "array" / "shard_1") + " " + q(dir_ / "array" / "shard_2") + " " +
+                            q(dir_ / "array" / "shard_3") + " -o " + q(dir_ / "array");
+  const Process merged = rollwear(merge, dir_);
   ASSERT_EQ(merged.exit_code, 0) << merged.err;
   EXPECT_EQ(read_text(dir_ / "array" / "results.csv"), read_text(dir_ / "whole" / "results.csv"));
+
+  // task 2 killed after its first case (its table and a row gone), then submitted again as the docs say,
+  // `sbatch --array=2 ...`: an array of one task, 2-2. It continues shard 2/3 in shard_2.
+  fs::remove(dir_ / "array" / "shard_2" / "results.csv");
+  fs::remove(dir_ / "array" / "shard_2" / "sweep.txt");
+  fs::remove(dir_ / "array" / "shard_2" / "case_0004" / "row.csv");
+  fs::remove(dir_ / "array" / "results.csv");
+  ASSERT_EQ(task(2, 2, 2), 0) << read_text(dir_ / "tasks.log");
+  EXPECT_NE(read_text(dir_ / "tasks.log").find("3 cases in this shard, 1 run now, 2 finished before"), std::string::npos)
+      << read_text(dir_ / "tasks.log");
+  EXPECT_FALSE(fs::exists(dir_ / "array" / "shard_1" / "case_0004")) << "the resubmitted task ran into shard_1";
+  const Process again = rollwear(merge, dir_);
+  ASSERT_EQ(again.exit_code, 0) << again.err;
+  EXPECT_EQ(read_text(dir_ / "array" / "results.csv"), read_text(dir_ / "whole" / "results.csv"));
+
+  // array indices are the shard numbers 1..N: an array 0-2, or a task above N, is refused before anything runs
+  EXPECT_NE(task(0, 0, 2), 0);
+  EXPECT_NE(task(4, 1, 4), 0);
+  EXPECT_FALSE(fs::exists(dir_ / "array" / "shard_0"));
+  EXPECT_FALSE(fs::exists(dir_ / "array" / "shard_4"));
+}
+
+TEST_F(SweepFile, AShardsFolderRefusesAnotherShard) {
+  // shard_1 holds shard 1/4 of the sweep (its case 0 finished, case 4 not): running shard 1/1 or 2/4 into it
+  // would reuse case 0 as a case of another shard; refused (exit 2) before any case runs, naming the folder,
+  // what it holds and what was asked
+  const fs::path sweep = sweep_file("axes:\n  - { key: load.normal_load_N, linear: { from: 1000, to: 2400, count: 8 } }\n");
+  const fs::path shard = dir_ / "shard_1";
+  const Process first = rollwear("sweep " + q(sweep) + " --shard 1/4 -o " + q(shard) + " -q --log-level warn", dir_);
+  ASSERT_EQ(first.exit_code, 0) << first.err;
+  ASSERT_TRUE(fs::exists(shard / "case_0004" / "row.csv"));
+  fs::remove(shard / "case_0004" / "row.csv");  // killed before its second case finished
+  fs::remove(shard / "results.csv");
+  fs::remove(shard / "sweep.txt");
+  for (const std::string asked : {"1/1", "2/4", "1/2"}) {
+    const Process p = rollwear("sweep " + q(sweep) + " --shard " + asked + " -o " + q(shard) + " -q --log-level warn", dir_);
+    EXPECT_EQ(p.exit_code, 2) << asked << ": " << p.out << p.err;
+    EXPECT_NE(p.err.find(shard.string()), std::string::npos) << p.err;
+    EXPECT_NE(p.err.find("holds shard 1/4"), std::string::npos) << p.err;
+    EXPECT_NE(p.err.find("asked for shard " + asked), std::string::npos) << p.err;
+    EXPECT_FALSE(fs::exists(shard / "case_0001")) << asked << ": a case of another shard ran";
+    EXPECT_FALSE(fs::exists(shard / "case_0004" / "row.csv")) << asked;
+  }
+  // the same shard continues (1 run now, 1 finished before)
+  const Process resumed = rollwear("sweep " + q(sweep) + " --shard 1/4 -o " + q(shard) + " -q --log-level warn", dir_);
+  ASSERT_EQ(resumed.exit_code, 0) << resumed.err;
+  EXPECT_NE(resumed.out.find("1 run now, 1 finished before"), std::string::npos) << resumed.out;
+  // a finished whole sweep's folder (sweep.txt: shard 1/1) refuses a shard too
+  const Process whole = rollwear("sweep " + q(sweep) + " -o " + q(dir_ / "whole") + " -q --log-level warn", dir_);
+  ASSERT_EQ(whole.exit_code, 0) << whole.err;
+  const Process part = rollwear("sweep " + q(sweep) + " --shard 2/4 -o " + q(dir_ / "whole") + " -q --log-level warn", dir_);
+  EXPECT_EQ(part.exit_code, 2) << part.out << part.err;
+  EXPECT_NE(part.err.find("holds shard 1/1"), std::string::npos) << part.err;
 }
 
 // a results table of given lives (ended_by revolutions: censored) for sweep_summary

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -855,6 +856,61 @@ TEST_F(WearOutput, SummaryUpToKeepsTheFileTextToTheCheckpointStep) {
     EXPECT_EQ(std::string(e.what()), p.string() + ":5: expected a step number, got 'x'");
   }
   EXPECT_THROW(summary_up_to(dir_ / "none.csv", 0), std::runtime_error);
+}
+
+// The checkpoint holds its numbers in hexadecimal floats: read back, every one is the number written, to the bit
+// (subnormals, -0, values %g would round), its named blocks included (the cam's rate and warm starts); a torn or
+// malformed block is refused naming its line.
+TEST_F(WearOutput, CheckpointRoundTripsEveryNumberToTheBit) {
+  Checkpoint c;
+  c.case_hash = 0x0123456789abcdefULL;
+  c.start.N = 1.0 / 3.0 * 1e11;
+  c.start.next_step = std::nextafter(2.0, 3.0);
+  c.start.counters.steps = 89;
+  c.start.counters.tangential_solves = 181;
+  c.snapshots_written = 3;
+  c.wall_s = 0.1;
+  c.start.state = Eigen::VectorXd::LinSpaced(7, -1, 1) / 7.0;
+  c.start.state(3) = -0.0;
+  c.blocks.push_back({"rate", Eigen::VectorXd::Constant(5, 4.9406564584124654e-324)});
+  c.blocks.push_back({"warm_starts", Eigen::VectorXd::LinSpaced(4, 1e-7, 3e-7) / 3.0});
+  c.blocks.push_back({"empty", Eigen::VectorXd()});
+  const fs::path p = dir_ / "checkpoint.txt";
+  std::ofstream(p) << checkpoint_text(c);
+  const Checkpoint r = read_checkpoint(p);
+  const auto bits_equal = [](const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
+    return a.size() == b.size() && std::memcmp(a.data(), b.data(), sizeof(double) * a.size()) == 0;
+  };
+  EXPECT_EQ(r.case_hash, c.case_hash);
+  EXPECT_EQ(r.start.N, c.start.N);
+  EXPECT_EQ(r.start.next_step, c.start.next_step);
+  EXPECT_EQ(r.start.counters.steps, 89);
+  EXPECT_EQ(r.start.counters.tangential_solves, 181);
+  EXPECT_EQ(r.wall_s, c.wall_s);
+  EXPECT_TRUE(bits_equal(r.start.state, c.start.state));
+  ASSERT_EQ(r.blocks.size(), 3u);
+  for (std::size_t k = 0; k < 3; ++k) {
+    EXPECT_EQ(r.blocks[k].name, c.blocks[k].name);
+    EXPECT_TRUE(bits_equal(r.blocks[k].values, c.blocks[k].values)) << c.blocks[k].name;
+  }
+  // the wear loop's checkpoint has no block
+  c.blocks.clear();
+  std::ofstream(p) << checkpoint_text(c);
+  EXPECT_TRUE(read_checkpoint(p).blocks.empty());
+  // a block torn by a kill, or not of its form
+  c.blocks.push_back({"rate", Eigen::VectorXd::Ones(3)});
+  const std::string text = checkpoint_text(c);
+  std::ofstream(p) << text.substr(0, text.find("block rate 3\n") + 16);
+  EXPECT_THROW(read_checkpoint(p), std::runtime_error);
+  std::string bad = text;
+  bad.replace(bad.find("block rate 3"), 12, "block rate");
+  std::ofstream(p) << bad;
+  try {
+    read_checkpoint(p);
+    ADD_FAILURE() << "a block without its count must be refused";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("expected 'block NAME COUNT', got 'block rate'"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace

@@ -1,4 +1,5 @@
 #include "lib/io/csv.h"
+#include "lib/io/case_run.h"
 #include "lib/number.h"
 
 #include <unistd.h>
@@ -6,6 +7,7 @@
 #include <atomic>
 #include <cerrno>
 #include <cstring>
+#include <limits>
 #include <fstream>
 #include <memory>
 #include <stdexcept>
@@ -280,6 +282,45 @@ std::string summary_csv(const std::string& name, const ContactPatch& patch, cons
   }
   fmt::format_to(std::back_inserter(out), ",{},{},{}\n", to_string(scheme), patch.grid.nx, patch.grid.ny);
   return out;
+}
+
+std::string contact_summary_csv(const std::string& name, const ContactRun& run) {
+  std::string base = summary_csv(name, run.normal.patch, run.problem, run.solution, run.scheme);
+  if (!run.lubrication && !run.thermal) return base;
+  const std::size_t eol = base.find('\n');
+  std::string header = base.substr(0, eol), row = base.substr(eol + 1);
+  row.pop_back();  // its newline
+  const auto add = [&](const char* column, double v) {
+    header += ',';
+    header += column;
+    row += ',';
+    put(row, v);
+  };
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  if (const auto& l = run.lubrication) {
+    add("entrainment_m_per_s", l->entrainment_m_per_s);
+    add("Rx_m", l->Rx_m);
+    add("ellipticity_k", l->film.ellipticity_k);
+    add("h_min_m", l->film.h_min_m);
+    add("h_central_m", l->film.h_central_m);
+    add("lambda", l->lambda);
+    header += ",regime";
+    row += ',';
+    row += to_string(l->regime);
+    add("regime_mu", l->mu);
+    add("regime_wear_factor", l->wear_factor);
+  }
+  if (const auto& t = run.thermal) {
+    add("v1_m_per_s", t->v1_m_per_s);
+    add("v2_m_per_s", t->v2_m_per_s);
+    add("flash_max_K", t->flash.max_rise_K);
+    add("heat_share_body1", t->flash.share_body1);
+    add("peclet_body1", t->flash.peclet_body1);
+    add("peclet_body2", t->flash.peclet_body2);
+    add("contact_temperature_C", t->contact_temperature_C.value_or(nan));
+    add("scuffing_margin_K", t->scuffing_margin_K.value_or(nan));
+  }
+  return header + '\n' + row + '\n';
 }
 
 }  // namespace contact

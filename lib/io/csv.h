@@ -77,6 +77,13 @@ std::string strips_csv(const ContactPatch& patch, const TangentialSolution& solu
 // (the caller sets C11 ... L_m_per_Pa to nan for a solve of the exact theory, which does not use them)
 std::string summary_csv(const std::string& name, const ContactPatch& patch, const TangentialProblem& problem,
                         const TangentialSolution& solution, TangentialScheme scheme);
+struct ContactRun;  // lib/io/case_run.h
+// summary_csv of a steady run, with the film's columns when it has a lubricant (entrainment_m_per_s,
+// Rx_m, ellipticity_k, h_min_m, h_central_m, lambda, regime, regime_mu, regime_wear_factor) and the flash
+// temperature's when it has a thermal: section (v1_m_per_s, v2_m_per_s, flash_max_K, heat_share_body1,
+// peclet_body1, peclet_body2, contact_temperature_C, scuffing_margin_K; nan where not asked); a dry
+// case's is summary_csv's, byte for byte
+std::string contact_summary_csv(const std::string& name, const ContactRun& run);
 
 // ---- the transient run (lib/tangential/satran.h) ----
 

@@ -63,6 +63,20 @@ def test_contact_equals_the_command_line(source, cli, tmp_path, monkeypatch):
     assert r["summary"]["normal_solver"] == "hertz"
 
 
+def test_lubricated_contact_film_and_flash_temperature_equal_the_command_line(source, cli, tmp_path):
+    case = "tests/data/lubrication/paper-lubricated.yaml"
+    r = rollwear.contact(str(source / case), fields=False)
+    p = cli("contact", case, "-o", tmp_path, "--no-fields")
+    assert p.returncode == 0, p.stderr
+    summary = read_csv(tmp_path / "summary.csv")
+    for key in ("entrainment_m_per_s", "Rx_m", "ellipticity_k", "h_min_m", "h_central_m", "lambda", "regime_mu",
+                "regime_wear_factor", "v1_m_per_s", "v2_m_per_s", "flash_max_K", "heat_share_body1",
+                "peclet_body1", "peclet_body2", "contact_temperature_C", "scuffing_margin_K"):
+        assert r["summary"][key] == float(summary[key][0]), key
+    assert r["summary"]["regime"] == summary["regime"][0] == "boundary"
+    assert "h_min_m" not in rollwear.contact(str(source / "cases" / "paper.yaml"), fields=False)["summary"]
+
+
 def test_contact_fields_equal_the_command_lines_and_are_hertz(source, cli, tmp_path):
     r = rollwear.contact(str(source / "cases" / "paper.yaml"))
     s, f = r["summary"], r["fields"]
@@ -125,6 +139,15 @@ def test_run_equals_the_command_line(source, cli, tmp_path):
     report = dict(line.split(": ", 1) for line in (tmp_path / "report.txt").read_text().splitlines() if ": " in line)
     assert r["summary"]["ended_by"] == report["ended_by"] == "edge"
     assert r["summary"]["revolutions"] == float(report["revolutions"])
+    # which models ran and the fast models' error estimate (docs/fidelity.md), as report.txt says
+    for key in ("tangential_model", "fidelity"):
+        assert r["summary"][key] == report[key]
+    assert r["summary"]["exact_solves"] == int(report["exact_solves"]) == 1
+    for key in ("error_estimate_N", "error_power_rel", "error_power_l1"):
+        assert r["summary"][key] == float(report[key]), key
+    text = (tmp_path / "summary.csv").read_text()
+    assert "# models: normal auto, tangential relaxed, fidelity fast\n" in text
+    assert f"per-strip power L1 {report['error_power_l1']}\n" in text
     body1 = r["profiles"]["body1"]
     last = sorted((tmp_path / "snapshots").glob("snapshot_*_body1.csv"))[-1]
     worn = read_csv(last)
