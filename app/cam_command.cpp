@@ -32,6 +32,8 @@ CLI::App* add_cam_command(CLI::App& app, CamOptions& opt, CommonOptions& common)
   sub->add_option("case", opt.case_path, "Cam case file (YAML), e.g. cases/cam-follower.yaml")->required();
   sub->add_option("-o,--output", opt.output_directory,
                   "Output directory (default: the case's output.directory, else out/<case name>)");
+  sub->add_flag("-q,--quiet", opt.quiet,
+                "No progress line on stderr: cam shows none (taken as run, transient and sweep take it)");
   add_log_level_option(*sub, common);
   return sub;
 }

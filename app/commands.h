@@ -23,6 +23,7 @@ struct ContactOptions {
   std::string output_directory;  // overrides output.directory
   bool no_fields = false;
   bool no_subsurface = false;  // overrides output.subsurface
+  bool quiet = false;  // -q: taken as run, transient and sweep take it; contact shows no progress line
 };
 CLI::App* add_contact_command(CLI::App& app, ContactOptions& opt, CommonOptions& common);
 int run_contact_command(const ContactOptions& opt);
@@ -53,6 +54,7 @@ int run_run_command(const RunOptions& opt);
 struct CamOptions {
   std::string case_path;
   std::string output_directory;
+  bool quiet = false;  // -q: taken as run, transient and sweep take it; cam shows no progress line
 };
 CLI::App* add_cam_command(CLI::App& app, CamOptions& opt, CommonOptions& common);
 int run_cam_command(const CamOptions& opt);
@@ -73,6 +75,7 @@ int run_sweep_command(const SweepOptions& opt);
 // plot: PNG plots of an output folder (app/plot.h)
 struct PlotOptions {
   std::string output_dir;
+  bool quiet = false;  // -q: taken as run, transient and sweep take it; plot shows no progress line
 };
 CLI::App* add_plot_command(CLI::App& app, PlotOptions& opt);
 int run_plot_command(const PlotOptions& opt);

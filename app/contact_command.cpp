@@ -49,6 +49,8 @@ CLI::App* add_contact_command(CLI::App& app, ContactOptions& opt, CommonOptions&
   sub->add_flag("--no-fields", opt.no_fields, "Do not write fields.csv (the per-cell fields)");
   sub->add_flag("--no-subsurface", opt.no_subsurface,
                 "Do not compute the stresses below the surface (subsurface.csv, subsurface_section.csv, fatigue.csv)");
+  sub->add_flag("-q,--quiet", opt.quiet,
+                "No progress line on stderr: contact shows none (taken as run, transient and sweep take it)");
   add_log_level_option(*sub, common);
   return sub;
 }

@@ -32,6 +32,7 @@
 #include "lib/io/csv.h"
 #include "lib/csv_reader.h"
 #include "lib/errors.h"
+#include "session/sweep.h"
 #include "session/sweep_summary.h"
 #include "wear/wear_loop.h"
 #include "lib/numeric.h"
@@ -558,6 +559,7 @@ std::vector<fs::path> render(const std::string& script, const std::vector<Pictur
 
 struct SweepCase {
   std::vector<double> inputs;
+  std::vector<double> outputs;  // a contact sweep's: a_m ... stick_fraction (SweepOutput::output_names)
   double life = 0;
   bool censored = false;  // the life reached the budget (wear.revolutions, max_steps): it lasts at least that
 };
@@ -569,6 +571,8 @@ struct SweepOutput {
   std::vector<double> base;         // each key's value in the base case (sweep.txt's axis lines), NaN if none
   std::vector<SweepCase> cases;     // the cases with status ok
   long left_out = 0;                // cases whose status is not ok
+  bool contact = false;             // a contact sweep: no life, the contact's columns (output_names)
+  std::vector<std::string> output_names;
 };
 
 bool is_sweep_folder(const fs::path& dir) { return fs::exists(dir / "results.csv") && fs::exists(dir / "sweep.txt"); }
@@ -595,12 +599,30 @@ SweepOutput read_sweep_output(const fs::path& dir) {
   const Table t = read_table(dir / "results.csv");
   static const std::vector<std::string> kTail = {"life_revolutions", "ended_by", "max_depth_m", "worn_volume_m3",
                                                  "status", "message"};
+  // a contact sweep's outputs, as session/sweep.h writes them: "index,<outputs>,status,message" with no keys
+  static const std::vector<std::string> kContactTail = [] {
+    std::vector<std::string> tail;
+    std::string line = session::results_header({}, session::SweepKind::Contact);
+    while (!line.empty() && (line.back() == '\n' || line.back() == '\r')) line.pop_back();
+    std::istringstream header(line);
+    for (std::string column; std::getline(header, column, ',');)
+      if (column != "index") tail.push_back(column);
+    return tail;
+  }();
   const std::size_t n = t.header.size();
-  if (n < kTail.size() + 2 || t.header.front() != "index" || !std::equal(kTail.begin(), kTail.end(), t.header.end() - 6))
-    throw bad_input(fmt::format("{}: not a sweep's results table (index, the varied keys, life_revolutions, ended_by, "
-                                "max_depth_m, worn_volume_m3, status, message)",
-                                where(t.path, t.header_line)));
-  o.keys.assign(t.header.begin() + 1, t.header.end() - 6);
+  const auto ends_with = [&](const std::vector<std::string>& tail) {
+    return n >= tail.size() + 2 && t.header.front() == "index" && std::equal(tail.begin(), tail.end(), t.header.end() - static_cast<long>(tail.size()));
+  };
+  o.contact = ends_with(kContactTail);
+  std::string contact_columns;
+  for (const std::string& c : kContactTail) contact_columns += (contact_columns.empty() ? "" : ", ") + c;
+  if (!o.contact && !ends_with(kTail))
+    throw bad_input(fmt::format("{}: not a sweep's results table (index, the varied keys, then life_revolutions, ended_by, "
+                                "max_depth_m, worn_volume_m3, status, message; or a contact sweep's {})",
+                                where(t.path, t.header_line), contact_columns));
+  const std::size_t tail = o.contact ? kContactTail.size() : kTail.size();
+  o.keys.assign(t.header.begin() + 1, t.header.end() - static_cast<long>(tail));
+  if (o.contact) o.output_names.assign(kContactTail.begin(), kContactTail.end() - 2);
   for (const std::string& k : o.keys) o.base.push_back(base.count(k) ? base[k] : std::numeric_limits<double>::quiet_NaN());
   for (std::size_t r = 0; r < t.rows.size(); ++r) {
     const std::vector<std::string>& row = t.rows[r];
@@ -617,6 +639,11 @@ SweepOutput read_sweep_output(const fs::path& dir) {
       return v;
     };
     for (std::size_t k = 0; k < o.keys.size(); ++k) c.inputs.push_back(number(1 + k));
+    if (o.contact) {
+      for (std::size_t k = 0; k < o.output_names.size(); ++k) c.outputs.push_back(number(1 + o.keys.size() + k));
+      o.cases.push_back(std::move(c));
+      continue;
+    }
     c.life = number(n - 6);
     try {
       const wear::LifeEnd end = wear::parse_life_end(row[n - 5]);
@@ -798,7 +825,60 @@ std::string distribution_figure(const SweepOutput& s, double divisor, const std:
          "plot " + plot + "\n" + kFigureEnd;
 }
 
-// a sweep's pictures: the life against each varied key, and for random sampling the life's distribution
+// a contact sweep: the contact against varied key a, four panels (the semi-axes, the peak pressure, the creep
+// forces, the dissipated power): every case as a dot, and on a product grid of more than one axis the line
+// through the base point
+std::string contact_figure(const SweepOutput& s, std::size_t a, const fs::path& output) {
+  const auto column = [&](const std::string& name) {
+    const auto it = std::find(s.output_names.begin(), s.output_names.end(), name);
+    if (it == s.output_names.end()) throw std::logic_error("plot: a contact sweep without " + name);
+    return static_cast<std::size_t>(it - s.output_names.begin());
+  };
+  // x, a (mm), b (mm), p0 (MPa), Fx (N), Fy (N), power (W)
+  const std::vector<std::pair<std::size_t, double>> shown = {{column("a_m"), 1e3},  {column("b_m"), 1e3},
+                                                             {column("p0_Pa"), 1e-6}, {column("Fx_N"), 1},
+                                                             {column("Fy_N"), 1},   {column("power_W"), 1}};
+  const auto rows = [&](const std::vector<const SweepCase*>& cases, const std::string& name) {
+    std::string out = "$" + name + " << EOD\n";
+    for (const SweepCase* c : cases) {
+      put(out, c->inputs[a]);
+      for (const auto& [k, scale] : shown) {
+        out += ' ';
+        put(out, c->outputs[k] * scale);
+      }
+      out += '\n';
+    }
+    return out + "EOD\n";
+  };
+  std::vector<const SweepCase*> every;
+  for (const SweepCase& c : s.cases) every.push_back(&c);
+  const bool slice = s.sampling == "product" && s.keys.size() > 1;
+  std::string out = rows(every, fmt::format("contact{}", a));
+  if (slice) out += rows(base_slice(s, a), fmt::format("contact_slice{}", a));
+  std::vector<double> x;
+  for (const SweepCase& c : s.cases) x.push_back(c.inputs[a]);
+  const auto panel = [&](const std::string& title, const std::vector<std::pair<int, std::string>>& curves) {
+    std::string plot;
+    for (const auto& [col, label] : curves) {
+      if (!plot.empty()) plot += ", \\\n     ";
+      plot += fmt::format("$contact{} using 1:{} with points pt 7 ps 0.9 lc rgb '#7f8c9a' notitle", a, col);
+      if (slice)
+        plot += fmt::format(", \\\n     $contact_slice{} using 1:{} with linespoints lw 2 pt 7 ps 1.1 title {}", a, col,
+                            quote(label));
+    }
+    return "set title " + quote(title) + "\nplot " + plot + "\n";
+  };
+  return out + figure_start(output, fmt::format("{}: the contact against {} ({})", s.name, s.keys[a], count_note(s))) +
+         "set multiplot layout 2,2\n" + fmt::format("set xlabel {}\n", quote(s.keys[a])) +
+         (log_axis(x) ? "set logscale x\nset format x '%g'\n" : "") +
+         "set offsets graph 0.03, graph 0.03, graph 0.05, graph 0.05\nset key inside left top box opaque\n" +
+         panel("semi-axes a, b (mm)", {{2, "a"}, {3, "b"}}) + panel("peak pressure p0 (MPa)", {{4, "p0"}}) +
+         panel("creep forces Fx, Fy (N)", {{5, "Fx"}, {6, "Fy"}}) + panel("dissipated power (W)", {{7, "power"}}) +
+         "unset multiplot\n" + kFigureEnd;
+}
+
+// a sweep's pictures: the life against each varied key, and for random sampling the life's distribution; a
+// contact sweep's: the contact against each varied key
 std::vector<fs::path> draw_sweep(const SweepOutput& s, const fs::path& plots, std::ostream& err) {
   std::vector<Picture> pictures;
   const auto picture = [&](const std::string& leaf) {
@@ -806,6 +886,12 @@ std::vector<fs::path> draw_sweep(const SweepOutput& s, const fs::path& plots, st
     pictures.push_back({path, temporary_for(path)});
     return pictures.back().temporary;
   };
+  if (s.contact) {
+    std::string script = "# rollwear plot: the contact sweep " + s.name + "\n" + terminal_script();
+    for (std::size_t a = 0; a < s.keys.size(); ++a)
+      script += contact_figure(s, a, picture("contact_vs_" + file_stem(s.keys[a]) + ".png"));
+    return render(script, pictures, plots, err);
+  }
   std::vector<double> lives;
   for (const SweepCase& c : s.cases) lives.push_back(c.life);
   const auto [divisor, revolutions_text] = revolutions_axis(lives);

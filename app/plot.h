@@ -16,6 +16,10 @@
 //                             axis, a line through the base case's values of the other keys)
 //   life_distribution.png     random sampling only: the lives' empirical distribution (i/n) and the
 //                             Kaplan-Meier estimate with the budget's lives censored, B10 and B50 marked
+// A contact sweep's folder (its results.csv has the contact's columns a_m ... stick_fraction, no life) gets
+//   contact_vs_KEY.png        the semi-axes, the peak pressure, the creep forces and the dissipated power
+//                             against each varied key (dots every case; on a product grid of more than one
+//                             axis, lines through the base case's values of the other keys)
 // Cases whose status is not ok are left out (and counted in the titles).
 // A contact's folder (rollwear contact: subsurface_section.csv and strips.csv) instead gets
 //   subsurface_body1.png, subsurface_body2.png   von Mises and Tresca's (s1 - s3)/2 (MPa) on the x-z section

@@ -44,7 +44,8 @@ CLI::App* add_transient_command(CLI::App& app, TransientOptions& opt, CommonOpti
       "                    reached it; t_s is that step's end\n"
       "  summary.csv       name,scheme,nx,ny,steps,t_end_s,q_end_m,dissipated_J, then the last whole step's\n"
       "                    Fx_N,Fy_N,Mz_N_m,power_W,stick_fraction,omega1_rad_per_s (not the shortened last\n"
-      "                    step's), sliding_end_s (t_s of the first step with stick; nan if none), end_step\n"
+      "                    step's), sliding_end_s (t_s of the first step whose creep force falls below mu F\n"
+      "                    after gross sliding; nan if the contact never slid whole or slid to the end), end_step\n"
       "                    (the step those values are from) and fallback_steps (upwind steps of a shift run)\n"
       "The time series stream to temporary files during the run; every file is renamed into place at the\n"
       "end, so a failed or interrupted run leaves no partial file (SIGINT, SIGTERM, SIGHUP remove the\n"
@@ -75,8 +76,7 @@ namespace {
 struct RunLog {
   TransientRecord last;
   double t_s = 0;                                                   // end of the last step
-  double sliding_end_s = std::numeric_limits<double>::quiet_NaN();  // t_s of the first step with stick
-  int sliding_end_step = 0;
+  GrossSliding sliding;  // lib/tangential/satran.h
 };
 
 void print_transient_summary(const ContactCase& c, const TransientCase& t, const TransientResult& res,
@@ -104,11 +104,14 @@ void print_transient_summary(const ContactCase& c, const TransientCase& t, const
     fmt::print("  roller spin     omega1 = {:.6g} rad/s, omega1 R1 = {:.6g} m/s (path {:.6g} m/s)\n",
                r.omega1_rad_per_s, r.omega1_rad_per_s * t.inertia->R1_m,
                value_at(t.inertia->path_speed_m_per_s, res.t_end_s));
-    if (log.sliding_end_step > 0)
-      fmt::print("  gross sliding   ended at t = {:.6g} s (step {}: first stick)\n", log.sliding_end_s,
-                 log.sliding_end_step);
+    const GrossSliding& g = log.sliding;
+    if (g.start_step == 0)
+      fmt::print("  gross sliding   none (|F| stayed below mu F)\n");
+    else if (g.end_step == 0)
+      fmt::print("  gross sliding   from t = {:.6g} s (step {}: |F| = mu F) to the end\n", g.start_s, g.start_step);
     else
-      fmt::print("  gross sliding   throughout (no step with stick)\n");
+      fmt::print("  gross sliding   from t = {:.6g} s (step {}: |F| = mu F), ended at t = {:.6g} s (step {}: |F| < mu F)\n",
+                 g.start_s, g.start_step, g.end_s, g.end_step);
   }
   for (std::size_t k = 0; k < res.snapshots.size(); ++k)
     fmt::print("  snapshot {}      t  = {:.6g} s\n", k + 1, res.snapshots[k].t_s);
@@ -154,10 +157,7 @@ int run_transient_command(const TransientOptions& opt) {
     if (strip_power) strip_power->append(strip_power_rows(r, y_m, power_W_per_m));
     log.last = r;
     log.t_s += r.dt_s;
-    if (log.sliding_end_step == 0 && r.stick_fraction > 0) {
-      log.sliding_end_step = r.step;
-      log.sliding_end_s = r.t_s;
-    }
+    track_gross_sliding(r, t.mu, log.sliding);
     progress.update(log.t_s / t.settings.t_end_s,
                     fmt::format("step {}, t {:.4e} / {:.4e} s", r.step, log.t_s, t.settings.t_end_s));
   };
@@ -175,7 +175,7 @@ int run_transient_command(const TransientOptions& opt) {
   for (std::size_t k = 0; k < res.snapshots.size(); ++k)
     files.push_back({dir / fmt::format("snapshot_{}.csv", k + 1), snapshot_csv(res.grid, res.snapshots[k])});
   const std::string run_name = transient_run_name(c.solver.tangential, t.settings.scheme);  // lib/model/
-  files.push_back({dir / "summary.csv", transient_summary_csv(c.name, run_name, res, log.sliding_end_s)});
+  files.push_back({dir / "summary.csv", transient_summary_csv(c.name, run_name, res, log.sliding.end_s)});
 
   print_transient_summary(c, t, res, log);
   std::vector<StreamedFile*> streamed = {&*timeseries};

@@ -19,6 +19,24 @@ namespace {
 
 std::string positive_or_inf(double v) { return v > 0 ? "" : "must be > 0 (.inf for flat)"; }
 
+// Plausibility bounds (lib/io/yaml_reader.h, listed in docs/cam-follower.md "The case keys"): far wider than
+// any disc cam's, to refuse a unit slip at its key before it reaches the solvers (a 40 m base circle stalled the
+// roller; a 2 pm wide roller gave p0 = 3.5e17 Pa)
+using contact::Quantity;
+const auto kRadius = contact::plausible(Quantity::Length, 1e-4, 10);       // base circle, roller: 0.1 mm .. 10 m
+const auto kWidth = contact::plausible(Quantity::Length, 1e-5, 10);        // roller, track: 10 um .. 10 m
+const auto kLift = contact::plausible(Quantity::Length, 1e-6, 10);         // 1 um .. 10 m
+const auto kMinRadius = contact::plausible(Quantity::Length, 0, 10);       // 0 .. 10 m
+const auto kModulus = contact::plausible(Quantity::Modulus, 1e6, 1e13);    // rubber .. beyond diamond
+const auto kPreload = contact::plausible(Quantity::Force, 1e-3, 1e7);      // 1 mN .. 10 MN
+const auto kSpringRate = contact::plausible(Quantity::Stiffness, 0, 1e10);
+const auto kMass = contact::plausible(Quantity::Mass, 1e-6, 1e4);          // 1 mg .. 10 t
+std::string crown_radius(double v) {  // a crown of 0.1 mm .. 10 km, or .inf (flat)
+  if (std::isinf(v) && v > 0) return "";
+  const std::string sign = positive_or_inf(v);
+  return sign.empty() ? contact::plausible(Quantity::Length, 1e-4, 1e4)(v) : sign;
+}
+
 // The keys are SI (docs/cam-follower.md §6): a key of the former spelling (speed_rpm, *_deg) is refused
 // with its SI key and the value converted, so that an old case is mended by copying one line.
 void refuse_old_key(YamlMap& s, const std::string& old_key, const std::string& si_key, double factor) {
@@ -67,20 +85,21 @@ void read_lift(YamlMap& s, CamCase& c, double table_tolerance) {
     return;
   DwellRiseDwellReturn d;
   std::string rise_law, return_law;
-  // a segment's law, parsed once as it is read into `law`
+  // a segment's law, parsed once as it is read into `law`; a rise or a return is no dwell (the reader adds
+  // what it got)
   const auto law_name = [](SegmentLaw& law) {
     return [&law](const std::string& v) -> std::string {
       try {
         law = parse_segment_law(v);
-        return law == SegmentLaw::Dwell ? "must be cycloidal, polynomial-345 or harmonic" : "";
-      } catch (const std::invalid_argument& e) {
-        return e.what();
+      } catch (const std::invalid_argument&) {
+        law = SegmentLaw::Dwell;
       }
+      return law == SegmentLaw::Dwell ? "must be cycloidal, polynomial-345 or harmonic" : "";
     };
   };
   s.required("rise_law", rise_law, law_name(d.rise_law));
   s.required("return_law", return_law, law_name(d.return_law));
-  s.required("lift_m", d.lift_m, contact::positive_finite);
+  s.required("lift_m", d.lift_m, kLift);
   for (const char* k : {"rise", "dwell_high", "return"})
     refuse_old_key(s, std::string(k) + "_deg", std::string(k) + "_rad", kRadPerDeg);
   s.required("rise_rad", d.rise_rad, contact::positive_finite);
@@ -129,10 +148,10 @@ CamCase read_cam_case(const std::string& path) {
       refuse_old_key(s, "speed_rpm", "speed_rad_per_s", kRadPerSPerRpm);
       refuse_old_key(s, "max_pressure_angle_deg", "max_pressure_angle_rad", kRadPerDeg);
       s.required("speed_rad_per_s", m.omega_rad_per_s, contact::positive_finite);
-      s.required("base_radius_m", m.geometry.base_radius_m, contact::positive_finite);
+      s.required("base_radius_m", m.geometry.base_radius_m, kRadius);
       s.optional("offset_m", m.geometry.offset_m, contact::finite);
       s.required("mu", m.mu, contact::in_closed(0, 2));
-      s.required("min_radius_m", m.min_radius_m, contact::nonnegative_finite);
+      s.required("min_radius_m", m.min_radius_m, kMinRadius);
       m.max_pressure_angle_rad = 30 * kRadPerDeg;
       s.optional("max_pressure_angle_rad", m.max_pressure_angle_rad, [](double v) {
         return v > 0 && v < contact::kPi / 2 ? "" : "must be in (0, pi/2)";
@@ -140,11 +159,11 @@ CamCase read_cam_case(const std::string& path) {
       s.optional("table_tolerance", table_tolerance, contact::positive_finite);
       s.optional("angle_steps", m.angle_steps, [](int v) { return v >= 8 && v <= 1000000 ? "" : "must be in [8, 1000000]"; });
       s.section("roller", [&](YamlMap& r) {
-        r.required("radius_m", m.geometry.roller_radius_m, contact::positive_finite);
-        r.required("width_m", m.bodies.roller_width_m, contact::positive_finite);
+        r.required("radius_m", m.geometry.roller_radius_m, kRadius);
+        r.required("width_m", m.bodies.roller_width_m, kWidth);
         m.bodies.roller_crown_radius_m = std::numeric_limits<double>::infinity();
-        r.optional("crown_radius_m", m.bodies.roller_crown_radius_m, positive_or_inf);
-        r.required("E_Pa", m.bodies.pair.body1.E_Pa, contact::positive_finite);
+        r.optional("crown_radius_m", m.bodies.roller_crown_radius_m, crown_radius);
+        r.required("E_Pa", m.bodies.pair.body1.E_Pa, kModulus);
         r.required("nu", m.bodies.pair.body1.nu, poisson);
         r.optional("inertia_kg_m2", m.train.roller_inertia_kg_m2, contact::nonnegative_finite);
         r.optional("bearing_torque_N_m", m.train.bearing_torque_N_m, contact::nonnegative_finite);
@@ -153,10 +172,10 @@ CamCase read_cam_case(const std::string& path) {
           r.fail("crown_radius_m", "must exceed half the roller's width_m");
       });
       s.section("track", [&](YamlMap& t) {
-        t.required("width_m", m.bodies.track_width_m, contact::positive_finite);
+        t.required("width_m", m.bodies.track_width_m, kWidth);
         m.bodies.track_crown_radius_m = std::numeric_limits<double>::infinity();
-        t.optional("crown_radius_m", m.bodies.track_crown_radius_m, positive_or_inf);
-        t.required("E_Pa", m.bodies.pair.body2.E_Pa, contact::positive_finite);
+        t.optional("crown_radius_m", m.bodies.track_crown_radius_m, crown_radius);
+        t.required("E_Pa", m.bodies.pair.body2.E_Pa, kModulus);
         t.required("nu", m.bodies.pair.body2.nu, poisson);
         if (!std::isinf(m.bodies.track_crown_radius_m) && m.bodies.track_width_m >= 2 * m.bodies.track_crown_radius_m)
           t.fail("crown_radius_m", "must exceed half the track's width_m");
@@ -165,9 +184,9 @@ CamCase read_cam_case(const std::string& path) {
         s.fail("roller", "a cylindrical roller on a flat track is a line contact: give roller.crown_radius_m or "
                          "track.crown_radius_m");
       s.section("follower", [&](YamlMap& f) {
-        f.required("spring_rate_N_per_m", m.train.spring_rate_N_per_m, contact::nonnegative_finite);
-        f.required("preload_N", m.train.preload_N, contact::positive_finite);
-        f.required("moving_mass_kg", m.train.moving_mass_kg, contact::positive_finite);
+        f.required("spring_rate_N_per_m", m.train.spring_rate_N_per_m, kSpringRate);
+        f.required("preload_N", m.train.preload_N, kPreload);
+        f.required("moving_mass_kg", m.train.moving_mass_kg, kMass);
         f.optional("guide_mu", m.train.guide_mu, contact::in_closed(0, 2));
       });
       if (!(std::abs(m.geometry.offset_m) < m.geometry.base_radius_m + m.geometry.roller_radius_m))

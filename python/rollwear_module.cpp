@@ -31,6 +31,7 @@
 #include <Eigen/Core>
 #include <spdlog/sinks/base_sink.h>
 #include <spdlog/spdlog.h>
+#include <yaml-cpp/yaml.h>
 
 #include "lib/io/case_run.h"
 #include "lib/io/case.h"
@@ -219,11 +220,40 @@ struct CaseSource {
 };
 constexpr const char* kDictLabel = "<dict>";
 
-contact::ContactCase read_case(const CaseSource& s) {
+// A cam case (a top-level cam: section) is not the roller's: contact, transient and run read the roller's
+// cases, so one is refused naming what it is and where it runs, not by the roller's reader ("bodies:
+// required section is missing"). A document that does not parse is left to the reader, which names the place.
+void refuse_cam_case(const CaseSource& s, const char* function) {
+  const std::string label = s.is_text ? kDictLabel : s.path_or_text;
+  int line = 0, column = 0;
+  try {
+    const YAML::Node doc = s.is_text ? YAML::Load(s.path_or_text) : YAML::LoadFile(s.path_or_text);
+    if (!doc.IsMap()) return;
+    bool cam = false;
+    for (const auto& kv : doc)
+      if (kv.first.IsScalar() && kv.first.Scalar() == "cam") {
+        cam = true;
+        line = kv.first.Mark().line + 1;
+        column = kv.first.Mark().column + 1;
+      }
+    if (!cam) return;
+  } catch (const std::exception&) {
+    return;
+  }
+  throw contact::CaseError(
+      fmt::format("{}:{}:{}: cam: a cam case; rollwear.{}() runs the roller's cases (bodies:, load:, ...): a cam case "
+                  "runs on the command line, `rollwear cam CASE` (one revolution) or `rollwear run CASE` (its life)",
+                  label, line, column, function),
+      contact::InputLocation{label, line, column, "cam"});
+}
+
+contact::ContactCase read_case(const CaseSource& s, const char* function) {
+  refuse_cam_case(s, function);
   return s.is_text ? contact::read_contact_case_text(s.path_or_text, kDictLabel, s.base_dir)
                    : contact::read_contact_case(s.path_or_text);
 }
 wear::WearCase read_wear(const CaseSource& s) {
+  refuse_cam_case(s, "run");
   return s.is_text ? wear::read_wear_case_text(s.path_or_text, kDictLabel, s.base_dir) : wear::read_wear_case(s.path_or_text);
 }
 
@@ -236,7 +266,7 @@ py::dict contact_result(const CaseSource& source, bool fields, bool subsurface) 
   std::array<contact::BodySubsurface, 2> below;
   {
     py::gil_scoped_release release;
-    c.emplace(read_case(source));
+    c.emplace(read_case(source, "contact"));
     subsurface = subsurface && c->output.subsurface;
     r.emplace(contact::solve_contact_case(*c, fields || subsurface));  // the subsurface needs the tractions
     if (subsurface) below = contact::subsurface_of_contact(*c, *r);
@@ -364,7 +394,7 @@ py::dict transient_result(const CaseSource& source, bool fields, bool force) {
   std::vector<double> strip_power;  // step by step, ny each
   try {
     py::gil_scoped_release release;
-    c.emplace(read_case(source));
+    c.emplace(read_case(source, "transient"));
     t.emplace(contact::transient_case_of(*c));
     if (!fields) t->settings.snapshot_times_s.clear();  // not computed either
     // the arrays returned hold every step: refused above output.max_bytes before the run, as the command refuses
@@ -574,12 +604,16 @@ std::string sweep_run(const std::string& path, const std::string& output_directo
     session::SweepRunOptions o;
     if (!(shard_n >= 1 && shard_k >= 1 && shard_k <= shard_n))
       throw contact::CaseError("sweep: shard K/N needs 1 <= K <= N, got " + std::to_string(shard_k) + "/" +
-                               std::to_string(shard_n));
+                                   std::to_string(shard_n),
+                               contact::InputLocation{"", 0, 0, "shard"});
     o.shard_k = shard_k;
     o.shard_n = shard_n;
     o.output_directory = session::output_directory(output_directory, s.output_directory,
                                                   std::filesystem::path(path).stem().string());
     dir = o.output_directory.string();
+    if (threads < 0)  // as `rollwear sweep -j` refuses it
+      throw contact::CaseError("sweep: threads: must be >= 0 (0: every core), got " + std::to_string(threads),
+                               contact::InputLocation{"", 0, 0, "threads"});
     o.threads = threads > 0 ? threads : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
     o.progress_interval_s = 0.05;
     o.force = force;  // above session::kSweepMaxCases cases, as --force

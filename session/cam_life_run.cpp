@@ -231,10 +231,16 @@ LifeRunEnd run_cam_life_in_folder(const LifeRunOptions& o) {
       contact::write_files_atomic(files);
     }
   };
+  // a row of life.csv: a step's end, or the life's end where a limit cut its last step short
+  const auto append_row = [&](long step, double N, double max_depth_m, const cam::LiftLoss& lift_loss,
+                              double energy_J) {
+    fmt::format_to(std::back_inserter(life_csv), "{},{:.10g},{:.10g},{:.10g},{:.6g},{:.10g}\n", step, N, max_depth_m,
+                   lift_loss.max_m, lift_loss.at_theta_rad * cam::kDegPerRad, energy_J);
+  };
+  double last_row_N = o.resume ? start.N : 0;
   hooks.on_step = [&](const cam::CamLifeStep& step) {
-    fmt::format_to(std::back_inserter(life_csv), "{},{:.10g},{:.10g},{:.10g},{:.6g},{:.10g}\n", step.step, step.N,
-                   step.max_depth_m, step.lift_loss.max_m, step.lift_loss.at_theta_rad * cam::kDegPerRad,
-                   step.energy_J);
+    append_row(step.step, step.N, step.max_depth_m, step.lift_loss, step.energy_J);
+    last_row_N = step.N;
     last = step.resume;
     if (std::chrono::duration<double>(Clock::now() - last_save).count() >= c.wear->checkpoint_interval_s &&
         !is_snapshot_revolution(step.N)) {  // at a snapshot revolution the snapshot's save follows
@@ -260,6 +266,10 @@ LifeRunEnd run_cam_life_in_folder(const LifeRunOptions& o) {
                  folder.checkpoint_path().string());
     interrupted::end_by(interrupted::requested_signal());
   }
+
+  // a limit located within a step ends the life between step ends (the step the report counts): its last row
+  if (life.ended_by != wear::LifeEnd::Failed && life.N > last_row_N)
+    append_row(life.steps, life.N, life.max_depth_m, life.lift_loss, life.energy_J);
 
   // the end: life.csv and the report; the checkpoint goes (the run is complete) unless the life failed
   const std::string report = cam::cam_life_report_text(c.name, c.model.omega_rad_per_s, life, setup->worn->stats(),

@@ -1,6 +1,7 @@
 // The output folder: its place, its lock, the signals' clean-up, stale temporaries, the size estimate
 // (session/output_folder.h).
 #include "session/output_folder.h"
+#include "lib/io/csv.h"
 
 #include <fcntl.h>
 #include <sys/file.h>
@@ -97,6 +98,7 @@ volatile std::sig_atomic_t g_note_size = 0;
 
 void end_now(int sig) {
   for (int k = 0; k < g_count; ++k) ::unlink(g_paths[k]);
+  contact::unlink_temporaries_in_flight();  // the atomic writes under way (a checkpoint's, a table's)
   if (g_lock[0] != '\0') ::unlink(g_lock);
   if (g_message_size > 0 && ::write(STDERR_FILENO, g_message, static_cast<std::size_t>(g_message_size)) < 0) {
   }

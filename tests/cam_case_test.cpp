@@ -86,7 +86,49 @@ TEST_F(CamCaseTest, UnknownKeysAndBadValuesNameFileLineAndKey) {
   t = shipped_with("  mu: 0.1", "  mu: -0.1");
   expect_case_error(f, t, "cam.mu", line_of(t, "  mu: -0.1"), "must be in [0, 2]");
   t = shipped_with("    rise_law: cycloidal", "    rise_law: parabolic");
-  expect_case_error(f, t, "cam.lift.rise_law", line_of(t, "parabolic"), "must be one of");
+  expect_case_error(f, t, "cam.lift.rise_law", line_of(t, "parabolic"), "must be cycloidal, polynomial-345 or harmonic");
+}
+
+// a segment law the lift does not know is named once, with the laws a rise or a return can take: not dwell,
+// which it refuses there
+TEST_F(CamCaseTest, UnknownRiseLawListsTheLawsARiseTakesOnce) {
+  const fs::path f = dir_ / "cam.yaml";
+  for (const std::string law : {"cycloid", "dwell"}) {
+    const std::string t = shipped_with("    rise_law: cycloidal", "    rise_law: " + law);
+    expect_case_error(f, t, "cam.lift.rise_law: must be cycloidal, polynomial-345 or harmonic, got '" + law + "'",
+                      line_of(t, "rise_law: " + law));
+    try {
+      cam::read_cam_case(f.string());
+    } catch (const contact::CaseError& e) {
+      const std::string what = e.what();
+      EXPECT_EQ(what.find("got"), what.rfind("got")) << what;
+    }
+  }
+}
+
+// Plausibility bounds on the lengths, forces and moduli refuse a unit slip at its key, naming the slip: a 40 m
+// base circle (millimetres written as metres) stalled the roller (exit 1); a roller 2 pm wide was solved
+// (p0 = 3.5e17 Pa). The shipped values sit well inside every bound.
+TEST_F(CamCaseTest, ImplausibleValuesNameTheirKeyAndTheLikelySlip) {
+  const fs::path f = dir_ / "cam.yaml";
+  struct Slip {
+    std::string from, to, key, slip;
+  };
+  for (const Slip& k : std::vector<Slip>{
+           {"  base_radius_m: 0.040", "  base_radius_m: 40", "cam.base_radius_m", "millimetres written as metres?"},
+           {"    width_m: 0.011", "    width_m: 2.0e-12", "cam.roller.width_m", "a slip in the exponent"},
+           {"    width_m: 0.014", "    width_m: 14", "cam.track.width_m", "millimetres written as metres?"},
+           {"    radius_m: 0.013", "    radius_m: 13", "cam.roller.radius_m", "millimetres written as metres?"},
+           {"    E_Pa: 2.1e11\n    nu: 0.3\n    inertia", "    E_Pa: 210\n    nu: 0.3\n    inertia",
+            "cam.roller.E_Pa", "GPa or MPa written as Pa"},
+           {"    lift_m: 0.010", "    lift_m: 1.0e-8", "cam.lift.lift_m", "millimetres converted to metres twice?"},
+           {"    preload_N: 150", "    preload_N: 1.5e9", "cam.follower.preload_N", "a slip in the exponent"},
+           {"    moving_mass_kg: 0.4", "    moving_mass_kg: 400000", "cam.follower.moving_mass_kg",
+            "grams written as kilograms?"}}) {
+    const std::string t = shipped_with(k.from, k.to);
+    const std::string to_line = k.to.substr(0, k.to.find('\n'));
+    expect_case_error(f, t, k.key + ": is not plausible: must be in [", line_of(t, to_line), k.slip);
+  }
 }
 
 // cam.tangential.scheme chooses the tangential model as a wear case's solver.tangential does: relaxed by default,

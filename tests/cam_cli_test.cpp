@@ -125,6 +125,32 @@ TEST_F(CamRunCommand, DissipationTableHoldsThePeriodicMotion) {
   EXPECT_LT(std::abs(row[9]), 1e-4);
 }
 
+// life.csv ends where the life ends: the depth limit 2 um, located within the 7th fixed step of 0.3 um, is its
+// last row, numbered as the report counts the steps (the step the limit cut short included), at the report's
+// revolutions.
+TEST_F(CamRunCommand, LifeTableEndsAtTheLimitTheReportNames) {
+  const fs::path c = coarse_case("0.3e-6", "10");
+  const fs::path out = dir_ / "out";
+  const Ran r = rollwear("run -q " + quoted(c) + " -o " + quoted(out), dir_);
+  ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+  ASSERT_NE(r.out.find("ended_by: max_depth"), std::string::npos) << r.out;
+  const auto value_of = [&](const std::string& key) {
+    const std::size_t at = r.out.find("\n" + key + ": ");
+    EXPECT_NE(at, std::string::npos) << key;
+    return std::stod(r.out.substr(at + key.size() + 3));
+  };
+  std::vector<std::string> rows;
+  std::istringstream life(text_of(out / "life.csv"));
+  for (std::string line; std::getline(life, line);) rows.push_back(line);
+  std::vector<double> last;
+  std::istringstream cells(rows.back());
+  for (std::string cell; std::getline(cells, cell, ',');) last.push_back(std::stod(cell));
+  ASSERT_EQ(last.size(), 6u) << rows.back();
+  EXPECT_EQ(last[0], value_of("steps")) << rows.back();
+  EXPECT_NEAR(last[1], value_of("revolutions"), 1e-5 * last[1]) << rows.back();  // the report's 6 digits
+  EXPECT_NEAR(last[2], 2.0e-6, 2.0e-6 * 1e-6) << rows.back();                      // the limit, located
+}
+
 // SIGINT (Ctrl-C) and SIGTERM during a cam life: the life stops after its current step, writes that step's
 // checkpoint (none would be due for 1000 s), prints the --resume command, removes the lock file and ends by
 // the signal; --resume then continues the life to its limit. About 0.5 s per signal at load 7.5.

@@ -301,6 +301,38 @@ TEST_F(CaseReader, OutOfRangeReportsValue) {
             path() + ":6:15: solver.nx: must be in [1, 4096], got 0");
 }
 
+// Plausibility bounds on the moduli, radii and a generated profile's width refuse a unit slip at its key,
+// naming the slip (the bounds: README "The case file"); the shipped values sit well inside them
+TEST_F(CaseReader, ImplausibleValuesNameTheirKeyAndTheLikelySlip) {
+  EXPECT_EQ(error_of("bodies:\n"                                                        // 1
+                     "  body1: { Rx_m: 0.020, Ry_m: 0.500, E_Pa: 210, nu: 0.28 }\n"      // 2
+                     "  body2: { Rx_m: 0.025, Ry_m: .inf, E_Pa: 210.0e9, nu: 0.28 }\n"   // 3
+                     "load: { normal_load_N: 1500 }\n"                                  // 4
+                     "friction: { mu: 0.3 }\n"),                                        // 5
+            path() + ":2:44: bodies.body1.E_Pa: is not plausible: must be in [1e+06, 1e+13] Pa (GPa or MPa written as "
+                     "Pa (steel: 2.1e11 Pa)?), got 210");
+  EXPECT_EQ(error_of("bodies:\n"                                                        // 1
+                     "  body1: { Rx_m: 20, Ry_m: 0.500, E_Pa: 210.0e9, nu: 0.28 }\n"     // 2
+                     "  body2: { Rx_m: 0.025, Ry_m: .inf, E_Pa: 210.0e9, nu: 0.28 }\n"   // 3
+                     "load: { normal_load_N: 1500 }\n"                                  // 4
+                     "friction: { mu: 0.3 }\n"),                                        // 5
+            "");  // 20 m: a plausible radius (a large wheel), not refused
+  EXPECT_NE(error_of("bodies:\n"                                                        // 1
+                     "  body1: { Rx_m: 0.020, Ry_m: -5.0e4, E_Pa: 210.0e9, nu: 0.28 }\n" // 2
+                     "  body2: { Rx_m: 0.025, Ry_m: .inf, E_Pa: 210.0e9, nu: 0.28 }\n"   // 3
+                     "load: { normal_load_N: 1500 }\n"                                  // 4
+                     "friction: { mu: 0.3 }\n")                                         // 5
+                .find(":2:31: bodies.body1.Ry_m: is not plausible: must be in [0.0001, 10000] m (millimetres written as metres?), got -5.0e4"),
+            std::string::npos);
+  const std::string profiles = "profiles:\n  body1: { crowned: { Ry_m: 0.5, width_m: 2.0e-12 } }\n";  // 6, 7
+  const std::string bodies = "bodies:\n  body1: { Rx_m: 0.020, E_Pa: 210.0e9, nu: 0.28 }\n"
+                             "  body2: { Rx_m: 0.025, Ry_m: .inf, E_Pa: 210.0e9, nu: 0.28 }\n"
+                             "load: { normal_load_N: 1500 }\nfriction: { mu: 0.3 }\n";
+  EXPECT_NE(error_of(bodies + profiles).find("profiles.body1.crowned.width_m: is not plausible: must be in [1e-05, 10] m"),
+            std::string::npos)
+      << error_of(bodies + profiles);
+}
+
 TEST_F(CaseReader, UnknownSchemeListsValidOnes) {
   const std::string message = error_of(kMinimalCase + "solver: { tangential: fastsim }\n");  // 6
   EXPECT_EQ(message.rfind(path() + ":6:23: solver.tangential: ", 0), 0u) << message;

@@ -7,6 +7,7 @@
 #include "tests/temp_dir.h"
 #include <fcntl.h>
 #include <sys/file.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <csignal>
 #include <cstdio>
@@ -27,6 +28,7 @@
 #include "lib/errors.h"
 #include "lib/normal/hertz.h"
 #include "lib/tangential/satran.h"
+#include "session/output_folder.h"
 #include "tests/test_text.h"
 
 namespace contact {
@@ -148,6 +150,40 @@ TEST_F(AtomicWrite, StreamedFileAppearsWholeOnlyWhenCommitted) {
   EXPECT_FALSE(fs::exists(tmp));
   EXPECT_EQ(read_text(p), "step\n1\n");
   EXPECT_EQ(std::distance(fs::directory_iterator(dir_ / "run"), fs::directory_iterator()), 2);
+}
+
+// A signal that ends the process (the program's handler: session/output_folder.h) while write_files_atomic is
+// writing leaves none of its temporaries (a checkpoint.txt.tmp.PID once outlived a SIGINT). Constructed so that
+// the signal falls inside the write: the second file's temporary is a FIFO, whose opening for writing blocks
+// (no reader comes), so the child is held after the first temporary is written and before any rename.
+TEST_F(AtomicWrite, ASignalDuringTheWriteLeavesNoTemporary) {
+  int go[2];
+  ASSERT_EQ(::pipe(go), 0);
+  const pid_t pid = ::fork();
+  ASSERT_GE(pid, 0);
+  if (pid == 0) {
+    ::close(go[1]);
+    session::interrupted::say_on_signal("");  // installs the handler as every command does
+    char c = 0;
+    if (::read(go[0], &c, 1) != 1) ::_exit(3);
+    write_files_atomic({{dir_ / "a.csv", "a\n"}, {dir_ / "b.csv", "b\n"}});
+    ::_exit(0);
+  }
+  ::close(go[0]);
+  const fs::path tmp_a = dir_ / ("a.csv.tmp." + std::to_string(pid)), tmp_b = dir_ / ("b.csv.tmp." + std::to_string(pid));
+  ASSERT_EQ(::mkfifo(tmp_b.c_str(), 0600), 0);
+  ASSERT_EQ(::write(go[1], "x", 1), 1);
+  for (int k = 0; k < 1000 && !fs::exists(tmp_a); ++k) ::usleep(10000);
+  EXPECT_TRUE(fs::exists(tmp_a));  // the child is inside the write
+  ::usleep(20000);                 // and held at the FIFO
+  ::kill(pid, SIGINT);
+  int status = 0;
+  ASSERT_EQ(::waitpid(pid, &status, 0), pid);
+  ::close(go[1]);
+  EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGINT) << status;
+  std::vector<std::string> left;
+  for (const auto& e : fs::directory_iterator(dir_)) left.push_back(e.path().filename().string());
+  EXPECT_TRUE(left.empty()) << left.front();
 }
 
 // a 3 x 2 patch and solution with distinct values in every cell
@@ -402,6 +438,45 @@ TEST_F(CommandLine, HelpMentionsEveryOption) {
     EXPECT_NE(contact.out.find(word), std::string::npos) << word << " missing from:\n" << contact.out;
 }
 
+// -q is every command's: contact, cam and plot take it as run, transient and sweep do (they show no progress line)
+TEST_F(CommandLine, EveryCommandTakesQuiet) {
+  for (const std::string command : {"contact", "transient", "run", "cam", "sweep", "plot"}) {
+    const ProcessResult help = rollwear(command + " --help", dir_);
+    EXPECT_EQ(help.exit_code, 0) << command;
+    EXPECT_NE(help.out.find("-q,--quiet"), std::string::npos) << command << ":\n" << help.out;
+  }
+  const ProcessResult contact = rollwear("contact -q " + quoted(kSource / "cases" / "paper.yaml") + " -o " +
+                                             quoted(dir_ / "c") + " --no-fields --log-level warn",
+                                         dir_);
+  EXPECT_EQ(contact.exit_code, 0) << contact.err;
+  EXPECT_NE(contact.out.find("peak pressure"), std::string::npos) << contact.out;  // the summary still printed
+  const ProcessResult cam = rollwear("cam -q " + quoted(kSource / "cases" / "cam-follower.yaml") + " -o " +
+                                         quoted(dir_ / "cam") + " --log-level warn",
+                                     dir_);
+  EXPECT_EQ(cam.exit_code, 0) << cam.err;
+  EXPECT_TRUE(fs::exists(dir_ / "cam" / "revolution.csv"));
+  const ProcessResult plot = rollwear("plot -q " + quoted(dir_ / "none"), dir_);
+  EXPECT_EQ(plot.exit_code, 2) << plot.err;
+  EXPECT_EQ(plot.err.find("not expected"), std::string::npos) << plot.err;  // refused for the folder, not for -q
+}
+
+// a cam case with its base circle in millimetres written as metres: bad input at the key (exit 2), not a roller
+// that stalls (exit 1)
+TEST_F(CommandLine, CamRefusesAUnitSlipAtItsKey) {
+  std::string text = read_text(kSource / "cases" / "cam-follower.yaml");
+  text.replace(text.find("base_radius_m: 0.040"), 20, "base_radius_m: 40");
+  std::ofstream(dir_ / "cam.yaml") << text;
+  for (const std::string command : {"cam", "run"}) {
+    const ProcessResult r = rollwear(command + " -q " + quoted(dir_ / "cam.yaml") + " -o " + quoted(dir_ / "o"), dir_);
+    EXPECT_EQ(r.exit_code, 2) << command << ": " << r.err;
+    EXPECT_NE(r.err.find("cam.yaml:14:18: cam.base_radius_m: is not plausible: must be in [0.0001, 10] m "
+                         "(millimetres written as metres?), got 40"),
+              std::string::npos)
+        << command << ": " << r.err;
+  }
+  EXPECT_FALSE(fs::exists(dir_ / "o"));
+}
+
 TEST_F(CommandLine, VersionPrintsVersion) {
   const ProcessResult r = rollwear("--version", dir_);
   EXPECT_EQ(r.exit_code, 0);
@@ -517,6 +592,27 @@ TEST_F(CommandLine, TransientOnSmallStartupWritesEveryTable) {
   EXPECT_EQ(lines_of(read_text(bare / "timeseries.csv")).size(), series.size());  // equal to rounding: the
   EXPECT_TRUE(fs::exists(bare / "strip_energy.csv"));  // snapshot steps compute their fields
   EXPECT_EQ(std::distance(fs::directory_iterator(bare), fs::directory_iterator()), 3);
+}
+
+// cases/roller-spinup.yaml: the roller at rest slides over the whole contact (|Fx| = mu F) until its
+// surface catches up with the path; with omega1 = mu F R1 t / J1 (docs/physics.md §4.5) that is at
+// t* = J1 V2 / (mu F R1^2) = 0.2192 ms. The run's first steps build the tractions up from none (stick at
+// the leading edge): that is not the end of gross sliding.
+TEST_F(CommandLine, TransientGrossSlidingEndsWhenTheRollerCatchesUpWithThePath) {
+  constexpr double kJ1 = 3.9458e-5, kR1 = 0.020, kMuF = 0.3 * 1500, kV2 = 1.0, kDt = 2.0e-6;  // the case's
+  const double t_catch_s = kJ1 * kV2 / (kMuF * kR1 * kR1);
+  const fs::path out = dir_ / "spin";
+  const ProcessResult r = rollwear("transient " + quoted(kSource / "cases" / "roller-spinup.yaml") + " -o " +
+                                       quoted(out) + " --no-fields -q --log-level warn",
+                                   dir_);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::vector<std::string> summary = lines_of(read_text(out / "summary.csv"));
+  ASSERT_EQ(summary.size(), 2u);
+  const double end_s = std::strtod(split(summary[1])[14].c_str(), nullptr);
+  // the first step off the bound: the one that reaches t* or the next (the force leaves mu F within a step)
+  EXPECT_GE(end_s, t_catch_s) << summary[1];
+  EXPECT_LE(end_s, t_catch_s + 2 * kDt) << summary[1];
+  EXPECT_NE(r.out.find("ended at t = 0.00022 s (step 110: |F| < mu F)"), std::string::npos) << r.out;
 }
 
 TEST_F(CommandLine, TransientCflBreachExitsTwoNamingDtAndAllowedStep) {

@@ -187,6 +187,13 @@ TEST_F(Collective, BadWeightsAndConditionsNameFileLineAndKey) {
   EXPECT_NE(speed.find("speed.yaml:31:49: kinematics.speed_m_per_s: steady running needs a rolling speed > 0"),
             std::string::npos) << speed;
   EXPECT_NE(speed.find("(in wear.collective[1], the running condition at "), std::string::npos) << speed;
+  // a speed history without a transient: section: the condition's duty cycle lacks it (no 'contact' command here)
+  const std::string history = with("history.yaml", "  collective:\n    - weight: 1\n      kinematics: { speed_m_per_s: "
+                                                   "{ table: [[0, 0], [1.0e-3, 1.8]] } }\n");
+  EXPECT_NE(history.find("history.yaml:32:36: kinematics.speed_m_per_s: a history runs as a duty cycle, which needs "
+                         "a transient: section"),
+            std::string::npos) << history;
+  EXPECT_EQ(history.find("'contact'"), std::string::npos) << history;
 }
 
 // The shipped collective reads, and its conditions are the ones its comments describe.

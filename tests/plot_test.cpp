@@ -403,6 +403,31 @@ TEST_F(PlotCommand, RandomSweepDrawsTheLifesDistributionWithKaplanMeier) {
   EXPECT_FALSE(has_temporary(sweep));
 }
 
+// a contact sweep's folder (rollwear sweep on a case without wear:, cases/sweep-contact.yaml): the contact against
+// each varied key, not "not a sweep's results table"
+TEST_F(PlotCommand, ContactSweepDrawsTheContactAgainstEveryAxis) {
+  const fs::path sweep = dir_ / "sweep-contact";
+  write_text(sweep / "sweep.txt", "fingerprint 0123456789abcdef\ncases 4\nshard 1/1\nsampling product\nseed 0\nkind contact\n"
+                                  "axis load.normal_load_N 2 1500\naxis kinematics.xi 2 0.001\n");
+  write_text(sweep / "results.csv",
+             "index,load.normal_load_N,kinematics.xi,a_m,b_m,p0_Pa,approach_m,Fx_N,Fy_N,Mz_N_m,power_W,stick_fraction,"
+             "status,message\n"
+             "0,1000,0.001,0.0002,0.0023,1.04e9,6.9e-6,-115,0,0,0.115,0.8,ok,\n"
+             "1,1000,0.002,0.0002,0.0023,1.04e9,6.9e-6,-200,0,0,0.4,0.6,ok,\n"
+             "2,2000,0.001,0.00025,0.0029,1.3e9,1.1e-5,-190,0,0,0.19,0.85,ok,\n"
+             "3,2000,0.002,,,,,,,,,,failed,\"the normal problem did not converge\"\n");
+  const Result r = plot(sweep);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.err, "");
+  const std::vector<std::string> pictures = {"contact_vs_kinematics_xi.png", "contact_vs_load_normal_load_N.png"};
+  EXPECT_EQ(files_under(sweep / "plots"), pictures);
+  for (const std::string& name : pictures) {
+    EXPECT_TRUE(is_png(sweep / "plots" / name));
+    EXPECT_NE(r.out.find((sweep / "plots" / name).string() + "\n"), std::string::npos) << r.out;
+  }
+  EXPECT_FALSE(has_temporary(sweep));
+}
+
 TEST_F(PlotInput, SweepTableRowThatIsNoNumberNamesFileAndLine) {
   const fs::path sweep = dir_ / "bad";
   write_grid_sweep(sweep);

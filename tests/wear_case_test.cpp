@@ -111,6 +111,13 @@ TEST_F(WearCaseReader, ErrorsNameFileLineAndKey) {
   EXPECT_EQ(error_of(kContact + "wear:\n  body1: { k_E_m3_per_J: 1.0e-13 }\n  revolutions: 10\n"
                                 "  stepping: { method: rk4 }\n"),
             file + ":14:23: wear.stepping.method: must be adaptive, fixed-depth or fixed-revolutions, got 'rk4'");
+  // a count of steps is whole: 1.5 is refused, not cut to 1; 1e6 is a whole number
+  EXPECT_EQ(error_of(kContact + "wear:\n  body1: { k_E_m3_per_J: 1.0e-13 }\n  revolutions: 10\n"
+                                "  stepping: { max_steps: 1.5 }\n"),
+            file + ":14:26: wear.stepping.max_steps: must be a whole number in [1, 1e9], got 1.5");
+  EXPECT_EQ(error_of(kContact + "wear:\n  body1: { k_E_m3_per_J: 1.0e-13 }\n  revolutions: 10\n"
+                                "  stepping: { max_steps: 1e6 }\n"),
+            "");
 }
 
 TEST_F(WearCaseReader, CrossKeyErrors) {

@@ -86,7 +86,9 @@ void read_stepping(YamlMap& m, WearStepping& s) {
   m.optional("max_depth_step_m", s.max_depth_step_m, contact::positive_finite);
   m.optional("step_revolutions", s.step_revolutions, contact::nonnegative_finite);
   double max_steps = static_cast<double>(s.max_steps);
-  m.optional("max_steps", max_steps, contact::in_closed(1, 1e9));
+  m.optional("max_steps", max_steps, [](double v) -> std::string {  // 1e6 reads as well as 1000000; 1.5 does not
+    return v >= 1 && v <= 1e9 && v == std::floor(v) ? "" : "must be a whole number in [1, 1e9]";
+  });
   s.max_steps = static_cast<long>(max_steps);
 }
 
@@ -195,7 +197,7 @@ void validate(const WearCase& c) {
     if (k.transient->scheme != contact::TransientScheme::Shift)
       throw key_error(k, "transient.scheme", "transient.scheme: a wear run's duty cycle uses shift");
   } else {
-    contact::validate_steady(k);
+    contact::validate_steady(k, contact::SteadyRunner::WearRun);
     if (!(contact::speed_of(k) > 0))
       throw key_error(k, "kinematics.speed_m_per_s", "kinematics.speed_m_per_s: steady running needs a "
                       "rolling speed > 0 (revolutions)");

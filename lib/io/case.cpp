@@ -25,9 +25,17 @@
 namespace contact {
 namespace {
 
-// a radius of curvature: .inf for flat, negative for concave, never 0 (or NaN)
+// a radius of curvature: .inf for flat, negative for concave, never 0 (or NaN); its size plausible (0.1 mm to
+// 10 km either way: lib/io/yaml_reader.h, README "The case file")
 std::string radius(double v) {
-  return v != 0 && !std::isnan(v) ? "" : "must be nonzero (.inf for flat, negative for concave)";
+  if (v == 0 || std::isnan(v)) return "must be nonzero (.inf for flat, negative for concave)";
+  return std::isinf(v) ? "" : plausible(Quantity::Length, 1e-4, 1e4)(std::fabs(v));
+}
+// plausibility bounds (README "The case file"): a unit slip refused at its key, naming the slip
+const auto kModulus = plausible(Quantity::Modulus, 1e6, 1e13);   // rubber .. beyond diamond
+const auto kWidth = plausible(Quantity::Length, 1e-5, 10);       // a generated profile: 10 um .. 10 m
+std::string profile_radius(double v) {                           // a generated profile's crown, arc: 0.1 mm .. 10 km
+  return v == 0 || !std::isfinite(v) ? "must be nonzero and finite" : plausible(Quantity::Length, 1e-4, 1e4)(std::fabs(v));
 }
 
 // a case name becomes a directory name (out/<name>)
@@ -43,7 +51,7 @@ void read_body(YamlMap& m, BodySection& b, bool with_profiles) {
   m.required("Rx_m", b.Rx_m, radius);
   if (with_profiles) m.optional("Ry_m", b.Ry_m, radius);
   else m.required("Ry_m", b.Ry_m, radius);
-  m.required("E_Pa", b.E_Pa, positive_finite);
+  m.required("E_Pa", b.E_Pa, kModulus);
   m.required("nu", b.nu, in_half_open(0, 0.5));
   m.optional("shear_yield_Pa", b.shear_yield_Pa, in_closed(kShearYieldMin_Pa, kShearYieldMax_Pa));
 }
@@ -80,29 +88,29 @@ Profile read_profile(const YamlValue& v, const std::filesystem::path& case_dir) 
     forms += m.optional_value("crowned", [&](const YamlValue& g) {
       double Ry_m = 0, width_m = 0;
       g.mapping([&](YamlMap& s) {
-        s.required("Ry_m", Ry_m, positive_finite);
-        s.required("width_m", width_m, positive_finite);
+        s.required("Ry_m", Ry_m, [](double v) { return v > 0 ? profile_radius(v) : "must be > 0 and finite"; });
+        s.required("width_m", width_m, kWidth);
       });
       generated(g, [&] { return crowned_profile(Ry_m, width_m); });
     });
     forms += m.optional_value("flat", [&](const YamlValue& g) {
       double width_m = 0;
-      g.mapping([&](YamlMap& s) { s.required("width_m", width_m, positive_finite); });
+      g.mapping([&](YamlMap& s) { s.required("width_m", width_m, kWidth); });
       generated(g, [&] { return flat_profile(width_m); });
     });
     forms += m.optional_value("arc", [&](const YamlValue& g) {
       double R_m = 0, width_m = 0;
       g.mapping([&](YamlMap& s) {
-        s.required("R_m", R_m, [](double r) { return r != 0 && std::isfinite(r) ? "" : "must be nonzero and finite"; });
-        s.required("width_m", width_m, positive_finite);
+        s.required("R_m", R_m, profile_radius);
+        s.required("width_m", width_m, kWidth);
       });
       generated(g, [&] { return arc_profile(R_m, width_m); });
     });
     forms += m.optional_value("flat_worn_crown", [&](const YamlValue& g) {
       double Ry_m = 0, width_m = 0, band_m = 0;
       g.mapping([&](YamlMap& s) {
-        s.required("Ry_m", Ry_m, positive_finite);
-        s.required("width_m", width_m, positive_finite);
+        s.required("Ry_m", Ry_m, [](double v) { return v > 0 ? profile_radius(v) : "must be > 0 and finite"; });
+        s.required("width_m", width_m, kWidth);
         s.required("band_half_width_m", band_m, nonnegative_finite);
       });
       generated(g, [&] { return flat_worn_crown_profile(Ry_m, width_m, band_m); });
@@ -519,7 +527,20 @@ void validate(const ContactCase& c) {
   }
 }
 
-void validate_steady(const ContactCase& c) {
+void validate_steady(const ContactCase& c, SteadyRunner runner) {
+  if (runner == SteadyRunner::WearRun) {
+    for (const auto& [h, key] : {std::pair<const History*, const char*>{&c.load.normal_load_N, "load.normal_load_N"},
+                                 {&c.kinematics.speed_m_per_s, "kinematics.speed_m_per_s"},
+                                 {&c.kinematics.xi, "kinematics.xi"},
+                                 {&c.kinematics.eta, "kinematics.eta"},
+                                 {&c.kinematics.phi_per_m, "kinematics.phi_per_m"}})
+      if (h->value.empty() || !is_constant(*h))
+        throw key_error(c, key, std::string(key) + ": a history runs as a duty cycle, which needs a transient: "
+                        "section (e.g. transient: { scheme: shift, t_end_s: 0.5 }); steady running needs a constant");
+    if (c.inertia)
+      throw key_error(c, "inertia", "inertia: a wear run has no roller inertia");
+    return;
+  }
   steady_value(c, c.load.normal_load_N, "load.normal_load_N");
   steady_value(c, c.kinematics.speed_m_per_s, "kinematics.speed_m_per_s");
   steady_value(c, c.kinematics.xi, "kinematics.xi");

@@ -195,9 +195,11 @@ bool given(const ContactCase& c, const std::string& key);
 
 // cross-key checks of any case (read_contact_case runs them); throws CaseError naming every key involved
 void validate(const ContactCase& c);
-// what the steady 'contact' command needs besides: every history constant, no inertia; with thermal:,
-// both surfaces moving (V > 0, |xi| < 2)
-void validate_steady(const ContactCase& c);
+// what steady running needs besides: every history constant, no inertia; with thermal:, both surfaces moving
+// (V > 0, |xi| < 2). Who runs it steadily: the 'contact' command (the refusal points to 'transient'), or a wear
+// run's steady condition (it points to the condition's transient: section, its duty cycle)
+enum class SteadyRunner { ContactCommand, WearRun };
+void validate_steady(const ContactCase& c, SteadyRunner runner = SteadyRunner::ContactCommand);
 // the commands that do not use the lubricant: and thermal: sections yet (transient, the wear and cam
 // lives) refuse them, naming the section, rather than ignoring them
 void refuse_lubrication_and_thermal(const ContactCase& c, const std::string& command);

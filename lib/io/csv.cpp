@@ -6,10 +6,12 @@
 #include <unistd.h>
 
 #include <array>
+#include <atomic>
 #include <cerrno>
 #include <cstring>
 #include <limits>
 #include <fstream>
+#include <memory>
 #include <stdexcept>
 #include <system_error>
 #include <utility>
@@ -60,6 +62,50 @@ void put_cell_rows(std::string& out, const Grid& g, std::initializer_list<CellFi
   }
 }
 
+// The temporaries being written, for a signal handler to unlink (unlink_temporaries_in_flight): fixed
+// slots, each claimed by an atomic flag (the sweep's threads write at once), its path written before the
+// flag says "in use" and the flag cleared before the slot is reused, so that the handler reads only whole
+// paths. A path too long, or no free slot, goes unregistered (the next run's stale-temporary sweep removes
+// such a file: session/output_folder.h).
+constexpr int kInFlightSlots = 64;
+constexpr std::size_t kInFlightPath = 4096;
+struct InFlightSlot {
+  std::atomic<int> state{0};  // 0 free, 1 being filled, 2 in use
+  char path[kInFlightPath];
+};
+InFlightSlot g_in_flight[kInFlightSlots];
+static_assert(std::atomic<int>::is_always_lock_free, "the signal handler reads the slots' flags");
+
+int register_in_flight(const fs::path& tmp) {
+  const std::string p = tmp.string();
+  if (p.size() >= kInFlightPath) return -1;
+  for (int k = 0; k < kInFlightSlots; ++k) {
+    int expected = 0;
+    if (g_in_flight[k].state.compare_exchange_strong(expected, 1)) {
+      std::memcpy(g_in_flight[k].path, p.c_str(), p.size() + 1);
+      g_in_flight[k].state.store(2);
+      return k;
+    }
+  }
+  return -1;
+}
+
+void release_in_flight(int slot) {
+  if (slot >= 0) g_in_flight[slot].state.store(0);
+}
+
+// a temporary registered for the signal handler while it exists
+class InFlight {
+ public:
+  explicit InFlight(const fs::path& tmp) : slot_(register_in_flight(tmp)) {}
+  ~InFlight() { release_in_flight(slot_); }
+  InFlight(const InFlight&) = delete;
+  InFlight& operator=(const InFlight&) = delete;
+
+ private:
+  int slot_;
+};
+
 fs::path temporary_for(const fs::path& path) {
   fs::path tmp = path;
   tmp += ".tmp." + std::to_string(::getpid());
@@ -88,19 +134,23 @@ void remove_quietly(const fs::path& p) {
 
 }  // namespace
 
-StreamedFile::StreamedFile(fs::path path) : path_(std::move(path)), tmp_(temporary_for(path_)) {
+StreamedFile::StreamedFile(fs::path path)
+    : path_(std::move(path)), tmp_(temporary_for(path_)), in_flight_slot_(register_in_flight(tmp_)) {
   write_temporary(path_, tmp_, "");  // creates the parent directories and an empty temporary file
   out_.open(tmp_, std::ios::binary | std::ios::app);
   if (!out_) {
     remove_quietly(tmp_);
+    release_in_flight(in_flight_slot_);
     throw std::runtime_error("cannot write " + path_.string() + ": " + std::strerror(errno));
   }
 }
 
 StreamedFile::~StreamedFile() {
-  if (committed_) return;
-  out_.close();
-  remove_quietly(tmp_);
+  if (!committed_) {
+    out_.close();
+    remove_quietly(tmp_);
+  }
+  release_in_flight(in_flight_slot_);
 }
 
 void StreamedFile::append(const std::string& text) {
@@ -120,10 +170,14 @@ void write_files_atomic(const std::vector<OutputFile>& files, const std::vector<
   // (on failure the streamed files' temporaries go with their owners)
   for (StreamedFile* s : streamed) s->close();
   std::vector<fs::path> written;
+  // each temporary registered before it exists and until it is renamed or removed: a signal that ends the
+  // process in between unlinks it (unlink_temporaries_in_flight)
+  std::vector<std::unique_ptr<InFlight>> in_flight;
   try {
     for (const OutputFile& f : files) {
       const fs::path tmp = temporary_for(f.path);
       written.push_back(tmp);
+      in_flight.push_back(std::make_unique<InFlight>(tmp));
       write_temporary(f.path, tmp, f.text);
     }
   } catch (...) {
@@ -154,6 +208,11 @@ void write_files_atomic(const std::vector<OutputFile>& files, const std::vector<
 }
 
 void write_file_atomic(const fs::path& path, const std::string& text) { write_files_atomic({{path, text}}); }
+
+void unlink_temporaries_in_flight() noexcept {
+  for (InFlightSlot& slot : g_in_flight)
+    if (slot.state.load() == 2) ::unlink(slot.path);
+}
 
 std::string csv_text(const std::string& text) {
   if (text.find_first_of(",\"\r\n") == std::string::npos) return text;

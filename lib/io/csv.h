@@ -47,6 +47,7 @@ class StreamedFile {
   void close();  // flushes and closes; throws naming path on failure
 
   std::filesystem::path path_, tmp_;
+  int in_flight_slot_ = -1;  // tmp_'s registration for unlink_temporaries_in_flight
   std::ofstream out_;
   bool committed_ = false;
 };
@@ -55,6 +56,12 @@ class StreamedFile {
 // writing (disk full, no permission) replaces none of them. Streamed files are closed first and
 // renamed with the others.
 void write_files_atomic(const std::vector<OutputFile>& files, const std::vector<StreamedFile*>& streamed = {});
+
+// Unlinks every temporary file that write_files_atomic or a StreamedFile has open at this moment (each is
+// registered from before it is created until it is renamed or removed). Async-signal-safe (atomic flags,
+// fixed buffers, unlink(2)): for a handler that ends the process on a signal (session/output_folder.h), so
+// that no temporary outlives the stop, whichever write the signal fell into.
+void unlink_temporaries_in_flight() noexcept;
 
 // fields.csv: one row per grid cell, strip by strip (j outer, i inner):
 //   x_m,y_m,pressure_Pa,tau_x_Pa,tau_y_Pa,slip_x_m_per_s,slip_y_m_per_s,power_W_per_m2,state
@@ -131,8 +138,8 @@ std::string snapshot_csv(const Grid& grid, const Snapshot& s);
 //   name,scheme,nx,ny,steps,t_end_s,q_end_m,dissipated_J,Fx_N,Fy_N,Mz_N_m,power_W,stick_fraction,
 //   omega1_rad_per_s,sliding_end_s,end_step,fallback_steps
 // Fx_N ... omega1_rad_per_s: the run's end values, result.end (the last whole step's record, not the
-// step cut short to end at t_end_s), whose number is end_step; sliding_end_s: t_s of the first step
-// with stick_fraction > 0 (the end of gross sliding), nan if no step had stick; fallback_steps: the
+// step cut short to end at t_end_s), whose number is end_step; sliding_end_s: the end of gross sliding,
+// GrossSliding::end_s (lib/tangential/satran.h), nan if the contact never slid whole or slid to the end; fallback_steps: the
 // shift run's steps that ran upwind at CFL < 1.
 std::string transient_summary_csv(const std::string& name, TransientScheme scheme, const TransientResult& result,
                                   double sliding_end_s);

@@ -160,6 +160,44 @@ inline auto in_half_open(double lo, double hi) {  // [lo, hi)
   };
 }
 
+// Plausibility bounds on lengths, forces, moduli and masses: far wider than any machine element's, to catch
+// a unit slip (40 m for a 40 mm radius), not to judge a design. The refusal gives the range and the likely
+// slip; the reader adds what it got. Each key's bounds are listed with the case keys (README.md, docs/).
+enum class Quantity { Length, Force, Modulus, Mass, Stiffness };
+inline auto plausible(Quantity q, double lo, double hi) {
+  return [q, lo, hi](double v) -> std::string {
+    // a sign or a non-number first, as positive_finite and nonnegative_finite say it
+    if (!std::isfinite(v) || (lo > 0 && v <= 0) || (lo >= 0 && v < 0))
+      return lo > 0 ? "must be > 0 and finite" : "must be >= 0 and finite";
+    if (v >= lo && v <= hi) return "";
+    const bool high = v > hi;
+    const char* unit = "m";
+    const char* slip = "a slip in the exponent?";
+    switch (q) {
+      case Quantity::Length:
+        slip = high ? (v / 1e3 >= lo && v / 1e3 <= hi ? "millimetres written as metres?" : "a slip in the exponent?")
+                    : (v * 1e3 >= lo && v * 1e3 <= hi ? "millimetres converted to metres twice?"
+                                                      : "a slip in the exponent (e-12 for e-3)?");
+        break;
+      case Quantity::Force:
+        unit = "N";
+        break;
+      case Quantity::Modulus:
+        unit = "Pa";
+        if (!high) slip = "GPa or MPa written as Pa (steel: 2.1e11 Pa)?";
+        break;
+      case Quantity::Mass:
+        unit = "kg";
+        if (high && v / 1e3 >= lo && v / 1e3 <= hi) slip = "grams written as kilograms?";
+        break;
+      case Quantity::Stiffness:
+        unit = "N/m";
+        break;
+    }
+    return fmt::format("is not plausible: must be in [{:g}, {:g}] {} ({})", lo, hi, unit, slip);
+  };
+}
+
 class YamlMap;
 
 // One value of a case file with the key path that names it, for values that are more than a plain

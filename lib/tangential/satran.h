@@ -30,6 +30,7 @@
 #pragma once
 
 #include <functional>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <string>
@@ -285,6 +286,24 @@ struct TransientResult {
 
 // called after every step with the record and the strip powers P_l(y_j) of the step (W/m)
 using StepObserver = std::function<void(const TransientRecord&, const Eigen::ArrayXd& strip_power_W_per_m)>;
+
+// Gross sliding (docs/physics.md §4.5): the whole contact slides when the creep force is at its Coulomb
+// bound, |(Fx, Fy)| = mu F. A run from rest builds its tractions up over the first steps (stick at the
+// leading edge while the force is below the bound), so the first step with stick is not the end of gross
+// sliding: it ends at the first step below the bound after a step at it. "At the bound" is within
+// kGrossSlidingTolerance of mu F: while the whole contact slides the relaxed model's force is mu F to 1e-9,
+// Satran's to 5e-4 (its grid's sum of p dA against F), and cases/roller-spinup.yaml leaves the bound by more
+// than 1e-3 within two steps of the first stick.
+constexpr double kGrossSlidingTolerance = 1e-3;
+struct GrossSliding {
+  int start_step = 0;  // the first step at the bound (0: none yet)
+  double start_s = std::numeric_limits<double>::quiet_NaN();
+  int end_step = 0;    // the first step below the bound after start_step (0: not ended)
+  double end_s = std::numeric_limits<double>::quiet_NaN();  // its t_s
+};
+// feed every step's record in order (a shortened last step, cut to end at t_end_s, is not judged); mu: the
+// case's coefficient of friction
+void track_gross_sliding(const TransientRecord& r, double mu, GrossSliding& sliding);
 
 // throws std::invalid_argument for bad settings (naming the largest allowed dt for a CFL breach)
 // the inputs every transient run needs, whatever solver steps it: finite histories, speed and load >= 0,

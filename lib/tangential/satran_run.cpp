@@ -452,4 +452,19 @@ double implicit_roller_speed_rad_per_s(const std::function<double(double)>& bala
   return root.x;
 }
 
+void track_gross_sliding(const TransientRecord& r, double mu, GrossSliding& sliding) {
+  if (r.shortened || sliding.end_step > 0) return;
+  const double bound_N = mu * r.normal_load_N;
+  const bool at_bound = bound_N > 0 && std::hypot(r.Fx_N, r.Fy_N) >= (1 - kGrossSlidingTolerance) * bound_N;
+  if (sliding.start_step == 0) {
+    if (at_bound) {
+      sliding.start_step = r.step;
+      sliding.start_s = r.t_s;
+    }
+  } else if (!at_bound) {
+    sliding.end_step = r.step;
+    sliding.end_s = r.t_s;
+  }
+}
+
 }  // namespace contact

@@ -122,13 +122,35 @@ def sweep(path, *, output_dir=None, threads=0, shard=(1, 1), force=False):
     """A sweep (`rollwear sweep`, docs/sweeps.md): runs it into its folder (output_dir, else the sweep's
     output.directory, else out/<sweep file stem>; a finished case is not run again) and returns
     {"directory": the folder, "results": results.csv's columns (numbers as arrays, ended_by, status and
-    message as lists of str)}. threads 0: every core. Ctrl-C stops it after the running cases; the same
+    message as lists of str)}. threads 0: every core. shard: (K, N) or "K/N", the K-th of N parts as `rollwear
+    sweep --shard K/N` runs it. Ctrl-C stops it after the running cases; the same
     call resumes it. A shard of more than 10000 cases raises InputError before any case is read, unless
     force=True (`--force`)."""
-    k, n = shard
+    k, n = _shard_of(shard)
+    if isinstance(threads, bool) or not isinstance(threads, numbers.Integral):
+        raise _input_error(f"sweep: threads: expected a whole number >= 0 (0: every core), got {threads!r}", "threads")
     directory = _rollwear.sweep(os.fspath(path), os.fspath(output_dir) if output_dir is not None else "",
                                 int(threads), int(k), int(n), bool(force))
     return {"directory": directory, "results": read_results(os.path.join(directory, "results.csv"))}
+
+
+def _input_error(message, key):
+    """an InputError as the engine raises it, with no file or line (an argument, not a case file's key)"""
+    e = InputError(message)
+    e.file, e.line, e.column, e.key = None, None, None, key
+    return e
+
+
+def _shard_of(shard):
+    """(K, N) from (K, N) or "K/N" (as `rollwear sweep --shard` takes it); the engine checks 1 <= K <= N"""
+    if isinstance(shard, str):
+        k, slash, n = shard.partition("/")
+        if slash and k.strip().isdigit() and n.strip().isdigit():
+            return int(k), int(n)
+    elif isinstance(shard, (tuple, list)) and len(shard) == 2 and all(
+            isinstance(x, numbers.Integral) and not isinstance(x, bool) for x in shard):
+        return int(shard[0]), int(shard[1])
+    raise _input_error(f'sweep: shard: expected (K, N) or "K/N", e.g. (2, 8) or "2/8", got {shard!r}', "shard")
 
 
 _TEXT_COLUMNS = ("ended_by", "status", "message")

@@ -183,6 +183,47 @@ def test_sweep_runs_its_cases(source, tmp_path):
     assert os.path.exists(os.path.join(s["directory"], "case_0001", "report.txt"))
 
 
+def test_sweep_arguments_are_checked_as_the_command_line_checks_them(source, tmp_path):
+    sweep = tmp_path / "two.yaml"
+    sweep.write_text(f"base: {source / 'cases' / 'paper-wear.yaml'}\n"
+                     "axes:\n  - { key: friction.mu, values: [0.3, 0.4] }\n")
+    # shard as --shard writes it: "K/N" is (K, N); a form neither is refused naming the key
+    for bad in ("1-2", "1/2/3", "a/b", 3, (1, 2, 3), (1.0, 2)):
+        with pytest.raises(rollwear.InputError) as e:
+            rollwear.sweep(sweep, output_dir=tmp_path / "no", shard=bad)
+        assert e.value.key == "shard" and "expected (K, N) or \"K/N\"" in str(e.value), (bad, str(e.value))
+    with pytest.raises(rollwear.InputError) as e:
+        rollwear.sweep(sweep, output_dir=tmp_path / "no", shard="3/2")
+    assert e.value.key == "shard" and "1 <= K <= N, got 3/2" in str(e.value)
+    # threads: -j -1 is refused by the command line, threads=-1 here; 1.5 is not a count
+    for bad in (-1, 1.5, True):
+        with pytest.raises(rollwear.InputError) as e:
+            rollwear.sweep(sweep, output_dir=tmp_path / "no", threads=bad)
+        assert e.value.key == "threads", (bad, str(e.value))
+    assert not (tmp_path / "no").exists()
+    # "2/2": the second case only, as --shard 2/2 runs it
+    s = rollwear.sweep(sweep, output_dir=tmp_path / "half", threads=1, shard="2/2")
+    np.testing.assert_array_equal(s["results"]["index"], [1])
+
+
+def test_a_unit_slip_is_refused_by_the_library_as_by_the_command_line():
+    # E in GPa written as Pa: the reader's plausibility bound, the same in Python as in the program
+    bodies = dict(PAPER["bodies"], body1=dict(PAPER["bodies"]["body1"], E_Pa=210))
+    with pytest.raises(rollwear.InputError) as e:
+        rollwear.contact(dict(PAPER, bodies=bodies))
+    assert e.value.key == "bodies.body1.E_Pa" and "GPa or MPa written as Pa" in str(e.value), str(e.value)
+
+
+def test_a_cam_case_is_refused_naming_where_it_runs(source):
+    cam = source / "cases" / "cam-follower.yaml"
+    line = 1 + next(i for i, l in enumerate(cam.read_text().splitlines()) if l.startswith("cam:"))
+    for function in (rollwear.run, rollwear.contact, rollwear.transient):
+        with pytest.raises(rollwear.InputError) as e:
+            function(cam)
+        assert (e.value.file, e.value.line, e.value.key) == (str(cam), line, "cam"), str(e.value)
+        assert "rollwear run CASE" in str(e.value) and "bodies: required" not in str(e.value)
+
+
 def test_a_bad_key_is_an_input_error_with_its_place(source, cli, tmp_path):
     text = (source / "cases" / "paper.yaml").read_text().replace("friction:", "frction:")
     line = 1 + text.splitlines().index(next(l for l in text.splitlines() if l.startswith("frction:")))
