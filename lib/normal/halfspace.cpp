@@ -35,6 +35,7 @@
 // next iteration needs no convolution for g. The final residual is always judged on a fresh K p.
 #include "lib/normal/halfspace.h"
 #include "lib/numeric.h"
+#include "lib/fftw_planner.h"
 
 #include <fftw3.h>
 #include <spdlog/fmt/fmt.h>
@@ -58,12 +59,6 @@ double love_antiderivative(double X, double Y) {
   if (X != 0) G += X * std::asinh(Y / std::abs(X));
   if (Y != 0) G += Y * std::asinh(X / std::abs(Y));
   return G;
-}
-
-// FFTW's planner keeps global state: plans are made and destroyed one at a time
-std::mutex& fftw_planner_mutex() {
-  static std::mutex m;
-  return m;
 }
 
 struct FftwFree {

@@ -60,6 +60,7 @@
 // converge at 0.985 per iteration (residual 2e-3 after 200 at 80 x 80): hence Newton.
 #include "lib/tangential/exact.h"
 #include "lib/numeric.h"
+#include "lib/fftw_planner.h"
 #include "lib/history.h"
 #include "lib/errors.h"
 #include "lib/normal/hertz.h"
@@ -132,11 +133,6 @@ double F_r(double X, double Y) { return std::hypot(X, Y); }
 template <class F>
 double rectangle_difference(F f, double x, double y, double c, double d) {
   return f(x + c, y + d) - f(x + c, y - d) - f(x - c, y + d) + f(x - c, y - d);
-}
-
-std::mutex& fftw_planner_mutex() {
-  static std::mutex m;
-  return m;
 }
 
 struct FftwFree {
