@@ -35,6 +35,7 @@ struct HalfspaceOptions {
   // solve converges to the same tol either way: the start changes the result only within tol.
   const Eigen::ArrayXXd* initial_pressure_Pa = nullptr;
   bool warn_at_border = true;  // false: a contact that reaches the border is data only (a caller that enlarges)
+  bool precondition = true;    // false: Polonsky & Keer's unpreconditioned iteration (for comparison)
 };
 
 struct HalfspaceSolution {
@@ -43,6 +44,7 @@ struct HalfspaceSolution {
   double contact_area_m2 = 0;   // loaded cells times dx dy
   SolveStatus status;           // iterations, complementarity residual, message with the numbers
   bool reaches_border = false;  // a cell on the grid's border is loaded: the contact is cut by the grid
+  int products = 0;             // FFT convolutions u = K p the solve took (the start's and the final check's included)
 };
 
 // Displacement of the surface at (x, y) relative to the centre of a dx x dy rectangle carrying unit
