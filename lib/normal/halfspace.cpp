@@ -148,10 +148,19 @@ struct HalfspaceWorkspace {
         spectrum(fftw_array<fftw_complex>(static_cast<std::size_t>(my) * nk)),
         columns(fftw_array<fftw_complex>(static_cast<std::size_t>(my) * nk)),
         kernel_spectrum(static_cast<std::size_t>(my) * nk), quadrant(g.nx, g.ny) {
-    // kernel at the offsets of the first quadrant; even in both, wrapped onto the padded grid
+    // kernel at the offsets of the first quadrant (Love's form, top of file), from Love's antiderivative
+    // on the lattice of the cells' corners, G_ij = G((i + 1/2) dx, (j + 1/2) dy), each corner's value
+    // computed once (G is odd in X and in Y: G_-1,j = -G_0,j); even in both, wrapped onto the padded grid
+    Eigen::ArrayXXd corner(nx + 1, ny + 1);  // corner(i + 1, j + 1) = G_ij, i, j >= -1
+    for (int j = 0; j < ny; ++j)
+      for (int i = 0; i < nx; ++i)
+        corner(i + 1, j + 1) = love_antiderivative((i + 0.5) * g.dx_m, (j + 0.5) * g.dy_m);
+    corner.row(0).tail(ny) = -corner.row(1).tail(ny);
+    corner.col(0) = -corner.col(1);
+    const double to_m_per_Pa = 1 / (kPi * Estar_Pa);
     for (int l = 0; l < ny; ++l)
       for (int k = 0; k < nx; ++k)
-        quadrant(k, l) = rectangle_influence_m_per_Pa(k * g.dx_m, l * g.dy_m, g.dx_m, g.dy_m, Estar_Pa);
+        quadrant(k, l) = (corner(k + 1, l + 1) - corner(k + 1, l) - corner(k, l + 1) + corner(k, l)) * to_m_per_Pa;
     auto kernel = fftw_array<double>(static_cast<std::size_t>(mx) * my);
     double* K = kernel.get();
     for (int n = 0; n < my; ++n) {

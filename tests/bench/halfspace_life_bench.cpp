@@ -119,6 +119,13 @@ void BM_WornHalfspaceFineOnly(benchmark::State& state) {
   }
   state.counters["iterations"] = s.status.iterations;
   state.counters["products"] = s.products;
+  // against Polonsky & Keer's unpreconditioned iteration from the same start (the answer before the
+  // preconditioner): pressures as a fraction of the peak, approach relative
+  contact::HalfspaceOptions plain = opt;
+  plain.precondition = false;
+  const contact::HalfspaceSolution ref = contact::solve_halfspace(g, gap, Estar, r.model.normal_load_N, plain);
+  state.counters["dp_of_peak"] = (s.pressure_Pa - ref.pressure_Pa).abs().maxCoeff() / ref.pressure_Pa.maxCoeff();
+  state.counters["ddelta_rel"] = std::abs(s.approach_m - ref.approach_m) / ref.approach_m;
   if (!s.status.converged()) state.SkipWithError(("not converged: " + s.status.message).c_str());
 }
 BENCHMARK(BM_WornHalfspaceFineOnly)
