@@ -316,7 +316,7 @@ class PolonskyKeer {
         // start: the load spread evenly over the grid
         p_(Eigen::ArrayXXd::Constant(grid.nx, grid.ny, F / (grid.nx * grid.ny * cell_m2_))),
         u_(grid.nx, grid.ny), g_(grid.nx, grid.ny), t_(Eigen::ArrayXXd::Zero(grid.nx, grid.ny)), Kt_(grid.nx, grid.ny),
-        z_(M_ ? grid.nx : 0, M_ ? grid.ny : 0) {
+        z_(M_ ? grid.nx : 0, M_ ? grid.ny : 0), changed_(static_cast<std::size_t>(grid.nx) * grid.ny) {
     // or the caller's start, non-negative and carrying the load
     if (start) {
       const Eigen::ArrayXXd q = start->max(0.0);
@@ -384,8 +384,7 @@ class PolonskyKeer {
     const double* const S = g_.data();
     const double* const T = t_.data();
     bool overlap = false;
-    changed_.resize(static_cast<std::size_t>(n_cells));  // no call in the loop: its sum stays in a register
-    Change* const C = changed_.data();
+    Change* const C = changed_.data();  // n_cells long: no call in the loop
     std::size_t n_changed = 0;
     for (Eigen::Index i = 0; i < n_cells; ++i) {
       const double along = P[i] > 0 ? P[i] - tau * T[i] : 0.0;  // p - tau t (t = 0 off the loaded cells)
@@ -398,7 +397,6 @@ class PolonskyKeer {
       if (now != along) C[n_changed++] = {i, now - along};
       P[i] = now;
     }
-    changed_.resize(n_changed);
     const double sum_p = p_.sum();
     conjugate_ = !overlap;
     const double scale = F_ / (sum_p * cell_m2_);
@@ -410,7 +408,8 @@ class PolonskyKeer {
     }
     u_ -= tau * Kt_;
     const int nx = static_cast<int>(p_.rows());
-    for (const Change& c : changed_) K_.add_cell(c.dp, static_cast<int>(c.i % nx), static_cast<int>(c.i / nx), u_);
+    for (std::size_t c = 0; c < n_changed; ++c)
+      K_.add_cell(C[c].dp, static_cast<int>(C[c].i % nx), static_cast<int>(C[c].i / nx), u_);
     u_ *= scale;
     u_by_fft_ = false;
   }
