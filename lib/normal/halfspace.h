@@ -1,8 +1,9 @@
 // The exact normal problem on the elastic half-space (docs/physics.md §1-2): piecewise-constant pressure on
 // the grid's cells, Boussinesq influence coefficients (Love's closed form for a uniformly loaded
 // rectangle), solved by the bound-constrained conjugate gradient method of Polonsky & Keer (1999)
-// with the total load prescribed. It is the reference the Hertz and semi-Hertzian solutions are
-// checked against, and a user option for any gap (worn profiles).
+// with the total load prescribed, preconditioned by the inverse of the half-space's symbol. It is the
+// reference the Hertz and semi-Hertzian solutions are checked against, and a user option for any gap
+// (worn profiles).
 //
 // The discrete problem: find p_i >= 0 and the approach delta such that the separation
 //   s_i = h_i + u_i - delta,   u_i = sum_j K_ij p_j,
@@ -28,7 +29,7 @@ namespace contact {
 
 struct HalfspaceOptions {
   double tol = 1e-9;         // on the complementarity residual above
-  int max_iterations = 2000;  // conjugate-gradient iterations (one or two FFT convolutions each)
+  int max_iterations = 2000;  // conjugate-gradient iterations (one FFT convolution each, two when many cells change)
   // warm start: the pressure to start from on this grid (nx x ny, e.g. the last solve's, or it
   // interpolated onto this grid: interpolate_pressure), its negative values taken as 0 and the rest
   // scaled to the load; null, or one that carries nothing, starts from the load spread evenly. The
