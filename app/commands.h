@@ -22,6 +22,7 @@ struct ContactOptions {
   std::string case_path;
   std::string output_directory;  // overrides output.directory
   bool no_fields = false;
+  bool no_subsurface = false;  // overrides output.subsurface
 };
 CLI::App* add_contact_command(CLI::App& app, ContactOptions& opt, CommonOptions& common);
 int run_contact_command(const ContactOptions& opt);
@@ -63,6 +64,7 @@ struct SweepOptions {
   std::string shard = "1/1";     // K/N
   int threads = 0;               // 0: every core (std::thread::hardware_concurrency)
   bool quiet = false;
+  bool force = false;            // run a shard of more than session::kSweepMaxCases cases
   std::vector<std::string> merge;  // --merge DIR...
 };
 CLI::App* add_sweep_command(CLI::App& app, SweepOptions& opt, CommonOptions& common);

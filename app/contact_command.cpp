@@ -1,5 +1,7 @@
 // rollwear contact: the normal and steady tangential problem of one case (app/commands.h).
+#include <array>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -22,8 +24,9 @@ CLI::App* add_contact_command(CLI::App& app, ContactOptions& opt, CommonOptions&
       "contact", "Steady rolling contact of one case: the normal problem (Hertz, or on the case's profiles the "
                  "semi-Hertzian or half-space solver, as solver.normal says), then the tangential problem "
                  "(by default the relaxed model, matched to Kalker's exact theory; solver.tangential: consistent "
-                 "for his simplified theory, exact for the exact theory). Prints a summary and writes summary.csv, strips.csv and "
-                 "fields.csv.");
+                 "for his simplified theory, exact for the exact theory), then the stresses below the surface of "
+                 "both bodies. Prints a summary and writes summary.csv, strips.csv, fields.csv, subsurface.csv, "
+                 "subsurface_section.csv and, for a body with shear_yield_Pa, fatigue.csv.");
   sub->footer(
       "The summary names the normal solver that ran (and why, for solver.normal: auto) and the number of\n"
       "contact patches. strips.csv's y_m is in the profiles' lateral coordinate. With solver.tangential:\n"
@@ -32,11 +35,20 @@ CLI::App* add_contact_command(CLI::App& app, ContactOptions& opt, CommonOptions&
       "A contact that reaches a body's edge (the end of its profile) is a warning line in the summary; the\n"
       "outputs are written and the exit status stays 0 (if its normal solve converged; an unconverged one,\n"
       "at an edge or not, is exit 1).\n"
+      "The subsurface stresses (docs/subsurface.md) are each body's under the cells' tractions, on 31 planes\n"
+      "from the surface to 1.5 min(a, b): their maxima (subsurface.csv) and the x-z section through the most\n"
+      "loaded cell (subsurface_section.csv). With bodies.bodyN.shear_yield_Pa, the shakedown margin and the\n"
+      "surface fatigue index of that body (fatigue.csv).\n"
+      "With a lubricant: section the summary adds the EHL film thickness, the film parameter lambda and the\n"
+      "regime with its friction and wear factors; with a thermal: section the flash temperature (Blok's\n"
+      "partition) and, with critical_temperature_C, the scuffing margin (docs/lubrication-and-temperature.md).\n"
       "Exit status: 0 success, 2 bad input (case file, options), 1 any other failure.");
   sub->add_option("case", opt.case_path, "Case file (YAML), e.g. cases/paper.yaml")->required();
   sub->add_option("-o,--output", opt.output_directory,
                   "Output directory (default: the case's output.directory, else out/<case name>)");
   sub->add_flag("--no-fields", opt.no_fields, "Do not write fields.csv (the per-cell fields)");
+  sub->add_flag("--no-subsurface", opt.no_subsurface,
+                "Do not compute the stresses below the surface (subsurface.csv, subsurface_section.csv, fatigue.csv)");
   add_log_level_option(*sub, common);
   return sub;
 }
@@ -73,12 +85,64 @@ void print_contact_summary(const ContactCase& c, const NormalSolution& normal, c
   fmt::print("  stick fraction     {:.4f}\n", s.stick_fraction);
 }
 
+// the subsurface maxima and, where a body has k, its fatigue indicators
+void print_subsurface_summary(const ContactPatch& patch, const std::array<BodySubsurface, 2>& bodies) {
+  const auto at = [](const StressPeak& s) {
+    return fmt::format("at depth {:.4f} mm (x = {:.4f} mm, y = {:.4f} mm)", s.z_m * 1e3, s.x_m * 1e3, s.y_m * 1e3);
+  };
+  for (int k = 0; k < 2; ++k) {
+    const Subsurface& s = bodies[k].stresses;
+    const SubsurfaceMaxima& m = s.maxima;
+    fmt::print("  below body {} (nu = {:.4g}):\n", k + 1, s.nu);
+    fmt::print("    von Mises        {:.3f} MPa {} = {:.3f} p0\n", m.von_mises.value_Pa * 1e-6, at(m.von_mises),
+               m.von_mises.value_Pa / patch.p0_Pa);
+    fmt::print("    Tresca (s1-s3)/2 {:.3f} MPa {} = {:.3f} p0\n", m.tresca.value_Pa * 1e-6, at(m.tresca),
+               m.tresca.value_Pa / patch.p0_Pa);
+    fmt::print("    |sigma_xz|       {:.3f} MPa {}\n", m.orthogonal_shear.value_Pa * 1e-6, at(m.orthogonal_shear));
+    fmt::print("    largest s1       {:.3f} MPa {}\n", m.tension.value_Pa * 1e-6, at(m.tension));
+    fmt::print("    smallest s3      {:.3f} MPa {}\n", m.compression.value_Pa * 1e-6, at(m.compression));
+    if (const std::optional<FatigueIndicators>& f = bodies[k].fatigue) {
+      fmt::print("    fatigue, k = {:.1f} MPa: p0/k = {:.3f}, shakedown limit {:.3f} ({} contact, {} limit) at "
+                 "traction {:.4f}: margin {:+.1f} %\n",
+                 f->shear_yield_Pa * 1e-6, f->p0_over_k, f->limit_p0_over_k, to_string(f->contact),
+                 f->surface_limit ? "surface" : "subsurface", f->traction_coefficient, f->margin * 100);
+      fmt::print("    surface fatigue  FI_surf = {:.4f}, per cell (|tau| - k)/p at most {:.4f} (x = {:.4f} mm, "
+                 "y = {:.4f} mm)\n",
+                 f->FI_surf, f->cell_index_max, f->cell_x_m * 1e3, f->cell_y_m * 1e3);
+    }
+  }
+}
+
+// the film and the regime (lubricant:), the flash temperature (thermal:)
+void print_lubrication_and_thermal(const ContactRun& run) {
+  if (const auto& l = run.lubrication) {
+    fmt::print("  EHL film (Hamrock-Dowson, Rx = {:.4g} mm, k = {:.3g}{}, u = {:.4g} m/s)\n", l->Rx_m * 1e3,
+               l->film.ellipticity_k, l->within_fit_range ? "" : ", outside the fitted 1-8", l->entrainment_m_per_s);
+    fmt::print("  film thickness  h_min = {:.4g} um, h_c = {:.4g} um\n", l->film.h_min_m * 1e6,
+               l->film.h_central_m * 1e6);
+    fmt::print("  film parameter  lambda = {:.4g}: {} regime, mu = {:.4g}, wear factor = {:.4g}"
+               " (the solve above uses friction.mu)\n",
+               l->lambda, to_string(l->regime), l->mu, l->wear_factor);
+  }
+  if (const auto& t = run.thermal) {
+    const FlashTemperature& f = t->flash;
+    fmt::print("  flash temperature  max {:.4g} K above bulk (Blok: {:.3g} of the heat into body 1; "
+               "Peclet L1 = {:.3g}, L2 = {:.3g})\n",
+               f.max_rise_K, f.share_body1, f.peclet_body1, f.peclet_body2);
+    if (t->contact_temperature_C) fmt::print("  contact temperature  {:.4g} C\n", *t->contact_temperature_C);
+    if (t->scuffing_margin_K)
+      fmt::print("  scuffing margin    {:.4g} K below Blok's critical temperature{}\n", *t->scuffing_margin_K,
+                 *t->scuffing_margin_K < 0 ? " (past it: scuffing expected)" : "");
+  }
+}
+
 }  // namespace
 
 int run_contact_command(const ContactOptions& opt) {
   const ContactCase c = read_contact_case(opt.case_path);
   const bool fields = c.output.fields && !opt.no_fields;
-  const ContactRun run = solve_contact_case(c, fields);  // lib/io/case_run.h
+  const bool subsurface = c.output.subsurface && !opt.no_subsurface;
+  const ContactRun run = solve_contact_case(c, fields || subsurface);  // lib/io/case_run.h
   const NormalSolution& normal = run.normal;
   const ContactPatch& patch = normal.patch;
   const TangentialProblem& problem = run.problem;
@@ -89,15 +153,35 @@ int run_contact_command(const ContactOptions& opt) {
   // every output computed before anything is written
   const std::filesystem::path dir = session::output_directory(opt.output_directory, c.output.directory, c.name);
   std::vector<OutputFile> files = {
-      {dir / "summary.csv", summary_csv(c.name, patch, problem, solution, scheme)},
+      {dir / "summary.csv", contact_summary_csv(c.name, run)},
       {dir / "strips.csv", strips_csv(in_profile_coordinates(normal), solution)},
   };
   if (fields) files.push_back({dir / "fields.csv", fields_csv(patch, solution)});
+  std::array<BodySubsurface, 2> below;
+  bool fatigue = false;
+  if (subsurface) {
+    below = subsurface_of_contact(c, run);
+    const std::vector<const Subsurface*> bodies = {&below[0].stresses, &below[1].stresses};
+    files.push_back({dir / "subsurface.csv", subsurface_csv(bodies)});
+    files.push_back({dir / "subsurface_section.csv",
+                     subsurface_section_csv(in_profile_coordinates(normal).grid, bodies)});  // y as strips.csv's
+    fatigue = below[0].fatigue || below[1].fatigue;
+    if (fatigue)
+      files.push_back({dir / "fatigue.csv", fatigue_csv({below[0].fatigue ? &*below[0].fatigue : nullptr,
+                                                         below[1].fatigue ? &*below[1].fatigue : nullptr})});
+  }
 
   print_contact_summary(c, normal, problem, solution, scheme, exact_solve);
+  print_lubrication_and_thermal(run);
+  if (subsurface) print_subsurface_summary(patch, below);
   const session::OutputLock lock(dir);
   write_files_atomic(files);
   if (!fields) std::filesystem::remove(dir / "fields.csv");  // an earlier run's: not this run's fields
+  if (!subsurface) {
+    std::filesystem::remove(dir / "subsurface.csv");
+    std::filesystem::remove(dir / "subsurface_section.csv");
+  }
+  if (!fatigue) std::filesystem::remove(dir / "fatigue.csv");
   spdlog::info("wrote {} files to {}", files.size(), dir.string());
   return 0;
 }

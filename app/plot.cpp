@@ -955,6 +955,48 @@ std::vector<fs::path> draw_cam(const fs::path& dir, const fs::path& plots, std::
   return render(script, picture.list, plots, err);
 }
 
+// ---- a steady contact's stresses below the surface (rollwear contact, docs/subsurface.md) -------------------
+
+// the folder of `rollwear contact`: its section below the surface, which no life writes
+bool is_contact_output(const fs::path& dir) {
+  std::error_code ec;
+  return fs::exists(dir / "subsurface_section.csv", ec) && fs::exists(dir / "strips.csv", ec);
+}
+
+// per body: von Mises and Tresca's (s1 - s3)/2 on the x-z section through the most loaded cell, depth down
+std::vector<fs::path> draw_subsurface(const fs::path& dir, const fs::path& plots, std::ostream& err) {
+  const Table t = read_table(dir / "subsurface_section.csv");
+  const std::vector<double> body = column(t, "body"), y = column(t, "y_m"), x = column(t, "x_m"),
+                            z = column(t, "z_m"), vm = column(t, "von_mises_Pa"), tr = column(t, "tresca_Pa");
+  const fs::path normal = fs::absolute(dir).lexically_normal();
+  const std::string name = (normal.has_filename() ? normal.filename() : normal.parent_path().filename()).string();
+  Pictures picture{plots, {}};
+  std::string script = "# rollwear plot: " + name + "\n" + terminal_script();
+  for (const int b : {1, 2}) {
+    std::string block;
+    double last_z = std::numeric_limits<double>::quiet_NaN(), section_y = 0;
+    for (std::size_t r = 0; r < body.size(); ++r) {
+      if (body[r] != b) continue;
+      if (!std::isnan(last_z) && z[r] != last_z) block += "\n";  // a new plane: a new scan for pm3d
+      last_z = z[r], section_y = y[r];
+      block += fmt::format("{:.8g} {:.8g} {:.8g} {:.8g}\n", x[r] * 1e3, z[r] * 1e3, vm[r] * 1e-6, tr[r] * 1e-6);
+    }
+    if (block.empty()) continue;
+    script += fmt::format("$body{} << EOD\n{}EOD\n", b, block);
+    script += figure_start(picture(fmt::format("subsurface_body{}.png", b)),
+                           fmt::format("{}: below body {}, the section y = {:.4g} mm", name, b, section_y * 1e3)) +
+              "set multiplot layout 2,1\n"
+              "set view map\nset pm3d map corners2color c1\n"
+              "set palette defined (0 '#ffffff', 1 '#e9a03b', 2 '#c0392b', 3 '#3b0f0f')\n"
+              "set xlabel 'x (mm), rolling'\nset ylabel 'depth z (mm)'\nset yrange [*:*] reverse\n"
+              "set autoscale xfix\nset autoscale yfix\nunset key\nunset grid\n" +
+              fmt::format("set title 'von Mises (MPa)'\nset cblabel 'MPa'\nsplot $body{} using 1:2:3 with pm3d\n", b) +
+              fmt::format("set title 'Tresca (s1 - s3)/2 (MPa)'\nsplot $body{} using 1:2:4 with pm3d\n", b) +
+              "unset multiplot\n" + kFigureEnd;
+  }
+  return render(script, picture.list, plots, err);
+}
+
 }  // namespace
 
 int plot_command(const std::string& output_dir, std::ostream& out, std::ostream& err) {
@@ -974,6 +1016,11 @@ int plot_command(const std::string& output_dir, std::ostream& out, std::ostream&
     }
     if (is_cam_output(dir)) {
       for (const fs::path& p : draw_cam(dir, dir / "plots", err)) out << p.string() << '\n';
+      out.flush();
+      return 0;
+    }
+    if (is_contact_output(dir)) {  // rollwear contact's folder: the stresses below the surface
+      for (const fs::path& p : draw_subsurface(dir, dir / "plots", err)) out << p.string() << '\n';
       out.flush();
       return 0;
     }

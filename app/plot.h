@@ -17,6 +17,9 @@
 //   life_distribution.png     random sampling only: the lives' empirical distribution (i/n) and the
 //                             Kaplan-Meier estimate with the budget's lives censored, B10 and B50 marked
 // Cases whose status is not ok are left out (and counted in the titles).
+// A contact's folder (rollwear contact: subsurface_section.csv and strips.csv) instead gets
+//   subsurface_body1.png, subsurface_body2.png   von Mises and Tresca's (s1 - s3)/2 (MPa) on the x-z section
+//                             through the most loaded cell, depth pointing down (docs/subsurface.md)
 // gnuplot runs once on a temporary script (plots/plot.gp.tmp.<pid>); every PNG is drawn to
 // PNG + ".tmp.<pid>" and renamed only when gnuplot has succeeded, so a failure leaves no torn PNG and
 // no temporary file.

@@ -72,6 +72,7 @@ CLI::App* add_sweep_command(CLI::App& app, SweepOptions& opt, CommonOptions& com
   sub->add_option("-j,--threads", opt.threads, "Cases run at once (default: the number of cores)")
       ->check(CLI::NonNegativeNumber);
   sub->add_flag("-q,--quiet", opt.quiet, "No progress line");
+  sub->add_flag("--force", opt.force, "Run a sweep of more than 10000 cases in this shard (kSweepMaxCases)");
   sub->add_option("--merge", opt.merge, "Join the results of these shard folders into -o OUT")->expected(1, -1);
   add_log_level_option(*sub, common);
   return sub;
@@ -94,6 +95,7 @@ int run_sweep_command(const SweepOptions& opt) {
   const session::Sweep s = session::read_sweep(opt.sweep_path);
   session::SweepRunOptions o;
   parse_shard(opt.shard, o.shard_k, o.shard_n);
+  o.force = opt.force;
   o.output_directory = session::output_directory(opt.output_directory, s.output_directory,
                                                 std::filesystem::path(opt.sweep_path).stem().string());
   o.threads = opt.threads > 0 ? opt.threads : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));

@@ -21,6 +21,7 @@
 #include <filesystem>
 #include <memory>
 #include <mutex>
+#include <array>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -228,14 +229,17 @@ wear::WearCase read_wear(const CaseSource& s) {
 
 // ---- contact -------------------------------------------------------------------------------------------
 
-py::dict contact_result(const CaseSource& source, bool fields) {
+py::dict contact_result(const CaseSource& source, bool fields, bool subsurface) {
   sync_log_level();
   std::optional<contact::ContactCase> c;
   std::optional<contact::ContactRun> r;
+  std::array<contact::BodySubsurface, 2> below;
   {
     py::gil_scoped_release release;
     c.emplace(read_case(source));
-    r.emplace(contact::solve_contact_case(*c, fields));
+    subsurface = subsurface && c->output.subsurface;
+    r.emplace(contact::solve_contact_case(*c, fields || subsurface));  // the subsurface needs the tractions
+    if (subsurface) below = contact::subsurface_of_contact(*c, *r);
   }
   const contact::ContactPatch& p = r->normal.patch;
   const contact::TangentialSolution& s = r->solution;
@@ -264,6 +268,27 @@ py::dict contact_result(const CaseSource& source, bool fields) {
   summary["normal_solver_reason"] = r->normal.reason;
   summary["patches"] = r->normal.patches;
   summary["reaches_edge"] = r->normal.reaches_edge;
+  if (const auto& l = r->lubrication) {  // summary.csv's film columns (lubricant:)
+    summary["entrainment_m_per_s"] = l->entrainment_m_per_s;
+    summary["Rx_m"] = l->Rx_m;
+    summary["ellipticity_k"] = l->film.ellipticity_k;
+    summary["h_min_m"] = l->film.h_min_m;
+    summary["h_central_m"] = l->film.h_central_m;
+    summary["lambda"] = l->lambda;
+    summary["regime"] = contact::to_string(l->regime);
+    summary["regime_mu"] = l->mu;
+    summary["regime_wear_factor"] = l->wear_factor;
+  }
+  if (const auto& t = r->thermal) {  // and its flash temperature columns (thermal:); None where not asked
+    summary["v1_m_per_s"] = t->v1_m_per_s;
+    summary["v2_m_per_s"] = t->v2_m_per_s;
+    summary["flash_max_K"] = t->flash.max_rise_K;
+    summary["heat_share_body1"] = t->flash.share_body1;
+    summary["peclet_body1"] = t->flash.peclet_body1;
+    summary["peclet_body2"] = t->flash.peclet_body2;
+    summary["contact_temperature_C"] = t->contact_temperature_C ? py::cast(*t->contact_temperature_C) : py::none();
+    summary["scuffing_margin_K"] = t->scuffing_margin_K ? py::cast(*t->scuffing_margin_K) : py::none();
+  }
 
   py::dict strips;  // strips.csv's columns; y_m in the profiles' lateral coordinate
   strips["y_m"] = array(Eigen::ArrayXd(p.grid.y_m + r->normal.grid_y0_m));
@@ -291,12 +316,45 @@ py::dict contact_result(const CaseSource& source, bool fields) {
     f["state"] = array(s.state);
     out["fields"] = f;
   }
+  if (subsurface) {  // subsurface.csv's maxima and fatigue.csv's values, per body ("body1", "body2")
+    py::dict bodies;
+    for (int k = 0; k < 2; ++k) {
+      const contact::Subsurface& sub = below[k].stresses;
+      py::dict b;
+      b["nu"] = sub.nu;
+      const auto peak = [](const contact::StressPeak& q) {
+        py::dict d;
+        d["value_Pa"] = q.value_Pa, d["x_m"] = q.x_m, d["y_m"] = q.y_m, d["z_m"] = q.z_m;
+        return d;
+      };
+      b["von_mises"] = peak(sub.maxima.von_mises);
+      b["tresca"] = peak(sub.maxima.tresca);
+      b["orthogonal_shear"] = peak(sub.maxima.orthogonal_shear);
+      b["tension"] = peak(sub.maxima.tension);
+      b["compression"] = peak(sub.maxima.compression);
+      if (const std::optional<contact::FatigueIndicators>& fi = below[k].fatigue) {
+        py::dict d;
+        d["shear_yield_Pa"] = fi->shear_yield_Pa;
+        d["contact"] = contact::to_string(fi->contact);
+        d["traction_coefficient"] = fi->traction_coefficient;
+        d["p0_over_k"] = fi->p0_over_k;
+        d["limit_p0_over_k"] = fi->limit_p0_over_k;
+        d["surface_limit"] = fi->surface_limit;
+        d["margin"] = fi->margin;
+        d["FI_surf"] = fi->FI_surf;
+        d["cell_index_max"] = fi->cell_index_max;
+        b["fatigue"] = d;
+      }
+      bodies[k == 0 ? "body1" : "body2"] = b;
+    }
+    out["subsurface"] = bodies;
+  }
   return out;
 }
 
 // ---- transient -----------------------------------------------------------------------------------------
 
-py::dict transient_result(const CaseSource& source, bool fields) {
+py::dict transient_result(const CaseSource& source, bool fields, bool force) {
   sync_log_level();
   SignalCheck signals;
   std::optional<contact::ContactCase> c;
@@ -309,6 +367,8 @@ py::dict transient_result(const CaseSource& source, bool fields) {
     c.emplace(read_case(source));
     t.emplace(contact::transient_case_of(*c));
     if (!fields) t->settings.snapshot_times_s.clear();  // not computed either
+    // the arrays returned hold every step: refused above output.max_bytes before the run, as the command refuses
+    contact::check_transient_output(*c, *t, fields, force);
     const contact::StepObserver observe = [&](const contact::TransientRecord& r, const Eigen::ArrayXd& power) {
       records.push_back(r);
       strip_power.insert(strip_power.end(), power.data(), power.data() + power.size());
@@ -480,6 +540,13 @@ py::dict run_result(const CaseSource& source) {
   summary["rejected"] = life.counters.rejected;
   summary["normal_solves"] = life.counters.normal_solves;
   summary["tangential_solves"] = life.counters.tangential_solves;
+  // which models ran and the fast models' error estimate: report.txt's keys (wear::fidelity_report)
+  summary["tangential_model"] = contact::to_string(m->scheme);
+  summary["fidelity"] = contact::to_string(m->fidelity);
+  summary["exact_solves"] = life.exact_solves;
+  summary["error_estimate_N"] = life.error.N;
+  summary["error_power_rel"] = life.error.power_rel;
+  summary["error_power_l1"] = life.error.power_l1;
   py::dict out;
   out["summary"] = summary;
   out["steps"] = steps;
@@ -497,7 +564,7 @@ py::dict run_result(const CaseSource& source) {
 
 // runs the sweep into output_directory (written as `rollwear sweep` writes it); returns that folder
 std::string sweep_run(const std::string& path, const std::string& output_directory, int threads, int shard_k,
-                      int shard_n) {
+                      int shard_n, bool force) {
   sync_log_level();
   SignalCheck signals;
   std::string dir;
@@ -515,6 +582,7 @@ std::string sweep_run(const std::string& path, const std::string& output_directo
     dir = o.output_directory.string();
     o.threads = threads > 0 ? threads : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
     o.progress_interval_s = 0.05;
+    o.force = force;  // above session::kSweepMaxCases cases, as --force
     o.cancelled = [&] { return signals.interrupted(); };
     session::run_sweep(s, o);
   } catch (const session::SweepCancelled&) {
@@ -544,14 +612,14 @@ PYBIND11_MODULE(_rollwear, m) {
   // at exit no message may reach a Python that is going away
   py::module_::import("atexit").attr("register")(py::cpp_function([] { PythonLogSink::closed() = true; }));
 
-  m.def("contact", [](const std::string& c, bool is_text, const std::string& base_dir, bool fields) {
-          return contact_result({c, is_text, base_dir}, fields);
+  m.def("contact", [](const std::string& c, bool is_text, const std::string& base_dir, bool fields, bool subsurface) {
+          return contact_result({c, is_text, base_dir}, fields, subsurface);
         },
-        py::arg("case"), py::arg("is_text"), py::arg("base_dir"), py::arg("fields"));
-  m.def("transient", [](const std::string& c, bool is_text, const std::string& base_dir, bool fields) {
-          return transient_result({c, is_text, base_dir}, fields);
+        py::arg("case"), py::arg("is_text"), py::arg("base_dir"), py::arg("fields"), py::arg("subsurface"));
+  m.def("transient", [](const std::string& c, bool is_text, const std::string& base_dir, bool fields, bool force) {
+          return transient_result({c, is_text, base_dir}, fields, force);
         },
-        py::arg("case"), py::arg("is_text"), py::arg("base_dir"), py::arg("fields"));
+        py::arg("case"), py::arg("is_text"), py::arg("base_dir"), py::arg("fields"), py::arg("force") = false);
   m.def("run", [](const std::string& c, bool is_text, const std::string& base_dir) {
           return run_result({c, is_text, base_dir});
         },
@@ -565,5 +633,5 @@ PYBIND11_MODULE(_rollwear, m) {
     if (kind == "runtime_error") throw std::runtime_error("out/x is in use by another rollwear run");
   });
   m.def("sweep", &sweep_run, py::arg("path"), py::arg("output_directory"), py::arg("threads"), py::arg("shard_k"),
-        py::arg("shard_n"));
+        py::arg("shard_n"), py::arg("force") = false);
 }

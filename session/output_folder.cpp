@@ -63,24 +63,22 @@ void remove_stale_temporaries(const std::filesystem::path& dir) {
 
 void check_transient_output_size(const contact::ContactCase& c, const contact::TransientCase& t, bool fields,
                                  const std::filesystem::path& dir, bool force) {
+  contact::check_transient_output(c, t, fields, force);  // output.max_bytes: the library's check (Python's too)
   const contact::TransientOutputEstimate estimate = contact::estimate_transient_output(t, fields);
   std::filesystem::path existing = std::filesystem::absolute(dir);
   while (!std::filesystem::exists(existing) && existing.has_parent_path() && existing != existing.parent_path())
     existing = existing.parent_path();
   std::error_code space_ec;
   const double free_bytes = static_cast<double>(std::filesystem::space(existing, space_ec).available);
-  const bool over_max = estimate.bytes > c.output.max_bytes;
   const bool over_disk = !space_ec && estimate.bytes > free_bytes / 2;
   spdlog::debug("transient: about {:.3g} steps, {:.3g} MB of output estimated", estimate.steps, estimate.bytes / 1e6);
-  if ((over_max || over_disk) && !force)
+  if (over_disk && !force)
     throw contact::CaseError(fmt::format(
         "{}transient.t_end_s, transient.dt_s, solver.nx, solver.ny, output.max_bytes: the run would write about {:.3g} "
-        "bytes ({:.3g} GB: about {:.3g} steps of {} strips), more than {}; shorten t_end_s, coarsen the grid, "
-        "raise output.max_bytes, or run with --force",
+        "bytes ({:.3g} GB: about {:.3g} steps of {} strips), more than half the free disk ({:.3g} bytes free in {}); "
+        "shorten t_end_s, coarsen the grid, or run with --force",
         contact::where(c, "transient.t_end_s"), estimate.bytes, estimate.bytes / 1e9, estimate.steps,
-        contact::transient_grid(t).y_m.size(),
-        over_max ? fmt::format("output.max_bytes = {:.0f}", c.output.max_bytes)
-                 : fmt::format("half the free disk ({:.3g} bytes free in {})", free_bytes, existing.string())));
+        contact::transient_grid(t).y_m.size(), free_bytes, existing.string()));
 }
 
 namespace interrupted {

@@ -21,7 +21,8 @@ std::filesystem::path output_directory(const std::string& option, const std::str
 void remove_stale_temporaries(const std::filesystem::path& dir);
 
 // A transient run's output estimated before it runs (one step per dx rolled and per dt_s): CaseError naming
-// the keys when above output.max_bytes or half the free disk under dir, unless force.
+// the keys when above output.max_bytes (the library's check, lib/io/case.h check_transient_output) or half the
+// free disk under dir, unless force.
 void check_transient_output_size(const contact::ContactCase& c, const contact::TransientCase& t, bool fields,
                                  const std::filesystem::path& dir, bool force);
 

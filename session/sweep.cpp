@@ -420,7 +420,18 @@ std::vector<SweepCase> validate_cases(const Sweep& s, const std::vector<long>& i
   if (!base_refused.empty()) throw CaseError(s.path + ": base: the base case is refused: " + base_refused);
   std::vector<SweepCase> cases;
   cases.reserve(indices.size());
+  // progress of the reading itself, every kCheckReport_s (a forced sweep of 1e6 cases reads for minutes)
+  constexpr double kCheckReport_s = 5;
+  const auto t0 = std::chrono::steady_clock::now();
+  double last_report_s = 0;
   for (const long i : indices) {
+    if ((cases.size() & 255) == 255) {
+      const double elapsed_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      if (elapsed_s - last_report_s >= kCheckReport_s) {
+        spdlog::info("sweep: read and checked {} of {} cases before running them", cases.size(), indices.size());
+        last_report_s = elapsed_s;
+      }
+    }
     SweepCase c;
     c.index = i;
     c.inputs = case_inputs(s, i);
@@ -628,7 +639,7 @@ CaseOutcome run_contact_case(const contact::ContactCase& c, const std::string& t
     o.contact = {p.a_m, p.b_m, p.p0_Pa, p.approach_m, t.Fx_N, t.Fy_N, t.Mz_N_m, t.power_W, t.stick_fraction};
     o.status = CaseStatus::Ok;
     if (files) {  // rollwear contact's files
-      out.push_back({dir / "summary.csv", contact::summary_csv(c.name, p, r.problem, t, r.scheme)});
+      out.push_back({dir / "summary.csv", contact::contact_summary_csv(c.name, r)});
       out.push_back({dir / "strips.csv", contact::strips_csv(contact::in_profile_coordinates(r.normal), t)});
       if (fields) out.push_back({dir / "fields.csv", contact::fields_csv(p, t)});
     }
@@ -782,8 +793,46 @@ void claim_shard_folder(const std::filesystem::path& out, int k, int n, const st
 
 }  // namespace
 
+SweepPlan plan_sweep(const Sweep& s, int shard_k, int shard_n) {
+  SweepPlan p;
+  p.cases = case_count(s);
+  p.shard_cases = shard_k >= 1 && shard_n >= shard_k ? (p.cases - shard_k + shard_n) / shard_n : 0;  // i mod n = k-1
+  const double columns = static_cast<double>(varied_keys(s).size()) + 9;  // the results table's
+  p.bytes_per_case = columns * contact::kCsvBytesPerNumber;
+  if (s.case_files && p.cases > 0) {
+    const std::string text = case_yaml(s, load_base_case(s), 0, case_inputs(s, 0));
+    p.bytes_per_case += 2 * static_cast<double>(text.size());  // case.yaml; report.txt or the contact's tables
+    if (s.kind == SweepKind::Wear) {
+      try {  // the worn profiles' snapshots and the summary table
+        const wear::WearCase c = wear::read_wear_case_text(text, s.base_path.string(), s.base_path.parent_path());
+        double nodes = 0;
+        if (c.wear.body1) nodes += static_cast<double>(c.contact.profiles->profiles.body1.y_m.size());
+        if (c.wear.body2) nodes += static_cast<double>(c.contact.profiles->profiles.body2.y_m.size());
+        const double snapshots = static_cast<double>(c.wear.snapshots_revolutions.size()) + 2;
+        p.bytes_per_case += (snapshots * nodes * 4 + kPlannedSummaryRows * 12) * contact::kCsvBytesPerNumber;
+      } catch (const CaseError&) {  // validate_cases names the refusal
+      }
+    }
+  }
+  p.bytes = p.bytes_per_case * static_cast<double>(p.shard_cases);
+  return p;
+}
+
+std::string to_string(const SweepPlan& p, int shard_k, int shard_n) {
+  return fmt::format("{} cases{}, about {:.3g} MB of output ({:.3g} kB a case)", p.cases,
+                     shard_n > 1 ? fmt::format(" (shard {}/{}: {})", shard_k, shard_n, p.shard_cases) : std::string(),
+                     p.bytes / 1e6, p.bytes_per_case / 1e3);
+}
+
 SweepRunSummary run_sweep(const Sweep& s, const SweepRunOptions& o) {
   const long total = case_count(s);
+  // the plan, said at once, and refused above the limit before any case is read
+  const SweepPlan plan = plan_sweep(s, o.shard_k, o.shard_n);
+  spdlog::info("sweep {}: plans {}", s.path, to_string(plan, o.shard_k, o.shard_n));
+  if (plan.shard_cases > o.max_cases && !o.force)
+    throw CaseError(fmt::format("{}: the sweep plans {}: more than {} cases are refused (kSweepMaxCases, "
+                                "session/sweep.h); split it with --shard K/N, or run with --force (Python: force=True)",
+                                s.path, to_string(plan, o.shard_k, o.shard_n), o.max_cases));
   const std::vector<long> indices = shard_indices(total, o.shard_k, o.shard_n);
   const std::filesystem::path& out = o.output_directory;
   std::filesystem::create_directories(out);

@@ -87,6 +87,28 @@ long case_count(const Sweep& s);
 // depend on (seed, i) alone; a Latin hypercube's on (seed, count); with a correlation: on all of them.
 std::vector<double> case_inputs(const Sweep& s, long i);
 
+// ---- the plan ----
+
+// A sweep of more cases than this (in the shard run) is refused before any case is read, unless forced
+// (`rollwear sweep --force`, Python sweep(force=True)): reading and checking 1e6 cases alone takes minutes,
+// and their folders hundreds of GB.
+constexpr long kSweepMaxCases = 10000;
+// What a sweep (its shard) will do, known at once: from the case count and the base case alone, no case
+// read. The output per case, estimated: a results row (24 bytes a number, lib/io/case.h kCsvBytesPerNumber),
+// and with output.case_files the case's folder: its case.yaml (the base's size), and for a wear life its
+// worn profiles at the start, the end and each of wear.snapshots_revolutions (4 columns a node of the worn
+// bodies) and its summary.csv (kPlannedSummaryRows rows of the step's values).
+constexpr double kPlannedSummaryRows = 100;  // the shipped lives take about a hundred steps (cases/paper-wear.yaml: 91-97)
+struct SweepPlan {
+  long cases = 0;            // the whole sweep's
+  long shard_cases = 0;      // the shard's
+  double bytes_per_case = 0;
+  double bytes = 0;          // the shard's output, estimated
+};
+SweepPlan plan_sweep(const Sweep& s, int shard_k, int shard_n);
+// "N cases (shard k/n: M), about X MB of output (Y kB a case)"
+std::string to_string(const SweepPlan& p, int shard_k, int shard_n);
+
 // ---- the cases ----
 
 // the base case's YAML with its relative profile files made absolute (the generated case lives elsewhere)
@@ -181,6 +203,9 @@ struct SweepRunOptions {
   // called from the thread that runs run_sweep, at most every `progress_interval_s`, and at the end
   std::function<void(long done, long failed, long total, double elapsed_s)> progress;
   double progress_interval_s = 1.0;
+  // a shard of more than max_cases cases is refused (CaseError, before any case is read) unless force
+  long max_cases = kSweepMaxCases;
+  bool force = false;
   // asked from the same thread at the same moments (every progress_interval_s): true stops the sweep. No
   // new case starts, the running ones finish (their rows kept for a resume), and run_sweep throws
   // SweepCancelled without writing results.csv. The Python bindings check for Ctrl-C here.

@@ -93,6 +93,8 @@ LifeRunEnd run_wear_life_in_folder(const LifeRunOptions& opt) {
   observer.on_row = [&](const LifeStep& s) { summary += wear_summary_row(m, s, hours_per_rev); };
   if (opt.resume) {
     cp = folder.checkpoint();
+    cache.correction = cp.correction;  // the corrected fidelity's correction in force there
+    cache.error = cp.error;
     summary = folder.table_up_to(cp.start.counters.steps);
     spdlog::info("run: resuming at revolution {:.6g} (step {}) from {}", cp.start.N, cp.start.counters.steps,
                  checkpoint_path.string());
@@ -129,6 +131,8 @@ LifeRunEnd run_wear_life_in_folder(const LifeRunOptions& opt) {
   Clock::time_point last_save = Clock::now();
   observer.on_step = [&](const LifeStep& s) {
     cp.start = {s.N, *s.state, s.info.next_step, s.counters};
+    cp.correction = cache.correction;
+    cp.error = cache.error;
     if (std::chrono::duration<double>(Clock::now() - last_save).count() >= c.wear.checkpoint_interval_s) {
       save({});
       last_save = Clock::now();
@@ -170,6 +174,9 @@ LifeRunEnd run_wear_life_in_folder(const LifeRunOptions& opt) {
   report.wall_s = elapsed_s();
   report.resumed = opt.resume;
   std::vector<contact::OutputFile> files = snapshot_files(life.N, life.state);
+  // the error estimate above the header row (the rows' columns stay as they were)
+  const std::size_t header_row = summary.find("\nstep,");
+  if (header_row != std::string::npos) summary.insert(header_row + 1, wear_summary_error_line(m, life));
   files.push_back({folder.table_path(), summary});
   const std::string report_text = wear_report_text(m, report);
   files.push_back({dir / "report.txt", report_text});

@@ -148,11 +148,11 @@ TEST_F(CaseReader, UnknownKeyReportsKeyAndLine) {
                      "    nu: 0.28\n"                                                   // 8
                      "load: { normal_load_N: 1500 }\n"                                  // 9
                      "friction: { mu: 0.3 }\n"),                                        // 10
-            path() + ":6:5: bodies.body2.Rz_m: unknown key, did you mean 'Rx_m'? (valid: E_Pa, Rx_m, Ry_m, nu)");
+            path() + ":6:5: bodies.body2.Rz_m: unknown key, did you mean 'Rx_m'? (valid: E_Pa, Rx_m, Ry_m, nu, shear_yield_Pa)");
   // a section that does not exist (yet)
   EXPECT_EQ(error_of(kMinimalCase + "wear: { law: archard }\n"),  // 6
-            path() + ":6:1: wear: unknown key (valid: bodies, friction, inertia, kinematics, load, name, output, "
-                      "profiles, solver, transient)");
+            path() + ":6:1: wear: unknown key (valid: bodies, friction, inertia, kinematics, load, lubricant, "
+                      "name, output, profiles, solver, thermal, transient)");
 }
 
 // The place of an error is data too (CaseError::location), for callers that must not read the message (the
@@ -754,10 +754,10 @@ TEST_F(CaseReader, TypoInARequiredKeyNamesItAndTheClosestKey) {
                                      "section is missing)");
   // inside a section: an optional key misspelt is named with the closest one
   EXPECT_EQ(error_of(kMinimalCase + "solver: { nx: 20, nyy: 20 }\n"),
-            path() + ":6:19: solver.nyy: unknown key, did you mean 'ny'? (valid: normal, nx, ny, tangential)");
+            path() + ":6:19: solver.nyy: unknown key, did you mean 'ny'? (valid: correction_grid, correction_tolerance, error_estimate, fidelity, max_memory_bytes, normal, nx, ny, tangential)");
   // a key like none: no suggestion
   EXPECT_EQ(error_of(kMinimalCase + "solver: { grid_size: 20 }\n"),
-            path() + ":6:11: solver.grid_size: unknown key (valid: normal, nx, ny, tangential)");
+            path() + ":6:11: solver.grid_size: unknown key (valid: correction_grid, correction_tolerance, error_estimate, fidelity, max_memory_bytes, normal, nx, ny, tangential)");
 }
 
 // A message never echoes a huge value whole: its first 80 characters and its size.

@@ -292,7 +292,7 @@ const fs::path kSource = ROLLWEAR_SOURCE_DIR;
 
 using CommandLine = TempDir;
 
-TEST_F(CommandLine, ContactOnPaperCaseWritesThreeTables) {
+TEST_F(CommandLine, ContactOnPaperCaseWritesItsTables) {
   const fs::path out = dir_ / "paper";
   const ProcessResult r = rollwear("contact " + quoted(kSource / "cases" / "paper.yaml") + " -o " + quoted(out) +
                              " --log-level warn",
@@ -325,9 +325,23 @@ TEST_F(CommandLine, ContactOnPaperCaseWritesThreeTables) {
   EXPECT_EQ(row[17], "80");
   EXPECT_EQ(row[18], "80");
 
+  // the stresses below the surface: five maxima per body, the x-z section of each body (31 planes x 80 cells)
+  const std::vector<std::string> maxima = lines_of(read_text(out / "subsurface.csv"));
+  EXPECT_EQ(maxima.size(), 2u * 5u + 1u);
+  EXPECT_TRUE(is_numeric_table(maxima, "body,nu,measure,value_Pa,x_m,y_m,z_m", {2}));
+  const std::vector<std::string> section = lines_of(read_text(out / "subsurface_section.csv"));
+  EXPECT_EQ(section.size(), 2u * 31u * 80u + 1u);
+  EXPECT_TRUE(is_numeric_table(section,
+                               "body,y_m,x_m,z_m,sigma_xx_Pa,sigma_yy_Pa,sigma_zz_Pa,sigma_xy_Pa,sigma_xz_Pa,"
+                               "sigma_yz_Pa,von_mises_Pa,tresca_Pa,sigma_1_Pa,sigma_2_Pa,sigma_3_Pa"));
+  EXPECT_NE(r.out.find("below body 1"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("below body 2"), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("fatigue"), std::string::npos) << "no shear_yield_Pa, no fatigue:\n" << r.out;
+
   // nothing else: no temporary files left behind
-  EXPECT_EQ(std::distance(fs::directory_iterator(out), fs::directory_iterator()), 3);
+  EXPECT_EQ(std::distance(fs::directory_iterator(out), fs::directory_iterator()), 5);
 }
+
 
 TEST_F(CommandLine, NoFieldsSkipsFieldsTable) {
   const fs::path out = dir_ / "paper";
@@ -765,6 +779,43 @@ TEST_F(CommandLine, ExactTheoryRefusedWhereItDoesNotRun) {
 // ---- contact on profiles ---------------------------------------------------------------------------
 
 // the worn crown is not of constant curvature: solver.normal auto runs the semi-Hertzian solver
+// bodies.body2.shear_yield_Pa: the path's fatigue indicators (fatigue.csv, the summary); --no-subsurface
+// writes none of the three and removes an earlier run's; a k out of range is bad input naming the key
+TEST_F(CommandLine, ContactWithShearYieldReportsFatigueOfThatBody) {
+  std::string text = read_text(kSource / "cases" / "paper.yaml");
+  const std::string path_body = "body2: { Rx_m: 0.025, Ry_m: .inf,  E_Pa: 210.0e9, nu: 0.28";
+  const std::size_t at = text.find(path_body);
+  ASSERT_NE(at, std::string::npos);
+  text.insert(at + path_body.size(), ", shear_yield_Pa: 350.0e6");
+  text = with_solver(text, "solver:     { nx: 80, ny: 80", "solver:     { nx: 24, ny: 24");
+  const fs::path c = dir_ / "paper-k.yaml";
+  std::ofstream(c) << text;
+  const fs::path out = dir_ / "k";
+  const ProcessResult r = rollwear("contact " + quoted(c) + " -o " + quoted(out) + " --log-level warn", dir_);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::vector<std::string> fatigue = lines_of(read_text(out / "fatigue.csv"));
+  ASSERT_EQ(fatigue.size(), 2u);
+  EXPECT_TRUE(is_numeric_table(fatigue,
+                               "body,shear_yield_Pa,contact,traction_coefficient,p0_over_k,limit_p0_over_k,"
+                               "surface_limit,margin,FI_surf,cell_index_max,cell_x_m,cell_y_m",
+                               {2}));
+  const std::vector<std::string> row = split(fatigue[1]);
+  EXPECT_EQ(row[0], "2");
+  EXPECT_EQ(row[2], "line");  // a/b = 0.088
+  EXPECT_NE(r.out.find("fatigue, k = 350.0 MPa"), std::string::npos) << r.out;
+
+  const ProcessResult quiet =
+      rollwear("contact " + quoted(c) + " -o " + quoted(out) + " --no-subsurface --log-level warn", dir_);
+  ASSERT_EQ(quiet.exit_code, 0) << quiet.err;
+  for (const char* name : {"subsurface.csv", "subsurface_section.csv", "fatigue.csv"})
+    EXPECT_FALSE(fs::exists(out / name)) << name;
+
+  std::ofstream(c) << with_solver(text, "shear_yield_Pa: 350.0e6", "shear_yield_Pa: -1");
+  const ProcessResult bad = rollwear("contact " + quoted(c) + " -o " + quoted(out) + " --log-level warn", dir_);
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_NE(bad.err.find("bodies.body2.shear_yield_Pa"), std::string::npos) << bad.err;
+}
+
 TEST_F(CommandLine, ContactOnWornCrownRunsSemiHertz) {
   const fs::path out = dir_ / "worn";
   const ProcessResult r = rollwear("contact " + quoted(kSource / "cases" / "worn-crown.yaml") + " -o " + quoted(out) +
@@ -1015,6 +1066,29 @@ TEST_F(CommandLine, RunKilledAndResumedEndsBitIdenticalWithFixedStepping) {
   }
 }
 
+// The corrected fidelity (docs/fidelity.md) keeps its correction in the checkpoint: killed and resumed, a
+// fixed-stepping corrected run ends bit-identical to an uninterrupted one, its exact-physics solves and its error
+// estimate included.
+TEST_F(CommandLine, CorrectedRunKilledAndResumedEndsBitIdentical) {
+  const fs::path c = wear_case(dir_, "corrected.yaml", "fidelity: corrected, correction_tolerance: 0.5, nx: 20, ny: 20",
+                               "stepping: { method: fixed-depth, max_depth_step_m: 1.0e-6 }",
+                               "limits: { max_depth_m: 3.0e-5, edge: true }");
+  const fs::path whole = dir_ / "whole", killed = dir_ / "killed";
+  ASSERT_EQ(rollwear("run " + quoted(c) + " -o " + quoted(whole) + " --log-level error", dir_).exit_code, 0);
+  run_and_kill({"run", c.string(), "-o", killed.string(), "--quiet"}, killed / "checkpoint.txt", 12,
+               dir_ / "killed.log");
+  ASSERT_TRUE(fs::exists(killed / "checkpoint.txt"));
+  const ProcessResult r = rollwear("run " + quoted(c) + " -o " + quoted(killed) + " --resume --log-level error", dir_);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string a = read_text(whole / "report.txt"), b = read_text(killed / "report.txt");
+  EXPECT_EQ(report_value(b, "resumed"), "true");
+  EXPECT_EQ(report_value(a, "fidelity"), "corrected");
+  EXPECT_GT(std::stol(report_value(a, "exact_solves")), 2);
+  for (const char* key : {"ended_by", "revolutions", "max_depth_m", "worn_volume_body1_m3", "dissipated_J", "steps",
+                          "exact_solves", "error_estimate_N", "error_power_rel", "error_power_l1"})
+    EXPECT_EQ(report_value(a, key), report_value(b, key)) << key;
+}
+
 // Adaptive stepping: resumed from the checkpoint, the run restarts ARKODE with the step it had reached;
 // it ends within the tolerance of an uninterrupted run.
 TEST_F(CommandLine, RunKilledAndResumedEndsWithinToleranceWithAdaptiveStepping) {
@@ -1181,6 +1255,23 @@ TEST_F(CommandLine, TransientRefusesAnAbsurdRunUnlessForced) {
   r = rollwear("transient " + quoted(small) + " -o " + quoted(out) + " --force --log-level warn", dir_);
   EXPECT_EQ(r.exit_code, 0) << r.err;
   EXPECT_TRUE(fs::exists(out / "timeseries.csv"));
+}
+
+// The size check is the library's (lib/io/case.h), which the Python bindings call too: t_end_s 1e9 is refused
+// before the run at transient.t_end_s's key, naming output.max_bytes; force lets it through (issue 26).
+TEST(TransientOutputCheck, LibraryRefusesAnAbsurdRunUnlessForced) {
+  const ContactCase cc = read_contact_case(std::string(ROLLWEAR_SOURCE_DIR) + "/cases/paper-startup.yaml");
+  TransientCase t = transient_case_of(cc);
+  EXPECT_NO_THROW(check_transient_output(cc, t, true, false));  // the shipped case passes
+  t.settings.t_end_s = 1e9;
+  try {
+    check_transient_output(cc, t, true, false);
+    ADD_FAILURE() << "t_end_s 1e9 passed the library's check";
+  } catch (const CaseError& e) {
+    EXPECT_EQ(e.location.key, "transient.t_end_s");
+    EXPECT_NE(std::string(e.what()).find("output.max_bytes = 1073741824"), std::string::npos) << e.what();
+  }
+  EXPECT_NO_THROW(check_transient_output(cc, t, true, true));
 }
 
 // the output of a run is at most its estimate (an upper bound: every number at full precision)

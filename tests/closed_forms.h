@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 #include <vector>
 
 namespace rollwear_test {
@@ -39,6 +40,35 @@ inline double strip_force_from_rest(double a, double p, double k, double mu, dou
     else F += k * q * (x1 - x0);                                                            // not yet strained past q
   }
   return F;
+}
+
+// Hertz's circular contact, frictionless, on its axis (Johnson, Contact Mechanics, §3.4; docs/subsurface.md §3):
+// sigma_z = -p0 / (1 + z^2/a^2),
+// sigma_r = -p0 [(1 + nu)(1 - (z/a) atan(a/z)) - 1 / (2 (1 + z^2/a^2))], z > 0, stresses / p0.
+struct AxisStress {
+  double radial = 0, normal = 0;  // sigma_r (= sigma_x = sigma_y), sigma_z, over p0
+};
+inline AxisStress hertz_circle_axis_stress(double z_over_a, double nu) {
+  const double z = z_over_a, s = 1 + z * z;
+  return {-((1 + nu) * (1 - z * std::atan(1 / z)) - 1 / (2 * s)), -1 / s};
+}
+// Hertz's line contact (plane strain, half-width a), frictionless, on its axis (McEwen; Johnson §4.2):
+// sigma_x = -p0 [(1 + 2 z^2/a^2) / sqrt(1 + z^2/a^2) - 2 z/a], sigma_z = -p0 / sqrt(1 + z^2/a^2).
+inline AxisStress hertz_line_axis_stress(double z_over_a) {
+  const double z = z_over_a, r = std::sqrt(1 + z * z);
+  return {-((1 + 2 * z * z) / r - 2 * z), -1 / r};
+}
+// the largest of f on [lo, hi] for a unimodal f (golden section): {argument, value}
+template <class F>
+std::pair<double, double> golden_maximum(F f, double lo, double hi, double tol = 1e-10) {
+  const double g = (std::sqrt(5.0) - 1) / 2;
+  double a = lo, b = hi, c = b - g * (b - a), d = a + g * (b - a);
+  while (b - a > tol) {
+    if (f(c) > f(d)) b = d; else a = c;
+    c = b - g * (b - a), d = a + g * (b - a);
+  }
+  const double x = (a + b) / 2;
+  return {x, f(x)};
 }
 
 }  // namespace rollwear_test

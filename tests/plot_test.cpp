@@ -2,6 +2,9 @@
 // and the one-line errors of a folder that is missing, incomplete or malformed, or of a gnuplot that
 // is missing or fails. No test leaves a torn PNG or a temporary file behind.
 #include "app/plot.h"
+#include "lib/io/csv.h"
+#include "lib/normal/hertz.h"
+#include "lib/subsurface/subsurface.h"
 
 #include <gtest/gtest.h>
 
@@ -351,6 +354,27 @@ void write_random_sweep(const fs::path& dir) {
   for (int i = 0; i < 8; ++i)
     t += fmt_row(i, 1e-4 / (1 + i), lives[i], i >= 6 ? "revolutions" : "max_depth");
   write_text(dir / "results.csv", t);
+}
+
+// a contact's folder (rollwear contact): the section below the surface of a small Hertz contact, each body a map
+TEST_F(PlotCommand, ContactFolderDrawsTheSectionBelowTheSurfaceOfEachBody) {
+  const fs::path folder = dir_ / "contact";
+  const contact::ElasticPair steel{{210e9, 0.3}, {210e9, 0.3}};
+  const contact::ContactPatch patch =
+      contact::solve_normal_hertz({{0.010, 0.010}, {0.010, 0.010}}, steel, 100, {9, 9});
+  contact::SubsurfaceOptions opt;
+  opt.planes = 5;
+  const contact::Subsurface below =
+      contact::solve_subsurface(contact::surface_tractions(patch, nullptr, 1), 0.3, patch.a_m, opt);
+  write_text(folder / "subsurface_section.csv", contact::subsurface_section_csv(patch.grid, {&below, &below}));
+  write_text(folder / "strips.csv", "y_m\n0\n");
+  const Result r = plot(folder);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.err, "");
+  const std::vector<std::string> pictures = {"subsurface_body1.png", "subsurface_body2.png"};
+  EXPECT_EQ(files_under(folder / "plots"), pictures);
+  for (const std::string& name : pictures) EXPECT_TRUE(is_png(folder / "plots" / name)) << name;
+  EXPECT_FALSE(has_temporary(folder));
 }
 
 TEST_F(PlotCommand, SweepGridDrawsTheLifeAgainstEveryAxis) {

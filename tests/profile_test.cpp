@@ -182,6 +182,24 @@ TEST_F(ProfileCsv, ErrorsNameFileLineAndValue) {
   }
 }
 
+// a file of more points than kProfileMaxPoints is refused naming its count and the limit (a wear run's memory
+// grows with the worn profile's nodes: issue 26); the limit itself is read
+TEST_F(ProfileCsv, MorePointsThanTheLimitAreRefusedNamingTheCount) {
+  const auto flat_file = [](int n) {
+    std::string t = "y_m,z_m\n";
+    for (int i = 0; i < n; ++i) t += std::to_string(-0.01 + 0.02 * i / (n - 1)) + ",0\n";
+    return t;
+  };
+  // (std::to_string's 6 decimals keep 5000 points over 20 mm distinct; the refusal comes before any point is parsed)
+  const std::string over = error_of(flat_file(kProfileMaxPoints + 1));
+  EXPECT_EQ(over.rfind("x.csv: " + std::to_string(kProfileMaxPoints + 1) + " points, at most " +
+                           std::to_string(kProfileMaxPoints) + " are read",
+                       0),
+            0u)
+      << over;
+  EXPECT_EQ(error_of(flat_file(kProfileMaxPoints / 4)), "");
+}
+
 // the same crown in millimetres, given as metres: 20 "m" wide, or deeper than wide
 TEST_F(ProfileCsv, MillimetresGivenAsMetresAreRefused) {
   EXPECT_EQ(error_of("y_m,z_m\n-10,0.1\n-5,0.025\n0,0\n5,0.025\n10,0.1\n"),

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <regex>
@@ -584,6 +585,41 @@ TEST_F(SweepFile, CaseThatFailsWhileRunningIsARowAndTheSweepGoesOn) {
   EXPECT_EQ(read_text(dir_ / "out" / "case_0001" / "row.csv"), rows[2] + "\n");
   EXPECT_NE(read_text(dir_ / "out" / "summary.txt").find("2 ok, 1 not ok"), std::string::npos)
       << read_text(dir_ / "out" / "summary.txt");
+}
+
+// A sweep says at once how many cases and how much output it plans, and refuses above kSweepMaxCases before
+// any case is read, unless forced (issue 26: a sweep of 1e6 cases printed, wrote and refused nothing for
+// over a minute, reading every case first). The refusal takes well under a second: no case is read.
+TEST_F(SweepFile, HugeSweepIsRefusedAtOnceSayingItsPlanUnlessForced) {
+  const fs::path sweep = sweep_file(
+      "random:\n  method: monte-carlo\n  count: 1000000\n  seed: 1\n"
+      "  inputs:\n    - { key: friction.mu, distribution: uniform, min: 0.2, max: 0.4 }\n");
+  const auto t0 = std::chrono::steady_clock::now();
+  const Process r = rollwear("sweep " + q(sweep) + " -o " + q(dir_ / "huge") + " -q", dir_);
+  const double elapsed_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  for (const char* word : {"plans 1000000 cases, about ", "MB of output", "more than 10000 cases are refused", "--force"})
+    EXPECT_NE(r.err.find(word), std::string::npos) << word << " in " << r.err;
+  EXPECT_LT(elapsed_s, 10.0);  // reading the million cases took minutes; the plan needs the base case alone
+  EXPECT_FALSE(fs::exists(dir_ / "huge" / case_folder_name(0)));
+
+  // the plan's output estimate is of the size the cases write (a wear life: its folder), within a factor 3
+  const Sweep small = read_sweep(sweep_file("axes:\n  - { key: load.normal_load_N, values: [1000, 2000] }\n").string());
+  SweepRunOptions o;
+  o.output_directory = dir_ / "small";
+  o.threads = 1;
+  o.max_cases = 1;  // a small limit: refused without reading a case, then run forced
+  EXPECT_THROW(run_sweep(small, o), contact::CaseError);
+  EXPECT_FALSE(fs::exists(o.output_directory / case_folder_name(0)));
+  o.force = true;
+  run_sweep(small, o);
+  double bytes = 0;
+  for (const auto& f : fs::recursive_directory_iterator(o.output_directory))
+    if (f.is_regular_file()) bytes += static_cast<double>(f.file_size());
+  const SweepPlan plan = plan_sweep(small, 1, 1);
+  EXPECT_EQ(plan.cases, 2);
+  EXPECT_GT(plan.bytes, bytes / 3) << bytes;
+  EXPECT_LT(plan.bytes, bytes * 3) << bytes;
 }
 
 }  // namespace

@@ -189,5 +189,43 @@ TEST_F(WearCaseReader, SteppingMethodNamesComeFromOneTable) {
   EXPECT_THROW(parse_stepping_method("rk4"), contact::SettingError);
 }
 
+
+// The memory a wear run needs is estimated before its model is built and refused above solver.max_memory_bytes
+// (issue 26: a 1e5-point profile file took 3.9 GB, the smoothing kernel's n^2 lc / width pairs). The estimate
+// bounds the kernel make_wear_model builds (its size in bytes, counted here), and a limit below it is refused
+// at the worn profile's line, naming the keys, before any kernel is built.
+TEST_F(WearCaseReader, MemoryIsEstimatedAndRefusedAboveSolverMaxMemoryBytes) {
+  const std::string wear_section = "wear:\n  body1: { k_E_m3_per_J: 1.0e-13 }\n  revolutions: 10\n";
+  ASSERT_EQ(error_of(kContact + wear_section), "");
+  const WearCase c = read_wear_case(path());
+  const double estimate = estimate_memory_bytes(c);
+  const WearModel m = make_wear_model(c);
+  const double n = static_cast<double>(m.profiles.body1.y_m.size());
+  // the kernel's values and indices, and the state, as built: the estimate is at least that
+  const double built = 8.0 * static_cast<double>(m.smoothing1.s.size()) + 16 * n + 8 * n;
+  EXPECT_EQ(smoothing_kernel_entries(m.profiles.body1.y_m, c.wear.smoothing_wavelength_m),
+            static_cast<double>(m.smoothing1.s.size()));
+  EXPECT_GE(estimate, built);
+  EXPECT_LE(estimate, 100 * built);  // an estimate, not a blanket bound
+
+  // a limit below the estimate: refused at profiles.body1 (line 2), naming the keys that drive it
+  std::string small = kContact;
+  small.replace(small.find("solver: { nx: 20, ny: 20 }"), 26, "solver: { nx: 20, ny: 20, max_memory_bytes: 1.0e4 }");
+  ASSERT_EQ(error_of(small + wear_section), "");  // the reader takes it: the model refuses
+  const WearCase limited = read_wear_case(path());
+  try {
+    make_wear_model(limited);
+    ADD_FAILURE() << "a model above solver.max_memory_bytes was built";
+  } catch (const contact::CaseError& e) {
+    const std::string msg = e.what();
+    EXPECT_EQ(msg.rfind(path() + ":2:", 0), 0u) << msg;
+    for (const char* word : {"profiles.body1, wear.smoothing_wavelength_m, solver.max_memory_bytes",
+                             "more than solver.max_memory_bytes = 10000"})
+      EXPECT_NE(msg.find(word), std::string::npos) << word << " in " << msg;
+  }
+  EXPECT_EQ(error_of(kContact + wear_section + "  smoothing_wavelength_m: 0\n"), "");
+  EXPECT_LT(estimate_memory_bytes(read_wear_case(path())), estimate);  // no filter, no kernel
+}
+
 }  // namespace
 }  // namespace wear

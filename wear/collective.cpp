@@ -68,6 +68,7 @@ void validate_collective(const WearCase& c) {
 WearModel make_collective_model(const WearCase& c) {
   validate(c);
   WearModel m = make_wear_model(condition_case(c, 0));
+  m.exact_physics.clear();  // a collective's rate is its conditions': no error estimate of its own (yet)
   for (std::size_t k = 0; k < c.wear.collective.size(); ++k) {
     WearModel mk = make_wear_model(condition_case(c, k));
     mk.energy_scale = m.energy_scale;  // one scale for the state's energy: the conditions' energies add

@@ -89,15 +89,17 @@ std::optional<LifeEnd> life_end_of(const LifeProblem& p, const IntegratorResult&
 
 int limit_count(const LifeProblem& p) { return static_cast<int>(p.limits.size()); }
 
-// a limit already reached where the life starts (a resumed run, or an unworn contact at the edge)
-std::optional<LifeEnding> limit_reached_at_start(const LifeProblem& p, const LifeOutcome& life) {
+// a limit already reached where the life starts (a resumed run, or an unworn contact at the edge), or where the
+// rate's model changed (LifeProblem::refresh: its limits may move with it)
+std::optional<LifeEnding> limit_reached_at_start(const LifeProblem& p, const LifeOutcome& life,
+                                                 const char* where = "at the start") {
   if (p.limits.empty()) return std::nullopt;
   Eigen::VectorXd g = Eigen::VectorXd::Constant(limit_count(p), -1.0);
   p.limit_values(life.N, life.state, g);
   for (int k = 0; k < limit_count(p); ++k)
     if (g(k) >= 0) {
       const LifeEnd end = p.limits[static_cast<std::size_t>(k)];
-      return LifeEnding{end, fmt::format("{} reached at the start, N {:.10g}", to_string(end), life.N)};
+      return LifeEnding{end, fmt::format("{} reached {}, N {:.10g}", to_string(end), where, life.N)};
     }
   return std::nullopt;
 }
@@ -114,8 +116,11 @@ std::vector<double> segment_ends(const LifeProblem& p, double N) {
 // The wear from life.N to N_end, step by step (each reported to the hooks with the life's counters),
 // up to N_end or the first limit, located. Returns how the life ended in it, or nothing at N_end. An
 // exception that failure_of takes as the life's end ends it at its last accepted step, failed.
+// restarted: the integration stopped at a step end where the rate's model changed (LifeProblem::refresh); the
+// life goes on from there.
 std::optional<LifeEnding> wear_until(const LifeProblem& p, const LifeDriverHooks& hooks, LifeTally& tally,
-                                     double N_end, LifeOutcome& life) {
+                                     double N_end, LifeOutcome& life, bool& restarted) {
+  restarted = false;
   IntegratorOptions options = p.options;
   options.initial_step = life.next_step;
   options.max_steps = p.options.max_steps - life.counters.steps;
@@ -138,9 +143,11 @@ std::optional<LifeEnding> wear_until(const LifeProblem& p, const LifeDriverHooks
     s.info.rejected = integrated.rejected;
     s.counters = [&] { return tally.at(info.steps, info.rhs_evals, info.rejected); };
     last = {s.N, h, info.next_step, integrated};
+    const bool refreshed = p.refresh && p.refresh(s.N, h);
     const bool go_on = hooks.on_step ? hooks.on_step(s) : true;
     stopped = !go_on;
-    return go_on;
+    restarted = go_on && refreshed;
+    return go_on && !refreshed;
   };
 
   IntegratorResult r;
@@ -160,6 +167,8 @@ std::optional<LifeEnding> wear_until(const LifeProblem& p, const LifeDriverHooks
   life.counters = tally.at(r.steps, r.rhs_evals, r.rejected);
   if (r.next_step > 0) life.next_step = r.next_step;
 
+  if (restarted && r.status.kind == IntegratorStatus::Kind::Stopped) return std::nullopt;
+  restarted = false;
   const std::optional<LifeEnd> end = life_end_of(p, r);
   if (!end) return std::nullopt;
   if (*end == LifeEnd::Failed) life.failure = LifeFailure::Integrator;
@@ -199,8 +208,13 @@ LifeOutcome integrate_life(const LifeProblem& p, const LifeStart& start, const L
   // wear through each snapshot revolution, then to the budget: a limit, or a failure, ends the life
   for (const double N_end : segment_ends(p, life.N)) {
     if (N_end <= life.N) continue;  // a start at the budget's end (a checkpoint of its last step)
-    if (const std::optional<LifeEnding> ending = wear_until(p, hooks, tally, N_end, life))
-      return end_life(tally, hooks, life, *ending);
+    for (bool restarted = true; restarted && N_end > life.N;) {
+      if (const std::optional<LifeEnding> ending = wear_until(p, hooks, tally, N_end, life, restarted))
+        return end_life(tally, hooks, life, *ending);
+      if (restarted)
+        if (const std::optional<LifeEnding> reached = limit_reached_at_start(p, life, "where the rate's model changed"))
+          return end_life(tally, hooks, life, *reached);
+    }
     const std::vector<double>& snapshots = p.snapshots_revolutions;
     if (hooks.on_snapshot && std::find(snapshots.begin(), snapshots.end(), N_end) != snapshots.end())
       hooks.on_snapshot(life.N, life.state);

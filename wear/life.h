@@ -87,6 +87,10 @@ struct LifeProblem {
   // the life Failed at its last accepted step N_last: its kind (the supplier may say so in the log);
   // LifeFailure::None rethrows it
   std::function<LifeFailure(const std::exception& e, double N_last)> failure_of;
+  // At each accepted step's end, before the caller's hook: true when the rate's model changed there (the
+  // corrected fidelity's new correction, wear/wear_loop.h): the integration restarts from that step end, as it
+  // does at a snapshot, so that no step mixes two models (an embedded pair's first stage is its last one's)
+  std::function<bool(double N, const Eigen::VectorXd& state)> refresh;
 };
 
 // an accepted step's end

@@ -135,7 +135,8 @@ SmoothingKernel smoothing_kernel(const Eigen::ArrayXd& node_y_m, double cutoff_w
   const double s_lc = std::exp(-c * lc * lc);         // exp(-pi^2 / ln 2) = 6.5e-7
 
   // kernel rows: node i reaches the nodes first[i] .. first[i] + count[i] - 1 within lc (sliding window)
-  std::vector<int>&first = k.first, &count = k.count, &offset = k.offset;
+  std::vector<int>&first = k.first, &count = k.count;
+  std::vector<std::size_t>& offset = k.offset;
   first.resize(n);
   count.resize(n);
   offset.resize(n + 1);
@@ -146,13 +147,13 @@ SmoothingKernel smoothing_kernel(const Eigen::ArrayXd& node_y_m, double cutoff_w
     while (hi + 1 < n && y(hi + 1) - y(i) <= lc) ++hi;
     first[i] = lo;
     count[i] = hi - lo + 1;
-    offset[i + 1] = offset[i] + count[i];
+    offset[i + 1] = offset[i] + static_cast<std::size_t>(count[i]);
   }
 
   // s(y_k - y_i), each pair once (the window test is the same both ways): row i holds s at
   // offset[i] + k - first[i]
   std::vector<double>& s = k.s;
-  s.assign(static_cast<std::size_t>(offset[n]), 0.0);
+  s.assign(offset[n], 0.0);
   for (int i = 0; i < n; ++i) {
     s[offset[i] + i - first[i]] = 1 - s_lc;
     for (int m = i + 1; m < first[i] + count[i]; ++m) {
@@ -165,6 +166,22 @@ SmoothingKernel smoothing_kernel(const Eigen::ArrayXd& node_y_m, double cutoff_w
   return k;
 }
 
+double smoothing_kernel_entries(const Eigen::ArrayXd& node_y_m, double cutoff_wavelength_m) {
+  const double lc = cutoff_wavelength_m;
+  if (!(lc > 0) || !std::isfinite(lc)) return 0;
+  const Eigen::ArrayXd& y = node_y_m;
+  const Eigen::Index n = y.size();
+  double entries = 0;
+  // the window of smoothing_kernel: node i reaches lo .. hi
+  for (Eigen::Index i = 0, lo = 0, hi = 0; i < n; ++i) {
+    while (y(i) - y(lo) > lc) ++lo;
+    if (hi < i) hi = i;
+    while (hi + 1 < n && y(hi + 1) - y(i) <= lc) ++hi;
+    entries += static_cast<double>(hi - lo + 1);
+  }
+  return entries;
+}
+
 Eigen::ArrayXd smooth_conserving(const Eigen::ArrayXd& depth_m, const SmoothingKernel& kernel) {
   if (depth_m.size() != kernel.w.size())
     throw std::invalid_argument("smooth_conserving: depth_m has " + std::to_string(depth_m.size()) +
@@ -174,7 +191,8 @@ Eigen::ArrayXd smooth_conserving(const Eigen::ArrayXd& depth_m, const SmoothingK
 
   const int n = static_cast<int>(depth_m.size());
   const Eigen::ArrayXd& w = kernel.w;
-  const std::vector<int>&first = kernel.first, &count = kernel.count, &offset = kernel.offset;
+  const std::vector<int>&first = kernel.first, &count = kernel.count;
+  const std::vector<std::size_t>& offset = kernel.offset;
   const std::vector<double>& s = kernel.s;
 
   // what each node hands out per unit weight: m_i / Z_i, normalised over the nodes that exist

@@ -84,10 +84,16 @@ Eigen::ArrayXd smooth_conserving(const Eigen::ArrayXd& depth_m, const Eigen::Arr
 struct SmoothingKernel {
   double cutoff_wavelength_m = 0;
   Eigen::ArrayXd w;                     // the nodes' widths
-  std::vector<int> first, count, offset;  // row i: nodes first[i] .. first[i] + count[i] - 1, at s[offset[i]]
+  std::vector<int> first, count;        // row i: nodes first[i] .. first[i] + count[i] - 1, at s[offset[i]]
+  std::vector<std::size_t> offset;
   std::vector<double> s;                // s(y_k - y_i) - s(lc), each row's values
 };
 SmoothingKernel smoothing_kernel(const Eigen::ArrayXd& node_y_m, double cutoff_wavelength_m);
+
+// the kernel's size before it is built: the pairs of nodes within the cut-off, sum_i count[i] (= s.size(); 0 for
+// cutoff 0), counted in O(n) without allocating. It grows as n^2 lc / width on uniform nodes: the memory and the
+// time of a wear run's smoothing (wear/wear_loop.h estimate_memory_bytes).
+double smoothing_kernel_entries(const Eigen::ArrayXd& node_y_m, double cutoff_wavelength_m);
 
 // smooth_conserving with the kernel of its nodes: the same numbers to the bit. Throws
 // std::invalid_argument for a depth of another size or non-finite.

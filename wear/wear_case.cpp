@@ -163,6 +163,7 @@ void validate(const WearCase& c) {
   using contact::where;
   const contact::ContactCase& k = c.contact;
   const WearSection& w = c.wear;
+  contact::refuse_lubrication_and_thermal(k, "run");  // the wear loop does not take the regime yet
   if (!k.profiles)
     throw key_error(k, "wear", "wear, profiles: the worn body needs a lateral profile; give a profiles: "
                     "section (e.g. body1: { crowned: { Ry_m: 0.5, width_m: 0.02 } })");
@@ -207,6 +208,15 @@ void validate(const WearCase& c) {
       !(w.stepping.step_revolutions > 0))
     throw key_error(k, "wear.stepping", "wear.stepping.step_revolutions: fixed-revolutions needs a step > 0");
   if (!w.collective.empty()) validate_collective(c);
+  // the corrected fidelity (docs/fidelity.md): the exact theory needs friction; steady duty cycles only so far
+  if (k.solver.fidelity == contact::Fidelity::Corrected) {
+    if (!(k.friction.mu > 0))
+      throw key_error(k, "friction.mu", "friction.mu, solver.fidelity: the corrected fidelity solves Kalker's exact "
+                      "theory, which needs friction; got mu = " + number(k.friction.mu));
+    if (k.transient || !w.collective.empty())
+      throw key_error(k, "solver.fidelity", std::string("solver.fidelity: the corrected fidelity runs steady duty "
+                      "cycles (no transient: section, no wear.collective) so far; use fast or exact"));
+  }
 }
 
 void check_profile_resolves_contact(const WearCase& c, int body, double node_spacing_m, double contact_width_m,

@@ -6,6 +6,7 @@
 #include <exception>
 #include <limits>
 #include <optional>
+#include <tuple>
 #include <utility>
 #include <stdexcept>
 #include <string>
@@ -108,7 +109,49 @@ bool needs_fields(const std::optional<WearLaw>& law) {
 
 }  // namespace
 
+double estimate_memory_bytes(const WearCase& c) {
+  const contact::ContactCase& k = c.contact;
+  if (!k.profiles) return 0;
+  double per_condition = 0;
+  const double lc = c.wear.smoothing_wavelength_m;
+  for (const auto& [law, profile] : {std::pair{&c.wear.body1, &k.profiles->profiles.body1},
+                                     std::pair{&c.wear.body2, &k.profiles->profiles.body2}}) {
+    if (!*law) continue;
+    const double n = static_cast<double>(profile->y_m.size());
+    // the kernel's values (8 bytes each) and its per-row indices (first, count: 4 bytes each; offset: 8)
+    per_condition += 8 * smoothing_kernel_entries(profile->y_m, lc) + 16 * n + 8 * kStateCopiesPerNode * n;
+  }
+  const double conditions = c.wear.collective.empty() ? 1.0 : static_cast<double>(c.wear.collective.size());
+  return per_condition * conditions;
+}
+
+void check_memory(const WearCase& c) {
+  const contact::ContactCase& k = c.contact;
+  const double bytes = estimate_memory_bytes(c);
+  const double limit = k.solver.max_memory_bytes;
+  if (!(bytes > limit)) return;
+  // the wearing body of the larger kernel names the profile
+  const double lc = c.wear.smoothing_wavelength_m;
+  const double entries1 = c.wear.body1 ? smoothing_kernel_entries(k.profiles->profiles.body1.y_m, lc) : -1;
+  const double entries2 = c.wear.body2 ? smoothing_kernel_entries(k.profiles->profiles.body2.y_m, lc) : -1;
+  const int body = entries1 >= entries2 ? 1 : 2;
+  const contact::Profile& p = body == 1 ? k.profiles->profiles.body1 : k.profiles->profiles.body2;
+  const double entries = std::max(entries1, entries2);
+  const std::string key = fmt::format("profiles.body{}", body);
+  throw contact::key_error(
+      k, key,
+      fmt::format("{}, wear.smoothing_wavelength_m, solver.max_memory_bytes: the run would need about {:.3g} bytes "
+                  "({:.3g} GB), more than solver.max_memory_bytes = {:.0f}: the smoothing filter of body {}'s {} nodes "
+                  "pairs each with {:.0f} others within wear.smoothing_wavelength_m = {:.3g} m{}; give a profile of "
+                  "fewer nodes, a shorter smoothing_wavelength_m, or raise solver.max_memory_bytes",
+                  key, bytes, bytes / 1e9, limit, body, p.y_m.size(),
+                  p.y_m.size() > 0 ? entries / static_cast<double>(p.y_m.size()) : 0.0, c.wear.smoothing_wavelength_m,
+                  c.wear.collective.empty() ? std::string()
+                                            : fmt::format(", for each of {} running conditions", c.wear.collective.size())));
+}
+
 WearModel make_wear_model(const WearCase& c) {
+  check_memory(c);  // before any kernel is built
   if (!c.wear.collective.empty()) return make_collective_model(c);
   validate(c);
   const contact::ContactCase& k = c.contact;
@@ -153,6 +196,19 @@ WearModel make_wear_model(const WearCase& c) {
   const bool closed_form = !m.transient && contact::tangential_traits(m.scheme).pure_xi_closed_form &&
                            m.creepages.eta == 0 && m.creepages.phi_per_m == 0;
   m.normal_options.pressure_fields = !closed_form || needs_fields(m.law1) || needs_fields(m.law2);
+  // the fidelity: the exact physics on the same case, for the corrections or the error estimate (steady duty
+  // cycles with friction: the exact theory's transient duty cycle costs a minute per solve)
+  m.fidelity = k.solver.fidelity;
+  m.correction_tolerance = k.solver.correction_tolerance;
+  m.error_estimate = k.solver.error_estimate;
+  if (m.fidelity != contact::Fidelity::Exact && !m.transient && k.friction.mu > 0) {
+    WearCase exact = c;
+    exact.contact.solver.normal = contact::NormalChoice::Halfspace;
+    exact.contact.solver.tangential = contact::TangentialScheme::Exact;
+    exact.contact.solver.fidelity = contact::Fidelity::Exact;
+    if (k.solver.correction_grid > 0) exact.contact.solver.nx = exact.contact.solver.ny = k.solver.correction_grid;
+    m.exact_physics.push_back(make_wear_model(exact));
+  }
   return m;
 }
 
@@ -318,9 +374,10 @@ NormalState solved_normal_state(const WearModel& m, const Eigen::VectorXd& state
   return solved_normal_state_on(m, profiles, contact::profile_hash(profiles), state, cache);
 }
 
-WearRate wear_rate(const WearModel& m, const Eigen::VectorXd& state, WearCache& cache) {
-  ++cache.counters.rate_evaluations;
-  if (!m.conditions.empty()) return collective_rate(m, state, cache);
+namespace {
+
+// the fast models' rate (the case's normal and tangential models), cached by the worn profiles' hash
+WearRate fast_wear_rate(const WearModel& m, const Eigen::VectorXd& state, WearCache& cache) {
   const contact::Profiles worn = worn_profiles(m, state);
   const std::uint64_t key = contact::profile_hash(worn);
   if (cache.reuse)
@@ -363,6 +420,146 @@ WearRate wear_rate(const WearModel& m, const Eigen::VectorXd& state, WearCache& 
   if (cache.rates.size() >= kCachedRates) cache.rates.erase(cache.rates.begin());
   cache.rates.emplace_back(key, r);
   return r;
+}
+
+// the worn nodes' part of a rate (body1's, then body2's)
+Eigen::ArrayXd node_rates(const WearModel& m, const WearRate& r) { return r.dstate_dN.head(m.n1 + m.n2).array(); }
+
+// the reference body's nodes and its segment in the state
+const Eigen::ArrayXd& reference_nodes(const WearModel& m) { return m.law1 ? m.profiles.body1.y_m : m.profiles.body2.y_m; }
+Eigen::ArrayXd reference_segment(const WearModel& m, const Eigen::ArrayXd& nodes) {
+  return m.law1 ? nodes.head(m.n1) : nodes.segment(m.n1, m.n2);
+}
+
+// the correction applied to the fast rate (FidelityCorrection): per node, a ratio where the fast model wears at
+// the correction and the difference held where it does not; the energy scaled as the reference body's worn area
+void apply_correction(const WearModel& m, const FidelityCorrection& c, WearRate& r) {
+  const Eigen::ArrayXd f = node_rates(m, r);
+  Eigen::ArrayXd out(f.size());
+  for (const auto& [offset, n] : {std::pair{0, m.n1}, std::pair{m.n1, m.n2}}) {
+    if (n == 0) continue;
+    const Eigen::ArrayXd x0 = c.exact_rate.segment(offset, n).array();
+    const Eigen::ArrayXd f0 = c.fast_rate.segment(offset, n).array();
+    const double floor = kCorrectionFloor * f0.abs().maxCoeff();
+    if (!(floor > 0)) {  // the fast model did not wear this body at all: the exact rate held
+      out.segment(offset, n) = x0;
+      continue;
+    }
+    const Eigen::ArrayXd ratio = (x0 + floor) / (f0 + floor);
+    out.segment(offset, n) = (f.segment(offset, n) * ratio + (x0 - f0 * ratio)).max(0.0);
+  }
+  const Eigen::ArrayXd& y = reference_nodes(m);
+  const double fast_area = profile_area_m2(reference_segment(m, f), y);
+  const double scale = fast_area > 0 ? profile_area_m2(reference_segment(m, out), y) / fast_area
+                                     : (c.fast_energy_J > 0 ? c.exact_energy_J / c.fast_energy_J : 1.0);
+  r.dstate_dN.head(m.n1 + m.n2) = out.matrix();
+  r.dstate_dN(m.energy_index()) *= scale;
+  r.energy_per_revolution_J *= scale;
+  r.contact.power_W *= scale;
+}
+
+// the strips' energy per duty cycle on the reference body's nodes (conserving, unsmoothed), per revolution
+Eigen::ArrayXd node_energy_per_revolution(const WearModel& m, const WearRate& r) {
+  return r.cycles_per_revolution * strips_to_nodes(r.strip_energy_J_per_m, r.strip_y0_m, r.strip_dy_m, reference_nodes(m));
+}
+
+// the fast rate's error against the exact one on the same state (FidelityError)
+FidelityError rate_error(const WearModel& m, double N, const WearRate& fast, const WearRate& exact) {
+  FidelityError e;
+  e.N = N;
+  e.power_rel = fast.energy_per_revolution_J / exact.energy_per_revolution_J - 1;
+  const Eigen::ArrayXd& y = reference_nodes(m);
+  const Eigen::ArrayXd uf = node_energy_per_revolution(m, fast), ux = node_energy_per_revolution(m, exact);
+  e.power_l1 = profile_area_m2((uf - ux).abs(), y) / profile_area_m2(ux.abs(), y);
+  return e;
+}
+
+// the exact physics' rate on the state, in its own cache (its half-space solves cold: a function of the state)
+// how far the worn gap's shape has moved between two states: the spread (largest minus smallest) of the depth's
+// change over each worn body's nodes across the contact (a depth worn evenly across it moves the body, not the
+// contact), the larger of the bodies'
+double shape_change_m(const WearModel& m, const Eigen::VectorXd& state, const Eigen::VectorXd& before,
+                      const NormalState& n) {
+  double spread = 0;
+  for (const auto& [offset, count, y] : {std::tuple{0, m.n1, &m.profiles.body1.y_m},
+                                         std::tuple{m.n1, m.n2, &m.profiles.body2.y_m}}) {
+    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+    for (int i = 0; i < count; ++i) {
+      if ((*y)(i) < n.contact_y_min_m || (*y)(i) > n.contact_y_max_m) continue;
+      const double d = state(offset + i) - before(offset + i);
+      lo = std::min(lo, d);
+      hi = std::max(hi, d);
+    }
+    if (hi >= lo) spread = std::max(spread, hi - lo);
+  }
+  return spread;
+}
+
+void exact_wear_cache(WearCache& cache) {
+  if (cache.exact_physics.empty()) {
+    cache.exact_physics.emplace_back();
+    cache.exact_physics.front().halfspace_warm_start = false;
+  }
+}
+WearRate exact_wear_rate(const WearModel& m, const Eigen::VectorXd& state, WearCache& cache) {
+  exact_wear_cache(cache);
+  return fast_wear_rate(m.exact_physics.front(), state, cache.exact_physics.front());
+}
+
+}  // namespace
+
+NormalState exact_normal_state(const WearModel& m, const Eigen::VectorXd& state, WearCache& cache) {
+  exact_wear_cache(cache);
+  return solved_normal_state(m.exact_physics.front(), state, cache.exact_physics.front());
+}
+
+WearRate wear_rate(const WearModel& m, const Eigen::VectorXd& state, WearCache& cache) {
+  ++cache.counters.rate_evaluations;
+  if (!m.conditions.empty()) return collective_rate(m, state, cache);
+  WearRate r = fast_wear_rate(m, state, cache);
+  if (m.fidelity == contact::Fidelity::Corrected && cache.correction.valid) apply_correction(m, cache.correction, r);
+  return r;
+}
+
+bool update_correction(const WearModel& m, double N, const Eigen::VectorXd& state, WearCache& cache) {
+  if (m.fidelity != contact::Fidelity::Corrected || m.exact_physics.empty()) return false;
+  FidelityCorrection& c = cache.correction;
+  const WearRate fast = fast_wear_rate(m, state, cache);
+  if (c.valid) {
+    // the schedule: the worn profile, or the fast models' own power, moved by more than the tolerance
+    const double moved_m = shape_change_m(m, state, c.state, solved_normal_state(m, state, cache));
+    const double power_moved = std::abs(fast.energy_per_revolution_J / c.fast_energy_J - 1);
+    if (moved_m <= m.correction_tolerance * c.approach_m && power_moved <= m.correction_tolerance) return false;
+    spdlog::debug("wear: the worn gap's shape moved {:.4g} m, the fast power {:.3g}", moved_m, power_moved);
+  }
+  const WearRate exact = exact_wear_rate(m, state, cache);
+  c.valid = true;
+  c.N = N;
+  c.state = state;
+  c.exact_rate = node_rates(m, exact).matrix();
+  c.fast_rate = node_rates(m, fast).matrix();
+  c.exact_energy_J = exact.energy_per_revolution_J;
+  c.fast_energy_J = fast.energy_per_revolution_J;
+  const NormalState& exact_normal = cache.exact_physics.front().normal;
+  const NormalState fast_normal = solved_normal_state(m, state, cache);
+  c.approach_m = exact_normal.approach_m;
+  c.edge_offset_m = exact_normal.edge_limit_m - fast_normal.edge_limit_m;
+  c.pressure_offset_Pa = exact_normal.patch.p0_Pa - fast_normal.patch.p0_Pa;
+  c.exact_limits = c.exact_limits || (m.limits.edge && exact_normal.edge_limit_m > -kNearEdge * c.approach_m) ||
+                   (m.limits.max_pressure_Pa > 0 &&
+                    exact_normal.patch.p0_Pa > (1 - kNearEdge * m.correction_tolerance) * m.limits.max_pressure_Pa);
+  ++c.solves;
+  cache.error = rate_error(m, N, fast, exact);
+  spdlog::debug("wear: correction {} at N {:.6g}: fast power {:+.3g} %, per-strip L1 {:.3g} %; approach {:.4g} m, "
+                "exact edge value {:.4g} m (offset {:.4g}), exact limits {}",
+                c.solves, N, 100 * cache.error.power_rel, 100 * cache.error.power_l1, c.approach_m,
+                exact_normal.edge_limit_m, c.edge_offset_m, c.exact_limits);
+  return true;
+}
+
+FidelityError fast_model_error(const WearModel& m, double N, const Eigen::VectorXd& state, WearCache& cache) {
+  if (m.exact_physics.empty()) return {};
+  return rate_error(m, N, fast_wear_rate(m, state, cache), exact_wear_rate(m, state, cache));
 }
 
 double max_depth_m(const WearModel& m, const Eigen::VectorXd& state) {
@@ -437,11 +634,16 @@ Eigen::VectorXd limit_values(const WearModel& m, const Eigen::VectorXd& h, WearC
   // a collective's: the highest peak pressure and the widest contact of its running conditions
   bool first = true;
   for_each_condition(m, cache, [&](const WearModel& mk, WearCache& ck) {
-    const NormalState n = solved_normal_state(mk, h, ck);
-    const double pressure = n.patch.p0_Pa - m.limits.max_pressure_Pa;
+    // the corrected fidelity: the exact physics' limits, as the fast ones plus the last correction's offsets, or
+    // near the end of the life the exact physics' normal solve itself
+    const FidelityCorrection& k = ck.correction;
+    const bool exact_limits = mk.fidelity == contact::Fidelity::Corrected && k.valid && k.exact_limits;
+    const bool corrected = mk.fidelity == contact::Fidelity::Corrected && k.valid && !k.exact_limits;
+    const NormalState n = exact_limits ? exact_normal_state(mk, h, ck) : solved_normal_state(mk, h, ck);
+    const double pressure = n.patch.p0_Pa + (corrected ? k.pressure_offset_Pa : 0.0) - m.limits.max_pressure_Pa;
     if (m.limits.max_pressure_Pa > 0) g(kPressure) = first ? pressure : std::max(g(kPressure), pressure);
     if (m.limits.edge) {
-      const double edge = n.edge_limit_m;
+      const double edge = n.edge_limit_m + (corrected ? k.edge_offset_m : 0.0);
       g(kEdge) = first ? edge : std::max(g(kEdge), edge);
     }
     first = false;
@@ -466,6 +668,9 @@ LifeProblem life_problem(const WearModel& m, const WearCase& c, WearCache& cache
   p.budget_key = "wear.revolutions";
   p.snapshots_revolutions = c.wear.snapshots_revolutions;
   p.solves = [&cache] { return cache.counters; };
+  // the corrected fidelity's schedule: a new correction restarts the integration at its step end
+  if (m.fidelity == contact::Fidelity::Corrected)
+    p.refresh = [&m, &cache](double N, const Eigen::VectorXd& h) { return update_correction(m, N, h, cache); };
   p.failure_of = [](const std::exception& e, double N_last) {
     const LifeFailure failure = geometry_failure(e);
     if (failure != LifeFailure::None)
@@ -485,10 +690,12 @@ LifeResult run_life(const WearModel& m, const WearCase& c, const LifeStart& star
   LifeResult life;
   LifeDriverHooks driver;
   // the worn body's profile must resolve the contact: its nodes carry the wear
-  driver.on_start = [&](double, const Eigen::VectorXd& state) {
+  driver.on_start = [&](double N, const Eigen::VectorXd& state) {
     for_each_condition(m, cache, [&](const WearModel& mk, WearCache& ck) {
       check_profile_resolves_contact(c, mk, solved_normal_state(mk, state, ck));
     });
+    // the corrected fidelity's first correction (a resumed life has its checkpoint's)
+    if (!cache.correction.valid) update_correction(m, N, state, cache);
   };
   // each accepted step reported with the contact at its end; the contact where the life ends
   driver.on_step = [&](const LifeStepEnd& e) {
@@ -502,8 +709,20 @@ LifeResult run_life(const WearModel& m, const WearCase& c, const LifeStart& star
     return hooks.on_step ? hooks.on_step(s) : true;
   };
   driver.on_snapshot = hooks.on_snapshot;
-  driver.on_end = [&](double, const Eigen::VectorXd& state) { life.contact = wear_rate(m, state, cache).contact; };
+  driver.on_end = [&](double N, const Eigen::VectorXd& state) {
+    life.contact = wear_rate(m, state, cache).contact;
+    // the fast fidelity's error estimate: one exact-physics solve on the final worn state (the corrected one's
+    // is its last correction's); a solve that fails leaves it NaN
+    if (m.fidelity == contact::Fidelity::Fast && m.error_estimate && !m.exact_physics.empty()) try {
+        cache.error = fast_model_error(m, N, state, cache);
+        ++cache.correction.solves;
+      } catch (const std::exception& e) {
+        spdlog::info("wear: no error estimate at the end of the life: {}", e.what());
+      }
+  };
   static_cast<LifeOutcome&>(life) = integrate_life(life_problem(m, c, cache), from, driver);
+  life.error = cache.error;
+  life.exact_solves = cache.correction.solves;
   if (life.ended_by == LifeEnd::Edge)
     spdlog::info("wear: the contact has spread to the edge of the narrower body at {:.6g} revolutions (step {}); "
                  "the life ends there (wear.limits.edge)",

@@ -20,6 +20,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -30,6 +31,7 @@
 #include "lib/normal/normal.h"
 #include "lib/normal/semi_hertz.h"
 #include "lib/tangential/tangential.h"
+#include "lib/fidelity.h"
 #include "wear/integrator.h"
 #include "wear/life.h"
 #include "wear/profile_update.h"
@@ -69,12 +71,34 @@ struct WearModel {
   std::vector<WearModel> conditions;
   std::vector<double> weights;
   int collective_threads = 0;      // threads evaluating the conditions' rates; 0 = one per condition up to the cores
+  // solver.fidelity (docs/fidelity.md): fast (the models above alone), corrected (their rate corrected by the
+  // exact physics on a schedule, correction_tolerance) or exact (the models above are the exact physics)
+  contact::Fidelity fidelity = contact::Fidelity::Fast;
+  double correction_tolerance = 0.1;
+  bool error_estimate = true;  // the fast fidelity's estimate at the end of the life (solver.error_estimate)
+  // the exact physics on the same case (half-space normal, Kalker's exact theory, the case's grid): the
+  // corrected fidelity's corrections and the fast fidelity's error estimate at the end of the life; empty for
+  // the exact fidelity, transient duty cycles and collectives (no estimate)
+  std::vector<WearModel> exact_physics;
 
   int state_size() const { return n1 + n2 + 1; }
   int energy_index() const { return n1 + n2; }
 };
 
-// throws contact::CaseError for what validate(WearCase) refuses
+// The memory a wear run needs, estimated before its model is built (bytes): what grows with the worn
+// profiles' nodes. Per wearing body of n nodes, the smoothing kernel (wear/profile_update.h: 8 bytes per pair
+// of nodes within wear.smoothing_wavelength_m, smoothing_kernel_entries, n^2 lc / width on uniform nodes)
+// and kStateCopiesPerNode copies of the state and the worn profile; times the running conditions of a load
+// collective (each has its own model). The grid's fields (solver.nx x ny) do not grow with the nodes and
+// are not counted.
+constexpr double kStateCopiesPerNode = 32;  // doubles per node: integrator stages, the cache's worn profiles, rows
+double estimate_memory_bytes(const WearCase& c);
+
+// estimate_memory_bytes against the case's solver.max_memory_bytes: contact::CaseError at the worn profile's
+// line naming profiles.body<N>, wear.smoothing_wavelength_m and solver.max_memory_bytes when above it
+void check_memory(const WearCase& c);
+
+// throws contact::CaseError for what validate(WearCase) refuses, and check_memory's refusal
 WearModel make_wear_model(const WearCase& c);
 
 // the unworn state (zeros)
@@ -119,6 +143,42 @@ struct WearRate {
   ContactReport contact;
 };
 
+// The corrected fidelity's correction (docs/fidelity.md): the exact physics' and the fast models' rates on the
+// worn state of the last correction. The corrected rate at a state h is, per worn node i (body1's, then body2's),
+//   f_i(h) c_i + r_i,  c_i = (x_i + e) / (f0_i + e),  r_i = x_i - f0_i c_i,  clipped at 0,
+// x the exact and f0 the fast rate at the correction (smoothed dh/dN), e = kCorrectionFloor x the body's largest
+// f0: a ratio where the fast model wears, an absolute difference held where it does not (no division by a
+// rate near 0), and the exact rate itself at the correction's state. The energy's rate is the fast one scaled
+// by the reference body's worn area rate, corrected over fast, so worn volume = k_E x energy still holds.
+struct FidelityCorrection {
+  bool valid = false;
+  double N = 0;                          // revolutions where the exact physics was solved
+  Eigen::VectorXd state;                 // the worn state it was solved on
+  Eigen::VectorXd exact_rate, fast_rate;  // (n1 + n2) dh/dN per node there, exact and fast
+  double exact_energy_J = 0, fast_energy_J = 0;  // per revolution there
+  double approach_m = 0;                 // the exact physics' approach there (the schedule's depth scale)
+  // the lifetime limits' functions, exact minus fast there, held and added to the fast ones until the next
+  // correction: the life ends where the exact physics' edge and peak pressure say (as the exact life does)
+  double edge_offset_m = 0, pressure_offset_Pa = 0;
+  // near the end of the life (the exact edge value within kNearEdge approaches of 0, or the exact peak pressure
+  // within kNearEdge x the tolerance of its limit) the limits are the exact physics' normal solve itself, from
+  // this correction on: the two normal models define the edge differently, and their offset drifts
+  bool exact_limits = false;
+  long solves = 0;                       // exact-physics solves over the life (resumed runs included)
+};
+constexpr double kCorrectionFloor = 0.1;
+constexpr double kNearEdge = 1.0;
+
+// The fast models' error against the exact physics on one worn state (the last correction's, or the end of a
+// fast life): total dissipated power relative error, fast / exact - 1, and the per-strip power's relative L1,
+// both strips' energies mapped onto the reference body's nodes (conserving, unsmoothed), sum |fast - exact| /
+// sum |exact| weighted by the nodes' widths. NaN where not estimated.
+struct FidelityError {
+  double N = std::numeric_limits<double>::quiet_NaN();
+  double power_rel = std::numeric_limits<double>::quiet_NaN();
+  double power_l1 = std::numeric_limits<double>::quiet_NaN();
+};
+
 // the last results, keyed by the worn profiles' hash (an unchanged profile is not solved again)
 struct WearCache {
   bool reuse = true;  // false: every evaluation solves afresh (to show that reuse changes nothing)
@@ -134,6 +194,11 @@ struct WearCache {
   bool halfspace_warm_start = true;
   long halfspace_solves = 0, halfspace_iterations = 0;
   std::vector<WearCache> conditions;  // a load collective's: one per running condition (its solves added above)
+  // the fidelity: the correction in force (corrected), the fast models' error estimate, and the exact
+  // physics' own cache (one, its half-space solves started cold so that they depend on the state alone)
+  FidelityCorrection correction;
+  FidelityError error;
+  std::vector<WearCache> exact_physics;
 };
 
 // Thrown by normal_state where the worn geometry ends the life: run_life ends it at its last accepted
@@ -170,7 +235,20 @@ NormalState solved_normal_state(const WearModel& m, const Eigen::VectorXd& state
 // it at the end: SemiHertzResult::reaches_edge). Unlike the lateral margin, it keeps changing past the
 // edge, so a root finder sees a sign change and locates the limit.
 double edge_limit_value_m(const contact::Profiles& worn, const contact::SemiHertzResult& normal);
+// dh/dN at the state: the fast models' rate, corrected by cache.correction for the corrected fidelity
 WearRate wear_rate(const WearModel& m, const Eigen::VectorXd& state, WearCache& cache);
+
+// The corrected fidelity's schedule, at an accepted step's end (and the life's start): solves the exact physics
+// on the state and makes it the correction when there is none yet, when the worn depth has moved somewhere by
+// more than correction_tolerance x the last correction's approach, or when the fast models' energy per
+// revolution has moved by more than correction_tolerance (relative); returns whether it did. Also sets
+// cache.error from that solve. False for the other fidelities.
+bool update_correction(const WearModel& m, double N, const Eigen::VectorXd& state, WearCache& cache);
+// the exact physics' normal solve on the state, in cache.exact_physics (the corrected fidelity's limits near the end)
+NormalState exact_normal_state(const WearModel& m, const Eigen::VectorXd& state, WearCache& cache);
+// The fast models' error against the exact physics on the state (one exact solve), as in FidelityError;
+// NaN fields for a model without exact_physics
+FidelityError fast_model_error(const WearModel& m, double N, const Eigen::VectorXd& state, WearCache& cache);
 
 // what the state says: the largest depth over the wearing bodies, each body's worn volume
 // (2 pi R_k x the profile's worn area), the dissipated energy
@@ -198,6 +276,10 @@ struct LifeHooks {
 
 struct LifeResult : LifeOutcome {
   ContactReport contact;  // at the end
+  // the fast models' error against the exact physics: at the last correction (corrected), on the final worn
+  // state (fast), NaN for the exact fidelity and where there is no exact physics (docs/fidelity.md)
+  FidelityError error;
+  long exact_solves = 0;  // exact-physics solves over the life (corrections; the fast life's estimate)
 };
 
 // integrates from start to the first lifetime limit (located by root finding) or the budget

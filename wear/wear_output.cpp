@@ -68,6 +68,8 @@ std::string wear_summary_header(const WearModel& m) {
                      "highest p0\n",
                      m.conditions.size(), weights);
   }
+  s += fmt::format("# models: normal {}, tangential {}, fidelity {}\n", contact::to_string(m.normal_choice),
+                   contact::to_string(m.scheme), contact::to_string(m.fidelity));
   s += fmt::format("# revolutions of body{} (R {} m); one row per accepted step, step 0 unworn\n", m.law1 ? 1 : 2,
                    round_trip(m.reference_radius_m));
   s += "step,revolutions,hours,max_depth_m,worn_volume_m3,dissipated_J,a_m,b_m,p0_Pa,Fx_N,power_W,"
@@ -121,6 +123,25 @@ std::string life_report_text(const LifeReport& r) {
   return s;
 }
 
+std::vector<std::pair<std::string, std::string>> fidelity_report(const WearModel& m, const LifeResult& l) {
+  std::vector<std::pair<std::string, std::string>> out;
+  out.emplace_back("tangential_model", contact::to_string(m.scheme));
+  out.emplace_back("fidelity", contact::to_string(m.fidelity));
+  if (m.fidelity == contact::Fidelity::Corrected) out.emplace_back("correction_tolerance", round_trip(m.correction_tolerance));
+  out.emplace_back("exact_solves", std::to_string(l.exact_solves));
+  out.emplace_back("error_estimate_N", round_trip(l.error.N));
+  out.emplace_back("error_power_rel", round_trip(l.error.power_rel));
+  out.emplace_back("error_power_l1", round_trip(l.error.power_l1));
+  return out;
+}
+
+std::string wear_summary_error_line(const WearModel& m, const LifeResult& l) {
+  return fmt::format("# error estimate ({} fidelity, {} exact-physics solves): at N {} the fast models' total power "
+                     "relative error {}, per-strip power L1 {}\n",
+                     contact::to_string(m.fidelity), l.exact_solves, round_trip(l.error.N),
+                     round_trip(l.error.power_rel), round_trip(l.error.power_l1));
+}
+
 std::string wear_report_text(const WearModel& m, const WearReport& r) {
   const LifeResult& l = r.life;
   LifeReport report;
@@ -142,6 +163,7 @@ std::string wear_report_text(const WearModel& m, const WearReport& r) {
   own.emplace_back("a_m", round_trip(l.contact.a_m));
   own.emplace_back("b_m", round_trip(l.contact.b_m));
   own.emplace_back("normal_solver", contact::to_string(l.contact.normal_solver));
+  for (const auto& [key, value] : fidelity_report(m, l)) own.emplace_back(key, value);
   const LifeCounters& n = l.counters;
   own.emplace_back("rate_evaluations", std::to_string(n.rate_evaluations));
   own.emplace_back("limit_evaluations", std::to_string(n.limit_evaluations));
@@ -177,6 +199,17 @@ std::string checkpoint_text(const Checkpoint& c) {
   for (const CheckpointBlock& b : c.blocks) {
     t += fmt::format("block {} {}\n", b.name, b.values.size());
     for (Eigen::Index i = 0; i < b.values.size(); ++i) t += fmt::format("{:a}\n", b.values(i));
+  }
+  // the corrected fidelity's correction in force and its error estimate (bit-exact: a resumed life corrects
+  // as the uninterrupted one did)
+  if (c.correction.valid) {
+    const FidelityCorrection& k = c.correction;
+    t += fmt::format("correction {:a} {:a} {:a} {:a} {:a} {:a} {} {} {}\n", k.N, k.exact_energy_J, k.fast_energy_J,
+                     k.approach_m, k.edge_offset_m, k.pressure_offset_Pa, k.exact_limits ? 1 : 0, k.solves,
+                     k.state.size());
+    for (Eigen::Index i = 0; i < k.state.size(); ++i) t += fmt::format("{:a}\n", k.state(i));
+    for (Eigen::Index i = 0; i < k.exact_rate.size(); ++i) t += fmt::format("{:a} {:a}\n", k.exact_rate(i), k.fast_rate(i));
+    t += fmt::format("error {:a} {:a} {:a}\n", c.error.N, c.error.power_rel, c.error.power_l1);
   }
   t += "end\n";
   return t;
@@ -246,6 +279,45 @@ Checkpoint read_checkpoint(const std::filesystem::path& path) {
       b.values(i) = number(line);
     }
     c.blocks.push_back(std::move(b));
+  }
+  if (line.rfind("correction ", 0) == 0) {
+    std::istringstream in_line(line.substr(11));
+    std::string N, exact_J, fast_J, approach, edge, pressure;
+    long solves = 0, size = 0;
+    int exact_limits = 0;
+    if (!(in_line >> N >> exact_J >> fast_J >> approach >> edge >> pressure >> exact_limits >> solves >> size) ||
+        size != n)
+      fail("bad correction line '" + line + "'");
+    FidelityCorrection& k = c.correction;
+    k.valid = true;
+    k.N = number(N);
+    k.exact_energy_J = number(exact_J);
+    k.fast_energy_J = number(fast_J);
+    k.approach_m = number(approach);
+    k.edge_offset_m = number(edge);
+    k.pressure_offset_Pa = number(pressure);
+    k.exact_limits = exact_limits != 0;
+    k.solves = solves;
+    k.state.resize(n);
+    for (long i = 0; i < n; ++i) {
+      next();
+      k.state(i) = number(line);
+    }
+    k.exact_rate.resize(n - 1);
+    k.fast_rate.resize(n - 1);
+    for (long i = 0; i + 1 < n; ++i) {
+      next();
+      const std::size_t space = line.find(' ');
+      if (space == std::string::npos) fail("expected two numbers, got '" + line + "'");
+      k.exact_rate(i) = number(line.substr(0, space));
+      k.fast_rate(i) = number(line.substr(space + 1));
+    }
+    next();
+    std::istringstream err(line);
+    std::string word, eN, rel, l1;
+    if (!(err >> word >> eN >> rel >> l1) || word != "error") fail("expected 'error ...', got '" + line + "'");
+    c.error = {number(eN), number(rel), number(l1)};
+    next();
   }
   if (line != "end") fail("expected 'end', got '" + line + "'");
   return c;

@@ -67,6 +67,11 @@ struct WearReport {
   bool resumed = false;
 };
 std::string wear_report_text(const WearModel& m, const WearReport& r);
+// which models ran and the fast models' error estimate (docs/fidelity.md): report.txt's keys tangential_model,
+// fidelity, correction_tolerance (corrected), exact_solves, error_estimate_N, error_power_rel, error_power_l1
+std::vector<std::pair<std::string, std::string>> fidelity_report(const WearModel& m, const LifeResult& l);
+// the same as a comment line of summary.csv, written above its header row at the end of the run
+std::string wear_summary_error_line(const WearModel& m, const LifeResult& l);
 
 // the mean rolling speed of the duty cycle, and the hours one revolution of the reference body takes
 double hours_per_revolution(const WearModel& m);
@@ -86,6 +91,8 @@ struct Checkpoint {
   int snapshots_written = 0;    // snapshot files written so far (the initial one included)
   double wall_s = 0;            // run time so far
   std::vector<CheckpointBlock> blocks;  // after the state, in this order; none for the wear loop's life
+  FidelityCorrection correction;  // the corrected fidelity's, in force at the checkpoint's step
+  FidelityError error;
 };
 
 // the case's fingerprint: its file's text, the model's state size and its profiles

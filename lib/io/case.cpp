@@ -2,8 +2,10 @@
 // cross-key checks of validate(). The generic machinery (marking keys, locations) is yaml_reader.h.
 #include "lib/io/case.h"
 #include "lib/io/case_node.h"
+#include "lib/subsurface/shakedown.h"
 
 #include <algorithm>
+#include <array>
 #include <charconv>
 #include <cmath>
 #include <filesystem>
@@ -43,6 +45,7 @@ void read_body(YamlMap& m, BodySection& b, bool with_profiles) {
   else m.required("Ry_m", b.Ry_m, radius);
   m.required("E_Pa", b.E_Pa, positive_finite);
   m.required("nu", b.nu, in_half_open(0, 0.5));
+  m.optional("shear_yield_Pa", b.shear_yield_Pa, in_closed(kShearYieldMin_Pa, kShearYieldMax_Pa));
 }
 
 // ---- lateral profiles ----
@@ -240,11 +243,68 @@ void read_inertia(YamlMap& m, InertiaSection& in) {
                    [&](const YamlValue& v) { in.path_speed_m_per_s = read_history(v, nonnegative_finite); });
 }
 
+// { boundary: x, mixed: x, full_film: x } into an array indexed by LubricationRegime
+template <class Check>
+void read_by_regime(YamlMap& m, std::array<double, 3>& v, Check check) {
+  m.required("boundary", v[static_cast<int>(LubricationRegime::Boundary)], check);
+  m.required("mixed", v[static_cast<int>(LubricationRegime::Mixed)], check);
+  m.required("full_film", v[static_cast<int>(LubricationRegime::FullFilm)], check);
+}
+
+void read_lubricant(YamlMap& m, LubricantSection& l) {
+  m.required("viscosity_Pa_s", l.lubricant.viscosity_Pa_s, positive_finite);
+  m.required("pressure_viscosity_1_per_Pa", l.lubricant.pressure_viscosity_1_per_Pa, positive_finite);
+  m.section("roughness_Rq_m", [&](YamlMap& r) {
+    r.required("body1", l.Rq1_m, nonnegative_finite);
+    r.required("body2", l.Rq2_m, nonnegative_finite);
+  });
+  m.optional("lambda_mixed", l.thresholds.lambda_mixed, positive_finite);
+  m.optional("lambda_full_film", l.thresholds.lambda_full_film, positive_finite);
+  m.section("friction", [&](YamlMap& f) { read_by_regime(f, l.by_regime.mu, in_closed(0, 10)); });
+  m.section("wear_factor", [&](YamlMap& f) { read_by_regime(f, l.by_regime.wear_factor, nonnegative_finite); });
+}
+
+void read_thermal_body(YamlMap& m, ThermalBody& b) {
+  m.required("conductivity_W_per_m_K", b.conductivity_W_per_m_K, positive_finite);
+  m.required("density_kg_per_m3", b.density_kg_per_m3, positive_finite);
+  m.required("specific_heat_J_per_kg_K", b.specific_heat_J_per_kg_K, positive_finite);
+}
+
+void read_thermal(YamlMap& m, ThermalSection& t) {
+  m.section("body1", [&](YamlMap& b) { read_thermal_body(b, t.body1); });
+  m.section("body2", [&](YamlMap& b) { read_thermal_body(b, t.body2); });
+  const auto above_absolute_zero = [](double v) {
+    return std::isfinite(v) && v > -273.15 ? "" : "must be finite and above -273.15";
+  };
+  double bulk = 0, critical = 0;
+  if (m.optional_value("bulk_temperature_C", [&](const YamlValue& v) { bulk = v.as<double>(above_absolute_zero); }))
+    t.bulk_temperature_C = bulk;
+  if (m.optional_value("critical_temperature_C",
+                       [&](const YamlValue& v) { critical = v.as<double>(above_absolute_zero); }))
+    t.critical_temperature_C = critical;
+}
+
 void read_solver(YamlMap& m, SolverSection& s) {
   read_choice(m, "normal", s.normal, parse_normal_choice);
   read_choice(m, "tangential", s.tangential, parse_tangential_scheme, 200);
   m.optional("nx", s.nx, in_closed(1, 4096));
   m.optional("ny", s.ny, in_closed(1, 4096));
+  read_choice(m, "fidelity", s.fidelity, parse_fidelity);
+  m.optional("correction_tolerance", s.correction_tolerance, in_closed(1e-6, 10));
+  m.optional("error_estimate", s.error_estimate);
+  m.optional("correction_grid", s.correction_grid, in_closed(0, 4096));
+  // the exact fidelity is the exact physics: the half-space normal problem and Kalker's exact theory
+  if (s.fidelity == Fidelity::Exact) {
+    if (s.normal != NormalChoice::Auto && s.normal != NormalChoice::Halfspace)
+      m.fail("normal", "solver.normal, solver.fidelity: the exact fidelity solves the half-space, not " +
+                           std::string(to_string(s.normal)) + " (leave solver.normal out)");
+    if (s.tangential != kDefaultTangentialScheme && s.tangential != TangentialScheme::Exact)
+      m.fail("tangential", "solver.tangential, solver.fidelity: the exact fidelity solves Kalker's exact theory, not " +
+                               to_string(s.tangential) + " (leave solver.tangential out)");
+    s.normal = NormalChoice::Halfspace;
+    s.tangential = TangentialScheme::Exact;
+  }
+  m.optional("max_memory_bytes", s.max_memory_bytes, positive_finite);
 }
 
 }  // namespace
@@ -364,9 +424,12 @@ ContactCase read_contact_document(const YAML::Node& doc, const std::string& path
     m.optional_section("solver", [&](YamlMap& s) { read_solver(s, c.solver); });
     m.optional_section("transient", [&](YamlMap& s) { read_transient(s, c.transient.emplace()); });
     m.optional_section("inertia", [&](YamlMap& s) { read_inertia(s, c.inertia.emplace()); });
+    m.optional_section("lubricant", [&](YamlMap& s) { read_lubricant(s, c.lubricant.emplace()); });
+    m.optional_section("thermal", [&](YamlMap& s) { read_thermal(s, c.thermal.emplace()); });
     m.optional_section("output", [&](YamlMap& s) {
       s.optional("directory", c.output.directory);
       s.optional("fields", c.output.fields);
+      s.optional("subsurface", c.output.subsurface);
       s.optional("max_bytes", c.output.max_bytes, positive_finite);
     });
     if (extra) extra(m);
@@ -434,6 +497,16 @@ void validate(const ContactCase& c) {
                       " scheme needs a time step dt_s > 0");
   }
 
+  // the lubricant's regime thresholds in order; Blok's criterion needs the bulk temperature
+  if (c.lubricant && !(c.lubricant->thresholds.lambda_full_film > c.lubricant->thresholds.lambda_mixed))
+    throw key_error(c, "lubricant.lambda_full_film", "lubricant.lambda_full_film, lubricant.lambda_mixed: need "
+                    "lambda_mixed < lambda_full_film, got " + number(c.lubricant->thresholds.lambda_mixed) + " and " +
+                    number(c.lubricant->thresholds.lambda_full_film));
+  if (c.thermal && c.thermal->critical_temperature_C && !c.thermal->bulk_temperature_C)
+    throw key_error(c, "thermal.critical_temperature_C", "thermal.critical_temperature_C, thermal.bulk_temperature_C: "
+                    "Blok's criterion compares bulk + flash temperature with the critical one; give "
+                    "bulk_temperature_C too");
+
   // the roller's inertia: its spin sets V and xi; the run is a shift run with a longest step
   if (c.inertia) {
     check_inertia_kinematics(c);
@@ -455,6 +528,27 @@ void validate_steady(const ContactCase& c) {
   if (c.inertia)
     throw key_error(c, "inertia", "inertia: the steady 'contact' command has no roller inertia; "
                     "inertia is for 'transient'");
+  // the flash temperature: each surface passes through the contact (a surface at rest has no steady one)
+  if (c.thermal) {
+    const double V = speed_of(c), xi = c.kinematics.xi.value.front();
+    if (!(V > 0) || !(std::abs(xi) < 2))
+      throw key_error(c, given(c, "kinematics.xi") ? "kinematics.xi" : "kinematics.speed_m_per_s",
+                      "kinematics.speed_m_per_s, kinematics.xi, thermal: the flash temperature needs both surfaces "
+                      "moving, v1 = V (1 - xi/2) > 0 and v2 = V (1 + xi/2) > 0; got V = " + number(V) +
+                      " m/s, xi = " + number(xi));
+  }
+  if (c.lubricant && !(speed_of(c) > 0))
+    throw key_error(c, "kinematics.speed_m_per_s", "kinematics.speed_m_per_s, lubricant: the film needs an "
+                    "entrainment speed V > 0");
+}
+
+void refuse_lubrication_and_thermal(const ContactCase& c, const std::string& command) {
+  for (const auto& [section, present] : {std::pair<const char*, bool>{"lubricant", c.lubricant.has_value()},
+                                         {"thermal", c.thermal.has_value()}})
+    if (present)
+      throw key_error(c, section, std::string(section) + ": the '" + command + "' command does not use this "
+                      "section yet (the film, the regime and the flash temperature are reported by 'contact'); "
+                      "remove it");
 }
 
 void validate_transient(const ContactCase& c) {
@@ -462,6 +556,7 @@ void validate_transient(const ContactCase& c) {
     throw CaseError((c.path.empty() ? std::string() : c.path + ": ") +
                     "transient: the 'transient' command needs a transient: section, e.g. "
                     "transient: { scheme: shift, t_end_s: 4.0e-4 }");
+  refuse_lubrication_and_thermal(c, "transient");
 }
 
 Bodies bodies_of(const ContactCase& c) {
@@ -586,6 +681,18 @@ TransientOutputEstimate estimate_transient_output(const TransientCase& t, bool f
                          (fields ? static_cast<double>(s.snapshot_times_s.size()) * kSnapshotColumns * cells : 0);
   e.bytes = numbers * kCsvBytesPerNumber;
   return e;
+}
+
+void check_transient_output(const ContactCase& c, const TransientCase& t, bool fields, bool force) {
+  const TransientOutputEstimate estimate = estimate_transient_output(t, fields);
+  if (force || !(estimate.bytes > c.output.max_bytes)) return;
+  throw key_error(
+      c, "transient.t_end_s",
+      fmt::format("transient.t_end_s, transient.dt_s, solver.nx, solver.ny, output.max_bytes: the run would write "
+                  "about {:.3g} bytes ({:.3g} GB: about {:.3g} steps of {} strips), more than output.max_bytes = {:.0f}; "
+                  "shorten t_end_s, coarsen the grid, raise output.max_bytes, or run with --force (Python: force=True)",
+                  estimate.bytes, estimate.bytes / 1e9, estimate.steps, transient_grid(t).y_m.size(),
+                  c.output.max_bytes));
 }
 
 CaseError transient_error(const ContactCase& c, const SettingError& e) {

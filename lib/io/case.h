@@ -30,6 +30,10 @@
 #include "lib/normal/normal.h"
 #include "lib/history.h"
 #include "lib/errors.h"
+#include "lib/fidelity.h"
+#include "lib/lubrication/film.h"
+#include "lib/lubrication/regime.h"
+#include "lib/thermal/flash_temperature.h"
 #include "lib/io/key_locations.h"
 #include "lib/patch.h"
 #include "lib/normal/profile.h"
@@ -43,6 +47,9 @@ struct BodySection {                  // bodies.body1 / bodies.body2
   double Rx_m = kFlat, Ry_m = kFlat;  // required (Ry_m: only without profiles:); .inf for flat, negative for concave
   double E_Pa = 0;                    // required
   double nu = 0;                      // required, [0, 0.5)
+  // optional: the shear yield stress k for the fatigue indicators (lib/subsurface/shakedown.h), in
+  // [kShearYieldMin_Pa, kShearYieldMax_Pa]; 0 (absent): none for this body
+  double shear_yield_Pa = 0;
 };
 struct BodiesSection {
   BodySection body1;  // upper body (roller)
@@ -78,6 +85,20 @@ struct SolverSection {
   // relaxed (the default: lib/tangential/relaxed.h) | consistent | classic | exact
   TangentialScheme tangential = kDefaultTangentialScheme;
   int nx = 80, ny = 80;
+  // a wear life's physics (lib/fidelity.h, docs/fidelity.md): fast (the models above), corrected (them,
+  // corrected by the exact physics on a schedule) or exact (sets normal halfspace and tangential exact)
+  Fidelity fidelity = Fidelity::Fast;
+  // corrected: the exact physics is solved again once the worn depth has moved by more than this fraction of
+  // the contact's approach at the last correction somewhere, or the fast model's power by more than it
+  double correction_tolerance = 0.1;
+  // the exact physics' grid (n x n) for the corrections and the error estimate; 0 = the case's nx x ny
+  int correction_grid = 0;
+  // the fast fidelity's error estimate at the end of a wear life: one exact-physics solve on the final worn state
+  // (about 70 ms on the paper's roller at 80 x 80); false leaves it out (large sweeps)
+  bool error_estimate = true;
+  // a run whose memory is estimated above this is refused before it starts, naming the keys that drive the
+  // estimate (a wear run: wear/wear_loop.h estimate_memory_bytes); 2 GiB
+  double max_memory_bytes = 2.0 * 1024 * 1024 * 1024;
 };
 struct TransientSection {  // the 'transient' command's run (lib/tangential/satran.h)
   TransientScheme scheme = TransientScheme::Shift;  // shift | upwind | lax-friedrichs
@@ -93,9 +114,37 @@ struct InertiaSection {  // the roller spins up under the creep force (lib/tange
   double omega1_0_rad_per_s = 0;  // spin at t = 0, >= 0
   History path_speed_m_per_s = constant_history(0.0);  // required: V2(t) >= 0, the path's surface speed
 };
+// An EHL lubricant between the bodies (lib/lubrication/, docs/lubrication-and-temperature.md); without
+// this section the contact is dry. Keys:
+//   lubricant:
+//     viscosity_Pa_s: 0.01                  # eta0 at the bulk temperature, > 0
+//     pressure_viscosity_1_per_Pa: 2.0e-8   # alpha, > 0
+//     roughness_Rq_m: { body1: 0.1e-6, body2: 0.2e-6 }   # RMS roughness of each surface, >= 0
+//     lambda_mixed: 1.0                     # optional: boundary below (default kLambdaMixed)
+//     lambda_full_film: 3.0                 # optional: full film above (default kLambdaFullFilm)
+//     friction: { boundary: 0.1, mixed: 0.06, full_film: 0.03 }       # required: mu per regime
+//     wear_factor: { boundary: 1, mixed: 0.1, full_film: 0 }         # required: factor on K per regime
+struct LubricantSection {
+  Lubricant lubricant;
+  double Rq1_m = 0, Rq2_m = 0;   // RMS roughness of body 1 and body 2
+  RegimeThresholds thresholds;
+  RegimeCoefficients by_regime;  // the user's: no default (they depend on the oil, additives, surfaces)
+};
+// The flash temperature (lib/thermal/flash_temperature.h) of the steady contact's frictional power:
+//   thermal:
+//     body1: { conductivity_W_per_m_K: 46, density_kg_per_m3: 7850, specific_heat_J_per_kg_K: 470 }
+//     body2: { ... }                       # each required, > 0
+//     bulk_temperature_C: 80               # optional; required with critical_temperature_C
+//     critical_temperature_C: 300          # optional: Blok's scuffing criterion on bulk + flash
+struct ThermalSection {
+  ThermalBody body1, body2;
+  std::optional<double> bulk_temperature_C;
+  std::optional<double> critical_temperature_C;
+};
 struct OutputSection {
   std::string directory;  // default: out/<case name>, relative to the working directory
   bool fields = true;     // write the fields on the grid (fields.csv)
+  bool subsurface = true;  // 'contact': the stresses below the surface (subsurface.csv, subsurface_section.csv)
   double max_bytes = 1024.0 * 1024 * 1024;  // 'transient' refuses a run estimated to write more (1 GiB)
 };
 
@@ -110,6 +159,8 @@ struct ContactCase {
   SolverSection solver;
   std::optional<TransientSection> transient;  // present when the file has a transient: section
   std::optional<InertiaSection> inertia;      // present when the file has an inertia: section
+  std::optional<LubricantSection> lubricant;  // present when the file has a lubricant: section (else dry)
+  std::optional<ThermalSection> thermal;      // present when the file has a thermal: section
   OutputSection output;
   KeyLocations locations;  // where each value was read; empty for a case built in code
 };
@@ -144,8 +195,12 @@ bool given(const ContactCase& c, const std::string& key);
 
 // cross-key checks of any case (read_contact_case runs them); throws CaseError naming every key involved
 void validate(const ContactCase& c);
-// what the steady 'contact' command needs besides: every history constant, no inertia
+// what the steady 'contact' command needs besides: every history constant, no inertia; with thermal:,
+// both surfaces moving (V > 0, |xi| < 2)
 void validate_steady(const ContactCase& c);
+// the commands that do not use the lubricant: and thermal: sections yet (transient, the wear and cam
+// lives) refuse them, naming the section, rather than ignoring them
+void refuse_lubrication_and_thermal(const ContactCase& c, const std::string& command);
 // what the 'transient' command needs besides: a transient: section
 void validate_transient(const ContactCase& c);
 
@@ -186,6 +241,11 @@ struct TransientOutputEstimate {
 // bytes of one number at full precision with its separator: "-1.2345678901234567e-05," (lib/io/csv.h)
 constexpr double kCsvBytesPerNumber = 24;
 TransientOutputEstimate estimate_transient_output(const TransientCase& t, bool fields);
+// The estimate against output.max_bytes, before the run: a CaseError at transient.t_end_s's line naming the keys
+// that drive it (transient.t_end_s, transient.dt_s, solver.nx, solver.ny, output.max_bytes) unless force. The
+// command line (which also checks the free disk: session/output_folder.h) and the Python bindings (whose
+// arrays hold the same numbers as doubles, a third of the text's bytes) share it.
+void check_transient_output(const ContactCase& c, const TransientCase& t, bool fields, bool force);
 
 // run_transient's refusal of the settings (a SettingError: the setting's key as data) as a CaseError at
 // the case's key and line: "FILE:LINE:COL: transient.dt_s: ... the largest allowed dt_s is ... s"

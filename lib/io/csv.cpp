@@ -1,13 +1,18 @@
 #include "lib/io/csv.h"
+#include "lib/io/case_run.h"
+#include "lib/subsurface/stress_measures.h"
 #include "lib/number.h"
 
 #include <unistd.h>
 
+#include <array>
 #include <cerrno>
 #include <cstring>
+#include <limits>
 #include <fstream>
 #include <stdexcept>
 #include <system_error>
+#include <utility>
 
 #include <spdlog/fmt/fmt.h>
 #include <spdlog/spdlog.h>
@@ -223,6 +228,45 @@ std::string summary_csv(const std::string& name, const ContactPatch& patch, cons
   return out;
 }
 
+std::string contact_summary_csv(const std::string& name, const ContactRun& run) {
+  std::string base = summary_csv(name, run.normal.patch, run.problem, run.solution, run.scheme);
+  if (!run.lubrication && !run.thermal) return base;
+  const std::size_t eol = base.find('\n');
+  std::string header = base.substr(0, eol), row = base.substr(eol + 1);
+  row.pop_back();  // its newline
+  const auto add = [&](const char* column, double v) {
+    header += ',';
+    header += column;
+    row += ',';
+    put(row, v);
+  };
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  if (const auto& l = run.lubrication) {
+    add("entrainment_m_per_s", l->entrainment_m_per_s);
+    add("Rx_m", l->Rx_m);
+    add("ellipticity_k", l->film.ellipticity_k);
+    add("h_min_m", l->film.h_min_m);
+    add("h_central_m", l->film.h_central_m);
+    add("lambda", l->lambda);
+    header += ",regime";
+    row += ',';
+    row += to_string(l->regime);
+    add("regime_mu", l->mu);
+    add("regime_wear_factor", l->wear_factor);
+  }
+  if (const auto& t = run.thermal) {
+    add("v1_m_per_s", t->v1_m_per_s);
+    add("v2_m_per_s", t->v2_m_per_s);
+    add("flash_max_K", t->flash.max_rise_K);
+    add("heat_share_body1", t->flash.share_body1);
+    add("peclet_body1", t->flash.peclet_body1);
+    add("peclet_body2", t->flash.peclet_body2);
+    add("contact_temperature_C", t->contact_temperature_C.value_or(nan));
+    add("scuffing_margin_K", t->scuffing_margin_K.value_or(nan));
+  }
+  return header + '\n' + row + '\n';
+}
+
 }  // namespace contact
 
 namespace contact {
@@ -311,6 +355,79 @@ std::string transient_summary_csv(const std::string& name, const std::string& sc
     put(out, v);
   }
   fmt::format_to(std::back_inserter(out), ",{},{}\n", end.step, res.fallback_steps);
+  return out;
+}
+
+std::string subsurface_csv(const std::vector<const Subsurface*>& bodies) {
+  std::string out = "body,nu,measure,value_Pa,x_m,y_m,z_m\n";
+  for (std::size_t k = 0; k < bodies.size(); ++k) {
+    const SubsurfaceMaxima& m = bodies[k]->maxima;
+    const std::pair<const char*, const StressPeak*> rows[] = {{"von_mises", &m.von_mises},
+                                                             {"tresca", &m.tresca},
+                                                             {"orthogonal_shear", &m.orthogonal_shear},
+                                                             {"tension", &m.tension},
+                                                             {"compression", &m.compression}};
+    for (const auto& [name, peak] : rows) {
+      fmt::format_to(std::back_inserter(out), "{},", k + 1);
+      put(out, bodies[k]->nu);
+      out += ',';
+      out += name;
+      for (const double v : {peak->value_Pa, peak->x_m, peak->y_m, peak->z_m}) {
+        out += ',';
+        put(out, v);
+      }
+      out += '\n';
+    }
+  }
+  return out;
+}
+
+std::string subsurface_section_csv(const Grid& g, const std::vector<const Subsurface*>& bodies) {
+  std::string out =
+      "body,y_m,x_m,z_m,sigma_xx_Pa,sigma_yy_Pa,sigma_zz_Pa,sigma_xy_Pa,sigma_xz_Pa,sigma_yz_Pa,von_mises_Pa,"
+      "tresca_Pa,sigma_1_Pa,sigma_2_Pa,sigma_3_Pa\n";
+  for (std::size_t k = 0; k < bodies.size(); ++k) {
+    const int j = bodies[k]->section_strip;
+    for (const StressPlane& plane : bodies[k]->planes) {
+      if (plane.xx.rows() != g.nx || plane.xx.cols() != g.ny)
+        throw std::invalid_argument("subsurface_section_csv: a plane is not on the grid");
+      for (int i = 0; i < g.nx; ++i) {
+        const StressTensor s = plane.at(i, j);
+        const std::array<double, 3> p = principal_stresses(s);
+        fmt::format_to(std::back_inserter(out), "{}", k + 1);
+        for (const double v : {g.y_m(j), g.x_m(i), plane.z_m, s.xx, s.yy, s.zz, s.xy, s.xz, s.yz, von_mises_Pa(s),
+                               (p[0] - p[2]) / 2, p[0], p[1], p[2]}) {
+          out += ',';
+          put(out, v);
+        }
+        out += '\n';
+      }
+    }
+  }
+  return out;
+}
+
+std::string fatigue_csv(const std::vector<const FatigueIndicators*>& bodies) {
+  std::string out =
+      "body,shear_yield_Pa,contact,traction_coefficient,p0_over_k,limit_p0_over_k,surface_limit,margin,FI_surf,"
+      "cell_index_max,cell_x_m,cell_y_m\n";
+  for (std::size_t k = 0; k < bodies.size(); ++k) {
+    const FatigueIndicators* f = bodies[k];
+    if (!f) continue;
+    fmt::format_to(std::back_inserter(out), "{},", k + 1);
+    put(out, f->shear_yield_Pa);
+    fmt::format_to(std::back_inserter(out), ",{}", to_string(f->contact));
+    for (const double v : {f->traction_coefficient, f->p0_over_k, f->limit_p0_over_k}) {
+      out += ',';
+      put(out, v);
+    }
+    out += f->surface_limit ? ",1" : ",0";
+    for (const double v : {f->margin, f->FI_surf, f->cell_index_max, f->cell_x_m, f->cell_y_m}) {
+      out += ',';
+      put(out, v);
+    }
+    out += '\n';
+  }
   return out;
 }
 

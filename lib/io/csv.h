@@ -9,6 +9,8 @@
 
 #include "lib/grid.h"
 #include "lib/patch.h"
+#include "lib/subsurface/shakedown.h"
+#include "lib/subsurface/subsurface.h"
 #include "lib/tangential/satran.h"
 #include "lib/tangential/tangential.h"
 
@@ -70,6 +72,33 @@ std::string strips_csv(const ContactPatch& patch, const TangentialSolution& solu
 // (the caller sets C11 ... L_m_per_Pa to nan for a solve of the exact theory, which does not use them)
 std::string summary_csv(const std::string& name, const ContactPatch& patch, const TangentialProblem& problem,
                         const TangentialSolution& solution, TangentialScheme scheme);
+struct ContactRun;  // lib/io/case_run.h
+// summary_csv of a steady run, with the film's columns when it has a lubricant (entrainment_m_per_s,
+// Rx_m, ellipticity_k, h_min_m, h_central_m, lambda, regime, regime_mu, regime_wear_factor) and the flash
+// temperature's when it has a thermal: section (v1_m_per_s, v2_m_per_s, flash_max_K, heat_share_body1,
+// peclet_body1, peclet_body2, contact_temperature_C, scuffing_margin_K; nan where not asked); a dry
+// case's is summary_csv's, byte for byte
+std::string contact_summary_csv(const std::string& name, const ContactRun& run);
+
+// ---- below the surface (lib/subsurface/) ----
+
+// subsurface.csv: the maxima of each body's stresses below the surface, one row per body and measure (y_m in
+// the coordinate the caller gave them: `rollwear contact` the profiles', as strips.csv's):
+//   body,nu,measure,value_Pa,x_m,y_m,z_m
+// measure: von_mises, tresca ((sigma1 - sigma3)/2), orthogonal_shear (|sigma_xz|), tension (largest sigma1),
+// compression (smallest sigma3); z_m the depth into that body. bodies[k] is body k + 1.
+std::string subsurface_csv(const std::vector<const Subsurface*>& bodies);
+
+// subsurface_section.csv: each body's stresses on the x-z section through its most loaded cell (the strip
+// section_strip, at y_m), one row per plane and cell (body outer, then plane, then x):
+//   body,y_m,x_m,z_m,sigma_xx_Pa,sigma_yy_Pa,sigma_zz_Pa,sigma_xy_Pa,sigma_xz_Pa,sigma_yz_Pa,von_mises_Pa,
+//   tresca_Pa,sigma_1_Pa,sigma_2_Pa,sigma_3_Pa
+std::string subsurface_section_csv(const Grid& grid, const std::vector<const Subsurface*>& bodies);
+
+// fatigue.csv: one row per body with a shear yield stress (bodies[k] is body k + 1, null: none):
+//   body,shear_yield_Pa,contact,traction_coefficient,p0_over_k,limit_p0_over_k,surface_limit,margin,FI_surf,
+//   cell_index_max,cell_x_m,cell_y_m
+std::string fatigue_csv(const std::vector<const FatigueIndicators*>& bodies);
 
 // ---- the transient run (lib/tangential/satran.h) ----
 

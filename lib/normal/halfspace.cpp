@@ -40,6 +40,7 @@
 // grid: SPD on the vectors that vanish off Ic and sum to zero over it, where t lives, so this is a
 // preconditioned CG on the active set. K's condition number grows with the grid; with M the worn
 // 80 x 80 contact of tests/bench/halfspace_life_bench takes 21 iterations instead of 100.
+#include "lib/fftw_planner.h"
 #include "lib/normal/halfspace.h"
 #include "lib/numeric.h"
 
@@ -68,12 +69,6 @@ double love_antiderivative(double X, double Y) {
   if (X != 0) G += X * std::asinh(Y / std::abs(X));
   if (Y != 0) G += Y * std::asinh(X / std::abs(Y));
   return G;
-}
-
-// FFTW's planner keeps global state: plans are made one at a time
-std::mutex& fftw_planner_mutex() {
-  static std::mutex m;
-  return m;
 }
 
 struct FftwFree {

@@ -135,6 +135,12 @@ Profile read_profile_csv(const std::string& path) {
   if (header && (t.header.size() != 2 || t.header[0] != "y_m" || t.header[1] != "z_m"))
     throw std::invalid_argument(where(t.header_line) + ": expected the header 'y_m,z_m' (SI units, metres), got '" +
                                 clipped(t.header_text) + "'");
+  // a size checked before the points are: the memory and time of a wear run grow with them
+  if (t.rows.size() > static_cast<std::size_t>(kProfileMaxPoints))
+    throw std::invalid_argument(path + ": " + std::to_string(t.rows.size()) + " points, at most " +
+                                std::to_string(kProfileMaxPoints) +
+                                " are read (kProfileMaxPoints, lib/normal/profile.h); resample the profile to fewer "
+                                "points (the generated profiles have about 400 across the width)");
   for (std::size_t r = 0; r < t.rows.size(); ++r) {
     const std::vector<std::string>& fields = t.rows[r];
     const int line = t.row_lines[r];

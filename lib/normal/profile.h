@@ -35,6 +35,10 @@ struct Profiles {
 constexpr double kProfileChordTol_m = 1e-9;         // chord error of generated arcs
 constexpr double kProfileMaxSpacingFraction = 1.0 / 400;  // generated node spacing <= width/400
 constexpr double kProfileMaxWidth_m = 1.0;          // wider bodies look like millimetres given as m
+// a profile file holds at most this many points (read_profile_csv refuses more, naming the count): 50 times
+// the generated 400 across the width; the memory a wear run needs grows with the worn profile's nodes
+// (wear/wear_loop.h estimate_memory_bytes), and is checked against solver.max_memory_bytes before it runs
+constexpr int kProfileMaxPoints = 20000;
 
 // z at y by linear interpolation; throws std::out_of_range (naming the source) outside the extent
 double profile_z(const Profile& profile, double y_m);
@@ -45,7 +49,8 @@ void validate_profile(const Profile& profile);
 
 // CSV: a header line "y_m,z_m", then one point "y,z" per line; lines starting with '#' are
 // comments, blank lines are ignored. Throws std::invalid_argument "path:line: what, got ..." (the
-// line of the offending value) for unreadable files and every check of validate_profile.
+// line of the offending value) for unreadable files and every check of validate_profile, and for a file of
+// more than kProfileMaxPoints points ("path: N points, at most 20000 are read; resample ...").
 Profile read_profile_csv(const std::string& path);
 
 // the CSV text read_profile_csv reads: comment lines (each prefixed "# "), header, the shortest text that

@@ -58,6 +58,7 @@
 // accumulates their error along the strip. With the slip tractions updated pointwise (Jacobi) and
 // the stick ones by GMRES, the sets settle in a few iterations but the slip directions then
 // converge at 0.985 per iteration (residual 2e-3 after 200 at 80 x 80): hence Newton.
+#include "lib/fftw_planner.h"
 #include "lib/tangential/exact.h"
 #include "lib/numeric.h"
 #include "lib/history.h"
@@ -132,11 +133,6 @@ double F_r(double X, double Y) { return std::hypot(X, Y); }
 template <class F>
 double rectangle_difference(F f, double x, double y, double c, double d) {
   return f(x + c, y + d) - f(x + c, y - d) - f(x - c, y + d) + f(x - c, y - d);
-}
-
-std::mutex& fftw_planner_mutex() {
-  static std::mutex m;
-  return m;
 }
 
 struct FftwFree {

@@ -89,19 +89,24 @@ def _source(case, base_dir):
     raise TypeError("rollwear: a case is a path (str, os.PathLike) or a dict")
 
 
-def contact(case, *, fields=True, base_dir=None):
+def contact(case, *, fields=True, subsurface=True, base_dir=None):
     """One steady contact (`rollwear contact`): {"summary": summary.csv's values, "strips": strips.csv's
-    columns, "fields": fields.csv's as (nx, ny) arrays, a[i, j] at x_m[i], y_m[j] (with fields=True)}.
-    base_dir: the folder a dict case's profile files are relative to (default: the working directory)."""
+    columns, "fields": fields.csv's as (nx, ny) arrays, a[i, j] at x_m[i], y_m[j] (with fields=True),
+    "subsurface": {"body1", "body2"}: subsurface.csv's maxima, each {"value_Pa", "x_m", "y_m", "z_m"}, and
+    with the body's shear_yield_Pa fatigue.csv's values as "fatigue" (with subsurface=True and the case's
+    output.subsurface)}. base_dir: the folder a dict case's profile files are relative to (default: the
+    working directory)."""
     text, is_text, base = _source(case, base_dir)
-    return _rollwear.contact(text, is_text, base, fields)
+    return _rollwear.contact(text, is_text, base, fields, subsurface)
 
 
-def transient(case, *, fields=True, base_dir=None):
+def transient(case, *, fields=True, base_dir=None, force=False):
     """One transient run (`rollwear transient`): {"summary", "timeseries": timeseries.csv's columns,
-    "strips": {"y_m", "energy_J_per_m", "power_W_per_m" (steps, ny)}, "snapshots": a list of fields}."""
+    "strips": {"y_m", "energy_J_per_m", "power_W_per_m" (steps, ny)}, "snapshots": a list of fields}.
+    A run whose output is estimated above output.max_bytes (default 1 GiB) raises InputError before it
+    starts, as the command refuses it; force=True runs it (`--force`)."""
     text, is_text, base = _source(case, base_dir)
-    return _rollwear.transient(text, is_text, base, fields)
+    return _rollwear.transient(text, is_text, base, fields, bool(force))
 
 
 def run(case, *, base_dir=None):
@@ -113,15 +118,16 @@ def run(case, *, base_dir=None):
     return _rollwear.run(text, is_text, base)
 
 
-def sweep(path, *, output_dir=None, threads=0, shard=(1, 1)):
+def sweep(path, *, output_dir=None, threads=0, shard=(1, 1), force=False):
     """A sweep (`rollwear sweep`, docs/sweeps.md): runs it into its folder (output_dir, else the sweep's
     output.directory, else out/<sweep file stem>; a finished case is not run again) and returns
     {"directory": the folder, "results": results.csv's columns (numbers as arrays, ended_by, status and
     message as lists of str)}. threads 0: every core. Ctrl-C stops it after the running cases; the same
-    call resumes it."""
+    call resumes it. A shard of more than 10000 cases raises InputError before any case is read, unless
+    force=True (`--force`)."""
     k, n = shard
     directory = _rollwear.sweep(os.fspath(path), os.fspath(output_dir) if output_dir is not None else "",
-                                int(threads), int(k), int(n))
+                                int(threads), int(k), int(n), bool(force))
     return {"directory": directory, "results": read_results(os.path.join(directory, "results.csv"))}
 
 

@@ -47,7 +47,8 @@ PAPER = {  # cases/paper.yaml as a dict
 
 def test_contact_equals_the_command_line(source, cli, tmp_path, monkeypatch):
     monkeypatch.chdir(source)
-    # without fields, as --no-fields (with the fields the steady march sums Fx in another order: 1 ulp apart)
+    # without fields, as --no-fields (both still solve with the fields, which the subsurface stresses need;
+    # with subsurface=False, --no-subsurface, neither would: the march sums Fx in another order, 1 ulp apart)
     r = rollwear.contact("cases/paper.yaml", fields=False)  # the path as written in the issue and the README
     p = cli("contact", "cases/paper.yaml", "-o", tmp_path, "--no-fields")
     assert p.returncode == 0, p.stderr
@@ -61,6 +62,29 @@ def test_contact_equals_the_command_line(source, cli, tmp_path, monkeypatch):
     for key, column in strips.items():
         np.testing.assert_array_equal(r["strips"][key], numbers(column), err_msg=key)
     assert r["summary"]["normal_solver"] == "hertz"
+    # the subsurface maxima, as subsurface.csv's (body, measure) rows
+    maxima = read_csv(tmp_path / "subsurface.csv")
+    assert len(maxima["body"]) == 10
+    for body, measure, value, z in zip(maxima["body"], maxima["measure"], maxima["value_Pa"], maxima["z_m"]):
+        peak = r["subsurface"]["body" + body][measure]
+        assert peak["value_Pa"] == float(value), (body, measure)
+        assert peak["z_m"] == float(z), (body, measure)
+    assert "fatigue" not in r["subsurface"]["body1"]  # no shear_yield_Pa in the case
+    assert "subsurface" not in rollwear.contact("cases/paper.yaml", fields=False, subsurface=False)
+
+
+def test_lubricated_contact_film_and_flash_temperature_equal_the_command_line(source, cli, tmp_path):
+    case = "tests/data/lubrication/paper-lubricated.yaml"
+    r = rollwear.contact(str(source / case), fields=False)
+    p = cli("contact", case, "-o", tmp_path, "--no-fields")
+    assert p.returncode == 0, p.stderr
+    summary = read_csv(tmp_path / "summary.csv")
+    for key in ("entrainment_m_per_s", "Rx_m", "ellipticity_k", "h_min_m", "h_central_m", "lambda", "regime_mu",
+                "regime_wear_factor", "v1_m_per_s", "v2_m_per_s", "flash_max_K", "heat_share_body1",
+                "peclet_body1", "peclet_body2", "contact_temperature_C", "scuffing_margin_K"):
+        assert r["summary"][key] == float(summary[key][0]), key
+    assert r["summary"]["regime"] == summary["regime"][0] == "boundary"
+    assert "h_min_m" not in rollwear.contact(str(source / "cases" / "paper.yaml"), fields=False)["summary"]
 
 
 def test_contact_fields_equal_the_command_lines_and_are_hertz(source, cli, tmp_path):
@@ -125,6 +149,15 @@ def test_run_equals_the_command_line(source, cli, tmp_path):
     report = dict(line.split(": ", 1) for line in (tmp_path / "report.txt").read_text().splitlines() if ": " in line)
     assert r["summary"]["ended_by"] == report["ended_by"] == "edge"
     assert r["summary"]["revolutions"] == float(report["revolutions"])
+    # which models ran and the fast models' error estimate (docs/fidelity.md), as report.txt says
+    for key in ("tangential_model", "fidelity"):
+        assert r["summary"][key] == report[key]
+    assert r["summary"]["exact_solves"] == int(report["exact_solves"]) == 1
+    for key in ("error_estimate_N", "error_power_rel", "error_power_l1"):
+        assert r["summary"][key] == float(report[key]), key
+    text = (tmp_path / "summary.csv").read_text()
+    assert "# models: normal auto, tangential relaxed, fidelity fast\n" in text
+    assert f"per-strip power L1 {report['error_power_l1']}\n" in text
     body1 = r["profiles"]["body1"]
     last = sorted((tmp_path / "snapshots").glob("snapshot_*_body1.csv"))[-1]
     worn = read_csv(last)
@@ -198,6 +231,39 @@ def test_ctrl_c_interrupts_a_long_call_with_the_gil_released():
         rollwear.transient(case, fields=False)
     assert time.monotonic() - start < 3
     timer.join()
+
+
+def test_transient_refuses_an_absurd_run_at_once_as_the_command_line():
+    # t_end_s 1e9 s at 1 m/s: about 1.8e14 shift steps; the arrays would grow without bound (issue 26). The
+    # library's check of output.max_bytes refuses it before the run, naming the key and its line.
+    case = dict(PAPER, transient={"t_end_s": 1.0e9})
+    start = time.monotonic()
+    with pytest.raises(rollwear.InputError) as e:
+        rollwear.transient(case, fields=False)
+    assert time.monotonic() - start < 2
+    assert e.value.key == "transient.t_end_s"
+    assert "output.max_bytes = 1073741824" in str(e.value) and "force=True" in str(e.value)
+    # a small run above a small limit is refused too, and runs with force=True
+    small = dict(PAPER, transient={"t_end_s": 2.0e-5}, output={"max_bytes": 1000})
+    with pytest.raises(rollwear.InputError):
+        rollwear.transient(small, fields=False)
+    assert rollwear.transient(small, fields=False, force=True)["summary"]["steps"] > 0
+
+
+def test_wear_run_refuses_above_solver_max_memory_bytes(source, tmp_path):
+    # the memory a wear run needs (the smoothing kernel of the worn profile's nodes) is estimated before the
+    # run and refused above solver.max_memory_bytes, naming the profile's key (issue 26)
+    text = (source / "cases" / "paper-wear.yaml").read_text().replace(
+        "solver:     { normal: auto, nx: 80, ny: 80 }", "solver:     { normal: auto, nx: 80, ny: 80, max_memory_bytes: 1.0e4 }")
+    assert "max_memory_bytes" in text
+    case = tmp_path / "limited-wear.yaml"
+    case.write_text(text)
+    start = time.monotonic()
+    with pytest.raises(rollwear.InputError) as e:
+        rollwear.run(case)
+    assert time.monotonic() - start < 2
+    assert e.value.key == "profiles.body1"
+    assert "solver.max_memory_bytes = 10000" in str(e.value)
 
 
 def test_messages_go_to_python_logging(source, caplog):

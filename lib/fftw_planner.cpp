@@ -1,0 +1,10 @@
+#include "lib/fftw_planner.h"
+
+namespace contact {
+
+std::mutex& fftw_planner_mutex() {
+  static std::mutex m;
+  return m;
+}
+
+}  // namespace contact
