@@ -16,23 +16,30 @@
 //   u = IFFT( FFT(K) . FFT(p) ) / (4 nx ny).
 // The kernel is even in both offsets, so FFT(K) is real. The padded rows ny..2ny-1 of p are zero and
 // those of u are not wanted: r2c along x on the first ny rows, c2c along y on every column, and back
-// the same way (a quarter less work than the full 2-D transform). FFTW, planned once per solve
-// (FFTW_ESTIMATE: planning costs microseconds; the solve reuses the plans for every product).
+// the same way (a quarter less work than the full 2-D transform). FFTW, planned once per process and
+// grid size (FFTW_ESTIMATE; a plan costs about 0.5 ms, so a solve of its own would pay a third of a
+// warm 80 x 80 solve for them) and executed on each solve's arrays.
 //
 // Polonsky & Keer (1999), "A numerical method for solving rough contact problems based on the
 // multi-level multi-summation and conjugate gradient techniques", Wear 231, 206-219, section 3.
 // The pressure minimises the complementary energy p.K p / 2 + p.h over p >= 0, sum p dx dy = F. Each
 // iteration, with Ic the loaded cells (p > 0):
 //   g = h + K p,  g -= mean_Ic g               (separation; the mean is the approach delta)
-//   G = sum_Ic g^2,  t = g + (G/G_old) t on Ic (t = g after a restart), t = 0 elsewhere
+//   z = M^-1 g on Ic, z -= mean_Ic z           (preconditioned; z = g in Polonsky & Keer's method)
+//   G = sum_Ic g z,  t = z + (G/G_old) t on Ic (t = z after a restart), t = 0 elsewhere
 //   r = K t,  r -= mean_Ic r,  tau = sum_Ic g t / sum_Ic r t
 //   p -= tau t on Ic,  p = max(p, 0)
 //   Iol = {p = 0, g < 0} (overlap outside the contact): p = -tau g there, and restart the direction
 //   (a conjugate t with tau < 0, uphill, is replaced by the steepest descent t = g, whose tau >= 0)
 //   p *= F / (sum p dx dy)                     (prescribed load)
-// The residual of halfspace.h is measured on g at the start of each iteration. When a step clips no
-// cell and loads no overlap, p_new = scale (p - tau t) and so K p_new = scale (K p - tau K t): the
-// next iteration needs no convolution for g. The final residual is always judged on a fresh K p.
+// The residual of halfspace.h is measured on g at the start of each iteration. p_new = scale (p - tau t
+// + dp), dp nonzero on the cells clipped or loaded in the step, so K p_new = scale (K p - tau K t + K dp):
+// with few such cells K dp is summed from the kernel in real space and the next iteration needs no
+// convolution for g. The final residual is always judged on a fresh K p.
+// M^-1 (SpectralPreconditioner) is the inverse of the half-space's symbol, E* |k| / 2, on the periodic
+// grid: SPD on the vectors that vanish off Ic and sum to zero over it, where t lives, so this is a
+// preconditioned CG on the active set. K's condition number grows with the grid; with M the worn
+// 80 x 80 contact of tests/bench/halfspace_life_bench takes 21 iterations instead of 100.
 #include "lib/fftw_planner.h"
 #include "lib/normal/halfspace.h"
 #include "lib/numeric.h"
@@ -42,6 +49,9 @@
 #include <spdlog/spdlog.h>
 
 #include <algorithm>
+#include <iterator>
+#include <map>
+#include <utility>
 #include <cmath>
 #include <memory>
 #include <mutex>
@@ -65,52 +75,95 @@ struct FftwFree {
   void operator()(void* p) const { fftw_free(p); }
 };
 
-// the influence operator u = K p on one grid: plans, padded buffers and the kernel's spectrum
+template <class T>
+std::unique_ptr<T, FftwFree> fftw_array(std::size_t n) {
+  std::unique_ptr<T, FftwFree> p(static_cast<T*>(fftw_malloc(sizeof(T) * n)));
+  if (!p) throw std::bad_alloc();
+  return p;
+}
+
+// The plans of one grid size nx x ny: made once per process (FFTW_ESTIMATE, on scratch arrays of the
+// workspace's sizes and alignment) and kept, executed on each workspace's own arrays by FFTW's
+// new-array functions (thread-safe). A life solves on two or three sizes, thousands of times.
+struct HalfspacePlans {
+  fftw_plan rows_forward, columns_forward, columns_backward, rows_backward;  // the padded product
+  fftw_plan kernel_forward;                                                  // the padded kernel, 2-d r2c
+  fftw_plan periodic_forward, periodic_backward;                             // the preconditioner's nx x ny
+};
+
+const HalfspacePlans& plans_for(int nx, int ny) {
+  static std::map<std::pair<int, int>, HalfspacePlans> cache;
+  const std::lock_guard<std::mutex> lock(fftw_planner_mutex());
+  const auto found = cache.find({nx, ny});
+  if (found != cache.end()) return found->second;
+  int mx = 2 * nx, my = 2 * ny;
+  const int nk = nx + 1;
+  auto rows = fftw_array<double>(static_cast<std::size_t>(mx) * ny);
+  auto spectrum = fftw_array<fftw_complex>(static_cast<std::size_t>(my) * nk);
+  auto columns = fftw_array<fftw_complex>(static_cast<std::size_t>(my) * nk);
+  auto kernel = fftw_array<double>(static_cast<std::size_t>(mx) * my);
+  auto periodic = fftw_array<double>(static_cast<std::size_t>(nx) * ny);
+  auto periodic_spectrum = fftw_array<fftw_complex>(static_cast<std::size_t>(ny) * (nx / 2 + 1));
+  // the padded rows ny..my-1 of p are zero: transform only the first ny along x, all columns along y;
+  // back, all columns along y and only the first ny rows along x. The columns go out of place into
+  // (and back from) an array that holds each column contiguously: FFTW_ESTIMATE's plans for the
+  // strided columns in place copy through buffers and take about half as long again.
+  HalfspacePlans p;
+  p.rows_forward = fftw_plan_many_dft_r2c(1, &mx, ny, rows.get(), nullptr, 1, mx, spectrum.get(), nullptr, 1, nk,
+                                          FFTW_ESTIMATE);
+  p.columns_forward = fftw_plan_many_dft(1, &my, nk, spectrum.get(), nullptr, nk, 1, columns.get(), nullptr, 1, my,
+                                         FFTW_FORWARD, FFTW_ESTIMATE);
+  p.columns_backward = fftw_plan_many_dft(1, &my, nk, columns.get(), nullptr, 1, my, spectrum.get(), nullptr, nk, 1,
+                                          FFTW_BACKWARD, FFTW_ESTIMATE);
+  p.rows_backward = fftw_plan_many_dft_c2r(1, &mx, ny, spectrum.get(), nullptr, 1, nk, rows.get(), nullptr, 1, mx,
+                                           FFTW_ESTIMATE);
+  p.kernel_forward = fftw_plan_dft_r2c_2d(my, mx, kernel.get(), spectrum.get(), FFTW_ESTIMATE);
+  p.periodic_forward = fftw_plan_dft_r2c_2d(ny, nx, periodic.get(), periodic_spectrum.get(), FFTW_ESTIMATE);
+  p.periodic_backward = fftw_plan_dft_c2r_2d(ny, nx, periodic_spectrum.get(), periodic.get(), FFTW_ESTIMATE);
+  const fftw_plan all[] = {p.rows_forward,   p.columns_forward,  p.columns_backward, p.rows_backward,
+                           p.kernel_forward, p.periodic_forward, p.periodic_backward};
+  if (std::any_of(std::begin(all), std::end(all), [](fftw_plan q) { return q == nullptr; })) {
+    for (fftw_plan q : all)
+      if (q) fftw_destroy_plan(q);
+    throw std::runtime_error("halfspace: FFTW could not plan the transforms of " + std::to_string(nx) + " x " +
+                             std::to_string(ny));
+  }
+  return cache.emplace(std::make_pair(nx, ny), p).first->second;
+}
+
+// the influence operator u = K p on one grid: padded buffers and the kernel's spectrum
 struct HalfspaceWorkspace {
   int nx, ny;      // grid
   int mx, my;      // padded grid 2nx x 2ny, row-major for FFTW: row n (along y) holds mx values along x
   int nk;          // mx/2 + 1 = nx + 1 complex values per row of the spectrum
+  const HalfspacePlans& plans;
   std::unique_ptr<double, FftwFree> rows;           // (ny x mx): the rows that can be nonzero
   std::unique_ptr<fftw_complex, FftwFree> spectrum;  // (my x nk)
-  std::vector<double> kernel_spectrum;              // (my x nk) FFT of the even kernel (real) / (mx my)
-  fftw_plan rows_forward = nullptr, columns_forward = nullptr;
-  fftw_plan columns_backward = nullptr, rows_backward = nullptr;
+  std::unique_ptr<fftw_complex, FftwFree> columns;   // (nk x my): the spectrum's columns, each contiguous
+  std::vector<double> kernel_spectrum;              // (nk x my) FFT of the even kernel (real) / (mx my)
+  Eigen::ArrayXXd quadrant;                         // (nx x ny) K at the offsets (k dx, l dy), k, l >= 0
+  int products = 0;                                 // convolutions u = K p so far
 
   HalfspaceWorkspace(const Grid& g, double Estar_Pa)
-      : nx(g.nx), ny(g.ny), mx(2 * g.nx), my(2 * g.ny), nk(g.nx + 1),
-        rows(static_cast<double*>(fftw_malloc(sizeof(double) * mx * ny))),
-        spectrum(static_cast<fftw_complex*>(fftw_malloc(sizeof(fftw_complex) * my * nk))),
-        kernel_spectrum(static_cast<std::size_t>(my) * nk) {
-    if (!rows || !spectrum) throw std::bad_alloc();
-    std::unique_ptr<double, FftwFree> kernel(static_cast<double*>(fftw_malloc(sizeof(double) * mx * my)));
-    if (!kernel) throw std::bad_alloc();
-    fftw_plan kernel_forward = nullptr;
-    {
-      // the padded rows ny..my-1 of p are zero: transform only the first ny along x, all columns
-      // along y; back, all columns along y and only the first ny rows along x
-      const std::lock_guard<std::mutex> lock(fftw_planner_mutex());
-      rows_forward = fftw_plan_many_dft_r2c(1, &mx, ny, rows.get(), nullptr, 1, mx, spectrum.get(), nullptr, 1,
-                                            nk, FFTW_ESTIMATE);
-      columns_forward = fftw_plan_many_dft(1, &my, nk, spectrum.get(), nullptr, nk, 1, spectrum.get(), nullptr,
-                                           nk, 1, FFTW_FORWARD, FFTW_ESTIMATE);
-      columns_backward = fftw_plan_many_dft(1, &my, nk, spectrum.get(), nullptr, nk, 1, spectrum.get(), nullptr,
-                                            nk, 1, FFTW_BACKWARD, FFTW_ESTIMATE);
-      rows_backward = fftw_plan_many_dft_c2r(1, &mx, ny, spectrum.get(), nullptr, 1, nk, rows.get(), nullptr, 1,
-                                             mx, FFTW_ESTIMATE);
-      kernel_forward = fftw_plan_dft_r2c_2d(my, mx, kernel.get(), spectrum.get(), FFTW_ESTIMATE);
-    }
-    if (!rows_forward || !columns_forward || !columns_backward || !rows_backward || !kernel_forward) {
-      destroy_locked(kernel_forward);
-      destroy_plans();
-      throw std::runtime_error("halfspace: fftw_plan_many_dft / fftw_plan_dft_r2c_2d failed for " +
-                               std::to_string(mx) + " x " + std::to_string(my));
-    }
-
-    // kernel at the offsets of the first quadrant; even in both, wrapped onto the padded grid
-    Eigen::ArrayXXd quadrant(nx, ny);
+      : nx(g.nx), ny(g.ny), mx(2 * g.nx), my(2 * g.ny), nk(g.nx + 1), plans(plans_for(g.nx, g.ny)),
+        rows(fftw_array<double>(static_cast<std::size_t>(mx) * ny)),
+        spectrum(fftw_array<fftw_complex>(static_cast<std::size_t>(my) * nk)),
+        columns(fftw_array<fftw_complex>(static_cast<std::size_t>(my) * nk)),
+        kernel_spectrum(static_cast<std::size_t>(my) * nk), quadrant(g.nx, g.ny) {
+    // kernel at the offsets of the first quadrant (Love's form, top of file), from Love's antiderivative
+    // on the lattice of the cells' corners, G_ij = G((i + 1/2) dx, (j + 1/2) dy), each corner's value
+    // computed once (G is odd in X and in Y: G_-1,j = -G_0,j); even in both, wrapped onto the padded grid
+    Eigen::ArrayXXd corner(nx + 1, ny + 1);  // corner(i + 1, j + 1) = G_ij, i, j >= -1
+    for (int j = 0; j < ny; ++j)
+      for (int i = 0; i < nx; ++i)
+        corner(i + 1, j + 1) = love_antiderivative((i + 0.5) * g.dx_m, (j + 0.5) * g.dy_m);
+    corner.row(0).tail(ny) = -corner.row(1).tail(ny);
+    corner.col(0) = -corner.col(1);
+    const double to_m_per_Pa = 1 / (kPi * Estar_Pa);
     for (int l = 0; l < ny; ++l)
       for (int k = 0; k < nx; ++k)
-        quadrant(k, l) = rectangle_influence_m_per_Pa(k * g.dx_m, l * g.dy_m, g.dx_m, g.dy_m, Estar_Pa);
+        quadrant(k, l) = (corner(k + 1, l + 1) - corner(k + 1, l) - corner(k, l + 1) + corner(k, l)) * to_m_per_Pa;
+    auto kernel = fftw_array<double>(static_cast<std::size_t>(mx) * my);
     double* K = kernel.get();
     for (int n = 0; n < my; ++n) {
       const int l = n < ny ? n : my - n;  // |offset| along y; n = ny is the unused offset
@@ -119,49 +172,82 @@ struct HalfspaceWorkspace {
         K[m + mx * n] = (k < nx && l < ny) ? quadrant(k, l) : 0.0;
       }
     }
-    fftw_execute(kernel_forward);
-    destroy_locked(kernel_forward);
+    fftw_execute_dft_r2c(plans.kernel_forward, K, spectrum.get());
     const double scale = 1.0 / (static_cast<double>(mx) * my);
-    for (std::size_t q = 0; q < kernel_spectrum.size(); ++q) kernel_spectrum[q] = spectrum.get()[q][0] * scale;
-  }
-
-  ~HalfspaceWorkspace() { destroy_plans(); }
-  HalfspaceWorkspace(const HalfspaceWorkspace&) = delete;
-  HalfspaceWorkspace& operator=(const HalfspaceWorkspace&) = delete;
-
-  static void destroy(fftw_plan& plan) {
-    if (plan) fftw_destroy_plan(plan);
-    plan = nullptr;
-  }
-  static void destroy_locked(fftw_plan& plan) {
-    const std::lock_guard<std::mutex> lock(fftw_planner_mutex());
-    destroy(plan);
-  }
-  void destroy_plans() {
-    const std::lock_guard<std::mutex> lock(fftw_planner_mutex());
-    destroy(rows_forward);
-    destroy(columns_forward);
-    destroy(columns_backward);
-    destroy(rows_backward);
+    for (int n = 0; n < my; ++n)
+      for (int m = 0; m < nk; ++m)
+        kernel_spectrum[static_cast<std::size_t>(m) * my + n] = spectrum.get()[static_cast<std::size_t>(n) * nk + m][0] * scale;
   }
 
   // u = K p: zero-padded cyclic convolution
   void apply(const Eigen::ArrayXXd& p, Eigen::ArrayXXd& u) {
+    ++products;
     Eigen::Map<Eigen::ArrayXXd> padded(rows.get(), mx, ny);
     padded.topRows(nx) = p;
     padded.bottomRows(nx).setZero();
-    fftw_execute(rows_forward);
     fftw_complex* S = spectrum.get();
+    fftw_execute_dft_r2c(plans.rows_forward, rows.get(), S);
     double* S_values = reinterpret_cast<double*>(S);  // interleaved re, im
     std::fill(S_values + 2 * ny * nk, S_values + 2 * my * nk, 0.0);
-    fftw_execute(columns_forward);
+    fftw_complex* const Tc = columns.get();
+    fftw_execute_dft(plans.columns_forward, S, Tc);
     for (std::size_t q = 0; q < kernel_spectrum.size(); ++q) {
-      S[q][0] *= kernel_spectrum[q];
-      S[q][1] *= kernel_spectrum[q];
+      Tc[q][0] *= kernel_spectrum[q];
+      Tc[q][1] *= kernel_spectrum[q];
     }
-    fftw_execute(columns_backward);
-    fftw_execute(rows_backward);
+    fftw_execute_dft(plans.columns_backward, Tc, S);
+    fftw_execute_dft_c2r(plans.rows_backward, S, rows.get());
     u = padded.topRows(nx);
+  }
+
+  // u += w K e_(i, j): the displacement of one cell's pressure w, from the kernel in real space
+  void add_cell(double w, int i, int j, Eigen::ArrayXXd& u) const {
+    for (int l = 0; l < ny; ++l) {
+      const auto Kl = quadrant.col(std::abs(l - j));
+      u.col(l).head(i) += w * Kl.segment(1, i).reverse();
+      u.col(l).tail(nx - i) += w * Kl.head(nx - i);
+    }
+  }
+};
+
+// The preconditioner of the conjugate gradient: the inverse of the half-space's operator on the
+// periodic nx x ny grid, whose symbol is E* |k| / 2 (Boussinesq: u^ = 2 p^ / (E* |k|)), with |k| the
+// central-difference wavenumber (the scale does not matter). z = M^-1 g for g on the loaded cells
+// (zero elsewhere); symmetric and positive definite on the vectors that vanish off the loaded cells
+// and sum to zero over them, where the iteration's directions live.
+struct SpectralPreconditioner {
+  int nx, ny, nk;
+  const HalfspacePlans& plans;
+  std::unique_ptr<double, FftwFree> values;          // (ny x nx), x fastest
+  std::unique_ptr<fftw_complex, FftwFree> spectrum;  // (ny x nk)
+  std::vector<double> symbol;                        // (ny x nk) / (nx ny)
+
+  explicit SpectralPreconditioner(const Grid& g)
+      : nx(g.nx), ny(g.ny), nk(g.nx / 2 + 1), plans(plans_for(g.nx, g.ny)),
+        values(fftw_array<double>(static_cast<std::size_t>(nx) * ny)),
+        spectrum(fftw_array<fftw_complex>(static_cast<std::size_t>(ny) * nk)), symbol(static_cast<std::size_t>(ny) * nk) {
+    const double scale = 1.0 / (static_cast<double>(nx) * ny);
+    for (int n = 0; n < ny; ++n) {
+      const double sy = 2 * std::sin(kPi * n / ny) / g.dy_m;
+      for (int m = 0; m < nk; ++m) {
+        const double sx = 2 * std::sin(kPi * m / nx) / g.dx_m;
+        symbol[static_cast<std::size_t>(n) * nk + m] = std::sqrt(sx * sx + sy * sy) * scale;
+      }
+    }
+  }
+
+  // z = M^-1 g on the loaded cells (mask 1; g taken as 0 elsewhere), z = 0 elsewhere
+  void apply(const Eigen::ArrayXXd& loaded, const Eigen::ArrayXXd& g, Eigen::ArrayXXd& z) {
+    Eigen::Map<Eigen::ArrayXXd> V(values.get(), nx, ny);
+    V = loaded * g;
+    fftw_complex* const C = spectrum.get();
+    fftw_execute_dft_r2c(plans.periodic_forward, V.data(), C);
+    for (std::size_t q = 0; q < symbol.size(); ++q) {
+      C[q][0] *= symbol[q];
+      C[q][1] *= symbol[q];
+    }
+    fftw_execute_dft_c2r(plans.periodic_backward, C, V.data());
+    z = loaded * V;
   }
 };
 
@@ -226,11 +312,13 @@ void check_halfspace_inputs(const Grid& grid, const Eigen::ArrayXXd& gap_m, doub
 // displacement u = K p, the separation g and the conjugate direction t.
 class PolonskyKeer {
  public:
-  PolonskyKeer(const Grid& grid, const Eigen::ArrayXXd& h, double Estar_Pa, double F, const Eigen::ArrayXXd* start)
-      : K_(grid, Estar_Pa), h_(h), cell_m2_(grid.dx_m * grid.dy_m), F_(F), h_min_(h.minCoeff()),
+  PolonskyKeer(const Grid& grid, const Eigen::ArrayXXd& h, double Estar_Pa, double F, const Eigen::ArrayXXd* start,
+               bool precondition)
+      : K_(grid, Estar_Pa), M_(precondition ? std::make_unique<SpectralPreconditioner>(grid) : nullptr), h_(h), cell_m2_(grid.dx_m * grid.dy_m), F_(F), h_min_(h.minCoeff()),
         // start: the load spread evenly over the grid
         p_(Eigen::ArrayXXd::Constant(grid.nx, grid.ny, F / (grid.nx * grid.ny * cell_m2_))),
-        u_(grid.nx, grid.ny), g_(grid.nx, grid.ny), t_(Eigen::ArrayXXd::Zero(grid.nx, grid.ny)), Kt_(grid.nx, grid.ny) {
+        u_(grid.nx, grid.ny), g_(grid.nx, grid.ny), t_(Eigen::ArrayXXd::Zero(grid.nx, grid.ny)), Kt_(grid.nx, grid.ny),
+        z_(M_ ? grid.nx : 0, M_ ? grid.ny : 0), changed_(static_cast<std::size_t>(grid.nx) * grid.ny) {
     // or the caller's start, non-negative and carrying the load
     if (start) {
       const Eigen::ArrayXXd q = start->max(0.0);
@@ -241,28 +329,16 @@ class PolonskyKeer {
   }
 
   // separation s = h + u - delta for the current pressure; delta = its mean over the loaded cells;
-  // the complementarity residual (no gap under load, no overlap outside it)
+  // the complementarity residual (no gap under load, no overlap outside it). The loops over the cells
+  // are Eigen's array expressions with the loaded cells as a 0/1 mask: vectorised, reductions included.
   void measure_separation() {
-    const Eigen::Index n_cells = p_.size();
-    const double* const P = p_.data();
-    const double* const U = u_.data();
-    const double* const H = h_.data();
-    double* const S = g_.data();
-    double sum = 0;
-    n_loaded_ = 0;
-    for (Eigen::Index i = 0; i < n_cells; ++i) {
-      S[i] = H[i] + U[i];
-      if (P[i] > 0) {
-        sum += S[i];
-        n_loaded_ += 1;
-      }
-    }
-    delta_ = sum / n_loaded_;
-    double violation = 0;
-    for (Eigen::Index i = 0; i < n_cells; ++i) {
-      S[i] -= delta_;
-      violation = std::max(violation, P[i] > 0 ? std::abs(S[i]) : -S[i]);
-    }
+    loaded_ = (p_ > 0).cast<double>();
+    n_loaded_ = loaded_.sum();
+    g_ = h_ + u_;
+    delta_ = (g_ * loaded_).sum() / n_loaded_;
+    g_ -= delta_;
+    // |s| on the loaded cells, -s elsewhere
+    const double violation = std::max(0.0, (loaded_ * g_.abs() - (1 - loaded_) * g_).maxCoeff());
     residual_ = violation / (delta_ - h_min_);
   }
 
@@ -274,78 +350,70 @@ class PolonskyKeer {
     measure_separation();
   }
 
-  // conjugate direction on the loaded cells
+  // conjugate direction on the loaded cells, from the separation g or, preconditioned, from z = M^-1 g
+  // with its mean over the loaded cells removed (the direction keeps the load, as g does)
   void conjugate_direction() {
-    const Eigen::Index n_cells = p_.size();
-    const double* const P = p_.data();
-    const double* const S = g_.data();
-    double* const T = t_.data();
-    double G = 0;
-    for (Eigen::Index i = 0; i < n_cells; ++i)
-      if (P[i] > 0) G += S[i] * S[i];
+    const Eigen::ArrayXXd* Z = &g_;
+    if (M_) {
+      M_->apply(loaded_, g_, z_);
+      z_ -= loaded_ * (z_.sum() / n_loaded_);
+      Z = &z_;
+    }
+    const double G = (g_ * *Z * loaded_).sum();
     const double beta = conjugate_ ? G / G_old_ : 0.0;
-    for (Eigen::Index i = 0; i < n_cells; ++i) T[i] = P[i] > 0 ? S[i] + beta * T[i] : 0.0;
+    t_ = loaded_ * (*Z + beta * t_);
     G_old_ = G;
   }
 
   // step length along t, for the part of K t that keeps the load (mean over the loaded cells removed);
   // r.t <= 0 (the direction lost) returns false
   bool step_length(double& tau, double& rt) {
-    const Eigen::Index n_cells = p_.size();
-    const double* const P = p_.data();
-    const double* const S = g_.data();
-    const double* const T = t_.data();
-    const double* const R = Kt_.data();
     K_.apply(t_, Kt_);
-    double Kt_sum = 0, Kt_t = 0, s_t = 0;
-    for (Eigen::Index i = 0; i < n_cells; ++i) {
-      if (!(P[i] > 0)) continue;
-      Kt_sum += R[i];
-      Kt_t += R[i] * T[i];
-      s_t += S[i] * T[i];
-    }
-    double t_sum = 0;
-    for (Eigen::Index i = 0; i < n_cells; ++i) t_sum += T[i];
-    rt = Kt_t - Kt_sum / n_loaded_ * t_sum;
+    const double Kt_sum = (Kt_ * loaded_).sum(), Kt_t = (Kt_ * t_).sum(), s_t = (g_ * t_).sum();
+    rt = Kt_t - Kt_sum / n_loaded_ * t_.sum();  // t = 0 off the loaded cells
     if (!(rt > 0)) return false;
     tau = s_t / rt;
     return true;
   }
 
   // the step, kept non-negative; overlap outside the loaded cells is loaded and restarts the direction;
-  // then the prescribed load, and the displacement: along the step when no cell was clipped or added,
-  // K p = scale (u - tau K t)
+  // then the prescribed load, and the displacement along the step, K p = scale (u - tau K t), with the
+  // cells clipped or added (p other than p - tau t) added from the kernel in real space when they are
+  // few, else by a fresh convolution
   void step(double tau) {
     const Eigen::Index n_cells = p_.size();
     double* const P = p_.data();
     const double* const S = g_.data();
     const double* const T = t_.data();
-    bool clipped = false, overlap = false;
-    double sum_p = 0;
+    bool overlap = false;
+    Change* const C = changed_.data();  // n_cells long: no call in the loop
+    std::size_t n_changed = 0;
     for (Eigen::Index i = 0; i < n_cells; ++i) {
-      if (P[i] > 0) {
-        P[i] -= tau * T[i];
-        if (P[i] <= 0) {
-          P[i] = 0;
-          clipped = true;
-        }
-      }
-      if (P[i] == 0 && S[i] < 0) {
-        P[i] = -tau * S[i];
+      const double along = P[i] > 0 ? P[i] - tau * T[i] : 0.0;  // p - tau t (t = 0 off the loaded cells)
+      double now = along;
+      if (P[i] > 0 && now <= 0) now = 0;
+      if (now == 0 && S[i] < 0) {
+        now = -tau * S[i];
         overlap = true;
       }
-      sum_p += P[i];
+      if (now != along) C[n_changed++] = {i, now - along};
+      P[i] = now;
     }
+    const double sum_p = p_.sum();
     conjugate_ = !overlap;
     const double scale = F_ / (sum_p * cell_m2_);
     p_ *= scale;
-    if (clipped || overlap) {
+    if (n_changed > kSparseCells) {
       K_.apply(p_, u_);
       u_by_fft_ = true;
-    } else {
-      u_ = scale * (u_ - tau * Kt_);
-      u_by_fft_ = false;
+      return;
     }
+    u_ -= tau * Kt_;
+    const int nx = static_cast<int>(p_.rows());
+    for (std::size_t c = 0; c < n_changed; ++c)
+      K_.add_cell(C[c].dp, static_cast<int>(C[c].i % nx), static_cast<int>(C[c].i / nx), u_);
+    u_ *= scale;
+    u_by_fft_ = false;
   }
 
   // drop the conjugate direction (the next one is the steepest descent); false if it was that already
@@ -357,13 +425,23 @@ class PolonskyKeer {
 
   double residual() const { return residual_; }
   double approach() const { return delta_; }
+  int products() const { return K_.products; }
   Eigen::ArrayXXd& pressure() { return p_; }
 
  private:
+  // at most this many cells changed off the step are added from the kernel in real space (nx ny
+  // multiply-adds each), more take a convolution
+  static constexpr std::size_t kSparseCells = 24;
+  struct Change {
+    Eigen::Index i;
+    double dp;
+  };
   HalfspaceWorkspace K_;
+  std::unique_ptr<SpectralPreconditioner> M_;
   const Eigen::ArrayXXd& h_;
   double cell_m2_, F_, h_min_;
-  Eigen::ArrayXXd p_, u_, g_, t_, Kt_;
+  Eigen::ArrayXXd p_, u_, g_, t_, Kt_, z_, loaded_;  // loaded_: 1 on the loaded cells (p > 0), else 0
+  std::vector<Change> changed_;
   bool u_by_fft_ = true;  // u = K p from a convolution, not updated along the step
   bool conjugate_ = false;
   double G_old_ = 1, delta_ = 0, residual_ = 0, n_loaded_ = 0;
@@ -375,7 +453,7 @@ HalfspaceSolution solve_halfspace(const Grid& grid, const Eigen::ArrayXXd& gap_m
                                   double normal_load_N, const HalfspaceOptions& opt) {
   check_halfspace_inputs(grid, gap_m, Estar_Pa, normal_load_N, opt);
   const int nx = grid.nx, ny = grid.ny;
-  PolonskyKeer pk(grid, gap_m, Estar_Pa, normal_load_N, opt.initial_pressure_Pa);
+  PolonskyKeer pk(grid, gap_m, Estar_Pa, normal_load_N, opt.initial_pressure_Pa, opt.precondition);
 
   int it = 0;
   HalfspaceSolution s;
@@ -422,6 +500,7 @@ HalfspaceSolution solve_halfspace(const Grid& grid, const Eigen::ArrayXXd& gap_m
   s.contact_area_m2 = static_cast<double>((s.pressure_Pa > 0).count()) * cell_m2;
   s.status.iterations = it;
   s.status.residual = pk.residual();
+  s.products = pk.products();
   // per solve: the pressure is non-negative and carries the load (it is rescaled to F every iteration)
   if (s.status.kind != SolveStatus::Kind::Failed) {
     ROLLWEAR_ASSERT(s.pressure_Pa.minCoeff() >= 0, fmt::format("pressure down to {} Pa", s.pressure_Pa.minCoeff()));
@@ -438,7 +517,8 @@ HalfspaceSolution solve_halfspace(const Grid& grid, const Eigen::ArrayXXd& gap_m
   const Eigen::ArrayXXd& ps = s.pressure_Pa;
   s.reaches_border =
       (ps.row(0) > 0).any() || (ps.row(nx - 1) > 0).any() || (ps.col(0) > 0).any() || (ps.col(ny - 1) > 0).any();
-  if (s.reaches_border && opt.warn_at_border)
+  // (said of a converged solve only: an unconverged iterate's pressure near the border says nothing of the grid)
+  if (s.reaches_border && opt.warn_at_border && s.status.converged())
     spdlog::warn("halfspace ({} x {}): the contact reaches the grid's border (half-sizes {:.3e} m x {:.3e} m): "
                  "enlarge the grid",
                  nx, ny, grid.half_x_m, grid.half_y_m);

@@ -110,6 +110,7 @@ void BM_WornHalfspaceFineOnly(benchmark::State& state) {
   contact::HalfspaceOptions opt;
   if (state.range(1) != 0) opt.initial_pressure_Pa = &start;
   opt.tol = std::pow(10.0, -static_cast<double>(state.range(2)));  // 1e-9 is the default
+  opt.precondition = state.range(3) != 0;
   const double Estar = contact::effective_modulus_Pa(r.model.materials);
   contact::HalfspaceSolution s;
   for (auto _ : state) {
@@ -117,14 +118,24 @@ void BM_WornHalfspaceFineOnly(benchmark::State& state) {
     bench::keep(s.approach_m);
   }
   state.counters["iterations"] = s.status.iterations;
+  state.counters["products"] = s.products;
+  // against Polonsky & Keer's unpreconditioned iteration from the same start (the answer before the
+  // preconditioner): pressures as a fraction of the peak, approach relative
+  contact::HalfspaceOptions plain = opt;
+  plain.precondition = false;
+  const contact::HalfspaceSolution ref = contact::solve_halfspace(g, gap, Estar, r.model.normal_load_N, plain);
+  state.counters["dp_of_peak"] = (s.pressure_Pa - ref.pressure_Pa).abs().maxCoeff() / ref.pressure_Pa.maxCoeff();
+  state.counters["ddelta_rel"] = std::abs(s.approach_m - ref.approach_m) / ref.approach_m;
   if (!s.status.converged()) state.SkipWithError(("not converged: " + s.status.message).c_str());
 }
 BENCHMARK(BM_WornHalfspaceFineOnly)
-    ->ArgNames({"n", "warm", "tol_exp"})
-    ->Args({80, 0, 9})
-    ->Args({80, 1, 9})
-    ->Args({80, 0, 6})
-    ->Args({80, 1, 6})
+    ->ArgNames({"n", "warm", "tol_exp", "pre"})
+    ->Args({80, 0, 9, 0})
+    ->Args({80, 1, 9, 0})
+    ->Args({80, 0, 9, 1})
+    ->Args({80, 1, 9, 1})
+    ->Args({80, 0, 6, 1})
+    ->Args({80, 1, 6, 1})
     ->Unit(benchmark::kMillisecond);
 
 // the paper's life to its end on the half-space at 40 x 40, with and without the warm start
