@@ -90,8 +90,11 @@ TEST(StressReferenceLives, PaperWearRepeatsItsStoredExactPhysicsLife) {
   ASSERT_TRUE(lives.count("20/0.0001"));
   const double N = shipped_life("paper-wear", "{ normal: halfspace, tangential: exact, nx: 20, ny: 20 }",
                                 "{ method: adaptive, rtol: 0.0001, atol_m: 1.0e-10, max_steps: 1000000 }");
-  // the stored number has 10 digits; the solvers' tolerances (1e-9) leave the adaptive life within 1e-6 of it
-  EXPECT_NEAR(N / lives.at("20/0.0001"), 1.0, 1e-6) << N;
+  // not to the bit: a change of the half-space solver at its rounding level (the kernel from corner values, the
+  // direct displacement updates) moved this life by 1.9e-4 and the collective's by 3.8e-4, through the adaptive
+  // step sequence, which follows the rates' last digits. So the bound is the wear step's own accuracy here
+  // (rtol 1e-3 against 1e-4 differ by up to 2.6e-3 among the stored lives), not the solvers' tolerance.
+  EXPECT_NEAR(N / lives.at("20/0.0001"), 1.0, 1e-3) << N;
 }
 
 // The collective's stored 20 x 20 exact-physics life (rtol 1e-3), run again: about 35 s of CPU. Its conditions
@@ -102,7 +105,7 @@ TEST(StressReferenceLives, CollectiveRepeatsItsStoredExactPhysicsLife) {
   ASSERT_TRUE(lives.count("20/0.001"));
   const double N = shipped_life("collective-duty-mix", "{ normal: halfspace, tangential: exact, nx: 20, ny: 20 }",
                                 "{ method: adaptive, rtol: 0.001, atol_m: 1.0e-9, max_steps: 1000000 }");
-  EXPECT_NEAR(N / lives.at("20/0.001"), 1.0, 1e-6) << N;
+  EXPECT_NEAR(N / lives.at("20/0.001"), 1.0, 1e-3) << N;  // to the wear step's accuracy: see above
 }
 
 }  // namespace
