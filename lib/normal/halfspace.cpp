@@ -91,8 +91,20 @@ struct HalfspacePlans {
   fftw_plan periodic_forward, periodic_backward;                             // the preconditioner's nx x ny
 };
 
+// the process's plans by grid size, destroyed at exit (no thread plans then, so without the planner's lock)
+struct HalfspacePlanCache {
+  std::map<std::pair<int, int>, HalfspacePlans> plans;
+  ~HalfspacePlanCache() {
+    for (const auto& [size, p] : plans)
+      for (fftw_plan q : {p.rows_forward, p.columns_forward, p.columns_backward, p.rows_backward, p.kernel_forward,
+                          p.periodic_forward, p.periodic_backward})
+        fftw_destroy_plan(q);
+  }
+};
+
 const HalfspacePlans& plans_for(int nx, int ny) {
-  static std::map<std::pair<int, int>, HalfspacePlans> cache;
+  static HalfspacePlanCache plan_cache;
+  std::map<std::pair<int, int>, HalfspacePlans>& cache = plan_cache.plans;
   const std::lock_guard<std::mutex> lock(fftw_planner_mutex());
   const auto found = cache.find({nx, ny});
   if (found != cache.end()) return found->second;
