@@ -131,6 +131,54 @@ TEST(Fidelity, ErrorEstimateIsTheDirectComparisonOnTheFinalState) {
     EXPECT_NE(text.find(key), std::string::npos) << key << " in\n" << text;
 }
 
+// what a checkpoint holds at an accepted step's end, as `rollwear run` saves it (session/wear_life_run.cpp)
+Checkpoint checkpoint_at(const LifeStep& s, const WearCache& cache) {
+  Checkpoint cp;
+  cp.start = {s.N, *s.state, s.info.next_step, s.counters};
+  cp.blocks = wear_cache_blocks(cache);
+  return cp;
+}
+
+// equal, or both NaN (an estimate not made)
+bool same_number(double a, double b) { return a == b || (std::isnan(a) && std::isnan(b)); }
+
+// The life stopped after `stop_after` steps, its checkpoint written as text and read back, and resumed from it in
+// a new cache (a new process's) ends as the uninterrupted life `whole`: its end, N, steps, exact solves, error
+// estimate, final contact and state to the bit.
+void expect_resumed_life_is_the_whole_one(const WearCase& c, long stop_after, const std::string& file,
+                                          LifeResult& whole) {
+  const WearModel m = make_wear_model(c);
+  WearCache whole_cache;
+  whole = run_life(m, c, {}, {}, whole_cache);
+  ASSERT_EQ(whole.ended_by, LifeEnd::MaxDepth) << whole.message;
+  ASSERT_GT(whole.counters.steps, stop_after + 2);
+
+  WearCache first_cache;
+  Checkpoint cp;
+  LifeHooks stop;
+  stop.on_step = [&](const LifeStep& s) {
+    cp = checkpoint_at(s, first_cache);
+    return s.step < stop_after;
+  };
+  ASSERT_EQ(run_life(m, c, {}, stop, first_cache).ended_by, LifeEnd::Stopped);
+  const fs::path path = fs::path(::testing::TempDir()) / file;
+  { std::ofstream(path) << checkpoint_text(cp); }
+  const Checkpoint back = read_checkpoint(path);
+  WearCache resumed_cache;
+  restore_wear_cache(m, back.blocks, resumed_cache);
+  const LifeResult resumed = run_life(m, c, back.start, {}, resumed_cache);
+
+  EXPECT_EQ(resumed.ended_by, whole.ended_by);
+  EXPECT_EQ(resumed.N, whole.N);
+  EXPECT_EQ(resumed.counters.steps, whole.counters.steps);
+  EXPECT_EQ(resumed.exact_solves, whole.exact_solves);
+  EXPECT_TRUE(same_number(resumed.error.power_l1, whole.error.power_l1)) << resumed.error.power_l1;
+  EXPECT_EQ(resumed.contact.p0_Pa, whole.contact.p0_Pa);
+  EXPECT_EQ(resumed.contact.power_W, whole.contact.power_W);
+  ASSERT_EQ(resumed.state.size(), whole.state.size());
+  for (Eigen::Index i = 0; i < whole.state.size(); ++i) ASSERT_EQ(resumed.state(i), whole.state(i)) << "node " << i;
+}
+
 // The corrected life stopped after a few fixed steps and resumed from what a checkpoint holds (its state, N,
 // counters and correction, through the checkpoint's text) ends as the uninterrupted life to the bit.
 TEST(Fidelity, CorrectedLifeStoppedAndResumedFromItsCheckpointIsTheUninterruptedOneToTheBit) {
@@ -138,37 +186,39 @@ TEST(Fidelity, CorrectedLifeStoppedAndResumedFromItsCheckpointIsTheUninterrupted
   c.wear.stepping.method = IntegratorOptions::Method::FixedDepth;
   c.wear.stepping.max_depth_step_m = 2e-6;
   c.wear.limits.max_depth_m = 2e-5;
-  const WearModel m = make_wear_model(c);
-  WearCache whole_cache;
-  const LifeResult whole = run_life(m, c, {}, {}, whole_cache);
-  ASSERT_EQ(whole.ended_by, LifeEnd::MaxDepth);
-
-  WearCache first_cache;
-  Checkpoint cp;
-  LifeHooks stop;
-  stop.on_step = [&](const LifeStep& s) {
-    cp.start = {s.N, *s.state, s.info.next_step, s.counters};
-    cp.correction = first_cache.correction;
-    cp.error = first_cache.error;
-    return s.step < 5;
-  };
-  const LifeResult first = run_life(m, c, {}, stop, first_cache);
-  ASSERT_EQ(first.ended_by, LifeEnd::Stopped);
-  const fs::path path = fs::path(::testing::TempDir()) / "fidelity_checkpoint.txt";
-  { std::ofstream(path) << checkpoint_text(cp); }
-  const Checkpoint back = read_checkpoint(path);
-  WearCache resumed_cache;
-  resumed_cache.correction = back.correction;
-  resumed_cache.error = back.error;
-  const LifeResult resumed = run_life(m, c, back.start, {}, resumed_cache);
-  EXPECT_EQ(resumed.ended_by, whole.ended_by);
-  EXPECT_EQ(resumed.N, whole.N);
-  EXPECT_EQ(resumed.counters.steps, whole.counters.steps);
-  EXPECT_EQ(resumed.exact_solves, whole.exact_solves);
-  ASSERT_EQ(resumed.state.size(), whole.state.size());
-  for (Eigen::Index i = 0; i < whole.state.size(); ++i) ASSERT_EQ(resumed.state(i), whole.state(i)) << i;
-  EXPECT_EQ(resumed.error.power_l1, whole.error.power_l1);
+  LifeResult whole;
+  ASSERT_NO_FATAL_FAILURE(expect_resumed_life_is_the_whole_one(c, 5, "fidelity_checkpoint.txt", whole));
   EXPECT_GT(whole.exact_solves, 2);
+}
+
+// A half-space life (solver.normal halfspace) starts each half-space solve from the last one's pressures
+// (WearCache::halfspace_warm_start), so a resume that solved its start again would start elsewhere and end within
+// the solver's tolerance only; the checkpoint carries that last solve. The paper's roller on a coarse 12 x 12
+// grid, fixed-depth steps of 2 um to 20 um (10 steps), stopped after 4 and resumed: the fast fidelity on the
+// half-space, the exact fidelity (half-space and exact theory), and the corrected one on a half-space normal.
+WearCase halfspace_wear(contact::Fidelity fidelity) {
+  WearCase c = paper_wear(fidelity, 12);
+  c.contact.solver.normal = contact::NormalChoice::Halfspace;
+  c.wear.stepping.method = IntegratorOptions::Method::FixedDepth;
+  c.wear.stepping.max_depth_step_m = 2e-6;
+  c.wear.limits.max_depth_m = 2e-5;
+  return c;
+}
+
+TEST(HalfspaceResume, FastLifeStoppedAndResumedFromItsCheckpointIsTheUninterruptedOneToTheBit) {
+  LifeResult whole;
+  expect_resumed_life_is_the_whole_one(halfspace_wear(contact::Fidelity::Fast), 4, "hs_fast_checkpoint.txt", whole);
+}
+
+TEST(HalfspaceResume, ExactLifeStoppedAndResumedFromItsCheckpointIsTheUninterruptedOneToTheBit) {
+  LifeResult whole;
+  expect_resumed_life_is_the_whole_one(halfspace_wear(contact::Fidelity::Exact), 4, "hs_exact_checkpoint.txt", whole);
+}
+
+TEST(HalfspaceResume, CorrectedLifeOnAHalfspaceNormalStoppedAndResumedIsTheUninterruptedOneToTheBit) {
+  LifeResult whole;
+  expect_resumed_life_is_the_whole_one(halfspace_wear(contact::Fidelity::Corrected), 4, "hs_corrected_checkpoint.txt",
+                                       whole);
 }
 
 // The case keys: exact sets the half-space and the exact theory; it refuses another model named beside it;
