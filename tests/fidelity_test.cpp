@@ -221,6 +221,84 @@ TEST(HalfspaceResume, CorrectedLifeOnAHalfspaceNormalStoppedAndResumedIsTheUnint
                                        whole);
 }
 
+// A load collective on the half-space: each running condition starts its solves from its own last one, and the
+// checkpoint holds each (halfspace_normal_K). cases/collective-duty-mix.yaml (steady cruise, heavy, a start-stop
+// transient) at 12 x 12, fixed-depth steps of 2 um to 10 um, stopped after 2 and resumed.
+TEST(HalfspaceResume, CollectiveLifeStoppedAndResumedIsTheUninterruptedOneToTheBit) {
+  WearCase c = read_wear_case((kSource / "cases" / "collective-duty-mix.yaml").string());
+  c.contact.solver.normal = contact::NormalChoice::Halfspace;
+  c.contact.solver.nx = c.contact.solver.ny = 12;
+  for (WearCondition& k : c.wear.collective) {
+    k.contact.solver.normal = contact::NormalChoice::Halfspace;
+    k.contact.solver.nx = k.contact.solver.ny = 12;
+  }
+  c.wear.snapshots_revolutions.clear();
+  c.wear.stepping.method = IntegratorOptions::Method::FixedDepth;
+  c.wear.stepping.max_depth_step_m = 2e-6;
+  c.wear.limits.max_depth_m = 1e-5;
+  LifeResult whole;
+  ASSERT_NO_FATAL_FAILURE(expect_resumed_life_is_the_whole_one(c, 2, "hs_collective_checkpoint.txt", whole));
+  EXPECT_EQ(whole.contact.normal_solver, contact::NormalSolverKind::Halfspace);
+}
+
+// A checkpoint of format version 2 holds the corrected fidelity's correction in lines of its own: it is read into
+// the blocks `correction` and `error`, every number to the bit; a block cut short is refused naming it.
+TEST(HalfspaceResume, CheckpointOfVersion2ReadsItsCorrectionIntoTheBlocks) {
+  const std::string text =
+      "rollwear-wear-checkpoint 2\ncase_hash 00000000000000ab\nN 0x1p+23\nnext_step 0x0p+0\nsteps 3\nrhs_evals 4\n"
+      "rejected 0\nrate_evaluations 9\nlimit_evaluations 5\nnormal_solves 6\ntangential_solves 6\n"
+      "snapshots_written 1\nwall_s 0x1p-3\nstate 3\n0x1p-20\n0x1p-21\n0x1p-10\n"
+      "correction 0x1p+3 0x1p+1 0x1p+0 0x1p-18 -0x1p-30 0x1p+4 1 7 3\n0x1p-20\n0x1p-22\n0x1p-11\n"
+      "0x1p-40 0x1p-41\n0x1p-42 0x1p-43\nerror 0x1p+3 -0x1p-5 0x1p-6\nend\n";
+  const fs::path path = fs::path(::testing::TempDir()) / "version2_checkpoint.txt";
+  { std::ofstream(path) << text; }
+  const Checkpoint cp = read_checkpoint(path);
+  EXPECT_EQ(cp.start.N, 0x1p+23);
+  EXPECT_EQ(cp.start.counters.steps, 3);
+  WearModel m;
+  m.n1 = 2;  // a state of 3: two nodes and the energy
+  WearCache cache;
+  restore_wear_cache(m, cp.blocks, cache);
+  const FidelityCorrection& k = cache.correction;
+  ASSERT_TRUE(k.valid);
+  EXPECT_EQ(k.N, 8.0);
+  EXPECT_EQ(k.exact_energy_J, 2.0);
+  EXPECT_EQ(k.fast_energy_J, 1.0);
+  EXPECT_EQ(k.approach_m, 0x1p-18);
+  EXPECT_EQ(k.edge_offset_m, -0x1p-30);
+  EXPECT_EQ(k.pressure_offset_Pa, 16.0);
+  EXPECT_TRUE(k.exact_limits);
+  EXPECT_EQ(k.solves, 7);
+  ASSERT_EQ(k.state.size(), 3);
+  EXPECT_EQ(k.state(1), 0x1p-22);
+  ASSERT_EQ(k.exact_rate.size(), 2);
+  EXPECT_EQ(k.exact_rate(1), 0x1p-42);
+  EXPECT_EQ(k.fast_rate(1), 0x1p-43);
+  EXPECT_EQ(cache.error.N, 8.0);
+  EXPECT_EQ(cache.error.power_rel, -0x1p-5);
+  EXPECT_EQ(cache.error.power_l1, 0x1p-6);
+  // written again, it is version 3's blocks, and reads back to the same correction
+  Checkpoint again = cp;
+  again.blocks = wear_cache_blocks(cache);
+  { std::ofstream(path) << checkpoint_text(again); }
+  const Checkpoint back = read_checkpoint(path);
+  ASSERT_NE(find_block(back.blocks, "correction"), nullptr);
+  WearCache cache2;
+  restore_wear_cache(m, back.blocks, cache2);
+  EXPECT_EQ(cache2.correction.fast_rate(0), 0x1p-41);
+  EXPECT_EQ(cache2.error.power_l1, 0x1p-6);
+  // a block cut short
+  std::vector<CheckpointBlock> cut = back.blocks;
+  for (CheckpointBlock& b : cut)
+    if (b.name == "correction") b.values.conservativeResize(b.values.size() - 1);
+  try {
+    restore_wear_cache(m, cut, cache2);
+    ADD_FAILURE() << "no error";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("'correction'"), std::string::npos) << e.what();
+  }
+}
+
 // The case keys: exact sets the half-space and the exact theory; it refuses another model named beside it;
 // corrected needs friction and a steady duty cycle
 TEST(Fidelity, CaseKeysSetAndRefuseAtTheirKey) {
