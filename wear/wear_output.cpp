@@ -350,13 +350,9 @@ void restore_halfspace_normal(const CheckpointBlock& b, WearCache& cache) {
   const std::uint64_t lo = static_cast<std::uint64_t>(r.integer(0xffffffffL));
   NormalState n;
   n.solver = contact::NormalSolverKind::Halfspace;
-  n.grid_y0_m = r.number();
-  n.contact_y_min_m = r.number();
-  n.contact_y_max_m = r.number();
-  n.approach_m = r.number();
+  for (double* v : {&n.grid_y0_m, &n.contact_y_min_m, &n.contact_y_max_m, &n.approach_m}) *v = r.number();
   n.reaches_edge = r.integer(1) != 0;
-  n.edge_margin_m = r.number();
-  n.edge_limit_m = r.number();
+  for (double* v : {&n.edge_margin_m, &n.edge_limit_m}) *v = r.number();
   contact::ContactPatch& p = n.patch;
   for (double* v : {&p.a_m, &p.b_m, &p.p0_Pa, &p.normal_load_N, &p.approach_m}) *v = r.number();
   p.grid = take_grid(r);
@@ -369,9 +365,7 @@ void restore_halfspace_normal(const CheckpointBlock& b, WearCache& cache) {
   h.grid = take_grid(r);
   h.grid_y0_m = r.number();
   h.pressure_Pa = r.array2d();
-  h.contact_y_min_m = r.number();
-  h.contact_y_max_m = r.number();
-  h.reference_y_m = r.number();
+  for (double* v : {&h.contact_y_min_m, &h.contact_y_max_m, &h.reference_y_m}) *v = r.number();
   h.reaches_border = r.integer(1) != 0;
   h.edge_value_m = r.number();
   h.solves = static_cast<int>(r.integer(std::numeric_limits<int>::max()));
