@@ -43,7 +43,7 @@ int run_cam_command(const CamOptions& opt) {
   const std::filesystem::path dir = session::output_directory(opt.output_directory, c.output_directory, c.name);
   cam::CamRun run;
   try {
-    run = cam::run_cam(c.model, c.solver);
+    run = cam::run_cam(c.model, c.solver, c.lubrication);
   } catch (const cam::CamError& e) {
     throw cam::case_error_of(c, e);
   }
