@@ -71,8 +71,8 @@ std::string finest_wear_step_grid(const std::map<std::string, double>& lives) {
   return finest;
 }
 
-// On the finest grid stored the exact-physics life moves by 0.014 % (paper-wear, 80 x 80) and 0.29 % (eta,
-// 40 x 40) from rtol 1e-3 to 1e-4: the grid's error (20 -> 40: 0.4 % and 4.9 %) dominates. The transient duty
+// On the finest grid stored the exact-physics life moves by 0.021 % (paper-wear, 80 x 80) and 0.023 % (eta,
+// 40 x 40) from rtol 1e-3 to 1e-4: the grid's error (20 -> 40: 12 % and 11 %, to the edge limit) dominates. The transient duty
 // cycles (start-stop-wear, collective-duty-mix) are stored on 20 x 20 only. The default rows are the shipped
 // cases' lives today (a few seconds each: the transient cases roll their duty cycle at every wear-rate evaluation).
 TEST(ReferenceLives, StoredLivesAreConvergedInTheWearStepAndTheDefaultIsToday) {
