@@ -216,6 +216,9 @@ WearModel make_wear_model(const WearCase& c) {
       fast.contact.solver.correction_grid = 0;
       m.correction_fast.push_back(make_wear_model(fast));
       m.correction_fast.front().exact_physics.clear();
+      exact.contact.solver.nx = k.solver.nx;
+      exact.contact.solver.ny = k.solver.ny;
+      m.limits_physics.push_back(make_wear_model(exact));
     }
   }
   return m;
@@ -531,6 +534,13 @@ NormalState like_fast_normal_state(const WearModel& m, const Eigen::VectorXd& st
 }  // namespace
 
 NormalState exact_normal_state(const WearModel& m, const Eigen::VectorXd& state, WearCache& cache) {
+  if (!m.limits_physics.empty()) {
+    if (cache.limits_physics.empty()) {
+      cache.limits_physics.emplace_back();
+      cache.limits_physics.front().halfspace_warm_start = false;
+    }
+    return solved_normal_state(m.limits_physics.front(), state, cache.limits_physics.front());
+  }
   exact_wear_cache(cache);
   return solved_normal_state(m.exact_physics.front(), state, cache.exact_physics.front());
 }
@@ -662,16 +672,11 @@ Eigen::VectorXd limit_values(const WearModel& m, const Eigen::VectorXd& h, WearC
     const FidelityCorrection& k = ck.correction;
     const bool exact_limits = mk.fidelity == contact::Fidelity::Corrected && k.valid && k.exact_limits;
     const bool corrected = mk.fidelity == contact::Fidelity::Corrected && k.valid && !k.exact_limits;
-    // (on a coarser correction grid: the fast ones plus the exact minus the fast physics there, both solved now)
-    const bool like_offsets = exact_limits && !mk.correction_fast.empty();
-    const NormalState n =
-        exact_limits && !like_offsets ? exact_normal_state(mk, h, ck) : solved_normal_state(mk, h, ck);
-    double edge_offset_m = corrected ? k.edge_offset_m : 0.0, pressure_offset_Pa = corrected ? k.pressure_offset_Pa : 0.0;
-    if (like_offsets) {
-      const NormalState x = exact_normal_state(mk, h, ck), f = like_fast_normal_state(mk, h, ck);
-      edge_offset_m = x.edge_limit_m - f.edge_limit_m;
-      pressure_offset_Pa = x.patch.p0_Pa - f.patch.p0_Pa;
-    }
+    // (on a coarser correction grid, the exact physics' normal solve on the case's grid: the life ends where that
+    // says, not the coarse grid's edge; WearModel::limits_physics)
+    const NormalState n = exact_limits ? exact_normal_state(mk, h, ck) : solved_normal_state(mk, h, ck);
+    const double edge_offset_m = corrected ? k.edge_offset_m : 0.0;
+    const double pressure_offset_Pa = corrected ? k.pressure_offset_Pa : 0.0;
     const double pressure = n.patch.p0_Pa + pressure_offset_Pa - m.limits.max_pressure_Pa;
     if (m.limits.max_pressure_Pa > 0) g(kPressure) = first ? pressure : std::max(g(kPressure), pressure);
     if (m.limits.edge) {

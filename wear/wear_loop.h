@@ -81,9 +81,13 @@ struct WearModel {
   // the exact fidelity, transient duty cycles and collectives (no estimate)
   std::vector<WearModel> exact_physics;
   // the fast models on the exact physics' grid when solver.correction_grid makes it another than the case's:
-  // a correction is the exact physics' rate over these, both on that grid (the grid's error cancels in the
-  // ratio), applied to the fast rate on the case's grid; empty otherwise
+  // a correction is the exact physics' rate over these, both on that grid (the fast models' own dependence on
+  // the grid cancels in the ratio, the exact physics' does not: docs/fidelity.md), applied to the fast rate on
+  // the case's grid; empty otherwise
   std::vector<WearModel> correction_fast;
+  // and the exact physics on the case's grid, whose normal solve gives the limits near the end of the life
+  // (FidelityCorrection::exact_limits): where the life ends is the edge of the case's grid, not the coarse one's
+  std::vector<WearModel> limits_physics;
 
   int state_size() const { return n1 + n2 + 1; }
   int energy_index() const { return n1 + n2; }
@@ -206,6 +210,7 @@ struct WearCache {
   FidelityError error;
   std::vector<WearCache> exact_physics;
   std::vector<WearCache> correction_fast;  // WearModel::correction_fast's
+  std::vector<WearCache> limits_physics;   // WearModel::limits_physics's (its half-space solves cold)
 };
 
 // Thrown by normal_state where the worn geometry ends the life: run_life ends it at its last accepted
