@@ -39,6 +39,13 @@ WearCase paper_wear(contact::Fidelity fidelity, int n) {
   return c;
 }
 
+// the fast models alone on the case's grid (no correction, no exact physics)
+WearModel paper_wear_model_fast(WearCase c) {
+  c.contact.solver.fidelity = contact::Fidelity::Fast;
+  c.contact.solver.correction_grid = 0;
+  return make_wear_model(c);
+}
+
 LifeResult life_of(const WearCase& c) {
   const WearModel m = make_wear_model(c);
   WearCache cache;
@@ -97,6 +104,40 @@ TEST(Fidelity, CorrectionIsSolvedAgainWhenTheWornGapsShapeMoves) {
   EXPECT_NEAR(corrected.energy_per_revolution_J / cache.correction.exact_energy_J, 1, 1e-12);
 }
 
+// A coarser correction grid compares like with like: the correction's fast rate and its error estimate are the
+// fast models' on the correction grid (not the case's), so at the correction's state the corrected rate is the
+// coarse exact rate plus the ratio times the fast models' change from the coarse grid to the case's.
+TEST(Fidelity, CoarserCorrectionGridComparesTheExactPhysicsWithTheFastModelsOnItsOwnGrid) {
+  WearCase c = paper_wear(contact::Fidelity::Corrected, 20);
+  c.contact.solver.correction_grid = 12;
+  const WearModel m = make_wear_model(c);
+  ASSERT_EQ(m.correction_fast.size(), 1u);
+  ASSERT_EQ(m.limits_physics.size(), 1u);
+  WearCache cache;
+  Eigen::VectorXd h = initial_state(m);
+  for (int i = 0; i < m.n1; ++i) h(i) = 2e-6 * std::max(0.0, 1 - std::abs(m.profiles.body1.y_m(i)) / 2e-3);
+  ASSERT_TRUE(update_correction(m, 1, h, cache));
+  WearCache coarse_cache, fine_cache, exact_cache;
+  exact_cache.halfspace_warm_start = false;
+  const WearRate coarse = wear_rate(m.correction_fast.front(), h, coarse_cache);
+  const WearRate fine = wear_rate(paper_wear_model_fast(c), h, fine_cache);
+  const WearRate exact = wear_rate(m.exact_physics.front(), h, exact_cache);
+  const FidelityCorrection& k = cache.correction;
+  const double scale = exact.dstate_dN.head(m.n1).cwiseAbs().maxCoeff();
+  EXPECT_LT((k.fast_rate - coarse.dstate_dN.head(m.n1)).cwiseAbs().maxCoeff(), 1e-12 * scale);
+  EXPECT_GT((k.fast_rate - fine.dstate_dN.head(m.n1)).cwiseAbs().maxCoeff(), 1e-6 * scale);  // the grids differ
+  EXPECT_LT((k.exact_rate - exact.dstate_dN.head(m.n1)).cwiseAbs().maxCoeff(), 1e-12 * scale);
+  EXPECT_EQ(k.fast_energy_J, fine.energy_per_revolution_J);  // the schedule's: the case grid's fast power
+  EXPECT_NEAR(cache.error.power_rel, coarse.energy_per_revolution_J / exact.energy_per_revolution_J - 1, 1e-12);
+  // the corrected rate at the correction's state: x + c (f - f_n), per node
+  const Eigen::ArrayXd x = exact.dstate_dN.head(m.n1).array(), fn = coarse.dstate_dN.head(m.n1).array(),
+                       f = fine.dstate_dN.head(m.n1).array();
+  const double e = kCorrectionFloor * fn.abs().maxCoeff();
+  const Eigen::ArrayXd expected = (x + (x + e) / (fn + e) * (f - fn)).max(0.0);
+  const WearRate g = wear_rate(m, h, cache);
+  EXPECT_LT((g.dstate_dN.head(m.n1).array() - expected).abs().maxCoeff(), 1e-9 * scale);
+}
+
 // The error estimate of a fast life: its report's fields equal a direct comparison of the fast and the exact
 // physics' rates on the final worn state (the total energy per revolution, and the strips' energies mapped onto
 // the roller's nodes, relative L1 weighted by the nodes' widths).
@@ -136,8 +177,12 @@ TEST(Fidelity, ErrorEstimateIsTheDirectComparisonOnTheFinalState) {
 
 // The corrected life stopped after a few fixed steps and resumed from what a checkpoint holds (its state, N,
 // counters and correction, through the checkpoint's text) ends as the uninterrupted life to the bit.
+// Also with a coarser correction grid (its fast models and its case-grid limits are functions of the state).
 TEST(Fidelity, CorrectedLifeStoppedAndResumedFromItsCheckpointIsTheUninterruptedOneToTheBit) {
+  for (int correction_grid : {0, 10}) {
+  SCOPED_TRACE(correction_grid);
   WearCase c = paper_wear(contact::Fidelity::Corrected, 16);
+  c.contact.solver.correction_grid = correction_grid;
   c.wear.stepping.method = IntegratorOptions::Method::FixedDepth;
   c.wear.stepping.max_depth_step_m = 2e-6;
   c.wear.limits.max_depth_m = 2e-5;
@@ -172,6 +217,7 @@ TEST(Fidelity, CorrectedLifeStoppedAndResumedFromItsCheckpointIsTheUninterrupted
   for (Eigen::Index i = 0; i < whole.state.size(); ++i) ASSERT_EQ(resumed.state(i), whole.state(i)) << i;
   EXPECT_EQ(resumed.error.power_l1, whole.error.power_l1);
   EXPECT_GT(whole.exact_solves, 2);
+  }
 }
 
 // The case keys: exact sets the half-space and the exact theory; it refuses another model named beside it;
