@@ -54,8 +54,8 @@ LifeResult life_of(const WearCase& c) {
 
 // Reference: the exact physics' life on the same grid (20 x 20, computed here, about 2 s; the stored
 // 20 x 20 reference at rtol 1e-4 is 8.7664e7 revolutions, tests/data/reference_lives/paper-wear.csv). The
-// corrected life comes closer to it than the fast one. Measured here (no snapshots): exact 8.7604e7, fast
-// +5.77 %, corrected +1.17 % (54 exact solves); with the case's snapshots (`rollwear run`, which restart the
+// corrected life comes closer to it than the fast one. Measured here (no snapshots): exact 8.7674e7, fast
+// +5.68 %, corrected +0.81 % (54 exact solves); with the case's snapshots (`rollwear run`, which restart the
 // integration there) +5.95 % and +2.67 % (docs/fidelity.md). The bound, 4 %, lies between the fast life's error
 // and the corrected one's; both numbers are printed.
 TEST(Fidelity, CorrectedLifeIsCloserToTheExactLifeThanTheFastOnTheSameGrid) {
