@@ -387,7 +387,9 @@ TEST(StressFidelity, CoarseCorrectionGridsCarryTheCoarseExactPhysicsGridError) {
       const double like_l1 = rate_l1((f * ratio + (xn - fn * ratio)).max(0.0), x, y);
       std::cout << "[ measured ]   " << n << " x " << n << ": exact L1 " << 100 * rate_l1(xn, x, y) << " %, fast "
                 << 100 * rate_l1(fn, x, y) << " %, corrected (like with like) " << 100 * like_l1 << " %\n";
-      if (n == 20) EXPECT_GT(like_l1, fast_l1);
+      if (n == 20) {
+        EXPECT_GT(like_l1, fast_l1);
+      }
     }
   }
 }

@@ -214,6 +214,7 @@ WearModel make_wear_model(const WearCase& c) {
       WearCase fast = c;
       fast.contact.solver.nx = fast.contact.solver.ny = grid;
       fast.contact.solver.correction_grid = 0;
+      fast.contact.solver.fidelity = contact::Fidelity::Fast;
       m.correction_fast.push_back(make_wear_model(fast));
       m.correction_fast.front().exact_physics.clear();
       exact.contact.solver.nx = k.solver.nx;
@@ -675,12 +676,10 @@ Eigen::VectorXd limit_values(const WearModel& m, const Eigen::VectorXd& h, WearC
     // (on a coarser correction grid, the exact physics' normal solve on the case's grid: the life ends where that
     // says, not the coarse grid's edge; WearModel::limits_physics)
     const NormalState n = exact_limits ? exact_normal_state(mk, h, ck) : solved_normal_state(mk, h, ck);
-    const double edge_offset_m = corrected ? k.edge_offset_m : 0.0;
-    const double pressure_offset_Pa = corrected ? k.pressure_offset_Pa : 0.0;
-    const double pressure = n.patch.p0_Pa + pressure_offset_Pa - m.limits.max_pressure_Pa;
+    const double pressure = n.patch.p0_Pa + (corrected ? k.pressure_offset_Pa : 0.0) - m.limits.max_pressure_Pa;
     if (m.limits.max_pressure_Pa > 0) g(kPressure) = first ? pressure : std::max(g(kPressure), pressure);
     if (m.limits.edge) {
-      const double edge = n.edge_limit_m + edge_offset_m;
+      const double edge = n.edge_limit_m + (corrected ? k.edge_offset_m : 0.0);
       g(kEdge) = first ? edge : std::max(g(kEdge), edge);
     }
     first = false;
