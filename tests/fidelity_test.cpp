@@ -3,12 +3,15 @@
 // life reports against a direct comparison on the same state.
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <iostream>
+#include <sstream>
 #include <string>
+#include <vector>
 
 #include "lib/errors.h"
 #include "lib/io/case.h"
@@ -36,6 +39,13 @@ WearCase paper_wear(contact::Fidelity fidelity, int n) {
   return c;
 }
 
+// the fast models alone on the case's grid (no correction, no exact physics)
+WearModel paper_wear_model_fast(WearCase c) {
+  c.contact.solver.fidelity = contact::Fidelity::Fast;
+  c.contact.solver.correction_grid = 0;
+  return make_wear_model(c);
+}
+
 LifeResult life_of(const WearCase& c) {
   const WearModel m = make_wear_model(c);
   WearCache cache;
@@ -44,8 +54,8 @@ LifeResult life_of(const WearCase& c) {
 
 // Reference: the exact physics' life on the same grid (20 x 20, computed here, about 2 s; the stored
 // 20 x 20 reference at rtol 1e-4 is 8.7664e7 revolutions, tests/data/reference_lives/paper-wear.csv). The
-// corrected life comes closer to it than the fast one. Measured here (no snapshots): exact 8.7604e7, fast
-// +5.77 %, corrected +1.17 % (54 exact solves); with the case's snapshots (`rollwear run`, which restart the
+// corrected life comes closer to it than the fast one. Measured here (no snapshots): exact 8.7674e7, fast
+// +5.68 %, corrected +0.81 % (54 exact solves); with the case's snapshots (`rollwear run`, which restart the
 // integration there) +5.95 % and +2.67 % (docs/fidelity.md). The bound, 4 %, lies between the fast life's error
 // and the corrected one's; both numbers are printed.
 TEST(Fidelity, CorrectedLifeIsCloserToTheExactLifeThanTheFastOnTheSameGrid) {
@@ -92,6 +102,40 @@ TEST(Fidelity, CorrectionIsSolvedAgainWhenTheWornGapsShapeMoves) {
   const double scale = cache.correction.exact_rate.cwiseAbs().maxCoeff();
   EXPECT_LT((corrected.dstate_dN.head(m.n1) - cache.correction.exact_rate).cwiseAbs().maxCoeff(), 1e-12 * scale);
   EXPECT_NEAR(corrected.energy_per_revolution_J / cache.correction.exact_energy_J, 1, 1e-12);
+}
+
+// A coarser correction grid compares like with like: the correction's fast rate and its error estimate are the
+// fast models' on the correction grid (not the case's), so at the correction's state the corrected rate is the
+// coarse exact rate plus the ratio times the fast models' change from the coarse grid to the case's.
+TEST(Fidelity, CoarserCorrectionGridComparesTheExactPhysicsWithTheFastModelsOnItsOwnGrid) {
+  WearCase c = paper_wear(contact::Fidelity::Corrected, 20);
+  c.contact.solver.correction_grid = 12;
+  const WearModel m = make_wear_model(c);
+  ASSERT_EQ(m.correction_fast.size(), 1u);
+  ASSERT_EQ(m.limits_physics.size(), 1u);
+  WearCache cache;
+  Eigen::VectorXd h = initial_state(m);
+  for (int i = 0; i < m.n1; ++i) h(i) = 2e-6 * std::max(0.0, 1 - std::abs(m.profiles.body1.y_m(i)) / 2e-3);
+  ASSERT_TRUE(update_correction(m, 1, h, cache));
+  WearCache coarse_cache, fine_cache, exact_cache;
+  exact_cache.halfspace_warm_start = false;
+  const WearRate coarse = wear_rate(m.correction_fast.front(), h, coarse_cache);
+  const WearRate fine = wear_rate(paper_wear_model_fast(c), h, fine_cache);
+  const WearRate exact = wear_rate(m.exact_physics.front(), h, exact_cache);
+  const FidelityCorrection& k = cache.correction;
+  const double scale = exact.dstate_dN.head(m.n1).cwiseAbs().maxCoeff();
+  EXPECT_LT((k.fast_rate - coarse.dstate_dN.head(m.n1)).cwiseAbs().maxCoeff(), 1e-12 * scale);
+  EXPECT_GT((k.fast_rate - fine.dstate_dN.head(m.n1)).cwiseAbs().maxCoeff(), 1e-6 * scale);  // the grids differ
+  EXPECT_LT((k.exact_rate - exact.dstate_dN.head(m.n1)).cwiseAbs().maxCoeff(), 1e-12 * scale);
+  EXPECT_EQ(k.fast_energy_J, fine.energy_per_revolution_J);  // the schedule's: the case grid's fast power
+  EXPECT_NEAR(cache.error.power_rel, coarse.energy_per_revolution_J / exact.energy_per_revolution_J - 1, 1e-12);
+  // the corrected rate at the correction's state: x + c (f - f_n), per node
+  const Eigen::ArrayXd x = exact.dstate_dN.head(m.n1).array(), fn = coarse.dstate_dN.head(m.n1).array(),
+                       f = fine.dstate_dN.head(m.n1).array();
+  const double e = kCorrectionFloor * fn.abs().maxCoeff();
+  const Eigen::ArrayXd expected = (x + (x + e) / (fn + e) * (f - fn)).max(0.0);
+  const WearRate g = wear_rate(m, h, cache);
+  EXPECT_LT((g.dstate_dN.head(m.n1).array() - expected).abs().maxCoeff(), 1e-9 * scale);
 }
 
 // The error estimate of a fast life: its report's fields equal a direct comparison of the fast and the exact
@@ -181,14 +225,19 @@ void expect_resumed_life_is_the_whole_one(const WearCase& c, long stop_after, co
 
 // The corrected life stopped after a few fixed steps and resumed from what a checkpoint holds (its state, N,
 // counters and correction, through the checkpoint's text) ends as the uninterrupted life to the bit.
+// Also with a coarser correction grid (its fast models and its case-grid limits are functions of the state).
 TEST(Fidelity, CorrectedLifeStoppedAndResumedFromItsCheckpointIsTheUninterruptedOneToTheBit) {
+  for (int correction_grid : {0, 10}) {
+  SCOPED_TRACE(correction_grid);
   WearCase c = paper_wear(contact::Fidelity::Corrected, 16);
+  c.contact.solver.correction_grid = correction_grid;
   c.wear.stepping.method = IntegratorOptions::Method::FixedDepth;
   c.wear.stepping.max_depth_step_m = 2e-6;
   c.wear.limits.max_depth_m = 2e-5;
   LifeResult whole;
   ASSERT_NO_FATAL_FAILURE(expect_resumed_life_is_the_whole_one(c, 5, "fidelity_checkpoint.txt", whole));
   EXPECT_GT(whole.exact_solves, 2);
+  }
 }
 
 // A half-space life (solver.normal halfspace) starts each half-space solve from the last one's pressures
@@ -335,5 +384,142 @@ TEST(Fidelity, CaseKeysSetAndRefuseAtTheirKey) {
   }
 }
 
+// body1's worn depth columns of tests/data/reference_lives/CASE_profiles.csv (y_m, exact_half_m, exact_end_m, ...)
+std::vector<std::vector<double>> stored_profile_columns(const fs::path& path, int columns) {
+  std::ifstream in(path);
+  std::string line;
+  std::vector<std::vector<double>> out(columns);
+  while (std::getline(in, line)) {
+    if (line.empty() || line[0] == '#' || line[0] == 'y') continue;
+    std::stringstream row(line);
+    std::string cell;
+    for (int k = 0; k < columns && std::getline(row, cell, ','); ++k) out[k].push_back(std::stod(cell));
+  }
+  return out;
+}
+
+// the relative L1 of a per-node wear rate against a reference, weighted by the nodes' widths (as the error
+// estimate's per-strip L1; for Archard's law dh/dN is the smoothed per-node power times k_E)
+double rate_l1(const Eigen::ArrayXd& rate, const Eigen::ArrayXd& reference, const Eigen::ArrayXd& y) {
+  return profile_area_m2((rate - reference).abs(), y) / profile_area_m2(reference.abs(), y);
+}
+
+// Held out: the corrected rate on worn states of the shipped life (paper-wear, 80 x 80, tolerance 0.1) that it
+// did not correct on, against the exact physics on the same grid. The states: the life's own, each just before
+// a new correction (where the correction in force has drifted furthest; the exact rate there is that new
+// correction's) and four more accepted steps' states between corrections (the exact physics solved here). Issue 25's target: the
+// per-strip power within 5 % L1; judged on the per-node wear rate (Archard: the smoothed per-node power x k_E).
+// The fast models' L1 on the same states is printed beside it (2.5-5 %: what the correction removes).
+TEST(StressFidelity, CorrectedRateOnWornStatesItDidNotCorrectOn) {
+  constexpr double kTarget = 0.05;
+  const WearCase c = paper_wear(contact::Fidelity::Corrected, 80);
+  const WearModel m = make_wear_model(c);
+  WearCache cache;
+  struct Step {
+    double N;
+    Eigen::VectorXd state;
+    FidelityCorrection correction;
+  };
+  std::vector<Step> steps;
+  LifeHooks keep;
+  keep.on_step = [&](const LifeStep& s) {
+    steps.push_back({s.N, *s.state, cache.correction});
+    return true;
+  };
+  const LifeResult life = run_life(m, c, {}, keep, cache);
+  ASSERT_EQ(life.ended_by, LifeEnd::Edge);
+  const Eigen::ArrayXd& y = m.profiles.body1.y_m;
+  const auto corrected_at = [&](const FidelityCorrection& k, const Eigen::VectorXd& h) {
+    WearCache held;
+    held.correction = k;
+    return wear_rate(m, h, held);
+  };
+  double worst = 0, worst_fast = 0;
+  int checked = 0, fast_closer = 0;
+  // just before each new correction: the state is the new correction's, the correction in force the last one's
+  for (std::size_t i = 1; i < steps.size(); ++i) {
+    const FidelityCorrection &now = steps[i].correction, &before = steps[i - 1].correction;
+    if (now.solves == before.solves || now.N != steps[i].N) continue;
+    const Eigen::ArrayXd x = now.exact_rate.array(), f = now.fast_rate.array();
+    const WearRate g = corrected_at(before, steps[i].state);
+    const double l1 = rate_l1(g.dstate_dN.head(m.n1).array(), x, y), fast_l1 = rate_l1(f, x, y);
+    const double power = g.energy_per_revolution_J / now.exact_energy_J - 1;
+    worst = std::max(worst, l1);
+    worst_fast = std::max(worst_fast, fast_l1);
+    fast_closer += fast_l1 < l1;
+    ++checked;
+    if (checked % 8 == 1)
+      std::cout << "[ measured ] N " << steps[i].N << " (corrected at " << before.N << "): corrected rate L1 "
+                << 100 * l1 << " %, power " << 100 * power << " %; fast L1 " << 100 * fast_l1 << " %\n";
+  }
+  // a few accepted steps' states spread over the life that are no correction's own (between two corrections):
+  // the exact physics solved on the state
+  const WearModel& exact = m.exact_physics.front();
+  std::vector<std::size_t> between;
+  for (std::size_t i = 0; i < steps.size(); ++i)
+    if (steps[i].correction.N != steps[i].N) between.push_back(i);
+  ASSERT_GE(between.size(), 4u);
+  int halfway = 0;
+  for (int q = 0; q < 4; ++q) {
+    const Step& s = steps[between[(2 * q + 1) * between.size() / 8]];
+    WearCache exact_cache, fast_cache;
+    exact_cache.halfspace_warm_start = false;
+    const WearRate x = wear_rate(exact, s.state, exact_cache), f = wear_rate(m, s.state, fast_cache);
+    const WearRate g = corrected_at(s.correction, s.state);
+    const Eigen::ArrayXd xr = x.dstate_dN.head(m.n1).array();
+    const double l1 = rate_l1(g.dstate_dN.head(m.n1).array(), xr, y);
+    std::cout << "[ measured ] N " << s.N << " (corrected at " << s.correction.N << "): corrected rate L1 " << 100 * l1
+              << " %, power " << 100 * (g.energy_per_revolution_J / x.energy_per_revolution_J - 1) << " %; fast L1 "
+              << 100 * rate_l1(f.dstate_dN.head(m.n1).array(), xr, y) << " %\n";
+    worst = std::max(worst, l1);
+    ++checked;
+    ++halfway;
+  }
+  std::cout << "[ measured ] " << checked << " held-out states, " << life.exact_solves << " corrections: worst corrected L1 "
+            << 100 * worst << " % (the fast models' worst " << 100 * worst_fast << " %; closer than the corrected on "
+            << fast_closer << ")\n";
+  EXPECT_GT(checked, 20);
+  EXPECT_EQ(halfway, 4);
+  EXPECT_LT(worst, kTarget);
+}
+
+// A coarser correction grid: the exact physics and the fast models on 20-40 x 20-40 and their corrected rate
+// (x_n + c (f - f_n) at the correction's own state), on the stored exact 80 x 80 life's worn states at half and all
+// of it (tests/data/reference_lives/paper-wear_profiles.csv), against the exact physics on 80 x 80. Measured: the
+// fast models move by < 0.5 % of L1 with the grid, the exact physics by 2-8 % (not monotone in n): a coarse
+// correction carries the coarse exact physics' grid error, which is as large as the fast models' own error here
+// (2.6-2.8 %), so no correction grid below the case's improves the rate (docs/fidelity.md). The check: on each
+// state the corrected rate from the coarsest grid, 20, is not closer to the 80 x 80 exact rate than the fast rate.
+TEST(StressFidelity, CoarseCorrectionGridsCarryTheCoarseExactPhysicsGridError) {
+  const auto columns = stored_profile_columns(kSource / "tests/data/reference_lives/paper-wear_profiles.csv", 3);
+  const WearModel fine_fast = make_wear_model(paper_wear(contact::Fidelity::Fast, 80));
+  const WearModel fine_exact = make_wear_model(paper_wear(contact::Fidelity::Exact, 80));
+  ASSERT_EQ(static_cast<int>(columns[1].size()), fine_fast.n1);
+  const Eigen::ArrayXd& y = fine_fast.profiles.body1.y_m;
+  const auto rate = [&](const WearModel& m, const Eigen::VectorXd& h) {
+    WearCache cache;
+    cache.halfspace_warm_start = false;
+    return Eigen::ArrayXd(wear_rate(m, h, cache).dstate_dN.head(m.n1).array());
+  };
+  for (int column : {1, 2}) {
+    Eigen::VectorXd h = initial_state(fine_fast);
+    for (int i = 0; i < fine_fast.n1; ++i) h(i) = columns[column][i];
+    const Eigen::ArrayXd x = rate(fine_exact, h), f = rate(fine_fast, h);
+    const double fast_l1 = rate_l1(f, x, y);
+    std::cout << "[ measured ] stored exact 80 x 80 " << (column == 1 ? "half" : "end") << ": fast L1 " << 100 * fast_l1 << " %\n";
+    for (int n : {20, 30, 40}) {
+      const Eigen::ArrayXd xn = rate(make_wear_model(paper_wear(contact::Fidelity::Exact, n)), h);
+      const Eigen::ArrayXd fn = rate(make_wear_model(paper_wear(contact::Fidelity::Fast, n)), h);
+      const double e = kCorrectionFloor * fn.abs().maxCoeff();
+      const Eigen::ArrayXd ratio = (xn + e) / (fn + e);
+      const double like_l1 = rate_l1((f * ratio + (xn - fn * ratio)).max(0.0), x, y);
+      std::cout << "[ measured ]   " << n << " x " << n << ": exact L1 " << 100 * rate_l1(xn, x, y) << " %, fast "
+                << 100 * rate_l1(fn, x, y) << " %, corrected (like with like) " << 100 * like_l1 << " %\n";
+      if (n == 20) {
+        EXPECT_GT(like_l1, fast_l1);
+      }
+    }
+  }
+}
 }  // namespace
 }  // namespace wear

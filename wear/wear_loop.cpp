@@ -206,8 +206,21 @@ WearModel make_wear_model(const WearCase& c) {
     exact.contact.solver.normal = contact::NormalChoice::Halfspace;
     exact.contact.solver.tangential = contact::TangentialScheme::Exact;
     exact.contact.solver.fidelity = contact::Fidelity::Exact;
-    if (k.solver.correction_grid > 0) exact.contact.solver.nx = exact.contact.solver.ny = k.solver.correction_grid;
+    const int grid = k.solver.correction_grid;
+    if (grid > 0) exact.contact.solver.nx = exact.contact.solver.ny = grid;
     m.exact_physics.push_back(make_wear_model(exact));
+    // the fast models on the correction grid, when it is another: the correction's like with like
+    if (grid > 0 && (grid != k.solver.nx || grid != k.solver.ny)) {
+      WearCase fast = c;
+      fast.contact.solver.nx = fast.contact.solver.ny = grid;
+      fast.contact.solver.correction_grid = 0;
+      fast.contact.solver.fidelity = contact::Fidelity::Fast;
+      m.correction_fast.push_back(make_wear_model(fast));
+      m.correction_fast.front().exact_physics.clear();
+      exact.contact.solver.nx = k.solver.nx;
+      exact.contact.solver.ny = k.solver.ny;
+      m.limits_physics.push_back(make_wear_model(exact));
+    }
   }
   return m;
 }
@@ -506,9 +519,29 @@ WearRate exact_wear_rate(const WearModel& m, const Eigen::VectorXd& state, WearC
   return fast_wear_rate(m.exact_physics.front(), state, cache.exact_physics.front());
 }
 
+// the fast models on the exact physics' grid (the correction's like with like): WearModel::correction_fast on
+// a coarser correction grid, else the case's own
+WearRate like_fast_wear_rate(const WearModel& m, const Eigen::VectorXd& state, WearCache& cache) {
+  if (m.correction_fast.empty()) return fast_wear_rate(m, state, cache);
+  if (cache.correction_fast.empty()) cache.correction_fast.emplace_back();
+  return fast_wear_rate(m.correction_fast.front(), state, cache.correction_fast.front());
+}
+NormalState like_fast_normal_state(const WearModel& m, const Eigen::VectorXd& state, WearCache& cache) {
+  if (m.correction_fast.empty()) return solved_normal_state(m, state, cache);
+  if (cache.correction_fast.empty()) cache.correction_fast.emplace_back();
+  return solved_normal_state(m.correction_fast.front(), state, cache.correction_fast.front());
+}
+
 }  // namespace
 
 NormalState exact_normal_state(const WearModel& m, const Eigen::VectorXd& state, WearCache& cache) {
+  if (!m.limits_physics.empty()) {
+    if (cache.limits_physics.empty()) {
+      cache.limits_physics.emplace_back();
+      cache.limits_physics.front().halfspace_warm_start = false;
+    }
+    return solved_normal_state(m.limits_physics.front(), state, cache.limits_physics.front());
+  }
   exact_wear_cache(cache);
   return solved_normal_state(m.exact_physics.front(), state, cache.exact_physics.front());
 }
@@ -533,15 +566,16 @@ bool update_correction(const WearModel& m, double N, const Eigen::VectorXd& stat
     spdlog::debug("wear: the worn gap's shape moved {:.4g} m, the fast power {:.3g}", moved_m, power_moved);
   }
   const WearRate exact = exact_wear_rate(m, state, cache);
+  const WearRate like = like_fast_wear_rate(m, state, cache);  // the fast models on the exact physics' grid
   c.valid = true;
   c.N = N;
   c.state = state;
   c.exact_rate = node_rates(m, exact).matrix();
-  c.fast_rate = node_rates(m, fast).matrix();
+  c.fast_rate = node_rates(m, like).matrix();
   c.exact_energy_J = exact.energy_per_revolution_J;
   c.fast_energy_J = fast.energy_per_revolution_J;
   const NormalState& exact_normal = cache.exact_physics.front().normal;
-  const NormalState fast_normal = solved_normal_state(m, state, cache);
+  const NormalState fast_normal = like_fast_normal_state(m, state, cache);
   c.approach_m = exact_normal.approach_m;
   c.edge_offset_m = exact_normal.edge_limit_m - fast_normal.edge_limit_m;
   c.pressure_offset_Pa = exact_normal.patch.p0_Pa - fast_normal.patch.p0_Pa;
@@ -549,7 +583,7 @@ bool update_correction(const WearModel& m, double N, const Eigen::VectorXd& stat
                    (m.limits.max_pressure_Pa > 0 &&
                     exact_normal.patch.p0_Pa > (1 - kNearEdge * m.correction_tolerance) * m.limits.max_pressure_Pa);
   ++c.solves;
-  cache.error = rate_error(m, N, fast, exact);
+  cache.error = rate_error(m, N, like, exact);
   spdlog::debug("wear: correction {} at N {:.6g}: fast power {:+.3g} %, per-strip L1 {:.3g} %; approach {:.4g} m, "
                 "exact edge value {:.4g} m (offset {:.4g}), exact limits {}",
                 c.solves, N, 100 * cache.error.power_rel, 100 * cache.error.power_l1, c.approach_m,
@@ -559,7 +593,7 @@ bool update_correction(const WearModel& m, double N, const Eigen::VectorXd& stat
 
 FidelityError fast_model_error(const WearModel& m, double N, const Eigen::VectorXd& state, WearCache& cache) {
   if (m.exact_physics.empty()) return {};
-  return rate_error(m, N, fast_wear_rate(m, state, cache), exact_wear_rate(m, state, cache));
+  return rate_error(m, N, like_fast_wear_rate(m, state, cache), exact_wear_rate(m, state, cache));
 }
 
 double max_depth_m(const WearModel& m, const Eigen::VectorXd& state) {
@@ -639,6 +673,8 @@ Eigen::VectorXd limit_values(const WearModel& m, const Eigen::VectorXd& h, WearC
     const FidelityCorrection& k = ck.correction;
     const bool exact_limits = mk.fidelity == contact::Fidelity::Corrected && k.valid && k.exact_limits;
     const bool corrected = mk.fidelity == contact::Fidelity::Corrected && k.valid && !k.exact_limits;
+    // (on a coarser correction grid, the exact physics' normal solve on the case's grid: the life ends where that
+    // says, not the coarse grid's edge; WearModel::limits_physics)
     const NormalState n = exact_limits ? exact_normal_state(mk, h, ck) : solved_normal_state(mk, h, ck);
     const double pressure = n.patch.p0_Pa + (corrected ? k.pressure_offset_Pa : 0.0) - m.limits.max_pressure_Pa;
     if (m.limits.max_pressure_Pa > 0) g(kPressure) = first ? pressure : std::max(g(kPressure), pressure);

@@ -80,6 +80,14 @@ struct WearModel {
   // corrected fidelity's corrections and the fast fidelity's error estimate at the end of the life; empty for
   // the exact fidelity, transient duty cycles and collectives (no estimate)
   std::vector<WearModel> exact_physics;
+  // the fast models on the exact physics' grid when solver.correction_grid makes it another than the case's:
+  // a correction is the exact physics' rate over these, both on that grid (the fast models' own dependence on
+  // the grid cancels in the ratio, the exact physics' does not: docs/fidelity.md), applied to the fast rate on
+  // the case's grid; empty otherwise
+  std::vector<WearModel> correction_fast;
+  // and the exact physics on the case's grid, whose normal solve gives the limits near the end of the life
+  // (FidelityCorrection::exact_limits): where the life ends is the edge of the case's grid, not the coarse one's
+  std::vector<WearModel> limits_physics;
 
   int state_size() const { return n1 + n2 + 1; }
   int energy_index() const { return n1 + n2; }
@@ -146,7 +154,9 @@ struct WearRate {
 // The corrected fidelity's correction (docs/fidelity.md): the exact physics' and the fast models' rates on the
 // worn state of the last correction. The corrected rate at a state h is, per worn node i (body1's, then body2's),
 //   f_i(h) c_i + r_i,  c_i = (x_i + e) / (f0_i + e),  r_i = x_i - f0_i c_i,  clipped at 0,
-// x the exact and f0 the fast rate at the correction (smoothed dh/dN), e = kCorrectionFloor x the body's largest
+// x the exact and f0 the fast rate at the correction (smoothed dh/dN; both on the exact physics' grid, so a
+// coarser correction grid compares like with like: WearModel::correction_fast), f(h) the fast rate on the case's
+// grid, e = kCorrectionFloor x the body's largest
 // f0: a ratio where the fast model wears, an absolute difference held where it does not (no division by a
 // rate near 0), and the exact rate itself at the correction's state. The energy's rate is the fast one scaled
 // by the reference body's worn area rate, corrected over fast, so worn volume = k_E x energy still holds.
@@ -154,8 +164,8 @@ struct FidelityCorrection {
   bool valid = false;
   double N = 0;                          // revolutions where the exact physics was solved
   Eigen::VectorXd state;                 // the worn state it was solved on
-  Eigen::VectorXd exact_rate, fast_rate;  // (n1 + n2) dh/dN per node there, exact and fast
-  double exact_energy_J = 0, fast_energy_J = 0;  // per revolution there
+  Eigen::VectorXd exact_rate, fast_rate;  // (n1 + n2) dh/dN per node there, exact and fast (the exact's grid)
+  double exact_energy_J = 0, fast_energy_J = 0;  // per revolution there (fast: the case's grid, the schedule's)
   double approach_m = 0;                 // the exact physics' approach there (the schedule's depth scale)
   // the lifetime limits' functions, exact minus fast there, held and added to the fast ones until the next
   // correction: the life ends where the exact physics' edge and peak pressure say (as the exact life does)
@@ -199,6 +209,8 @@ struct WearCache {
   FidelityCorrection correction;
   FidelityError error;
   std::vector<WearCache> exact_physics;
+  std::vector<WearCache> correction_fast;  // WearModel::correction_fast's
+  std::vector<WearCache> limits_physics;   // WearModel::limits_physics's (its half-space solves cold)
 };
 
 // Thrown by normal_state where the worn geometry ends the life: run_life ends it at its last accepted
