@@ -18,6 +18,7 @@
 #include "lib/numeric.h"
 #include "lib/errors.h"
 #include "lib/model/contact_model.h"
+#include "lib/subsurface/shakedown.h"
 #include "wear/collective.h"
 #include "wear/profile_update.h"
 
@@ -190,6 +191,11 @@ WearModel make_wear_model(const WearCase& c) {
   if (m.law1) m.smoothing1 = smoothing_kernel(m.profiles.body1.y_m, m.smoothing_wavelength_m);
   if (m.law2) m.smoothing2 = smoothing_kernel(m.profiles.body2.y_m, m.smoothing_wavelength_m);
   m.limits = c.wear.limits;
+  // fatigue damage at the reference body's nodes, and the shakedown limit's k (the reference body's)
+  m.fatigue = c.wear.fatigue;
+  m.nD = m.fatigue ? static_cast<int>(p.y_m.size()) : 0;
+  m.damage_scale_m = m.limits.max_depth_m > 0 ? m.limits.max_depth_m : kDamageScale_m;
+  m.shear_yield_Pa = m.law1 ? k.bodies.body1.shear_yield_Pa : k.bodies.body2.shear_yield_Pa;
   // the pressure fields on the grid: read by the transient duty cycle (Satran), the per-cell laws and the
   // consistent march; not by the steady pure-xi closed form (solve_steady's skip) with the strip laws
   // (the relaxed model's steady solve is that march at scaled creepages: the same closed form)
@@ -407,6 +413,17 @@ WearRate fast_wear_rate(const WearModel& m, const Eigen::VectorXd& state, WearCa
     r.dstate_dN.segment(m.n1, m.n2) =
         r.cycles_per_revolution * node_depth_per_cycle(m, 2, *m.law2, duty, r.strip_y0_m, r.strip_dy_m).matrix();
   r.dstate_dN(m.energy_index()) = m.energy_scale * r.energy_per_revolution_J;
+  // fatigue: Burstow's damage per pass of each strip's T-gamma, on the reference body's nodes (the mean over each
+  // node's cell, unsmoothed); each point of the reference body passes the contact once per revolution
+  if (m.nD > 0) {
+    const Eigen::ArrayXd Tg =
+        strip_tgamma_N(duty.strip_energy_J_per_m, duty.rolled_m, n.contact_y_max_m - n.contact_y_min_m);
+    const Eigen::ArrayXd d = Tg.unaryExpr([&](double t) { return burstow_damage_per_pass(m.fatigue->burstow, t); });
+    const Eigen::ArrayXd& y = m.law1 ? m.profiles.body1.y_m : m.profiles.body2.y_m;
+    r.dstate_dN.segment(m.damage_index(), m.nD) =
+        m.damage_scale_m * strips_to_nodes(d, r.strip_y0_m, r.strip_dy_m, y).matrix();
+    r.contact.max_tgamma_N = Tg.size() > 0 ? Tg.maxCoeff() : 0.0;
+  }
 
   r.contact.a_m = patch.a_m;
   r.contact.b_m = patch.b_m;
@@ -416,6 +433,11 @@ WearRate fast_wear_rate(const WearModel& m, const Eigen::VectorXd& state, WearCa
   r.contact.edge_margin_m = n.edge_margin_m;
   r.contact.edge_limit_m = n.edge_limit_m;
   r.contact.normal_solver = n.solver;
+  if (m.shear_yield_Pa > 0 && patch.p0_Pa > 0) {
+    const double f = std::abs(duty.Fx_N) / m.normal_load_N;
+    const double limit = contact::shakedown_limit_p0_over_k(contact::shakedown_contact_of(patch.a_m, patch.b_m), f);
+    r.contact.shakedown_margin = limit / (patch.p0_Pa / m.shear_yield_Pa) - 1;
+  }
 
   if (cache.rates.size() >= kCachedRates) cache.rates.erase(cache.rates.begin());
   cache.rates.emplace_back(key, r);
@@ -579,11 +601,22 @@ double dissipated_energy_J(const WearModel& m, const Eigen::VectorXd& state) {
   return state(m.energy_index()) / m.energy_scale;
 }
 
+double max_damage(const WearModel& m, const Eigen::VectorXd& state) {
+  return m.nD > 0 ? state.segment(m.damage_index(), m.nD).maxCoeff() / m.damage_scale_m : 0.0;
+}
+
+double max_damage_y_m(const WearModel& m, const Eigen::VectorXd& state) {
+  if (m.nD == 0) return std::numeric_limits<double>::quiet_NaN();
+  Eigen::Index i = 0;
+  if (!(state.segment(m.damage_index(), m.nD).maxCoeff(&i) > 0)) return std::numeric_limits<double>::quiet_NaN();
+  return (m.law1 ? m.profiles.body1.y_m : m.profiles.body2.y_m)(i);
+}
+
 // ---- the life ----
 
 namespace {
 
-enum Limit { kDepth, kPressure, kEdge, kLimits };
+enum Limit { kDepth, kPressure, kEdge, kFatigue, kShakedown, kLimits };
 
 // The wear is carried by the worn bodies' profile nodes: a contact narrower than a few node spacings
 // would put a strip's wear on one node and the next solve could not see the worn shape. Throws
@@ -630,6 +663,10 @@ Eigen::VectorXd limit_values(const WearModel& m, const Eigen::VectorXd& h, WearC
   ++cache.counters.limit_evaluations;
   Eigen::VectorXd g = Eigen::VectorXd::Constant(kLimits, -1.0);
   if (m.limits.max_depth_m > 0) g(kDepth) = max_depth_m(m, h) - m.limits.max_depth_m;
+  // fatigue: the largest damage reaches 1 (linear in the state: located on the integrator's dense output)
+  if (m.nD > 0) g(kFatigue) = max_damage(m, h) - 1;
+  // shakedown: the load factor leaves Johnson's map (the margin, read from the rate at h, crosses 0)
+  if (m.limits.shakedown) g(kShakedown) = -wear_rate(m, h, cache).contact.shakedown_margin;
   if (m.limits.max_pressure_Pa <= 0 && !m.limits.edge) return g;
   // a collective's: the highest peak pressure and the widest contact of its running conditions
   bool first = true;
@@ -659,7 +696,7 @@ LifeProblem life_problem(const WearModel& m, const WearCase& c, WearCache& cache
   p.rate = [&m, &cache](double, const Eigen::VectorXd& h, Eigen::VectorXd& dhdN) {
     dhdN = wear_rate(m, h, cache).dstate_dN;
   };
-  p.limits = {LifeEnd::MaxDepth, LifeEnd::MaxPressure, LifeEnd::Edge};
+  p.limits = {LifeEnd::MaxDepth, LifeEnd::MaxPressure, LifeEnd::Edge, LifeEnd::Fatigue, LifeEnd::Shakedown};
   p.limit_values = [&m, &cache](double, const Eigen::VectorXd& h, Eigen::VectorXd& g) {
     g = limit_values(m, h, cache);
   };

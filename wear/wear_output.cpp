@@ -72,18 +72,27 @@ std::string wear_summary_header(const WearModel& m) {
                    contact::to_string(m.scheme), contact::to_string(m.fidelity));
   s += fmt::format("# revolutions of body{} (R {} m); one row per accepted step, step 0 unworn\n", m.law1 ? 1 : 2,
                    round_trip(m.reference_radius_m));
+  if (m.fatigue)
+    s += fmt::format("# fatigue: {} (T-gamma threshold {} N, peak {} per pass at {} N, none from {} N); max_damage: "
+                     "the largest Miner damage on body{}\n",
+                     to_string(m.fatigue->law), round_trip(m.fatigue->burstow.threshold_N),
+                     round_trip(m.fatigue->burstow.peak_damage), round_trip(m.fatigue->burstow.peak_at_N),
+                     round_trip(m.fatigue->burstow.zero_at_N), m.law1 ? 1 : 2);
   s += "step,revolutions,hours,max_depth_m,worn_volume_m3,dissipated_J,a_m,b_m,p0_Pa,Fx_N,power_W,"
-       "step_revolutions,error_estimate,rejected,rhs_evals\n";
+       "step_revolutions,error_estimate,rejected,rhs_evals";
+  s += m.fatigue ? ",max_damage\n" : "\n";
   return s;
 }
 
 std::string wear_summary_row(const WearModel& m, const LifeStep& s, double hours_per_rev) {
   const Eigen::VectorXd& h = *s.state;
-  return fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n", s.step, round_trip(s.N), round_trip(s.N * hours_per_rev),
+  std::string row = fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}", s.step, round_trip(s.N), round_trip(s.N * hours_per_rev),
                      round_trip(max_depth_m(m, h)), round_trip(worn_volume_m3(m, h, 1) + worn_volume_m3(m, h, 2)),
                      round_trip(dissipated_energy_J(m, h)), round_trip(s.contact.a_m), round_trip(s.contact.b_m), round_trip(s.contact.p0_Pa),
                      round_trip(s.contact.Fx_N), round_trip(s.contact.power_W), round_trip(s.info.step), round_trip(s.info.error_estimate),
                      s.info.rejected, s.info.rhs_evals);
+  if (m.fatigue) row += "," + round_trip(max_damage(m, h));
+  return row + "\n";
 }
 
 std::string wear_snapshot_csv(const WearModel& m, int body, double N, double hours, const Eigen::VectorXd& state) {
@@ -135,6 +144,21 @@ std::vector<std::pair<std::string, std::string>> fidelity_report(const WearModel
   return out;
 }
 
+std::vector<std::pair<std::string, std::string>> failure_margins(const WearModel& m, const LifeResult& l) {
+  std::vector<std::pair<std::string, std::string>> out;
+  if (!m.fatigue && !m.limits.shakedown) return out;
+  if (m.limits.max_depth_m > 0)
+    out.emplace_back("depth_fraction", round_trip(max_depth_m(m, l.state) / m.limits.max_depth_m));
+  if (m.fatigue) {
+    out.emplace_back("fatigue_law", to_string(m.fatigue->law));
+    out.emplace_back("max_damage", round_trip(max_damage(m, l.state)));
+    out.emplace_back("max_damage_y_m", round_trip(max_damage_y_m(m, l.state)));
+    out.emplace_back("max_tgamma_N", round_trip(l.contact.max_tgamma_N));
+  }
+  if (m.shear_yield_Pa > 0) out.emplace_back("shakedown_margin", round_trip(l.contact.shakedown_margin));
+  return out;
+}
+
 std::string wear_summary_error_line(const WearModel& m, const LifeResult& l) {
   return fmt::format("# error estimate ({} fidelity, {} exact-physics solves): at N {} the fast models' total power "
                      "relative error {}, per-strip power L1 {}\n",
@@ -163,6 +187,7 @@ std::string wear_report_text(const WearModel& m, const WearReport& r) {
   own.emplace_back("a_m", round_trip(l.contact.a_m));
   own.emplace_back("b_m", round_trip(l.contact.b_m));
   own.emplace_back("normal_solver", contact::to_string(l.contact.normal_solver));
+  for (const auto& [key, value] : failure_margins(m, l)) own.emplace_back(key, value);
   for (const auto& [key, value] : fidelity_report(m, l)) own.emplace_back(key, value);
   const LifeCounters& n = l.counters;
   own.emplace_back("rate_evaluations", std::to_string(n.rate_evaluations));
@@ -204,9 +229,11 @@ std::string checkpoint_text(const Checkpoint& c) {
   // as the uninterrupted one did)
   if (c.correction.valid) {
     const FidelityCorrection& k = c.correction;
-    t += fmt::format("correction {:a} {:a} {:a} {:a} {:a} {:a} {} {} {}\n", k.N, k.exact_energy_J, k.fast_energy_J,
+    // the rates' count follows when it is not the state's less the energy (a state with fatigue damage)
+    const bool rate_count = k.exact_rate.size() + 1 != k.state.size();
+    t += fmt::format("correction {:a} {:a} {:a} {:a} {:a} {:a} {} {} {}{}\n", k.N, k.exact_energy_J, k.fast_energy_J,
                      k.approach_m, k.edge_offset_m, k.pressure_offset_Pa, k.exact_limits ? 1 : 0, k.solves,
-                     k.state.size());
+                     k.state.size(), rate_count ? fmt::format(" {}", k.exact_rate.size()) : std::string());
     for (Eigen::Index i = 0; i < k.state.size(); ++i) t += fmt::format("{:a}\n", k.state(i));
     for (Eigen::Index i = 0; i < k.exact_rate.size(); ++i) t += fmt::format("{:a} {:a}\n", k.exact_rate(i), k.fast_rate(i));
     t += fmt::format("error {:a} {:a} {:a}\n", c.error.N, c.error.power_rel, c.error.power_l1);
@@ -288,6 +315,9 @@ Checkpoint read_checkpoint(const std::filesystem::path& path) {
     if (!(in_line >> N >> exact_J >> fast_J >> approach >> edge >> pressure >> exact_limits >> solves >> size) ||
         size != n)
       fail("bad correction line '" + line + "'");
+    long rates = n - 1;  // the state less the energy, unless given (a state with fatigue damage)
+    if (long given = 0; in_line >> given) rates = given;
+    if (rates < 0 || rates >= n) fail("bad correction line '" + line + "'");
     FidelityCorrection& k = c.correction;
     k.valid = true;
     k.N = number(N);
@@ -303,9 +333,9 @@ Checkpoint read_checkpoint(const std::filesystem::path& path) {
       next();
       k.state(i) = number(line);
     }
-    k.exact_rate.resize(n - 1);
-    k.fast_rate.resize(n - 1);
-    for (long i = 0; i + 1 < n; ++i) {
+    k.exact_rate.resize(rates);
+    k.fast_rate.resize(rates);
+    for (long i = 0; i < rates; ++i) {
       next();
       const std::size_t space = line.find(' ');
       if (space == std::string::npos) fail("expected two numbers, got '" + line + "'");
