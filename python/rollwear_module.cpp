@@ -582,7 +582,8 @@ py::dict run_result(const CaseSource& source) {
   summary["error_power_l1"] = life.error.power_l1;
   // which failure mode is how far at the end (wear::failure_margins, docs/fatigue.md): with wear.fatigue or
   // wear.limits.shakedown, the numbers report.txt writes
-  if (m->limits.max_depth_m > 0 && (m->fatigue || m->limits.shakedown))
+  const bool margins = m->fatigue || m->limits.shakedown || m->limits.scuffing || m->thermal;
+  if (m->limits.max_depth_m > 0 && margins)
     summary["depth_fraction"] = wear::max_depth_m(*m, life.state) / m->limits.max_depth_m;
   if (m->fatigue) {
     summary["fatigue_law"] = wear::to_string(m->fatigue->law);
@@ -590,8 +591,11 @@ py::dict run_result(const CaseSource& source) {
     summary["max_damage_y_m"] = wear::max_damage_y_m(*m, life.state);
     summary["max_tgamma_N"] = life.contact.max_tgamma_N;
   }
-  if ((m->fatigue || m->limits.shakedown) && m->shear_yield_Pa > 0)
-    summary["shakedown_margin"] = life.contact.shakedown_margin;
+  if (margins && m->shear_yield_Pa > 0) summary["shakedown_margin"] = life.contact.shakedown_margin;
+  if (m->thermal) {
+    summary["flash_rise_K"] = life.contact.flash_rise_K;
+    if (m->thermal->critical_temperature_C) summary["scuffing_margin_K"] = life.contact.scuffing_margin_K;
+  }
   py::dict out;
   out["summary"] = summary;
   out["steps"] = steps;

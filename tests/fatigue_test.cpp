@@ -9,10 +9,12 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <sstream>
 #include <string>
 
 #include "lib/errors.h"
+#include "lib/io/case_run.h"
 #include "lib/subsurface/shakedown.h"
 #include "wear/wear_case.h"
 #include "wear/wear_loop.h"
@@ -178,6 +180,48 @@ TEST(Fatigue, ShakedownMarginIsJohnsonsAndEndsTheLifeWhenAsked) {
       EXPECT_GT(life.contact.shakedown_margin, 0);
     }
   }
+}
+
+// Blok's criterion in the life (lib/thermal, docs/lubrication-and-temperature.md): the scuffing margin is
+// critical - (bulk + flash); with wear.limits.scuffing a critical temperature (100 C) below the unworn contact's
+// (80 C bulk + about 26 K flash) ends the life there, one far above it lets the life run on with a positive margin (the
+// worn contact spreads its heat: the flash temperature falls as the crown wears)
+TEST(Fatigue, ScuffingMarginIsBloksAndEndsTheLifeWhenAsked) {
+  const std::string thermal =
+      "thermal:\n"
+      "  body1: { conductivity_W_per_m_K: 46, density_kg_per_m3: 7850, specific_heat_J_per_kg_K: 470 }\n"
+      "  body2: { conductivity_W_per_m_K: 46, density_kg_per_m3: 7850, specific_heat_J_per_kg_K: 470 }\n"
+      "  bulk_temperature_C: 80\n  critical_temperature_C: CRIT\n";
+  double unworn_rise = 0;  // K
+  for (const double critical_C : {100.0, 1000.0}) {
+    std::string text = fatigue_case_text() + thermal;
+    text.replace(text.find("CRIT"), 4, std::to_string(critical_C));
+    WearCase c = case_of(text);
+    c.contact.solver.nx = c.contact.solver.ny = 24;
+    c.wear.limits.scuffing = true;
+    const WearModel m = make_wear_model(c);
+    WearCache cache;
+    const WearRate r = wear_rate(m, initial_state(m), cache);
+    ASSERT_GT(r.contact.flash_rise_K, 1);
+    EXPECT_NEAR(r.contact.scuffing_margin_K, critical_C - (80 + r.contact.flash_rise_K), 1e-9);
+    unworn_rise = r.contact.flash_rise_K;
+    // the same contact as `rollwear contact` solves it (lib/io/case_run.h): the same flash temperature
+    const contact::ContactRun cr = contact::solve_contact_case(c.contact, false);
+    ASSERT_TRUE(cr.thermal.has_value());
+    EXPECT_NEAR(r.contact.flash_rise_K / cr.thermal->flash.max_rise_K, 1.0, 1e-12);
+    WearCache life_cache;
+    const LifeResult life = run_life(m, c, LifeStart{}, {}, life_cache);
+    if (critical_C == 100.0) {
+      EXPECT_LT(r.contact.scuffing_margin_K, 0);
+      EXPECT_EQ(life.ended_by, LifeEnd::Scuffing) << life.message;
+      EXPECT_EQ(life.N, 0);
+    } else {
+      EXPECT_NE(life.ended_by, LifeEnd::Scuffing) << life.message;
+      EXPECT_GT(life.contact.scuffing_margin_K, 0);
+      EXPECT_LT(life.contact.flash_rise_K, unworn_rise);
+    }
+  }
+  std::cout << "unworn flash rise at 10 % slip: " << unworn_rise << " K\n";
 }
 
 // Bad keys: the reader's error names the file, the line and the key

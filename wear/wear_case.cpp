@@ -125,6 +125,7 @@ void read_wear(YamlMap& m, WearSection& w, std::optional<YamlValue>& collective)
     s.optional("max_pressure_Pa", w.limits.max_pressure_Pa, contact::nonnegative_finite);
     s.optional("edge", w.limits.edge);
     s.optional("shakedown", w.limits.shakedown);
+    s.optional("scuffing", w.limits.scuffing);
   });
   m.optional_section("fatigue", [&](YamlMap& s) { read_fatigue(s, w.fatigue.emplace()); });
   m.optional_section("stepping", [&](YamlMap& s) { read_stepping(s, w.stepping); });
@@ -187,7 +188,17 @@ void validate(const WearCase& c) {
   using contact::where;
   const contact::ContactCase& k = c.contact;
   const WearSection& w = c.wear;
-  contact::refuse_lubrication_and_thermal(k, "run");  // the wear loop does not take the regime yet
+  // the wear loop does not take the lubrication regime yet; the flash temperature (thermal:) it computes per
+  // evaluation of a steady duty cycle (the scuffing margin, docs/fatigue.md)
+  if (k.lubricant)
+    throw key_error(k, "lubricant", "lubricant: the 'run' command does not use this section yet (the film, the regime "
+                    "and the flash temperature are reported by 'contact'); remove it");
+  if (k.thermal && k.transient)
+    throw key_error(k, "thermal", "thermal, transient: a wear run computes the flash temperature of a steady duty "
+                    "cycle; remove the thermal: section or the transient: one");
+  if (w.limits.scuffing && !(k.thermal && k.thermal->critical_temperature_C && k.thermal->bulk_temperature_C))
+    throw key_error(k, "wear.limits.scuffing", "wear.limits.scuffing, thermal: the scuffing limit needs the flash "
+                    "temperature's thermal: section with bulk_temperature_C and critical_temperature_C (Blok's criterion)");
   if (!k.profiles)
     throw key_error(k, "wear", "wear, profiles: the worn body needs a lateral profile; give a profiles: "
                     "section (e.g. body1: { crowned: { Ry_m: 0.5, width_m: 0.02 } })");

@@ -11,7 +11,7 @@
 //   wear:
 //     body1: { law: energy, k_E_m3_per_J: 1.0e-13 }   # the body that wears, with its law (and/or body2)
 //     revolutions: 1.0e9            # the life budget, revolutions of the reference body (required)
-//     limits: { max_depth_m: 1.0e-4, max_pressure_Pa: 0, edge: true, shakedown: false }   # 0 = no such limit
+//     limits: { max_depth_m: 1.0e-4, max_pressure_Pa: 0, edge: true, shakedown: false, scuffing: false }
 //     stepping: { method: adaptive, rtol: 1.0e-3, atol_m: 1.0e-9,
 //                 max_depth_step_m: 1.0e-5, step_revolutions: 0, max_steps: 100000 }
 //     smoothing_wavelength_m: 5.0e-4    # cut-off of the volume-conserving Gaussian filter; 0 = none
@@ -50,6 +50,9 @@ struct WearLimits {
   // ... when the load leaves Johnson's shakedown map (lib/subsurface/shakedown.h: the margin limit / (p0/k) - 1
   // crosses 0), k the reference body's bodies.bodyN.shear_yield_Pa; off unless asked (docs/fatigue.md)
   bool shakedown = false;
+  // ... when the flash temperature reaches Blok's critical one (lib/thermal, docs/fatigue.md: the scuffing margin
+  // thermal.critical_temperature_C - (bulk + flash) crosses 0); needs the thermal: section with both temperatures
+  bool scuffing = false;
 };
 
 struct WearStepping {

@@ -34,6 +34,7 @@
 #include "lib/normal/semi_hertz.h"
 #include "lib/tangential/tangential.h"
 #include "lib/fidelity.h"
+#include "lib/io/case.h"
 #include "wear/fatigue.h"
 #include "wear/integrator.h"
 #include "wear/life.h"
@@ -91,6 +92,9 @@ struct WearModel {
   double damage_scale_m = 0;
   // the shakedown limit (wear.limits.shakedown): the reference body's shear yield stress k; 0 = not given
   double shear_yield_Pa = 0;
+  // the flash temperature of a steady duty cycle (the case's thermal: section; lib/thermal), and the surfaces' speeds
+  std::optional<contact::ThermalSection> thermal;
+  double v1_m_per_s = 0, v2_m_per_s = 0;
 
   int state_size() const { return n1 + n2 + 1 + nD; }
   int energy_index() const { return n1 + n2; }
@@ -150,6 +154,10 @@ struct ContactReport {
   // the reference body's k; NaN without k
   double shakedown_margin = std::numeric_limits<double>::quiet_NaN();
   double max_tgamma_N = 0;  // the largest strip T-gamma (wear/fatigue.h); 0 without wear.fatigue
+  // with the case's thermal: section, the flash temperature's rise (Blok's partition, lib/thermal) and the scuffing
+  // margin critical - (bulk + flash) (with both temperatures); NaN without
+  double flash_rise_K = std::numeric_limits<double>::quiet_NaN();
+  double scuffing_margin_K = std::numeric_limits<double>::quiet_NaN();
 };
 
 struct WearRate {

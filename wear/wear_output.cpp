@@ -146,7 +146,7 @@ std::vector<std::pair<std::string, std::string>> fidelity_report(const WearModel
 
 std::vector<std::pair<std::string, std::string>> failure_margins(const WearModel& m, const LifeResult& l) {
   std::vector<std::pair<std::string, std::string>> out;
-  if (!m.fatigue && !m.limits.shakedown) return out;
+  if (!m.fatigue && !m.limits.shakedown && !m.limits.scuffing && !m.thermal) return out;
   if (m.limits.max_depth_m > 0)
     out.emplace_back("depth_fraction", round_trip(max_depth_m(m, l.state) / m.limits.max_depth_m));
   if (m.fatigue) {
@@ -156,6 +156,10 @@ std::vector<std::pair<std::string, std::string>> failure_margins(const WearModel
     out.emplace_back("max_tgamma_N", round_trip(l.contact.max_tgamma_N));
   }
   if (m.shear_yield_Pa > 0) out.emplace_back("shakedown_margin", round_trip(l.contact.shakedown_margin));
+  if (m.thermal) {
+    out.emplace_back("flash_rise_K", round_trip(l.contact.flash_rise_K));
+    if (m.thermal->critical_temperature_C) out.emplace_back("scuffing_margin_K", round_trip(l.contact.scuffing_margin_K));
+  }
   return out;
 }
 

@@ -70,9 +70,10 @@ std::string wear_report_text(const WearModel& m, const WearReport& r);
 // which models ran and the fast models' error estimate (docs/fidelity.md): report.txt's keys tangential_model,
 // fidelity, correction_tolerance (corrected), exact_solves, error_estimate_N, error_power_rel, error_power_l1
 std::vector<std::pair<std::string, std::string>> fidelity_report(const WearModel& m, const LifeResult& l);
-// which failure mode is how far at the end of the life (docs/fatigue.md), with wear.fatigue or wear.limits.shakedown
-// only: report.txt's keys depth_fraction (max depth / wear.limits.max_depth_m, with a depth limit), fatigue_law,
-// max_damage, max_damage_y_m, max_tgamma_N (with fatigue), shakedown_margin (with the reference body's k)
+// which failure mode is how far at the end of the life (docs/fatigue.md), with wear.fatigue, wear.limits.shakedown,
+// wear.limits.scuffing or a thermal: section only: report.txt's keys depth_fraction (max depth /
+// wear.limits.max_depth_m, with a depth limit), fatigue_law, max_damage, max_damage_y_m, max_tgamma_N (with fatigue),
+// shakedown_margin (with the reference body's k), flash_rise_K and scuffing_margin_K (with thermal:)
 std::vector<std::pair<std::string, std::string>> failure_margins(const WearModel& m, const LifeResult& l);
 // the same as a comment line of summary.csv, written above its header row at the end of the run
 std::string wear_summary_error_line(const WearModel& m, const LifeResult& l);
