@@ -23,7 +23,9 @@ CLI::App* add_cam_command(CLI::App& app, CamOptions& opt, CommonOptions& common)
   CLI::App* sub = app.add_subcommand(
       "cam", "One revolution of a disc cam at constant speed with a translating roller follower (cam: section, "
              "docs/cam-follower.md): lift, pressure angle, radius of curvature, loads, the Hertz contact and the "
-             "roller's regime at each cam angle. Prints the jump speed and a summary; writes revolution.csv.");
+             "roller's regime at each cam angle; with cam.lubricant and cam.thermal the film, lambda, the lubrication "
+             "regime and the flash temperature at each angle (docs/cam-follower.md §17). Prints the jump speed and a "
+             "summary; writes revolution.csv.");
   sub->footer(
       "Above the jump speed the run stops with status jump (no table written), exit 1.\n"
       "A design the model refuses (acceleration jump, table fit, undercut, pressure angle) is bad input at its\n"
@@ -43,7 +45,7 @@ int run_cam_command(const CamOptions& opt) {
   const std::filesystem::path dir = session::output_directory(opt.output_directory, c.output_directory, c.name);
   cam::CamRun run;
   try {
-    run = cam::run_cam(c.model, c.solver);
+    run = cam::run_cam(c.model, c.solver, c.lubrication);
   } catch (const cam::CamError& e) {
     throw cam::case_error_of(c, e);
   }

@@ -940,6 +940,65 @@ double round_down_125(double x) {
   return decade;
 }
 
+// ---- a cam's film and flash temperature over the revolution (cam.lubricant, cam.thermal: docs/cam-follower.md §17) ----
+
+bool has_column(const Table& t, const std::string& name) {
+  return std::find(t.header.begin(), t.header.end(), name) != t.header.end();
+}
+
+// the table of a lubricated cam revolution (revolution.csv of rollwear cam, dissipation.csv of a cam life) has them
+bool has_cam_film(const Table& t) { return has_column(t, "h_min_m") || has_column(t, "flash_max_K"); }
+
+// cam_film.png: the film (h_min, h_c in um) and lambda over the cam angle, and the flash temperature (K); each panel
+// only when its columns are there
+std::string cam_film_script(const Table& t, const std::string& name, Pictures& picture) {
+  const bool film = has_column(t, "h_min_m"), flash = has_column(t, "flash_max_K");
+  const std::vector<double> theta = column(t, "cam_angle_deg");
+  std::vector<double> h_min, h_c, lambda, temperature;
+  if (film) h_min = column(t, "h_min_m"), h_c = column(t, "h_central_m"), lambda = column(t, "lambda");
+  if (flash) temperature = column(t, "flash_max_K");
+  std::string script = "$film << EOD\n";
+  for (std::size_t k = 0; k < theta.size(); ++k)
+    script += fmt::format("{:.8g} {:.8g} {:.8g} {:.8g} {:.8g}\n", theta[k], film ? h_min[k] * 1e6 : 0.0,
+                          film ? h_c[k] * 1e6 : 0.0, film ? lambda[k] : 0.0, flash ? temperature[k] : 0.0);
+  script += "EOD\n";
+  script += figure_start(picture("cam_film.png"), name + ": film and flash temperature over the revolution") +
+            fmt::format("set multiplot layout {},1\n", film && flash ? 2 : 1) +
+            "set xlabel 'cam angle (deg)'\nset xrange [0:360]\nset xtics 60\n";
+  if (film)
+    script += "set title 'film thickness (µm) and film parameter λ'\nset ylabel 'µm'\nset y2label 'λ'\n"
+              "set ytics nomirror\nset y2tics\nset yrange [0:*]\nset y2range [0:*]\nset key outside right top\n"
+              "plot $film using 1:2 with lines lw 2 lc rgb '#1f4e9c' title 'h_min', "
+              "$film using 1:3 with lines lw 2 dt (6,4) lc rgb '#2a9d8f' title 'h_c', "
+              "$film using 1:4 axes x1y2 with lines lw 2 lc rgb '#c0392b' title 'λ'\n"
+              "unset y2tics\nunset y2label\nset ytics mirror\n";
+  if (flash)
+    script += "set title 'flash temperature (K above the bulk)'\nset ylabel 'K'\nset yrange [0:*]\nunset key\n"
+              "plot $film using 1:5 with lines lw 2 lc rgb '#e9a03b'\n";
+  script += std::string("unset multiplot\n") + kFigureEnd;
+  return script;
+}
+
+// the folder of `rollwear cam`: revolution.csv alone (no life, no wear run)
+bool is_cam_revolution_output(const fs::path& dir) {
+  std::error_code ec;
+  return fs::exists(dir / "revolution.csv", ec) && !fs::exists(dir / "life.csv", ec) && !fs::exists(dir / "summary.csv", ec);
+}
+
+std::vector<fs::path> draw_cam_revolution(const fs::path& dir, const fs::path& plots, std::ostream& err) {
+  const Table rev = read_table(dir / "revolution.csv");
+  if (!has_cam_film(rev))
+    throw bad_input(fmt::format("{}: a cam revolution without the film's or the flash temperature's columns (the case "
+                                "has no cam.lubricant or cam.thermal): nothing to draw; rollwear plot draws a cam life's "
+                                "folder (rollwear run) or a lubricated revolution's film and temperature",
+                                where(rev.path, rev.header_line)));
+  const fs::path normal = fs::absolute(dir).lexically_normal();
+  const std::string name = (normal.has_filename() ? normal.filename() : normal.parent_path().filename()).string();
+  Pictures picture{plots, {}};
+  const std::string script = "# rollwear plot: " + name + "\n" + terminal_script() + cam_film_script(rev, name, picture);
+  return render(script, picture.list, plots, err);
+}
+
 std::vector<fs::path> draw_cam(const fs::path& dir, const fs::path& plots, std::ostream& err) {
   const Table life = read_table(dir / "life.csv");
   const Table rev = read_table(dir / "revolution.csv");
@@ -1042,6 +1101,7 @@ std::vector<fs::path> draw_cam(const fs::path& dir, const fs::path& plots, std::
             "plot $cam using 1:2 with lines lw 2.5 dt (8,6) lc rgb 'black' title 'new', "
             "$cam using 3:4 with lines lw 2 lc rgb '#c0392b' title " +
             quote(fmt::format("worn, depth × {:g}", scale)) + "\n" + kFigureEnd;
+  if (has_cam_film(dis)) script += cam_film_script(dis, name, picture);  // a lubricated cam's life
   return render(script, picture.list, plots, err);
 }
 
@@ -1106,6 +1166,11 @@ int plot_command(const std::string& output_dir, std::ostream& out, std::ostream&
     }
     if (is_cam_output(dir)) {
       for (const fs::path& p : draw_cam(dir, dir / "plots", err)) out << p.string() << '\n';
+      out.flush();
+      return 0;
+    }
+    if (is_cam_revolution_output(dir)) {  // rollwear cam's folder: a lubricated revolution's film and temperature
+      for (const fs::path& p : draw_cam_revolution(dir, dir / "plots", err)) out << p.string() << '\n';
       out.flush();
       return 0;
     }

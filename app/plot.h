@@ -21,6 +21,9 @@
 //                             against each varied key (dots every case; on a product grid of more than one
 //                             axis, lines through the base case's values of the other keys)
 // Cases whose status is not ok are left out (and counted in the titles).
+// A cam revolution's folder (rollwear cam: revolution.csv alone) of a case with cam.lubricant or cam.thermal gets, and
+// a cam life's folder (rollwear run) whose dissipation.csv has those columns gets too,
+//   cam_film.png              h_min and h_c (µm) and λ, and the flash temperature (K), over the cam angle
 // A contact's folder (rollwear contact: subsurface_section.csv and strips.csv) instead gets
 //   subsurface_body1.png, subsurface_body2.png   von Mises and Tresca's (s1 - s3)/2 (MPa) on the x-z section
 //                             through the most loaded cell, depth pointing down (docs/subsurface.md)

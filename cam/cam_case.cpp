@@ -236,6 +236,26 @@ CamCase read_cam_case(const std::string& path) {
         });
       });
       s.optional_section("wear", [&](YamlMap& w) { read_cam_wear(w, c.wear.emplace()); });
+      // the film and the flash temperature per angle (cam/cam_lubrication.h): a contact case's lubricant: and
+      // thermal: keys (lib/io/case.h), body1 the roller, body2 the cam, with the same checks at their lines
+      s.optional_section("lubricant", [&](YamlMap& l) {
+        contact::LubricantSection& lub = c.lubrication.lubricant.emplace();
+        // the regime's mu and wear factor are reported per angle, not used by the solves: a key asking for them refused
+        if (l.optional_value("friction_by_regime", [](const YamlValue&) {}))
+          l.fail("friction_by_regime", "not built: the revolution's solves and the wear use cam.mu and the wear law's "
+                                       "coefficient; the regime's mu and wear factor are reported per angle "
+                                       "(docs/cam-follower.md §17)");
+        contact::read_lubricant(l, lub);
+        if (!(lub.thresholds.lambda_full_film > lub.thresholds.lambda_mixed))
+          l.fail("lambda_full_film", fmt::format("need lambda_mixed < lambda_full_film, got {} and {}",
+                                                 lub.thresholds.lambda_mixed, lub.thresholds.lambda_full_film));
+      });
+      s.optional_section("thermal", [&](YamlMap& t) {
+        contact::ThermalSection& th = c.lubrication.thermal.emplace();
+        contact::read_thermal(t, th);
+        if (th.critical_temperature_C && !th.bulk_temperature_C)
+          t.fail("critical_temperature_C", "Blok's criterion is on bulk + flash: give bulk_temperature_C too");
+      });
     });
   });
   return c;

@@ -124,15 +124,15 @@ CreepForce creep_force(const AngleContact& c, double xi) {
   return f;
 }
 
-contact::TangentialSolution steady_creep(const AngleContact& c, double xi, double speed_m_per_s) {
+contact::TangentialSolution steady_creep(const AngleContact& c, double xi, double speed_m_per_s, bool fields) {
   check_cam_scheme(c.scheme);
   contact::TangentialProblem p = c.problem;
   p.creepages = {xi, 0, 0};
   p.L_m_per_Pa = contact::mean_flexibility_m_per_Pa(p.flex, p.creepages, c.normal.patch.a_m, c.normal.patch.b_m);
   p.speed_m_per_s = speed_m_per_s;
-  // the contact's model (lib/model/contact_model.h): strips and totals, no fields; an iterative model's (the exact
-  // theory's) solve that did not converge is no result
-  contact::SteadyModelSolution sol = contact::solve_tangential_steady(c.scheme, c.normal.patch, c.pair, p, false);
+  // the contact's model (lib/model/contact_model.h): strips and totals, the fields when asked; an iterative model's
+  // (the exact theory's) solve that did not converge is no result
+  contact::SteadyModelSolution sol = contact::solve_tangential_steady(c.scheme, c.normal.patch, c.pair, p, fields);
   if (!sol.status.converged())
     throw std::runtime_error(fmt::format("the cam's steady {} solve at xi {:.6g} did not converge: {}",
                                          contact::to_string(c.scheme), xi, sol.status.message));

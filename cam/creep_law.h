@@ -93,8 +93,9 @@ Eigen::ArrayXd track_depth_m(const contact::Profiles& profiles, double y0_m, con
 AngleContact angle_contact(const RollerAndTrack& bodies, const contact::Profiles& profiles, double roller_radius_m,
                            const CamKinematics& k, double normal_load_N, double mu, const CreepLawSettings& s);
 
-// the steady solution at creepage xi and rolling speed V (strips and totals, no fields) with the contact's model
-contact::TangentialSolution steady_creep(const AngleContact& c, double xi, double speed_m_per_s);
+// the steady solution at creepage xi and rolling speed V (strips and totals; the fields on the patch's grid only with
+// `fields`, e.g. the power density of the flash temperature, cam/cam_lubrication.h) with the contact's model
+contact::TangentialSolution steady_creep(const AngleContact& c, double xi, double speed_m_per_s, bool fields = false);
 
 // F_t(xi): the steady creep force on the roller along t (N), independent of V
 double steady_creep_force_N(const AngleContact& c, double xi);

@@ -29,8 +29,20 @@ RollerDynamicsSettings roller_dynamics_of(const CamSolverSettings& s) {
   return ds;
 }
 
-CamRun run_cam(const CamModel& m, const CamSolverSettings& s) {
+namespace {
+// the film and the flash temperature per angle on the periodic motion, when the case asks for them
+void lubricate(CamRun& run, const CamModel& m, const CamSolverSettings& s) {
+  if (!run.lubrication_spec.any()) return;
+  const double t0 = cpu_s();
+  run.lubrication = revolution_lubrication(run.lubrication_spec, m, run.revolution, run.motion.motion,
+                                           roller_dynamics_of(s).law);
+  run.cpu_lubrication_s = cpu_s() - t0;
+}
+}  // namespace
+
+CamRun run_cam(const CamModel& m, const CamSolverSettings& s, const CamLubricationSpec& lubrication) {
   CamRun run;
+  run.lubrication_spec = lubrication;
   run.revolution = run_revolution(m);
   if (run.revolution.status != RevolutionStatus::Complete) return run;
   double t0 = cpu_s();
@@ -56,6 +68,7 @@ CamRun run_cam(const CamModel& m, const CamSolverSettings& s) {
     run.cpu_dynamics_s = t1 - t0;
     run.cpu_transient_s = cpu_s() - t1;
     run.energy = revolution_energy(m, run.revolution, run.motion, &run.transient);
+    lubricate(run, m, s);
     return run;
   }
   TransientRevolutionSettings ts;
@@ -74,6 +87,7 @@ CamRun run_cam(const CamModel& m, const CamSolverSettings& s) {
     run.skip = compare_skip(run.transient, run.full);
   }
   run.energy = revolution_energy(m, run.revolution, run.motion, &run.transient);
+  lubricate(run, m, s);
   return run;
 }
 
@@ -113,6 +127,7 @@ std::string cam_summary(const CamRun& run) {
                      "transient's {:.3g}\n",
                      e.dissipated_J, e.creep_work_J, model.stored_energy, e.elastic_J,
                      e.tangential_residual_J, e.creep_steady_J, e.frame_J, e.transient_J);
+  out += lubrication_summary(run.lubrication_spec, run.lubrication);
   return out;
 }
 
@@ -148,6 +163,7 @@ std::string revolution_csv(const CamRun& run) {
     if (line == 0) {
       out += ",required_tangential_load_N,roller_omega_kinematic_rad_per_s,slip_speed_m_per_s,stick_fraction,"
              "dissipated_power_W,quasi_steady,unsteadiness";
+      out += lubrication_csv_header(run.lubrication_spec);
     } else {
       const std::size_t i = line - 1;
       const RollerAngle& a = run.motion.motion.angles[i];
@@ -159,6 +175,7 @@ std::string revolution_csv(const CamRun& run) {
       num(total_power_W(run.transient.dissipation[i]));
       out += run.transient.skipped[i] ? "1," : "0,";
       num(run.transient.unsteadiness[i], true);
+      if (run.lubrication.angles.size() == n) out += lubrication_csv_cells(run.lubrication_spec, run.lubrication.angles[i]);
     }
     out += '\n';
     pos = end + 1;

@@ -7,6 +7,7 @@
 
 #include <string>
 
+#include "cam/cam_lubrication.h"
 #include "cam/revolution.h"
 #include "cam/revolution_energy.h"
 #include "cam/revolution_transient.h"
@@ -41,6 +42,9 @@ struct CamRun {
   TransientRevolution full;            // without it (compare_full_transient), else empty
   SkipComparison skip;                 // transient against full
   RevolutionEnergy energy;
+  CamLubricationSpec lubrication_spec;  // cam.lubricant, cam.thermal (none: dry, nothing below is computed)
+  RevolutionLubrication lubrication;    // per angle on the periodic motion (cam/cam_lubrication.h)
+  double cpu_lubrication_s = 0;
   double cpu_dynamics_s = 0, cpu_transient_s = 0, cpu_full_s = 0;  // process CPU time of each part
 };
 
@@ -50,15 +54,18 @@ struct CamRun {
 // rollwear cam, rollwear run and the benchmarks hand to periodic_motion and set_up_cam_life
 RollerDynamicsSettings roller_dynamics_of(const CamSolverSettings& s);
 
-CamRun run_cam(const CamModel& m, const CamSolverSettings& s);
+// lubrication: the case's cam.lubricant and cam.thermal, evaluated per angle on the periodic motion (none: dry)
+CamRun run_cam(const CamModel& m, const CamSolverSettings& s, const CamLubricationSpec& lubrication = {});
 
-// the printed summary (after the revolution's own lines): the roller, the transient and its skip, the energy
+// the printed summary (after the revolution's own lines): the roller, the transient and its skip, the energy, and
+// with cam.lubricant or cam.thermal the film's and the flash temperature's lines (lubrication_summary)
 std::string cam_summary(const CamRun& run);
 
 // revolution.csv with the roller's dynamics and the dissipation (docs/cam-follower.md §5): revolution_csv's
 // columns, its loads, creepage, regime and roller speed now the periodic motion's, then
 //   required_tangential_load_N,roller_omega_kinematic_rad_per_s,slip_speed_m_per_s,stick_fraction,
 //   dissipated_power_W,quasi_steady,unsteadiness
+// and with cam.lubricant or cam.thermal the columns of lubrication_csv_header
 std::string revolution_csv(const CamRun& run);
 
 }  // namespace cam

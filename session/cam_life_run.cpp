@@ -18,6 +18,7 @@
 
 #include "cam/cam_case.h"
 #include "cam/cam_life.h"
+#include "cam/cam_lubrication.h"
 #include "cam/revolution_dissipation.h"
 #include "lib/io/csv.h"
 #include "lib/errors.h"
@@ -47,21 +48,26 @@ std::string snapshot_path(const char* what, int k) { return fmt::format("snapsho
 // per angle step: the power and energy, where the contact sits on the cam (its polar angle and radius in the
 // cam's frame: the plot's outline of the cam), and the roller's periodic motion the life holds (its loads,
 // creepage and spin: revolution.csv's are the kinematic roller's)
+// with cam.lubricant or cam.thermal, the film and the flash temperature per angle follow (cam/cam_lubrication.h)
 std::string dissipation_csv(const cam::Revolution& r, const cam::RevolutionDissipation& rev,
-                            const cam::RollerMotion& motion) {
+                            const cam::RollerMotion& motion, const cam::CamLubricationSpec& spec,
+                            const cam::RevolutionLubrication& lubrication) {
   std::string out = "# the unworn periodic revolution's dissipation per angle step, and the roller's periodic motion\n"
                     "cam_angle_deg,cam_arc_m,rolling_speed_m_per_s,power_W,energy_J,contact_angle_deg,contact_radius_m,"
-                    "normal_load_N,tangential_load_N,xi,slip_speed_m_per_s,roller_omega_rad_per_s\n";
+                    "normal_load_N,tangential_load_N,xi,slip_speed_m_per_s,roller_omega_rad_per_s" +
+                    cam::lubrication_csv_header(spec) + "\n";
   for (std::size_t k = 0; k < rev.size(); ++k) {
     const cam::AngleDissipation& a = rev[k];
     const cam::CamKinematics& kin = r.rows[k].kin;
     const cam::RollerAngle& m = motion.angles[k];
     const double P = cam::total_power_W(a);
     fmt::format_to(std::back_inserter(out), "{:.8g},{:.10g},{:.10g},{:.10g},{:.10g},{:.8g},{:.10g},{:.10g},{:.10g},{:.10g},"
-                   "{:.10g},{:.10g}\n",
+                   "{:.10g},{:.10g}",
                    a.theta_rad * cam::kDegPerRad, a.cam_arc_m, a.rolling_speed_m_per_s, P, P * a.duration_s,
                    kin.contact_angle_rad * cam::kDegPerRad, std::hypot(kin.contact_x_m, kin.contact_y_m), m.normal_N,
                    m.tangential_N, m.xi, m.slip_speed_m_per_s, m.omega_r_rad_per_s);
+    if (lubrication.angles.size() == rev.size()) out += cam::lubrication_csv_cells(spec, lubrication.angles[k]);
+    out += '\n';
   }
   return out;
 }
@@ -179,6 +185,13 @@ LifeRunEnd run_cam_life_in_folder(const LifeRunOptions& o) {
   const std::unique_ptr<cam::CamLifeSetup> setup = set_up_life(c);
   if (!setup) return LifeRunEnd::Failed;
   const cam::CamLifeModel& life_model = setup->life;
+  // the film and the flash temperature over the unworn periodic revolution: the margins beside the wear life
+  cam::RevolutionLubrication lubrication;
+  if (c.lubrication.any()) {
+    lubrication = cam::revolution_lubrication(c.lubrication, setup->model, setup->revolution, setup->motion.motion,
+                                              setup->dynamics.law);
+    fmt::print("{}", cam::lubrication_summary(c.lubrication, lubrication));
+  }
 
   std::string life_csv;
   cam::CamLifeStart start;
@@ -200,7 +213,8 @@ LifeRunEnd run_cam_life_in_folder(const LifeRunOptions& o) {
   fs::create_directories(dir / "snapshots");
   contact::write_files_atomic({{dir / "revolution.csv", cam::revolution_csv(setup->revolution)},
                                {dir / "dissipation.csv",
-                                dissipation_csv(setup->revolution, setup->unworn, setup->motion.motion)}});
+                                dissipation_csv(setup->revolution, setup->unworn, setup->motion.motion,
+                                                c.lubrication, lubrication)}});
 
   // life.csv and the checkpoint are written together, life.csv renamed first: it never lags the checkpoint
   int snapshots = o.resume ? folder.checkpoint().snapshots_written : 0;
@@ -273,7 +287,8 @@ LifeRunEnd run_cam_life_in_folder(const LifeRunOptions& o) {
 
   // the end: life.csv and the report; the checkpoint goes (the run is complete) unless the life failed
   const std::string report = cam::cam_life_report_text(c.name, c.model.omega_rad_per_s, life, setup->worn->stats(),
-                                                       o.resume, earlier_cpu_s + cpu_seconds() - cpu0);
+                                                       o.resume, earlier_cpu_s + cpu_seconds() - cpu0) +
+                             cam::lubrication_report_text(c.lubrication, lubrication);
   if (life.ended_by == wear::LifeEnd::Failed && life.steps > 0 && last.x.size() > 0) {
     save({});  // the last accepted step: --resume continues from there (e.g. with other settings)
     spdlog::error("run: the life failed after step {}; its state is saved in {}", last.steps,

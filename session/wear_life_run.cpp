@@ -93,8 +93,11 @@ LifeRunEnd run_wear_life_in_folder(const LifeRunOptions& opt) {
   observer.on_row = [&](const LifeStep& s) { summary += wear_summary_row(m, s, hours_per_rev); };
   if (opt.resume) {
     cp = folder.checkpoint();
-    cache.correction = cp.correction;  // the corrected fidelity's correction in force there
-    cache.error = cp.error;
+    try {  // what the rate carried there (the correction, the last half-space solve)
+      restore_wear_cache(m, cp.blocks, cache);
+    } catch (const std::runtime_error& e) {
+      throw std::runtime_error(checkpoint_path.string() + ": " + e.what());
+    }
     summary = folder.table_up_to(cp.start.counters.steps);
     spdlog::info("run: resuming at revolution {:.6g} (step {}) from {}", cp.start.N, cp.start.counters.steps,
                  checkpoint_path.string());
@@ -103,6 +106,7 @@ LifeRunEnd run_wear_life_in_folder(const LifeRunOptions& opt) {
     cp.case_hash = fingerprint;
     summary = wear_summary_header(m);
     cp.start = fresh_wear_start(m, cache, observer);
+    cp.blocks = wear_cache_blocks(cache);
   }
 
   // outputs: the worn profiles of each wearing body at a revolution
@@ -131,8 +135,7 @@ LifeRunEnd run_wear_life_in_folder(const LifeRunOptions& opt) {
   Clock::time_point last_save = Clock::now();
   observer.on_step = [&](const LifeStep& s) {
     cp.start = {s.N, *s.state, s.info.next_step, s.counters};
-    cp.correction = cache.correction;
-    cp.error = cache.error;
+    cp.blocks = wear_cache_blocks(cache);  // at this step's end: the rate was just evaluated there
     if (std::chrono::duration<double>(Clock::now() - last_save).count() >= c.wear.checkpoint_interval_s) {
       save({});
       last_save = Clock::now();

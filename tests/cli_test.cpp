@@ -1122,6 +1122,35 @@ std::string report_value(const std::string& report, const std::string& key) {
   return "";
 }
 
+// `rollwear run` of the case uninterrupted into DIR/whole
+void run_whole(const fs::path& dir, const fs::path& c) {
+  ASSERT_EQ(rollwear("run " + quoted(c) + " -o " + quoted(dir / "whole") + " --log-level error", dir).exit_code, 0);
+}
+
+// `rollwear run` of the case into DIR/killed, killed by SIGKILL once its checkpoint is past step `kill_at`, then
+// resumed there with --resume to its end
+void run_killed_and_resumed(const fs::path& dir, const fs::path& c, long kill_at) {
+  const fs::path killed = dir / "killed";
+  run_and_kill({"run", c.string(), "-o", killed.string(), "--quiet"}, killed / "checkpoint.txt", kill_at,
+               dir / "killed.log");
+  ASSERT_TRUE(fs::exists(killed / "checkpoint.txt"));
+  const ProcessResult r = rollwear("run " + quoted(c) + " -o " + quoted(killed) + " --resume --log-level error", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+}
+
+// every summary row of the two runs, column by column (the counters included)
+void expect_same_summary(const fs::path& a, const fs::path& b) {
+  const std::vector<std::string> sa = lines_of(read_text(a / "summary.csv"));
+  const std::vector<std::string> sb = lines_of(read_text(b / "summary.csv"));
+  ASSERT_EQ(sa.size(), sb.size());
+  for (std::size_t k = 0; k < sa.size(); ++k) {
+    const std::vector<std::string> ra = split(sa[k]), rb = split(sb[k]);
+    ASSERT_EQ(ra.size(), rb.size());
+    for (std::size_t col = 0; col < ra.size(); ++col)
+      ASSERT_EQ(ra[col], rb[col]) << "row " << k << " column " << col;
+  }
+}
+
 // Fixed stepping is memoryless: killed at any moment and resumed, the run ends bit-identical to an
 // uninterrupted one (worn profiles, summary rows up to the counters, the life and what ended it).
 TEST_F(CommandLine, RunKilledAndResumedEndsBitIdenticalWithFixedStepping) {
@@ -1129,12 +1158,8 @@ TEST_F(CommandLine, RunKilledAndResumedEndsBitIdenticalWithFixedStepping) {
                                "stepping: { method: fixed-depth, max_depth_step_m: 1.0e-8 }",
                                "limits: { max_depth_m: 2.0e-5, edge: true }");
   const fs::path whole = dir_ / "whole", killed = dir_ / "killed";
-  ASSERT_EQ(rollwear("run " + quoted(c) + " -o " + quoted(whole) + " --log-level error", dir_).exit_code, 0);
-  run_and_kill({"run", c.string(), "-o", killed.string(), "--quiet"}, killed / "checkpoint.txt", 300,
-               dir_ / "killed.log");
-  ASSERT_TRUE(fs::exists(killed / "checkpoint.txt"));
-  const ProcessResult r = rollwear("run " + quoted(c) + " -o " + quoted(killed) + " --resume --log-level error", dir_);
-  ASSERT_EQ(r.exit_code, 0) << r.err;
+  ASSERT_NO_FATAL_FAILURE(run_whole(dir_, c));
+  ASSERT_NO_FATAL_FAILURE(run_killed_and_resumed(dir_, c, 300));
   // the temporaries a kill during a write leaves (never under a final name) are gone after the resume
   for (const fs::path& p : fs::recursive_directory_iterator(killed))
     EXPECT_EQ(p.filename().string().find(".tmp."), std::string::npos) << "left: " << p;
@@ -1151,15 +1176,7 @@ TEST_F(CommandLine, RunKilledAndResumedEndsBitIdenticalWithFixedStepping) {
     EXPECT_EQ(read_text(whole / "snapshots" / f), read_text(killed / "snapshots" / f)) << f;
   // the summary: every row, its counters included (the resumed run's first evaluation of f, at the state
   // the checkpoint's step had already evaluated, is not counted again)
-  const std::vector<std::string> sa = lines_of(read_text(whole / "summary.csv"));
-  const std::vector<std::string> sb = lines_of(read_text(killed / "summary.csv"));
-  ASSERT_EQ(sa.size(), sb.size());
-  for (std::size_t k = 0; k < sa.size(); ++k) {
-    const std::vector<std::string> ra = split(sa[k]), rb = split(sb[k]);
-    ASSERT_EQ(ra.size(), rb.size());
-    for (std::size_t col = 0; col < ra.size(); ++col)
-      ASSERT_EQ(ra[col], rb[col]) << "row " << k << " column " << col;
-  }
+  expect_same_summary(whole, killed);
 }
 
 // The corrected fidelity (docs/fidelity.md) keeps its correction in the checkpoint: killed and resumed, a
@@ -1169,14 +1186,9 @@ TEST_F(CommandLine, CorrectedRunKilledAndResumedEndsBitIdentical) {
   const fs::path c = wear_case(dir_, "corrected.yaml", "fidelity: corrected, correction_tolerance: 0.5, nx: 20, ny: 20",
                                "stepping: { method: fixed-depth, max_depth_step_m: 1.0e-6 }",
                                "limits: { max_depth_m: 3.0e-5, edge: true }");
-  const fs::path whole = dir_ / "whole", killed = dir_ / "killed";
-  ASSERT_EQ(rollwear("run " + quoted(c) + " -o " + quoted(whole) + " --log-level error", dir_).exit_code, 0);
-  run_and_kill({"run", c.string(), "-o", killed.string(), "--quiet"}, killed / "checkpoint.txt", 12,
-               dir_ / "killed.log");
-  ASSERT_TRUE(fs::exists(killed / "checkpoint.txt"));
-  const ProcessResult r = rollwear("run " + quoted(c) + " -o " + quoted(killed) + " --resume --log-level error", dir_);
-  ASSERT_EQ(r.exit_code, 0) << r.err;
-  const std::string a = read_text(whole / "report.txt"), b = read_text(killed / "report.txt");
+  ASSERT_NO_FATAL_FAILURE(run_whole(dir_, c));
+  ASSERT_NO_FATAL_FAILURE(run_killed_and_resumed(dir_, c, 12));
+  const std::string a = read_text(dir_ / "whole" / "report.txt"), b = read_text(dir_ / "killed" / "report.txt");
   EXPECT_EQ(report_value(b, "resumed"), "true");
   EXPECT_EQ(report_value(a, "fidelity"), "corrected");
   EXPECT_GT(std::stol(report_value(a, "exact_solves")), 2);
@@ -1191,14 +1203,10 @@ TEST_F(CommandLine, RunKilledAndResumedEndsWithinToleranceWithAdaptiveStepping) 
   const fs::path c = wear_case(dir_, "adaptive.yaml", "nx: 40, ny: 40",
                                "stepping: { method: adaptive, rtol: 1.0e-7, atol_m: 1.0e-13 }",
                                "limits: { max_depth_m: 2.0e-5, edge: true }");
-  const fs::path whole = dir_ / "whole", killed = dir_ / "killed";
-  ASSERT_EQ(rollwear("run " + quoted(c) + " -o " + quoted(whole) + " --log-level error", dir_).exit_code, 0);
-  const long steps = std::stol(report_value(read_text(whole / "report.txt"), "steps"));
-  run_and_kill({"run", c.string(), "-o", killed.string(), "--quiet"}, killed / "checkpoint.txt", steps / 4,
-               dir_ / "killed.log");
-  const ProcessResult r = rollwear("run " + quoted(c) + " -o " + quoted(killed) + " --resume --log-level error", dir_);
-  ASSERT_EQ(r.exit_code, 0) << r.err;
-  const std::string a = read_text(whole / "report.txt"), b = read_text(killed / "report.txt");
+  ASSERT_NO_FATAL_FAILURE(run_whole(dir_, c));
+  const std::string a = read_text(dir_ / "whole" / "report.txt");
+  ASSERT_NO_FATAL_FAILURE(run_killed_and_resumed(dir_, c, std::stol(report_value(a, "steps")) / 4));
+  const std::string b = read_text(dir_ / "killed" / "report.txt");
   EXPECT_EQ(report_value(b, "ended_by"), "max_depth");
   EXPECT_NEAR(std::stod(report_value(b, "revolutions")) / std::stod(report_value(a, "revolutions")), 1.0, 1e-5);
   EXPECT_NEAR(std::stod(report_value(b, "worn_volume_body1_m3")) / std::stod(report_value(a, "worn_volume_body1_m3")),
@@ -1220,6 +1228,31 @@ void edit_file(const fs::path& p, const std::string& from, const std::string& to
   ASSERT_NE(at, std::string::npos) << from;
   text.replace(at, from.size(), to);
   std::ofstream(p) << text;
+}
+
+// A half-space life (solver.normal halfspace) starts each solve from the last one's pressures; its checkpoint
+// carries that solve, so killed and resumed it ends bit-identical to an uninterrupted run too: the paper's roller
+// on 12 x 12, fixed-depth steps of 1 um to 20 um, SIGKILL past step 8. Its resumed start reuses the checkpoint's
+// normal solve (normal_solves as the uninterrupted run's) and evaluates the rate there once more.
+TEST_F(CommandLine, HalfspaceRunKilledAndResumedEndsBitIdenticalWithFixedStepping) {
+  const fs::path c = wear_case(dir_, "halfspace.yaml", "nx: 12, ny: 12",
+                               "stepping: { method: fixed-depth, max_depth_step_m: 1.0e-6 }",
+                               "limits: { max_depth_m: 2.0e-5, edge: true }");
+  ASSERT_NO_FATAL_FAILURE(edit_file(c, "normal: auto", "normal: halfspace"));
+  ASSERT_NO_FATAL_FAILURE(run_whole(dir_, c));
+  ASSERT_NO_FATAL_FAILURE(run_killed_and_resumed(dir_, c, 8));
+  const fs::path whole = dir_ / "whole", killed = dir_ / "killed";
+  const std::string a = read_text(whole / "report.txt"), b = read_text(killed / "report.txt");
+  EXPECT_EQ(report_value(a, "normal_solver"), "halfspace");
+  EXPECT_EQ(report_value(a, "ended_by"), "max_depth");
+  EXPECT_EQ(report_value(b, "resumed"), "true");
+  for (const char* key : {"ended_by", "message", "revolutions", "max_depth_m", "worn_volume_body1_m3", "dissipated_J",
+                          "p0_Pa", "steps", "rejected_steps", "rhs_evals", "normal_solves"})
+    EXPECT_EQ(report_value(a, key), report_value(b, key)) << key;
+  EXPECT_EQ(std::stol(report_value(b, "tangential_solves")), std::stol(report_value(a, "tangential_solves")) + 1);
+  for (const char* f : {"snapshot_0000_body1.csv", "snapshot_0001_body1.csv", "snapshot_0002_body1.csv"})
+    EXPECT_TRUE(read_text(whole / "snapshots" / f) == read_text(killed / "snapshots" / f)) << f;
+  expect_same_summary(whole, killed);
 }
 
 // the PID of a process that has ended (a child that exits at once, reaped)

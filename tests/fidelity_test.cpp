@@ -131,6 +131,54 @@ TEST(Fidelity, ErrorEstimateIsTheDirectComparisonOnTheFinalState) {
     EXPECT_NE(text.find(key), std::string::npos) << key << " in\n" << text;
 }
 
+// what a checkpoint holds at an accepted step's end, as `rollwear run` saves it (session/wear_life_run.cpp)
+Checkpoint checkpoint_at(const LifeStep& s, const WearCache& cache) {
+  Checkpoint cp;
+  cp.start = {s.N, *s.state, s.info.next_step, s.counters};
+  cp.blocks = wear_cache_blocks(cache);
+  return cp;
+}
+
+// equal, or both NaN (an estimate not made)
+bool same_number(double a, double b) { return a == b || (std::isnan(a) && std::isnan(b)); }
+
+// The life stopped after `stop_after` steps, its checkpoint written as text and read back, and resumed from it in
+// a new cache (a new process's) ends as the uninterrupted life `whole`: its end, N, steps, exact solves, error
+// estimate, final contact and state to the bit.
+void expect_resumed_life_is_the_whole_one(const WearCase& c, long stop_after, const std::string& file,
+                                          LifeResult& whole) {
+  const WearModel m = make_wear_model(c);
+  WearCache whole_cache;
+  whole = run_life(m, c, {}, {}, whole_cache);
+  ASSERT_EQ(whole.ended_by, LifeEnd::MaxDepth) << whole.message;
+  ASSERT_GT(whole.counters.steps, stop_after + 2);
+
+  WearCache first_cache;
+  Checkpoint cp;
+  LifeHooks stop;
+  stop.on_step = [&](const LifeStep& s) {
+    cp = checkpoint_at(s, first_cache);
+    return s.step < stop_after;
+  };
+  ASSERT_EQ(run_life(m, c, {}, stop, first_cache).ended_by, LifeEnd::Stopped);
+  const fs::path path = fs::path(::testing::TempDir()) / file;
+  { std::ofstream(path) << checkpoint_text(cp); }
+  const Checkpoint back = read_checkpoint(path);
+  WearCache resumed_cache;
+  restore_wear_cache(m, back.blocks, resumed_cache);
+  const LifeResult resumed = run_life(m, c, back.start, {}, resumed_cache);
+
+  EXPECT_EQ(resumed.ended_by, whole.ended_by);
+  EXPECT_EQ(resumed.N, whole.N);
+  EXPECT_EQ(resumed.counters.steps, whole.counters.steps);
+  EXPECT_EQ(resumed.exact_solves, whole.exact_solves);
+  EXPECT_TRUE(same_number(resumed.error.power_l1, whole.error.power_l1)) << resumed.error.power_l1;
+  EXPECT_EQ(resumed.contact.p0_Pa, whole.contact.p0_Pa);
+  EXPECT_EQ(resumed.contact.power_W, whole.contact.power_W);
+  ASSERT_EQ(resumed.state.size(), whole.state.size());
+  for (Eigen::Index i = 0; i < whole.state.size(); ++i) ASSERT_EQ(resumed.state(i), whole.state(i)) << "node " << i;
+}
+
 // The corrected life stopped after a few fixed steps and resumed from what a checkpoint holds (its state, N,
 // counters and correction, through the checkpoint's text) ends as the uninterrupted life to the bit.
 TEST(Fidelity, CorrectedLifeStoppedAndResumedFromItsCheckpointIsTheUninterruptedOneToTheBit) {
@@ -138,37 +186,117 @@ TEST(Fidelity, CorrectedLifeStoppedAndResumedFromItsCheckpointIsTheUninterrupted
   c.wear.stepping.method = IntegratorOptions::Method::FixedDepth;
   c.wear.stepping.max_depth_step_m = 2e-6;
   c.wear.limits.max_depth_m = 2e-5;
-  const WearModel m = make_wear_model(c);
-  WearCache whole_cache;
-  const LifeResult whole = run_life(m, c, {}, {}, whole_cache);
-  ASSERT_EQ(whole.ended_by, LifeEnd::MaxDepth);
-
-  WearCache first_cache;
-  Checkpoint cp;
-  LifeHooks stop;
-  stop.on_step = [&](const LifeStep& s) {
-    cp.start = {s.N, *s.state, s.info.next_step, s.counters};
-    cp.correction = first_cache.correction;
-    cp.error = first_cache.error;
-    return s.step < 5;
-  };
-  const LifeResult first = run_life(m, c, {}, stop, first_cache);
-  ASSERT_EQ(first.ended_by, LifeEnd::Stopped);
-  const fs::path path = fs::path(::testing::TempDir()) / "fidelity_checkpoint.txt";
-  { std::ofstream(path) << checkpoint_text(cp); }
-  const Checkpoint back = read_checkpoint(path);
-  WearCache resumed_cache;
-  resumed_cache.correction = back.correction;
-  resumed_cache.error = back.error;
-  const LifeResult resumed = run_life(m, c, back.start, {}, resumed_cache);
-  EXPECT_EQ(resumed.ended_by, whole.ended_by);
-  EXPECT_EQ(resumed.N, whole.N);
-  EXPECT_EQ(resumed.counters.steps, whole.counters.steps);
-  EXPECT_EQ(resumed.exact_solves, whole.exact_solves);
-  ASSERT_EQ(resumed.state.size(), whole.state.size());
-  for (Eigen::Index i = 0; i < whole.state.size(); ++i) ASSERT_EQ(resumed.state(i), whole.state(i)) << i;
-  EXPECT_EQ(resumed.error.power_l1, whole.error.power_l1);
+  LifeResult whole;
+  ASSERT_NO_FATAL_FAILURE(expect_resumed_life_is_the_whole_one(c, 5, "fidelity_checkpoint.txt", whole));
   EXPECT_GT(whole.exact_solves, 2);
+}
+
+// A half-space life (solver.normal halfspace) starts each half-space solve from the last one's pressures
+// (WearCache::halfspace_warm_start), so a resume that solved its start again would start elsewhere and end within
+// the solver's tolerance only; the checkpoint carries that last solve. The paper's roller on a coarse 12 x 12
+// grid, fixed-depth steps of 2 um to 20 um (10 steps), stopped after 4 and resumed: the fast fidelity on the
+// half-space, the exact fidelity (half-space and exact theory), and the corrected one on a half-space normal.
+WearCase halfspace_wear(contact::Fidelity fidelity) {
+  WearCase c = paper_wear(fidelity, 12);
+  c.contact.solver.normal = contact::NormalChoice::Halfspace;
+  c.wear.stepping.method = IntegratorOptions::Method::FixedDepth;
+  c.wear.stepping.max_depth_step_m = 2e-6;
+  c.wear.limits.max_depth_m = 2e-5;
+  return c;
+}
+
+TEST(HalfspaceResume, FastLifeStoppedAndResumedFromItsCheckpointIsTheUninterruptedOneToTheBit) {
+  LifeResult whole;
+  expect_resumed_life_is_the_whole_one(halfspace_wear(contact::Fidelity::Fast), 4, "hs_fast_checkpoint.txt", whole);
+}
+
+TEST(HalfspaceResume, ExactLifeStoppedAndResumedFromItsCheckpointIsTheUninterruptedOneToTheBit) {
+  LifeResult whole;
+  expect_resumed_life_is_the_whole_one(halfspace_wear(contact::Fidelity::Exact), 4, "hs_exact_checkpoint.txt", whole);
+}
+
+TEST(HalfspaceResume, CorrectedLifeOnAHalfspaceNormalStoppedAndResumedIsTheUninterruptedOneToTheBit) {
+  LifeResult whole;
+  expect_resumed_life_is_the_whole_one(halfspace_wear(contact::Fidelity::Corrected), 4, "hs_corrected_checkpoint.txt",
+                                       whole);
+}
+
+// A load collective on the half-space: each running condition starts its solves from its own last one, and the
+// checkpoint holds each (halfspace_normal_K). cases/collective-duty-mix.yaml (steady cruise, heavy, a start-stop
+// transient) at 12 x 12, fixed-depth steps of 2 um to 10 um, stopped after 2 and resumed.
+TEST(HalfspaceResume, CollectiveLifeStoppedAndResumedIsTheUninterruptedOneToTheBit) {
+  WearCase c = read_wear_case((kSource / "cases" / "collective-duty-mix.yaml").string());
+  c.contact.solver.normal = contact::NormalChoice::Halfspace;
+  c.contact.solver.nx = c.contact.solver.ny = 12;
+  for (WearCondition& k : c.wear.collective) {
+    k.contact.solver.normal = contact::NormalChoice::Halfspace;
+    k.contact.solver.nx = k.contact.solver.ny = 12;
+  }
+  c.wear.snapshots_revolutions.clear();
+  c.wear.stepping.method = IntegratorOptions::Method::FixedDepth;
+  c.wear.stepping.max_depth_step_m = 2e-6;
+  c.wear.limits.max_depth_m = 1e-5;
+  LifeResult whole;
+  ASSERT_NO_FATAL_FAILURE(expect_resumed_life_is_the_whole_one(c, 2, "hs_collective_checkpoint.txt", whole));
+  EXPECT_EQ(whole.contact.normal_solver, contact::NormalSolverKind::Halfspace);
+}
+
+// A checkpoint of format version 2 holds the corrected fidelity's correction in lines of its own: it is read into
+// the blocks `correction` and `error`, every number to the bit; a block cut short is refused naming it.
+TEST(HalfspaceResume, CheckpointOfVersion2ReadsItsCorrectionIntoTheBlocks) {
+  const std::string text =
+      "rollwear-wear-checkpoint 2\ncase_hash 00000000000000ab\nN 0x1p+23\nnext_step 0x0p+0\nsteps 3\nrhs_evals 4\n"
+      "rejected 0\nrate_evaluations 9\nlimit_evaluations 5\nnormal_solves 6\ntangential_solves 6\n"
+      "snapshots_written 1\nwall_s 0x1p-3\nstate 3\n0x1p-20\n0x1p-21\n0x1p-10\n"
+      "correction 0x1p+3 0x1p+1 0x1p+0 0x1p-18 -0x1p-30 0x1p+4 1 7 3\n0x1p-20\n0x1p-22\n0x1p-11\n"
+      "0x1p-40 0x1p-41\n0x1p-42 0x1p-43\nerror 0x1p+3 -0x1p-5 0x1p-6\nend\n";
+  const fs::path path = fs::path(::testing::TempDir()) / "version2_checkpoint.txt";
+  { std::ofstream(path) << text; }
+  const Checkpoint cp = read_checkpoint(path);
+  EXPECT_EQ(cp.start.N, 0x1p+23);
+  EXPECT_EQ(cp.start.counters.steps, 3);
+  WearModel m;
+  m.n1 = 2;  // a state of 3: two nodes and the energy
+  WearCache cache;
+  restore_wear_cache(m, cp.blocks, cache);
+  const FidelityCorrection& k = cache.correction;
+  ASSERT_TRUE(k.valid);
+  EXPECT_EQ(k.N, 8.0);
+  EXPECT_EQ(k.exact_energy_J, 2.0);
+  EXPECT_EQ(k.fast_energy_J, 1.0);
+  EXPECT_EQ(k.approach_m, 0x1p-18);
+  EXPECT_EQ(k.edge_offset_m, -0x1p-30);
+  EXPECT_EQ(k.pressure_offset_Pa, 16.0);
+  EXPECT_TRUE(k.exact_limits);
+  EXPECT_EQ(k.solves, 7);
+  ASSERT_EQ(k.state.size(), 3);
+  EXPECT_EQ(k.state(1), 0x1p-22);
+  ASSERT_EQ(k.exact_rate.size(), 2);
+  EXPECT_EQ(k.exact_rate(1), 0x1p-42);
+  EXPECT_EQ(k.fast_rate(1), 0x1p-43);
+  EXPECT_EQ(cache.error.N, 8.0);
+  EXPECT_EQ(cache.error.power_rel, -0x1p-5);
+  EXPECT_EQ(cache.error.power_l1, 0x1p-6);
+  // written again, it is version 3's blocks, and reads back to the same correction
+  Checkpoint again = cp;
+  again.blocks = wear_cache_blocks(cache);
+  { std::ofstream(path) << checkpoint_text(again); }
+  const Checkpoint back = read_checkpoint(path);
+  ASSERT_NE(find_block(back.blocks, "correction"), nullptr);
+  WearCache cache2;
+  restore_wear_cache(m, back.blocks, cache2);
+  EXPECT_EQ(cache2.correction.fast_rate(0), 0x1p-41);
+  EXPECT_EQ(cache2.error.power_l1, 0x1p-6);
+  // a block cut short
+  std::vector<CheckpointBlock> cut = back.blocks;
+  for (CheckpointBlock& b : cut)
+    if (b.name == "correction") b.values.conservativeResize(b.values.size() - 1);
+  try {
+    restore_wear_cache(m, cut, cache2);
+    ADD_FAILURE() << "no error";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("'correction'"), std::string::npos) << e.what();
+  }
 }
 
 // The case keys: exact sets the half-space and the exact theory; it refuses another model named beside it;

@@ -18,6 +18,8 @@
 #include <string>
 #include <vector>
 
+#include <spdlog/fmt/fmt.h>
+
 #include "tests/temp_dir.h"
 #include "tests/test_text.h"
 
@@ -375,6 +377,35 @@ TEST_F(PlotCommand, ContactFolderDrawsTheSectionBelowTheSurfaceOfEachBody) {
   EXPECT_EQ(files_under(folder / "plots"), pictures);
   for (const std::string& name : pictures) EXPECT_TRUE(is_png(folder / "plots" / name)) << name;
   EXPECT_FALSE(has_temporary(folder));
+}
+
+// a lubricated cam revolution's folder (rollwear cam: revolution.csv alone, with the film's and the flash temperature's
+// columns among the others, found by name): the film, lambda and the flash temperature over the cam angle; a dry
+// revolution's folder has nothing to draw and says so (exit 2)
+TEST_F(PlotCommand, CamRevolutionFolderDrawsTheFilmAndFlashTemperatureOverTheCamAngle) {
+  const fs::path folder = dir_ / "cam";
+  std::string t = "cam_angle_deg,lift_m,normal_load_N,h_min_m,h_central_m,lambda,lubrication_regime,flash_max_K\n";
+  for (int k = 0; k < 72; ++k) {
+    const double theta = 5.0 * k, bump = k < 26 ? std::sin(3.14159265 * k / 26) : 0.0;
+    t += fmt::format("{},{},{},{},{},{},{},{}\n", theta, 0.0075 * bump, 680 + 800 * bump, 1.3e-7 - 3e-8 * bump,
+                     1.6e-7 - 3e-8 * bump, (1.3e-7 - 3e-8 * bump) / 2.7e-7, "boundary", 0.01 + 0.02 * bump);
+  }
+  write_text(folder / "revolution.csv", t);
+  const Result r = plot(folder);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.err, "");
+  EXPECT_EQ(files_under(folder / "plots"), std::vector<std::string>{"cam_film.png"});
+  EXPECT_TRUE(is_png(folder / "plots" / "cam_film.png"));
+  EXPECT_NE(r.out.find("cam_film.png"), std::string::npos) << r.out;
+  EXPECT_FALSE(has_temporary(folder));
+
+  const fs::path dry = dir_ / "dry";
+  write_text(dry / "revolution.csv", "cam_angle_deg,lift_m,normal_load_N\n0,0,680\n5,0.001,700\n");
+  const Result d = plot(dry);
+  EXPECT_EQ(d.status, 2);
+  EXPECT_NE(d.err.find("revolution.csv line 1: a cam revolution without the film's or the flash temperature's"),
+            std::string::npos) << d.err;
+  EXPECT_FALSE(fs::exists(dry / "plots" / "cam_film.png"));
 }
 
 TEST_F(PlotCommand, SweepGridDrawsTheLifeAgainstEveryAxis) {

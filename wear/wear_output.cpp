@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -13,6 +14,7 @@
 #include <spdlog/fmt/fmt.h>
 
 #include "lib/history.h"
+#include "wear/collective.h"
 #include "lib/csv_reader.h"
 #include "lib/errors.h"
 #include "lib/number.h"
@@ -24,7 +26,10 @@ using contact::kPi;
 
 namespace {
 
-constexpr const char* kCheckpointMagic = "rollwear-wear-checkpoint 2";  // 2: the life's counters
+// 3: what a life carries from step to step in named blocks only; 2 (read still): the corrected fidelity's
+// correction in a line of its own
+constexpr const char* kCheckpointMagic = "rollwear-wear-checkpoint 3";
+constexpr const char* kCheckpointMagic2 = "rollwear-wear-checkpoint 2";
 
 // every number at full precision: the shortest text that reads back as the same double (lib/number.h)
 using contact::round_trip;
@@ -211,6 +216,229 @@ std::uint64_t case_fingerprint(const std::string& case_text, const WearModel& m)
   return h ^ contact::profile_hash(m.profiles);
 }
 
+void BlockWriter::put(const Eigen::ArrayXd& a) {
+  put(static_cast<double>(a.size()));
+  values.insert(values.end(), a.data(), a.data() + a.size());
+}
+
+void BlockWriter::put(const Eigen::ArrayXXd& a) {
+  put(static_cast<double>(a.rows()));
+  put(static_cast<double>(a.cols()));
+  values.insert(values.end(), a.data(), a.data() + a.size());
+}
+
+CheckpointBlock BlockWriter::block(std::string name) const {
+  return {std::move(name), Eigen::Map<const Eigen::VectorXd>(values.data(), static_cast<Eigen::Index>(values.size()))};
+}
+
+double BlockReader::number() {
+  if (at >= block.values.size())
+    throw std::runtime_error(fmt::format("checkpoint block '{}' ends early ({} numbers)", block.name, block.values.size()));
+  return block.values(at++);
+}
+
+long BlockReader::integer(long max) {
+  const double v = number();
+  if (!(v >= 0 && v <= static_cast<double>(max)) || v != std::floor(v))
+    throw std::runtime_error(fmt::format("checkpoint block '{}': expected a whole number up to {} at its number {}, got {}",
+                                         block.name, max, at, v));
+  return static_cast<long>(v);
+}
+
+namespace {
+constexpr long kMaxBlockArray = 100000000;
+}
+
+Eigen::ArrayXd BlockReader::array() {
+  const long n = integer(kMaxBlockArray);
+  Eigen::ArrayXd a(n);
+  for (long i = 0; i < n; ++i) a(i) = number();
+  return a;
+}
+
+Eigen::ArrayXXd BlockReader::array2d() {
+  const long rows = integer(kMaxBlockArray), cols = integer(kMaxBlockArray);
+  if (rows * cols > kMaxBlockArray)
+    throw std::runtime_error(fmt::format("checkpoint block '{}': an array of {} x {}", block.name, rows, cols));
+  Eigen::ArrayXXd a(rows, cols);
+  for (Eigen::Index i = 0; i < a.size(); ++i) a.data()[i] = number();
+  return a;
+}
+
+void BlockReader::finish() const {
+  if (at != block.values.size())
+    throw std::runtime_error(fmt::format("checkpoint block '{}' has {} numbers, {} expected", block.name,
+                                         block.values.size(), at));
+}
+
+const CheckpointBlock* find_block(const std::vector<CheckpointBlock>& blocks, const std::string& name) {
+  for (const CheckpointBlock& b : blocks)
+    if (b.name == name) return &b;
+  return nullptr;
+}
+
+namespace {
+
+constexpr const char* kCorrectionBlock = "correction";
+constexpr const char* kErrorBlock = "error";
+constexpr const char* kHalfspaceNormalBlock = "halfspace_normal";
+
+CheckpointBlock correction_block(const FidelityCorrection& k) {
+  BlockWriter w;
+  for (const double v : {k.N, k.exact_energy_J, k.fast_energy_J, k.approach_m, k.edge_offset_m, k.pressure_offset_Pa})
+    w.put(v);
+  w.put(k.exact_limits ? 1.0 : 0.0);
+  w.put(static_cast<double>(k.solves));
+  for (const Eigen::VectorXd* v : {&k.state, &k.exact_rate, &k.fast_rate}) w.put(Eigen::ArrayXd(v->array()));
+  return w.block(kCorrectionBlock);
+}
+
+// state_size the model's state, worn_nodes its worn nodes (the rates': the state less the energy and any fatigue damage)
+FidelityCorrection correction_of(const CheckpointBlock& b, Eigen::Index state_size, Eigen::Index worn_nodes) {
+  BlockReader r{b};
+  FidelityCorrection k;
+  k.valid = true;
+  for (double* v : {&k.N, &k.exact_energy_J, &k.fast_energy_J, &k.approach_m, &k.edge_offset_m, &k.pressure_offset_Pa})
+    *v = r.number();
+  k.exact_limits = r.integer(1) != 0;
+  k.solves = r.integer(std::numeric_limits<int>::max());
+  k.state = r.array().matrix();
+  k.exact_rate = r.array().matrix();
+  k.fast_rate = r.array().matrix();
+  r.finish();
+  if (k.state.size() != state_size || k.exact_rate.size() != worn_nodes || k.fast_rate.size() != worn_nodes)
+    throw std::runtime_error(fmt::format("checkpoint block '{}': its state has {} values, the case's {}", b.name,
+                                         k.state.size(), state_size));
+  return k;
+}
+
+CheckpointBlock error_block(const FidelityError& e) {
+  BlockWriter w;
+  for (const double v : {e.N, e.power_rel, e.power_l1}) w.put(v);
+  return w.block(kErrorBlock);
+}
+
+FidelityError error_of(const CheckpointBlock& b) {
+  BlockReader r{b};
+  FidelityError e;
+  for (double* v : {&e.N, &e.power_rel, &e.power_l1}) *v = r.number();
+  r.finish();
+  return e;
+}
+
+// a grid, every member (not rebuilt: the numbers are the solve's)
+void put(BlockWriter& w, const contact::Grid& g) {
+  for (const double v : {static_cast<double>(g.nx), static_cast<double>(g.ny), g.half_x_m, g.half_y_m, g.dx_m, g.dy_m})
+    w.put(v);
+  w.put(g.x_m);
+  w.put(g.y_m);
+}
+contact::Grid take_grid(BlockReader& r) {
+  contact::Grid g;
+  g.nx = static_cast<int>(r.integer(kMaxBlockArray));
+  g.ny = static_cast<int>(r.integer(kMaxBlockArray));
+  for (double* v : {&g.half_x_m, &g.half_y_m, &g.dx_m, &g.dy_m}) *v = r.number();
+  g.x_m = r.array();
+  g.y_m = r.array();
+  if (g.x_m.size() != g.nx || g.y_m.size() != g.ny)
+    throw std::runtime_error(fmt::format("checkpoint block '{}': a grid of {} x {} with {} x {} cell centres",
+                                         r.block.name, g.nx, g.ny, g.x_m.size(), g.y_m.size()));
+  return g;
+}
+
+// The last half-space solve of a cache (NormalState, its patch and its half-space's grids and pressures) and
+// its key (the worn profiles' hash, in two halves of 32 bits: each a double exactly)
+CheckpointBlock halfspace_normal_block(const WearCache& cache, const std::string& name) {
+  const NormalState& n = cache.normal;
+  BlockWriter w;
+  w.put(static_cast<double>(cache.normal_key >> 32));
+  w.put(static_cast<double>(cache.normal_key & 0xffffffffULL));
+  for (const double v : {n.grid_y0_m, n.contact_y_min_m, n.contact_y_max_m, n.approach_m, n.reaches_edge ? 1.0 : 0.0,
+                         n.edge_margin_m, n.edge_limit_m})
+    w.put(v);
+  const contact::ContactPatch& p = n.patch;
+  for (const double v : {p.a_m, p.b_m, p.p0_Pa, p.normal_load_N, p.approach_m}) w.put(v);
+  put(w, p.grid);
+  for (const Eigen::ArrayXd* a : {&p.half_length_m, &p.strip_peak_Pa, &p.strip_xi_offset}) w.put(*a);
+  for (const Eigen::ArrayXXd* a : {&p.pressure_Pa, &p.pressure_moment_Pa_m, &p.edge_pressure_Pa}) w.put(*a);
+  const contact::HalfspaceOnProfiles& h = n.halfspace;
+  put(w, h.coarse_grid);
+  w.put(h.coarse_y0_m);
+  w.put(h.coarse_pressure_Pa);
+  put(w, h.grid);
+  w.put(h.grid_y0_m);
+  w.put(h.pressure_Pa);
+  for (const double v : {h.contact_y_min_m, h.contact_y_max_m, h.reference_y_m, h.reaches_border ? 1.0 : 0.0,
+                         h.edge_value_m, static_cast<double>(h.solves), static_cast<double>(h.iterations)})
+    w.put(v);
+  return w.block(name);
+}
+
+void restore_halfspace_normal(const CheckpointBlock& b, WearCache& cache) {
+  BlockReader r{b};
+  const std::uint64_t hi = static_cast<std::uint64_t>(r.integer(0xffffffffL));
+  const std::uint64_t lo = static_cast<std::uint64_t>(r.integer(0xffffffffL));
+  NormalState n;
+  n.solver = contact::NormalSolverKind::Halfspace;
+  for (double* v : {&n.grid_y0_m, &n.contact_y_min_m, &n.contact_y_max_m, &n.approach_m}) *v = r.number();
+  n.reaches_edge = r.integer(1) != 0;
+  for (double* v : {&n.edge_margin_m, &n.edge_limit_m}) *v = r.number();
+  contact::ContactPatch& p = n.patch;
+  for (double* v : {&p.a_m, &p.b_m, &p.p0_Pa, &p.normal_load_N, &p.approach_m}) *v = r.number();
+  p.grid = take_grid(r);
+  for (Eigen::ArrayXd* a : {&p.half_length_m, &p.strip_peak_Pa, &p.strip_xi_offset}) *a = r.array();
+  for (Eigen::ArrayXXd* a : {&p.pressure_Pa, &p.pressure_moment_Pa_m, &p.edge_pressure_Pa}) *a = r.array2d();
+  contact::HalfspaceOnProfiles& h = n.halfspace;
+  h.coarse_grid = take_grid(r);
+  h.coarse_y0_m = r.number();
+  h.coarse_pressure_Pa = r.array2d();
+  h.grid = take_grid(r);
+  h.grid_y0_m = r.number();
+  h.pressure_Pa = r.array2d();
+  for (double* v : {&h.contact_y_min_m, &h.contact_y_max_m, &h.reference_y_m}) *v = r.number();
+  h.reaches_border = r.integer(1) != 0;
+  h.edge_value_m = r.number();
+  h.solves = static_cast<int>(r.integer(std::numeric_limits<int>::max()));
+  h.iterations = static_cast<int>(r.integer(std::numeric_limits<int>::max()));
+  r.finish();
+  if (h.coarse_pressure_Pa.rows() != h.coarse_grid.nx || h.coarse_pressure_Pa.cols() != h.coarse_grid.ny ||
+      h.pressure_Pa.rows() != h.grid.nx || h.pressure_Pa.cols() != h.grid.ny)
+    throw std::runtime_error(fmt::format("checkpoint block '{}': pressures not on their grids", b.name));
+  cache.normal_key = hi << 32 | lo;
+  cache.normal = std::move(n);
+  cache.normal_valid = true;
+}
+
+// a collective's running condition k's block name; the case's own: kHalfspaceNormalBlock
+std::string condition_block_name(std::size_t k) { return fmt::format("{}_{}", kHalfspaceNormalBlock, k); }
+
+}  // namespace
+
+std::vector<CheckpointBlock> wear_cache_blocks(const WearCache& cache) {
+  std::vector<CheckpointBlock> out;
+  if (cache.correction.valid) {
+    out.push_back(correction_block(cache.correction));
+    out.push_back(error_block(cache.error));
+  }
+  const auto halfspace = [&](const WearCache& ck, const std::string& name) {
+    if (ck.normal_valid && ck.normal.solver == contact::NormalSolverKind::Halfspace)
+      out.push_back(halfspace_normal_block(ck, name));
+  };
+  halfspace(cache, kHalfspaceNormalBlock);
+  for (std::size_t k = 0; k < cache.conditions.size(); ++k) halfspace(cache.conditions[k], condition_block_name(k));
+  return out;
+}
+
+void restore_wear_cache(const WearModel& m, const std::vector<CheckpointBlock>& blocks, WearCache& cache) {
+  if (const CheckpointBlock* b = find_block(blocks, kCorrectionBlock)) cache.correction = correction_of(*b, m.state_size(), m.n1 + m.n2);
+  if (const CheckpointBlock* b = find_block(blocks, kErrorBlock)) cache.error = error_of(*b);
+  if (const CheckpointBlock* b = find_block(blocks, kHalfspaceNormalBlock)) restore_halfspace_normal(*b, cache);
+  if (m.conditions.empty()) return;
+  prepare_condition_caches(m, cache);
+  for (std::size_t k = 0; k < m.conditions.size(); ++k)
+    if (const CheckpointBlock* b = find_block(blocks, condition_block_name(k))) restore_halfspace_normal(*b, cache.conditions[k]);
+}
+
 std::string checkpoint_text(const Checkpoint& c) {
   const LifeStart& s = c.start;
   std::string t = std::string(kCheckpointMagic) + "\n";
@@ -228,19 +456,6 @@ std::string checkpoint_text(const Checkpoint& c) {
   for (const CheckpointBlock& b : c.blocks) {
     t += fmt::format("block {} {}\n", b.name, b.values.size());
     for (Eigen::Index i = 0; i < b.values.size(); ++i) t += fmt::format("{:a}\n", b.values(i));
-  }
-  // the corrected fidelity's correction in force and its error estimate (bit-exact: a resumed life corrects
-  // as the uninterrupted one did)
-  if (c.correction.valid) {
-    const FidelityCorrection& k = c.correction;
-    // the rates' count follows when it is not the state's less the energy (a state with fatigue damage)
-    const bool rate_count = k.exact_rate.size() + 1 != k.state.size();
-    t += fmt::format("correction {:a} {:a} {:a} {:a} {:a} {:a} {} {} {}{}\n", k.N, k.exact_energy_J, k.fast_energy_J,
-                     k.approach_m, k.edge_offset_m, k.pressure_offset_Pa, k.exact_limits ? 1 : 0, k.solves,
-                     k.state.size(), rate_count ? fmt::format(" {}", k.exact_rate.size()) : std::string());
-    for (Eigen::Index i = 0; i < k.state.size(); ++i) t += fmt::format("{:a}\n", k.state(i));
-    for (Eigen::Index i = 0; i < k.exact_rate.size(); ++i) t += fmt::format("{:a} {:a}\n", k.exact_rate(i), k.fast_rate(i));
-    t += fmt::format("error {:a} {:a} {:a}\n", c.error.N, c.error.power_rel, c.error.power_l1);
   }
   t += "end\n";
   return t;
@@ -273,7 +488,9 @@ Checkpoint read_checkpoint(const std::filesystem::path& path) {
     return line.substr(key.size() + 1);
   };
   next();
-  if (line != kCheckpointMagic) fail("not a rollwear wear checkpoint (expected '" + std::string(kCheckpointMagic) + "')");
+  const bool version2 = line == kCheckpointMagic2;
+  if (line != kCheckpointMagic && !version2)
+    fail("not a rollwear wear checkpoint (expected '" + std::string(kCheckpointMagic) + "')");
   Checkpoint c;
   c.case_hash = std::stoull(field("case_hash"), nullptr, 16);
   c.start.N = number(field("N"));
@@ -311,7 +528,8 @@ Checkpoint read_checkpoint(const std::filesystem::path& path) {
     }
     c.blocks.push_back(std::move(b));
   }
-  if (line.rfind("correction ", 0) == 0) {
+  // version 2: the corrected fidelity's correction and error estimate in lines of their own, read into their blocks
+  if (version2 && line.rfind("correction ", 0) == 0) {
     std::istringstream in_line(line.substr(11));
     std::string N, exact_J, fast_J, approach, edge, pressure;
     long solves = 0, size = 0;
@@ -319,10 +537,7 @@ Checkpoint read_checkpoint(const std::filesystem::path& path) {
     if (!(in_line >> N >> exact_J >> fast_J >> approach >> edge >> pressure >> exact_limits >> solves >> size) ||
         size != n)
       fail("bad correction line '" + line + "'");
-    long rates = n - 1;  // the state less the energy, unless given (a state with fatigue damage)
-    if (long given = 0; in_line >> given) rates = given;
-    if (rates < 0 || rates >= n) fail("bad correction line '" + line + "'");
-    FidelityCorrection& k = c.correction;
+    FidelityCorrection k;
     k.valid = true;
     k.N = number(N);
     k.exact_energy_J = number(exact_J);
@@ -337,9 +552,9 @@ Checkpoint read_checkpoint(const std::filesystem::path& path) {
       next();
       k.state(i) = number(line);
     }
-    k.exact_rate.resize(rates);
-    k.fast_rate.resize(rates);
-    for (long i = 0; i < rates; ++i) {
+    k.exact_rate.resize(n - 1);  // version 2 had no fatigue damage: the rates are the state less the energy
+    k.fast_rate.resize(n - 1);
+    for (long i = 0; i + 1 < n; ++i) {
       next();
       const std::size_t space = line.find(' ');
       if (space == std::string::npos) fail("expected two numbers, got '" + line + "'");
@@ -350,7 +565,8 @@ Checkpoint read_checkpoint(const std::filesystem::path& path) {
     std::istringstream err(line);
     std::string word, eN, rel, l1;
     if (!(err >> word >> eN >> rel >> l1) || word != "error") fail("expected 'error ...', got '" + line + "'");
-    c.error = {number(eN), number(rel), number(l1)};
+    c.blocks.push_back(correction_block(k));
+    c.blocks.push_back(error_block({number(eN), number(rel), number(l1)}));
     next();
   }
   if (line != "end") fail("expected 'end', got '" + line + "'");

@@ -12,7 +12,8 @@
 //     y_m,z_original_m,z_m,depth_m     one row per profile node of a worn body
 //   report.txt                         'key: value' lines: the predicted life and what ended it
 //                                      (life_report_text)
-//   checkpoint.txt                     the state to resume from (hexadecimal floats: bit-exact)
+//   checkpoint.txt                     the state to resume from and what the rate carries from step to step
+//                                      (hexadecimal floats: bit-exact; "---- checkpoint ----" below)
 #pragma once
 
 #include <Eigen/Core>
@@ -83,22 +84,55 @@ double hours_per_revolution(const WearModel& m);
 
 // ---- checkpoint ----
 
-// what a life's rate carries from step to step besides the state, as a named block of numbers (the cam's: the
-// rate at the state and its producer's warm starts, session/cam_life_run.cpp)
+// What a life carries from one step to the next besides its state, in named blocks of numbers, each written as
+// "block NAME COUNT" and its COUNT numbers in hexadecimal floats (bit-exact), so that a resumed life is the
+// uninterrupted one to the bit. The cam's: "rate" (the rate at the state) and "warm_starts" (its worn
+// revolution's memory; session/cam_life_run.cpp). The roller's (wear_cache_blocks): "correction" and "error"
+// (the corrected fidelity's correction in force and its error estimate) and "halfspace_normal" (the last
+// half-space solve: the next one starts from its pressures, and a rate or limit at its state reuses it).
 struct CheckpointBlock {
   std::string name;  // one word
   Eigen::VectorXd values;
 };
+
+// the numbers of a block, put in order (an array: its sizes, then its values column by column) ...
+struct BlockWriter {
+  std::vector<double> values;
+  void put(double v) { values.push_back(v); }
+  void put(const Eigen::ArrayXd& a);
+  void put(const Eigen::ArrayXXd& a);
+  CheckpointBlock block(std::string name) const;
+};
+// ... and taken back in the same order; throws std::runtime_error naming the block for one that is not what
+// was put (too short, a size out of range, numbers left over)
+struct BlockReader {
+  const CheckpointBlock& block;
+  Eigen::Index at = 0;
+  double number();
+  long integer(long max);  // a whole number in [0, max]
+  Eigen::ArrayXd array();
+  Eigen::ArrayXXd array2d();
+  void finish() const;  // every number taken
+};
+// the block of that name, or nullptr
+const CheckpointBlock* find_block(const std::vector<CheckpointBlock>& blocks, const std::string& name);
 
 struct Checkpoint {
   std::uint64_t case_hash = 0;  // the case as read (files and profiles): a resume of another case is refused
   LifeStart start;
   int snapshots_written = 0;    // snapshot files written so far (the initial one included)
   double wall_s = 0;            // run time so far
-  std::vector<CheckpointBlock> blocks;  // after the state, in this order; none for the wear loop's life
-  FidelityCorrection correction;  // the corrected fidelity's, in force at the checkpoint's step
-  FidelityError error;
+  std::vector<CheckpointBlock> blocks;  // after the state, in this order
 };
+
+// The roller's wear loop's memory across evaluations (WearCache) that changes its results: the corrected
+// fidelity's correction and error estimate, and each half-space solve's (the case's running condition's, or
+// each running condition's of a collective, "halfspace_normal_K"); none for a deterministic normal solver
+// (Hertz, semi-Hertz), whose solve a resumed run repeats to the bit.
+std::vector<CheckpointBlock> wear_cache_blocks(const WearCache& cache);
+// those blocks into a new cache for the model (other blocks ignored); throws std::runtime_error for a block
+// that is not what wear_cache_blocks wrote for this model
+void restore_wear_cache(const WearModel& m, const std::vector<CheckpointBlock>& blocks, WearCache& cache);
 
 // the case's fingerprint: its file's text, the model's state size and its profiles
 std::uint64_t case_fingerprint(const std::string& case_text, const WearModel& m);

@@ -259,6 +259,8 @@ void read_by_regime(YamlMap& m, std::array<double, 3>& v, Check check) {
   m.required("full_film", v[static_cast<int>(LubricationRegime::FullFilm)], check);
 }
 
+}  // namespace
+
 void read_lubricant(YamlMap& m, LubricantSection& l) {
   m.required("viscosity_Pa_s", l.lubricant.viscosity_Pa_s, positive_finite);
   m.required("pressure_viscosity_1_per_Pa", l.lubricant.pressure_viscosity_1_per_Pa, positive_finite);
@@ -272,7 +274,7 @@ void read_lubricant(YamlMap& m, LubricantSection& l) {
   m.section("wear_factor", [&](YamlMap& f) { read_by_regime(f, l.by_regime.wear_factor, nonnegative_finite); });
 }
 
-void read_thermal_body(YamlMap& m, ThermalBody& b) {
+static void read_thermal_body(YamlMap& m, ThermalBody& b) {
   m.required("conductivity_W_per_m_K", b.conductivity_W_per_m_K, positive_finite);
   m.required("density_kg_per_m3", b.density_kg_per_m3, positive_finite);
   m.required("specific_heat_J_per_kg_K", b.specific_heat_J_per_kg_K, positive_finite);
@@ -291,6 +293,8 @@ void read_thermal(YamlMap& m, ThermalSection& t) {
                        [&](const YamlValue& v) { critical = v.as<double>(above_absolute_zero); }))
     t.critical_temperature_C = critical;
 }
+
+namespace {
 
 void read_solver(YamlMap& m, SolverSection& s) {
   read_choice(m, "normal", s.normal, parse_normal_choice);

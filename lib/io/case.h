@@ -148,6 +148,12 @@ struct OutputSection {
   double max_bytes = 1024.0 * 1024 * 1024;  // 'transient' refuses a run estimated to write more (1 GiB)
 };
 
+class YamlMap;  // lib/io/yaml_reader.h
+// the keys of a lubricant: and a thermal: section (above) from their mapping, with the same errors; a cam case's
+// cam.lubricant and cam.thermal (cam/cam_case.h) are read by them too
+void read_lubricant(YamlMap& m, LubricantSection& l);
+void read_thermal(YamlMap& m, ThermalSection& t);
+
 struct ContactCase {
   std::string path;  // the file it was read from
   std::string name;  // 'name:' or the file's stem

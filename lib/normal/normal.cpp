@@ -211,14 +211,22 @@ NormalSolution solve_halfspace_on_profiles(const NormalProblem& p) {
   const bool at_lo = w_lo == gap.lo && c.j0 == 0, at_hi = w_hi == gap.hi && c.j1 == grid.ny - 1;
   n.reaches_edge = at_lo || at_hi;
 
-  // the edge value (HalfspaceOnProfiles::edge_value_m)
+  // the edge value (HalfspaceOnProfiles::edge_value_m): where the contact's lateral edge lies past the
+  // overlap's end, extrapolated from the strip loads (linear at a contact's edge), in units of the approach
+  // per half-width of the contact
   const double delta = s.approach_m;
-  const double q_max = q.maxCoeff();
-  const auto edge_value = [&](double y_end, bool grid_reaches_it, int j_end) {
-    const double separation = gap.across(y_end) - gap.minimum + displacement_at_m(s, grid, 0, y_end - y0, Estar) - delta;
-    return (grid_reaches_it ? delta * q(j_end) / q_max : 0.0) - separation;
+  const double half_extent = (e_hi - e_lo) / 2;
+  const auto edge_value = [&](double y_end, bool grid_reaches_it, int j_out, int j_in, double extent_m, double sign) {
+    double past_m = sign * (extent_m - y_end);  // the refined extent: within the unloaded neighbour's centre
+    if (grid_reaches_it && q(j_out) > 0) {      // the strip at the end is loaded: the extrapolation continued
+      const double t = q(j_in) > 0 ? q(j_out) / q(j_in) : 1.0;
+      const double r = t <= 0.5 ? t / (1 - t) : 1 + 4 * (t - 0.5);  // C1 in t: t/(1 - t) and its slope at 1/2
+      past_m = (r - 0.5) * grid.dy_m;
+    }
+    return delta * past_m / half_extent;
   };
-  h.edge_value_m = std::max(edge_value(gap.lo, w_lo == gap.lo, 0), edge_value(gap.hi, w_hi == gap.hi, grid.ny - 1));
+  h.edge_value_m = std::max(edge_value(gap.lo, w_lo == gap.lo, 0, 1, h.contact_y_min_m, -1.0),
+                            edge_value(gap.hi, w_hi == gap.hi, grid.ny - 1, grid.ny - 2, h.contact_y_max_m, 1.0));
   h.pressure_Pa = std::move(s.pressure_Pa);
 
   n.status = s.status;

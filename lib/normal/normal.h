@@ -69,14 +69,14 @@ struct HalfspaceOnProfiles {
   double reference_y_m = 0;           // the strip loads' centroid: where the Heathcote offset vanishes
   bool reaches_border = false;        // loaded cells still touch a border of the final grid that is not an
                                       // end of the overlap (the enlargements ran out): not converged
-  // The edge limit as a continuous function of the gap (m): at each end y_e of the overlap,
-  //   f_e = delta q_e / q_max - s_e,  s_e = h(0, y_e) + u(0, y_e) - delta,
-  // s_e the separation there (u by direct summation of the cell pressures), q_e the load of the strip
-  // next to the end (0 when the grid does not reach it), q_max the largest strip load; the value is
-  // max(f_lo, f_hi). Inside, q_e = 0 and s_e > 0: negative. As the contact reaches the end, s_e -> 0
-  // and q_e rises from 0 (a cell enters the contact with zero pressure): 0 there, continuous. Past it,
-  // s_e = 0 (the end lies in the contact, cut by the body's edge) and q_e grows with the load the edge
-  // carries: positive and rising, so a root finder sees the sign change.
+  // The edge limit as a continuous function of the gap (m): at each end y_e of the overlap, how far the
+  // contact's lateral edge y_c lies past it, f_e = delta (y_c - y_e) / b_c (outwards positive; b_c half the
+  // contact's lateral extent), the value max(f_lo, f_hi). y_c is extrapolated from the strip loads, linear in
+  // the distance to a contact's edge: inside, the refined extent (contact_y_min_m, contact_y_max_m); once the
+  // strip at the end is loaded, y_c = y_out + (r - 1/2) dy past the end, r = t/(1 - t) (t = q_out/q_in, the
+  // end strip's load over its neighbour's) up to t = 1/2 and 1 + 4 (t - 1/2) beyond (the same slope: C1,
+  // rising as the cut edge carries more). It passes 0 where the contact's edge reaches the end, at every grid
+  // (tests HalfspaceOnProfiles.EdgeValueVanishesWhereTheContactIsAsWideAsTheRoller, ...CutAtTheBodysEdge...).
   double edge_value_m = 0;
   int solves = 0, iterations = 0;     // half-space solves (coarse, fine, enlargements) and their iterations
 };

@@ -12,6 +12,26 @@ namespace {
 // 1/(a + rho) without cancellation when a < 0 (rho^2 - a^2 = b2 > 0)
 double inverse_sum(double a, double rho, double b2) { return a >= 0 ? 1 / (a + rho) : (rho - a) / b2; }
 
+// Cerruti's solution for a shear load along the in-plane axis a (x or y), b the other one, from the corner
+// sums named by those axes: F = int q ln(rho + z), F1 = int q Omega (dF1/dz = F, dF/dz = V); third derivatives
+// of F and F1 not given by a corner function follow from their being harmonic. Writes the components aa, bb,
+// zz, ab, az, bz of the stress per unit load.
+struct CerrutiTerms {
+  double Va, Vb, Vz, Vaa, Vab, Vaz, Habb, Haab, Oa, Ob;
+};
+void cerruti(const CerrutiTerms& S, double z, double nu, double& aa, double& bb, double& zz, double& ab, double& az,
+             double& bz) {
+  const double f = 1 / (2 * kPi);
+  const double Faaa = -S.Habb - S.Vaz;
+  const double F1aaa = -S.Ob - S.Va;
+  aa = f * (2 * (1 + nu) * S.Va + 2 * nu * F1aaa - z * Faaa);
+  bb = f * (2 * nu * S.Va + 2 * nu * S.Ob - z * S.Habb);
+  zz = -f * z * S.Vaz;
+  ab = f * (S.Vb + 2 * nu * S.Oa - z * S.Haab);
+  az = f * (S.Vz - z * S.Vaa);
+  bz = -f * z * S.Vab;
+}
+
 }  // namespace
 
 CornerTerms corner_terms(double X, double Y, double z) {
@@ -75,27 +95,12 @@ RectangleStress stress_from_corners(const CornerTerms& S, double z, double nu) {
   p.xy = -f * ((1 - 2 * nu) * S.Hxy + z * S.Vxy);
   p.xz = -f * z * S.Vxz;
   p.yz = -f * z * S.Vyz;
-  // Cerruti along x: F = int q ln(rho + z), F1 = int q Omega (dF1/dz = F, dF/dz = V); third derivatives of
-  // F and F1 not given by a corner function follow from their being harmonic
-  const double Fxxx = -S.Hxyy - S.Vxz;
-  const double F1xxx = -S.Oy - S.Vx;
-  StressTensor& qx = r.shear_x;
-  qx.xx = f * (2 * (1 + nu) * S.Vx + 2 * nu * F1xxx - z * Fxxx);
-  qx.yy = f * (2 * nu * S.Vx + 2 * nu * S.Oy - z * S.Hxyy);
-  qx.zz = -f * z * S.Vxz;
-  qx.xy = f * (S.Vy + 2 * nu * S.Ox - z * S.Hxxy);
-  qx.xz = f * (S.Vz - z * S.Vxx);
-  qx.yz = -f * z * S.Vxy;
-  // Cerruti along y: the same with x and y exchanged
-  const double Gyyy = -S.Hxxy - S.Vyz;
-  const double G1yyy = -S.Ox - S.Vy;
-  StressTensor& qy = r.shear_y;
-  qy.yy = f * (2 * (1 + nu) * S.Vy + 2 * nu * G1yyy - z * Gyyy);
-  qy.xx = f * (2 * nu * S.Vy + 2 * nu * S.Ox - z * S.Hxxy);
-  qy.zz = -f * z * S.Vyz;
-  qy.xy = f * (S.Vx + 2 * nu * S.Oy - z * S.Hxyy);
-  qy.yz = f * (S.Vz - z * S.Vyy);
-  qy.xz = -f * z * S.Vxy;
+  // Cerruti along x, and along y: the same with x and y exchanged
+  StressTensor &qx = r.shear_x, &qy = r.shear_y;
+  cerruti({S.Vx, S.Vy, S.Vz, S.Vxx, S.Vxy, S.Vxz, S.Hxyy, S.Hxxy, S.Ox, S.Oy}, z, nu,  //
+          qx.xx, qx.yy, qx.zz, qx.xy, qx.xz, qx.yz);
+  cerruti({S.Vy, S.Vx, S.Vz, S.Vyy, S.Vxy, S.Vyz, S.Hxxy, S.Hxyy, S.Oy, S.Ox}, z, nu,  //
+          qy.yy, qy.xx, qy.zz, qy.xy, qy.yz, qy.xz);
   return r;
 }
 
