@@ -599,6 +599,9 @@ SweepOutput read_sweep_output(const fs::path& dir) {
   const Table t = read_table(dir / "results.csv");
   static const std::vector<std::string> kTail = {"life_revolutions", "ended_by", "max_depth_m", "worn_volume_m3",
                                                  "status", "message"};
+  // a fatigue sweep's (docs/fatigue.md): max_damage after worn_volume_m3
+  static const std::vector<std::string> kFatigueTail = {"life_revolutions", "ended_by", "max_depth_m", "worn_volume_m3",
+                                                        "max_damage", "status", "message"};
   // a contact sweep's outputs, as session/sweep.h writes them: "index,<outputs>,status,message" with no keys
   static const std::vector<std::string> kContactTail = [] {
     std::vector<std::string> tail;
@@ -614,13 +617,14 @@ SweepOutput read_sweep_output(const fs::path& dir) {
     return n >= tail.size() + 2 && t.header.front() == "index" && std::equal(tail.begin(), tail.end(), t.header.end() - static_cast<long>(tail.size()));
   };
   o.contact = ends_with(kContactTail);
+  const bool fatigue = !o.contact && ends_with(kFatigueTail);
   std::string contact_columns;
   for (const std::string& c : kContactTail) contact_columns += (contact_columns.empty() ? "" : ", ") + c;
-  if (!o.contact && !ends_with(kTail))
+  if (!o.contact && !fatigue && !ends_with(kTail))
     throw bad_input(fmt::format("{}: not a sweep's results table (index, the varied keys, then life_revolutions, ended_by, "
                                 "max_depth_m, worn_volume_m3, status, message; or a contact sweep's {})",
                                 where(t.path, t.header_line), contact_columns));
-  const std::size_t tail = o.contact ? kContactTail.size() : kTail.size();
+  const std::size_t tail = o.contact ? kContactTail.size() : fatigue ? kFatigueTail.size() : kTail.size();
   o.keys.assign(t.header.begin() + 1, t.header.end() - static_cast<long>(tail));
   if (o.contact) o.output_names.assign(kContactTail.begin(), kContactTail.end() - 2);
   for (const std::string& k : o.keys) o.base.push_back(base.count(k) ? base[k] : std::numeric_limits<double>::quiet_NaN());
@@ -644,9 +648,9 @@ SweepOutput read_sweep_output(const fs::path& dir) {
       o.cases.push_back(std::move(c));
       continue;
     }
-    c.life = number(n - 6);
+    c.life = number(1 + o.keys.size());  // life_revolutions, ended_by right after the inputs
     try {
-      const wear::LifeEnd end = wear::parse_life_end(row[n - 5]);
+      const wear::LifeEnd end = wear::parse_life_end(row[2 + o.keys.size()]);
       c.censored = end == wear::LifeEnd::Revolutions || end == wear::LifeEnd::MaxSteps;
     } catch (const std::invalid_argument& e) {
       throw bad_input(fmt::format("{}: malformed row: ended_by: {}", where(t.path, t.row_lines[r]), e.what()));

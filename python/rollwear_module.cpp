@@ -508,7 +508,8 @@ py::dict run_result(const CaseSource& source) {
       rows.push_back({static_cast<double>(s.step), s.N, s.N * hours_per_rev, wear::max_depth_m(*m, h),
                       wear::worn_volume_m3(*m, h, 1) + wear::worn_volume_m3(*m, h, 2), wear::dissipated_energy_J(*m, h),
                       k.a_m, k.b_m, k.p0_Pa, k.Fx_N, k.power_W, s.info.step, s.info.error_estimate,
-                      static_cast<double>(s.info.rejected), static_cast<double>(s.info.rhs_evals)});
+                      static_cast<double>(s.info.rejected), static_cast<double>(s.info.rhs_evals),
+                      wear::max_damage(*m, h)});
     };
     observer.on_step = [&](const wear::LifeStep&) {
       return !signals.interrupted();  // false stops the life (LifeEnd::Stopped)
@@ -526,11 +527,13 @@ py::dict run_result(const CaseSource& source) {
   }
   signals.rethrow();
 
-  static const char* const kColumns[15] = {"step", "revolutions", "hours", "max_depth_m", "worn_volume_m3",
+  static const char* const kColumns[16] = {"step", "revolutions", "hours", "max_depth_m", "worn_volume_m3",
                                            "dissipated_J", "a_m", "b_m", "p0_Pa", "Fx_N", "power_W",
-                                           "step_revolutions", "error_estimate", "rejected", "rhs_evals"};
-  py::dict steps;  // summary.csv's columns
-  for (std::size_t i = 0; i < 15; ++i) {
+                                           "step_revolutions", "error_estimate", "rejected", "rhs_evals",
+                                           "max_damage"};
+  py::dict steps;  // summary.csv's columns (max_damage with wear.fatigue, as summary.csv)
+  const std::size_t columns = m->fatigue ? 16 : 15;
+  for (std::size_t i = 0; i < columns; ++i) {
     std::vector<double> col;
     for (const std::vector<double>& r : rows) col.push_back(r[i]);
     steps[kColumns[i]] = array(col);
@@ -577,6 +580,22 @@ py::dict run_result(const CaseSource& source) {
   summary["error_estimate_N"] = life.error.N;
   summary["error_power_rel"] = life.error.power_rel;
   summary["error_power_l1"] = life.error.power_l1;
+  // which failure mode is how far at the end (wear::failure_margins, docs/fatigue.md): with wear.fatigue or
+  // wear.limits.shakedown, the numbers report.txt writes
+  const bool margins = m->fatigue || m->limits.shakedown || m->limits.scuffing || m->thermal;
+  if (m->limits.max_depth_m > 0 && margins)
+    summary["depth_fraction"] = wear::max_depth_m(*m, life.state) / m->limits.max_depth_m;
+  if (m->fatigue) {
+    summary["fatigue_law"] = wear::to_string(m->fatigue->law);
+    summary["max_damage"] = wear::max_damage(*m, life.state);
+    summary["max_damage_y_m"] = wear::max_damage_y_m(*m, life.state);
+    summary["max_tgamma_N"] = life.contact.max_tgamma_N;
+  }
+  if (margins && m->shear_yield_Pa > 0) summary["shakedown_margin"] = life.contact.shakedown_margin;
+  if (m->thermal) {
+    summary["flash_rise_K"] = life.contact.flash_rise_K;
+    if (m->thermal->critical_temperature_C) summary["scuffing_margin_K"] = life.contact.scuffing_margin_K;
+  }
   py::dict out;
   out["summary"] = summary;
   out["steps"] = steps;

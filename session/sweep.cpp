@@ -157,6 +157,7 @@ Sweep read_sweep(const std::string& path) {
     try {
       const YAML::Node b = contact::load_yaml_file(resolve_base(path, base).string());
       if (b.IsMap() && !b["wear"]) s.kind = SweepKind::Contact;
+      if (b.IsMap() && b["wear"] && b["wear"].IsMap() && b["wear"]["fatigue"]) s.fatigue = true;
     } catch (const std::exception&) {
     }
     m.optional_section("output", [&](YamlMap& o) {
@@ -510,17 +511,19 @@ CaseStatus parse_case_status(const std::string& word) {
 
 namespace {
 // the columns of a case's outputs, between the inputs and the status
-const char* output_columns(SweepKind kind) {
-  return kind == SweepKind::Contact ? "a_m,b_m,p0_Pa,approach_m,Fx_N,Fy_N,Mz_N_m,power_W,stick_fraction"
-                                    : "life_revolutions,ended_by,max_depth_m,worn_volume_m3";
+std::string output_columns(SweepKind kind, bool fatigue) {
+  if (kind == SweepKind::Contact) return "a_m,b_m,p0_Pa,approach_m,Fx_N,Fy_N,Mz_N_m,power_W,stick_fraction";
+  return std::string("life_revolutions,ended_by,max_depth_m,worn_volume_m3") + (fatigue ? ",max_damage" : "");
 }
-std::size_t output_column_count(SweepKind kind) { return kind == SweepKind::Contact ? 9 : 4; }
+std::size_t output_column_count(SweepKind kind, bool fatigue) {
+  return kind == SweepKind::Contact ? 9 : (fatigue ? 5 : 4);
+}
 }  // namespace
 
-std::string results_header(const std::vector<std::string>& keys, SweepKind kind) {
+std::string results_header(const std::vector<std::string>& keys, SweepKind kind, bool fatigue) {
   std::string h = "index";
   for (const std::string& k : keys) h += "," + csv_field(k);
-  return h + "," + output_columns(kind) + ",status,message\n";
+  return h + "," + output_columns(kind, fatigue) + ",status,message\n";
 }
 
 std::string results_row(const CaseOutcome& o) {
@@ -533,14 +536,15 @@ std::string results_row(const CaseOutcome& o) {
   } else {
     r += "," + round_trip(o.life_revolutions) + "," + to_string(o.ended_by) + "," + round_trip(o.max_depth_m) + "," +
          round_trip(o.worn_volume_m3);
+    if (o.fatigue) r += "," + round_trip(o.max_damage);
   }
   r += "," + to_string(o.status) + "," + csv_field(o.message);
   return r + "\n";
 }
 
-CaseStatus row_status(const std::string& row, std::size_t keys, SweepKind kind) {
+CaseStatus row_status(const std::string& row, std::size_t keys, SweepKind kind, bool fatigue) {
   std::size_t at = 0;
-  for (std::size_t k = 0; k < keys + 1 + output_column_count(kind); ++k) {  // index, the inputs, the outputs
+  for (std::size_t k = 0; k < keys + 1 + output_column_count(kind, fatigue); ++k) {  // index, the inputs, the outputs
     at = row.find(',', at);
     if (at == std::string::npos) throw std::invalid_argument("not a results row: " + contact::clipped(row));
     ++at;
@@ -563,6 +567,12 @@ CaseOutcome run_case(const std::string& yaml_text, long index, const std::vector
   CaseOutcome o;
   o.index = index;
   o.inputs = inputs;
+  // the row's max_damage column: from the text, so that a case refused as bad input has it too
+  try {
+    const YAML::Node doc = YAML::Load(yaml_text);
+    o.fatigue = doc.IsMap() && doc["wear"] && doc["wear"].IsMap() && doc["wear"]["fatigue"];
+  } catch (const std::exception&) {
+  }
   std::filesystem::create_directories(dir);
   remove_stale_temporaries(dir);
   const std::filesystem::path case_path = dir / "case.yaml";
@@ -604,6 +614,7 @@ CaseOutcome run_case(const std::string& yaml_text, long index, const std::vector
     o.ended_by = life.ended_by;
     o.max_depth_m = max_depth_m(m, life.state);
     o.worn_volume_m3 = (m.n1 > 0 ? worn_volume_m3(m, life.state, 1) : 0.0) + (m.n2 > 0 ? worn_volume_m3(m, life.state, 2) : 0.0);
+    if (o.fatigue) o.max_damage = max_damage(m, life.state);
     const bool failed = life.ended_by == LifeEnd::Failed || life.ended_by == LifeEnd::NotRun;
     o.status = failed ? CaseStatus::Failed : CaseStatus::Ok;
     o.message = life.message;
@@ -882,7 +893,7 @@ SweepRunSummary run_sweep(const Sweep& s, const SweepRunOptions& o) {
   long done = summary.resumed, failed = 0;
   const std::size_t nkeys = varied_keys(s).size();
   for (const auto& [i, row] : rows)
-    if (row_status(row, nkeys, s.kind) != CaseStatus::Ok) ++failed;
+    if (row_status(row, nkeys, s.kind, s.fatigue) != CaseStatus::Ok) ++failed;
   std::size_t running = 0;
   std::exception_ptr error;  // a failure outside a case's own (the disk): the first one ends the sweep, exit 1
   const auto work = [&] {
@@ -922,7 +933,7 @@ SweepRunSummary run_sweep(const Sweep& s, const SweepRunOptions& o) {
       if (journal) journal->append(row);
       rows[row_index(row)] = row;
       ++done;
-      if (row_status(row, nkeys, s.kind) != CaseStatus::Ok) ++failed;
+      if (row_status(row, nkeys, s.kind, s.fatigue) != CaseStatus::Ok) ++failed;
       const double elapsed_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
       if (o.progress && (elapsed_s - last_report_s >= o.progress_interval_s || done == summary.cases)) {
         o.progress(done, failed, summary.cases, elapsed_s);
@@ -958,10 +969,10 @@ SweepRunSummary run_sweep(const Sweep& s, const SweepRunOptions& o) {
   if (error) std::rethrow_exception(error);
   if (cancelled) throw SweepCancelled(fmt::format("sweep {}: cancelled after {} of {} cases", s.path, done, summary.cases));
   summary.failed = 0;
-  std::string table = results_header(varied_keys(s), s.kind);
+  std::string table = results_header(varied_keys(s), s.kind, s.fatigue);
   for (const auto& [i, row] : rows) {
     table += row;
-    if (row_status(row, nkeys, s.kind) != CaseStatus::Ok) ++summary.failed;
+    if (row_status(row, nkeys, s.kind, s.fatigue) != CaseStatus::Ok) ++summary.failed;
   }
   std::string info = fmt::format("fingerprint {:016x}\ncases {}\nshard {}/{}\nsampling {}\nseed {}\n", fingerprint,
                                  total, o.shard_k, o.shard_n, sampling_name(s), s.seed);

@@ -65,6 +65,7 @@ struct Sweep {
   std::string output_directory;   // output.directory, "" when not given
   bool case_files = true;         // output.case_files: each case's folder (case_NNNN/) written; false: the table alone
   SweepKind kind = SweepKind::Wear;  // from the base case: Contact when it has no wear: section
+  bool fatigue = false;              // the base case has wear.fatigue: results.csv gains max_damage
   Sampling sampling = Sampling::Grid;
   Combine combine = Combine::Product;
   std::vector<SweepAxis> axes;    // grid
@@ -163,13 +164,17 @@ struct CaseOutcome {
   wear::LifeEnd ended_by = wear::LifeEnd::NotRun;
   double max_depth_m = std::numeric_limits<double>::quiet_NaN();
   double worn_volume_m3 = std::numeric_limits<double>::quiet_NaN();
+  // the case has wear.fatigue (docs/fatigue.md): its row carries max_damage after worn_volume_m3
+  bool fatigue = false;
+  double max_damage = std::numeric_limits<double>::quiet_NaN();
   CaseStatus status = CaseStatus::Error;  // the pessimistic default
   std::string message;
 };
-std::string results_header(const std::vector<std::string>& keys, SweepKind kind = SweepKind::Wear);
+// a wear sweep whose base case has wear.fatigue (fatigue) has a max_damage column after worn_volume_m3
+std::string results_header(const std::vector<std::string>& keys, SweepKind kind = SweepKind::Wear, bool fatigue = false);
 std::string results_row(const CaseOutcome& o);  // one line, ending in '\n'
 // a row's status (the inputs before it are `keys` columns); std::invalid_argument for a line that has none
-CaseStatus row_status(const std::string& row, std::size_t keys, SweepKind kind = SweepKind::Wear);
+CaseStatus row_status(const std::string& row, std::size_t keys, SweepKind kind = SweepKind::Wear, bool fatigue = false);
 // the leading index of a row; throws std::invalid_argument for a line that has none
 long row_index(const std::string& row);
 

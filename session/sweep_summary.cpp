@@ -147,19 +147,23 @@ std::string sweep_summary(const std::string& results_csv, const std::string& swe
   std::getline(table, header);
   const std::vector<std::string> head = split_fields(header, 1000);
   if (head.size() < 7) throw std::invalid_argument("sweep_summary: not a results table");
-  const std::size_t k = head.size() - 7;
+  // the inputs run from after the index to life_revolutions; a fatigue sweep's max_damage follows worn_volume_m3
+  const auto life_column = std::find(head.begin(), head.end(), "life_revolutions");
+  if (life_column == head.end()) throw std::invalid_argument("sweep_summary: not a results table (no life_revolutions)");
+  const std::size_t k = static_cast<std::size_t>(life_column - head.begin()) - 1;
+  const std::size_t status_column = head.size() - 2;  // status, message last
   const std::vector<std::string> keys(head.begin() + 1, head.begin() + 1 + static_cast<long>(k));
   std::vector<TableRow> rows;
   for (std::string line; std::getline(table, line);) {
     if (line.empty()) continue;
-    const std::vector<std::string> f = split_fields(line, k + 7);
+    const std::vector<std::string> f = split_fields(line, head.size());
     TableRow r;
     r.index = row_index(line);
     for (std::size_t a = 0; a < k; ++a) r.inputs.push_back(to_double(f[1 + a]));
     r.life = to_double(f[1 + k]);
     const LifeEnd end = parse_life_end(f[2 + k]);
     r.censored = end == LifeEnd::Revolutions || end == LifeEnd::MaxSteps;
-    r.ok = parse_case_status(f[5 + k]) == CaseStatus::Ok;
+    r.ok = parse_case_status(f[status_column]) == CaseStatus::Ok;
     rows.push_back(r);
   }
   std::vector<const TableRow*> ok;

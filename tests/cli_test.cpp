@@ -1438,5 +1438,81 @@ TEST_F(CommandLine, TransientRemovesStaleTemporariesOfItsOwnNaming) {
   EXPECT_TRUE(fs::exists(out / ("strip_power.csv.tmp." + live)));
 }
 
+// ---- run with wear.fatigue (docs/fatigue.md) ----
+
+// the shipped fatigue case on a 40 x 40 grid with the stepping (and the solver's line) replaced
+fs::path fatigue_case(const fs::path& dir, const std::string& name, const std::string& stepping,
+                      const std::string& solver = "solver:     { normal: auto, nx: 40, ny: 40 }") {
+  std::string text = read_text(kSource / "cases" / "paper-wear-fatigue.yaml");
+  const auto replace = [&](const std::string& from, const std::string& to) {
+    const std::size_t at = text.find(from);
+    EXPECT_NE(at, std::string::npos) << from;
+    if (at != std::string::npos) text.replace(at, from.size(), to);
+  };
+  replace("solver:     { normal: auto, nx: 80, ny: 80 }", solver);
+  replace("stepping: { method: adaptive, rtol: 1.0e-3, atol_m: 1.0e-9 }", stepping + "\n  checkpoint_interval_s: 0.02");
+  const fs::path p = dir / name;
+  std::ofstream(p) << text;
+  return p;
+}
+
+// The damage is part of the life's state, so the checkpoint carries it: killed and resumed, a fixed-stepping life
+// with fatigue ends bit-identical to an uninterrupted one, by fatigue, its damage column and margins included.
+TEST_F(CommandLine, FatigueRunKilledAndResumedEndsBitIdentical) {
+  const fs::path c = fatigue_case(dir_, "fatigue.yaml", "stepping: { method: fixed-depth, max_depth_step_m: 2.0e-7 }");
+  const fs::path whole = dir_ / "whole", killed = dir_ / "killed";
+  ASSERT_EQ(rollwear("run " + quoted(c) + " -o " + quoted(whole) + " --log-level error", dir_).exit_code, 0);
+  run_and_kill({"run", c.string(), "-o", killed.string(), "--quiet"}, killed / "checkpoint.txt", 150,
+               dir_ / "killed.log");
+  ASSERT_TRUE(fs::exists(killed / "checkpoint.txt"));
+  const ProcessResult r = rollwear("run " + quoted(c) + " -o " + quoted(killed) + " --resume --log-level error", dir_);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string a = read_text(whole / "report.txt"), b = read_text(killed / "report.txt");
+  EXPECT_EQ(report_value(a, "ended_by"), "fatigue");
+  EXPECT_EQ(report_value(b, "resumed"), "true");
+  for (const char* key : {"ended_by", "message", "revolutions", "max_depth_m", "dissipated_J", "steps", "rhs_evals",
+                          "depth_fraction", "max_damage", "max_damage_y_m", "max_tgamma_N"})
+    EXPECT_EQ(report_value(a, key), report_value(b, key)) << key;
+  EXPECT_EQ(read_text(whole / "summary.csv"), read_text(killed / "summary.csv"));
+  const std::vector<std::string> summary = lines_of(read_text(whole / "summary.csv"));
+  EXPECT_NE(std::find_if(summary.begin(), summary.end(),
+                         [](const std::string& l) { return l.rfind("step,", 0) == 0 && l.find(",max_damage") != std::string::npos; }),
+            summary.end());
+}
+
+// The corrected fidelity's correction holds the wear nodes' rates only (not the damage's): its checkpoint line says
+// how many, and a killed corrected life with fatigue resumes bit-identical
+TEST_F(CommandLine, CorrectedFatigueRunKilledAndResumedEndsBitIdentical) {
+  const fs::path c = fatigue_case(dir_, "corrected.yaml", "stepping: { method: fixed-depth, max_depth_step_m: 2.0e-6 }",
+                                  "solver:     { normal: auto, fidelity: corrected, correction_tolerance: 0.5, nx: 20, ny: 20 }");
+  const fs::path whole = dir_ / "whole", killed = dir_ / "killed";
+  ASSERT_EQ(rollwear("run " + quoted(c) + " -o " + quoted(whole) + " --log-level error", dir_).exit_code, 0);
+  run_and_kill({"run", c.string(), "-o", killed.string(), "--quiet"}, killed / "checkpoint.txt", 12,
+               dir_ / "killed.log");
+  ASSERT_TRUE(fs::exists(killed / "checkpoint.txt"));
+  const ProcessResult r = rollwear("run " + quoted(c) + " -o " + quoted(killed) + " --resume --log-level error", dir_);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string a = read_text(whole / "report.txt"), b = read_text(killed / "report.txt");
+  EXPECT_EQ(report_value(b, "resumed"), "true");
+  EXPECT_EQ(report_value(a, "fidelity"), "corrected");
+  for (const char* key : {"ended_by", "revolutions", "max_depth_m", "dissipated_J", "steps", "exact_solves",
+                          "error_power_rel", "max_damage", "depth_fraction"})
+    EXPECT_EQ(report_value(a, key), report_value(b, key)) << key;
+}
+
+TEST_F(CommandLine, RunWithBadFatigueKeyExitsTwoNamingFileLineAndKey) {
+  const fs::path c = fatigue_case(dir_, "bad.yaml", "stepping: { method: adaptive }");
+  std::string text = read_text(c);
+  const std::size_t at = text.find("zero_at_N: 175");
+  ASSERT_NE(at, std::string::npos);
+  text.replace(at, 14, "zero_at_N: 50");
+  std::ofstream(c) << text;
+  const ProcessResult r = rollwear("run " + quoted(c) + " -o " + quoted(dir_ / "w"), dir_);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find(c.string() + ":28:"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("wear.fatigue.zero_at_N: must be above peak_at_N = 65"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("terminate"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace contact

@@ -519,6 +519,39 @@ TEST_F(SweepFile, GridElasticityOfArchardsCoefficientIsMinusOne) {
   EXPECT_NE(line.find("central"), std::string::npos) << summary;
 }
 
+// A sweep of a fatigue case (docs/fatigue.md): results.csv carries max_damage after worn_volume_m3; at 10 % slip the
+// life ends by fatigue (damage 1), at 5 % by wear with the damage short of 1; the summary and the plot read the table
+TEST_F(SweepFile, FatigueSweepCarriesTheDamageColumn) {
+  std::string base = read_text(kSource / "cases" / "paper-wear-fatigue.yaml");
+  base = std::regex_replace(base, std::regex("nx: 80, ny: 80"), "nx: 24, ny: 24");
+  base = std::regex_replace(base, std::regex("snapshots_revolutions:.*\n"), "");
+  base = std::regex_replace(base, std::regex("output:.*\n"), "");
+  write_text(dir_ / "fatigue.yaml", base);
+  write_text(dir_ / "sweep.yaml", "base: fatigue.yaml\naxes:\n  - { key: kinematics.xi, values: [0.05, 0.1] }\n");
+  const Process p = rollwear("sweep " + q(dir_ / "sweep.yaml") + " -o " + q(dir_ / "out") + " -q --log-level warn", dir_);
+  ASSERT_EQ(p.exit_code, 0) << p.err;
+  std::istringstream table(read_text(dir_ / "out" / "results.csv"));
+  std::string header, slow, fast;
+  std::getline(table, header);
+  std::getline(table, slow);
+  std::getline(table, fast);
+  EXPECT_EQ(header, "index,kinematics.xi,life_revolutions,ended_by,max_depth_m,worn_volume_m3,max_damage,status,message");
+  const auto field = [](const std::string& row, int k) {
+    std::istringstream in(row);
+    std::string f;
+    for (int i = 0; i <= k; ++i) std::getline(in, f, ',');
+    return f;
+  };
+  EXPECT_EQ(field(slow, 3), "edge") << slow;
+  EXPECT_GT(std::stod(field(slow, 6)), 0.1) << slow;
+  EXPECT_LT(std::stod(field(slow, 6)), 1.0) << slow;
+  EXPECT_EQ(field(fast, 3), "fatigue") << fast;
+  EXPECT_NEAR(std::stod(field(fast, 6)), 1.0, 1e-9) << fast;
+  EXPECT_EQ(field(fast, 7), "ok") << fast;
+  EXPECT_NE(read_text(dir_ / "out" / "summary.txt").find("2 ok"), std::string::npos) << read_text(dir_ / "out" / "summary.txt");
+  EXPECT_EQ(rollwear("plot " + q(dir_ / "out"), dir_).exit_code, 0);
+}
+
 // Kaplan-Meier by hand (summary.txt's B10 and B50, the plot's curve): lives 1, 2 (censored), 3, 4:
 // F(1) = 1/4; at 3, two at risk: S = 3/4 x 1/2, F = 5/8; at 4, one at risk: F = 1. A censoring tied
 // with a failure is after it (it was at risk then).

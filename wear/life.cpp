@@ -16,9 +16,10 @@ namespace wear {
 namespace {
 
 // the report's words (lib/enum_names.h)
-constexpr contact::EnumTable<LifeEnd, 9> kLifeEndWords = {
+constexpr contact::EnumTable<LifeEnd, 12> kLifeEndWords = {
     {{LifeEnd::NotRun, "not_run"}, {LifeEnd::MaxDepth, "max_depth"}, {LifeEnd::MaxPressure, "max_pressure"},
-     {LifeEnd::Edge, "edge"}, {LifeEnd::LiftLoss, "lift_loss"}, {LifeEnd::Revolutions, "revolutions"},
+     {LifeEnd::Edge, "edge"}, {LifeEnd::LiftLoss, "lift_loss"}, {LifeEnd::Fatigue, "fatigue"},
+     {LifeEnd::Shakedown, "shakedown"}, {LifeEnd::Scuffing, "scuffing"}, {LifeEnd::Revolutions, "revolutions"},
      {LifeEnd::MaxSteps, "max_steps"}, {LifeEnd::Stopped, "stopped"}, {LifeEnd::Failed, "failed"}}};
 constexpr contact::EnumTable<LifeFailure, 6> kLifeFailureWords = {
     {{LifeFailure::None, "none"}, {LifeFailure::Integrator, "integrator"},

@@ -29,6 +29,9 @@ enum class LifeEnd {
   MaxPressure,  // the peak pressure exceeded its limit (located; the roller's wear loop)
   Edge,         // the contact reached the end of the profiles' overlap (located; the roller's wear loop)
   LiftLoss,     // the follower's lift dropped by its limit at some cam angle (located; the cam)
+  Fatigue,      // the fatigue damage reached 1 somewhere on the reference body (located; wear.fatigue, docs/fatigue.md)
+  Shakedown,    // the load left Johnson's shakedown map (located; wear.limits.shakedown)
+  Scuffing,     // the flash temperature reached Blok's critical temperature (located; wear.limits.scuffing)
   Revolutions,  // the budget of revolutions, with no limit reached
   MaxSteps,     // the stepping's max_steps
   Stopped,      // the caller's on_step returned false
@@ -43,7 +46,8 @@ enum class LifeFailure {
   NormalNotConverged,  // wear::NormalNotConverged
   Rate,                // the rate's producer threw (the cam's revolution)
 };
-// the report's words: max_depth, max_pressure, edge, lift_loss, revolutions, max_steps, stopped, failed, not_run
+// the report's words: max_depth, max_pressure, edge, lift_loss, fatigue, shakedown, scuffing, revolutions, max_steps, stopped,
+// failed, not_run
 std::string to_string(LifeEnd e);
 // the inverse of to_string; throws std::invalid_argument naming the word and the valid ones
 LifeEnd parse_life_end(const std::string& word);

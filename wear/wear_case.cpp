@@ -66,6 +66,26 @@ void read_law(YamlMap& m, WearLaw& law) {
   }
 }
 
+// wear.fatigue: the law and its values; validate()'s message is moved to the key and its line
+void read_fatigue(YamlMap& m, FatigueSection& f) {
+  std::string name = to_string(f.law);
+  m.required("law", name);
+  try {
+    f.law = parse_fatigue_law(name);
+  } catch (const contact::SettingError& e) {
+    m.fail("law", e.problem);
+  }
+  m.optional("threshold_N", f.burstow.threshold_N);
+  m.optional("peak_at_N", f.burstow.peak_at_N);
+  m.optional("zero_at_N", f.burstow.zero_at_N);
+  m.optional("peak_damage", f.burstow.peak_damage);
+  try {
+    validate(f.burstow);
+  } catch (const contact::SettingError& e) {
+    m.fail(e.key, e.problem);
+  }
+}
+
 // wear.stepping.method's names (lib/enum_names.h)
 using Method = IntegratorOptions::Method;
 constexpr contact::EnumTable<Method, 3> kSteppingMethods = {
@@ -104,7 +124,10 @@ void read_wear(YamlMap& m, WearSection& w, std::optional<YamlValue>& collective)
     s.optional("max_depth_m", w.limits.max_depth_m, contact::nonnegative_finite);
     s.optional("max_pressure_Pa", w.limits.max_pressure_Pa, contact::nonnegative_finite);
     s.optional("edge", w.limits.edge);
+    s.optional("shakedown", w.limits.shakedown);
+    s.optional("scuffing", w.limits.scuffing);
   });
+  m.optional_section("fatigue", [&](YamlMap& s) { read_fatigue(s, w.fatigue.emplace()); });
   m.optional_section("stepping", [&](YamlMap& s) { read_stepping(s, w.stepping); });
   m.optional("smoothing_wavelength_m", w.smoothing_wavelength_m, contact::in_closed(0, 0.1));
   m.optional_value("snapshots_revolutions", [&](const YamlValue& v) {
@@ -165,7 +188,17 @@ void validate(const WearCase& c) {
   using contact::where;
   const contact::ContactCase& k = c.contact;
   const WearSection& w = c.wear;
-  contact::refuse_lubrication_and_thermal(k, "run");  // the wear loop does not take the regime yet
+  // the wear loop does not take the lubrication regime yet; the flash temperature (thermal:) it computes per
+  // evaluation of a steady duty cycle (the scuffing margin, docs/fatigue.md)
+  if (k.lubricant)
+    throw key_error(k, "lubricant", "lubricant: the 'run' command does not use this section yet (the film, the regime "
+                    "and the flash temperature are reported by 'contact'); remove it");
+  if (k.thermal && k.transient)
+    throw key_error(k, "thermal", "thermal, transient: a wear run computes the flash temperature of a steady duty "
+                    "cycle; remove the thermal: section or the transient: one");
+  if (w.limits.scuffing && !(k.thermal && k.thermal->critical_temperature_C && k.thermal->bulk_temperature_C))
+    throw key_error(k, "wear.limits.scuffing", "wear.limits.scuffing, thermal: the scuffing limit needs the flash "
+                    "temperature's thermal: section with bulk_temperature_C and critical_temperature_C (Blok's criterion)");
   if (!k.profiles)
     throw key_error(k, "wear", "wear, profiles: the worn body needs a lateral profile; give a profiles: "
                     "section (e.g. body1: { crowned: { Ry_m: 0.5, width_m: 0.02 } })");
@@ -210,6 +243,15 @@ void validate(const WearCase& c) {
       !(w.stepping.step_revolutions > 0))
     throw key_error(k, "wear.stepping", "wear.stepping.step_revolutions: fixed-revolutions needs a step > 0");
   if (!w.collective.empty()) validate_collective(c);
+  // the shakedown limit reads the reference body's shear yield stress k
+  if (w.limits.shakedown) {
+    const int reference = w.body1 ? 1 : 2;
+    const double k_Pa = reference == 1 ? k.bodies.body1.shear_yield_Pa : k.bodies.body2.shear_yield_Pa;
+    if (!(k_Pa > 0))
+      throw key_error(k, "wear.limits.shakedown", fmt::format("wear.limits.shakedown, bodies.body{0}.shear_yield_Pa: the "
+                      "shakedown limit needs the shear yield stress k of body{0}, the reference body (the first that "
+                      "wears); give bodies.body{0}.shear_yield_Pa", reference));
+  }
   // the corrected fidelity (docs/fidelity.md): the exact theory needs friction; steady duty cycles only so far
   if (k.solver.fidelity == contact::Fidelity::Corrected) {
     if (!(k.friction.mu > 0))

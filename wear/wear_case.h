@@ -11,12 +11,14 @@
 //   wear:
 //     body1: { law: energy, k_E_m3_per_J: 1.0e-13 }   # the body that wears, with its law (and/or body2)
 //     revolutions: 1.0e9            # the life budget, revolutions of the reference body (required)
-//     limits: { max_depth_m: 1.0e-4, max_pressure_Pa: 0, edge: true }   # 0 = no such limit
+//     limits: { max_depth_m: 1.0e-4, max_pressure_Pa: 0, edge: true, shakedown: false, scuffing: false }
 //     stepping: { method: adaptive, rtol: 1.0e-3, atol_m: 1.0e-9,
 //                 max_depth_step_m: 1.0e-5, step_revolutions: 0, max_steps: 100000 }
 //     smoothing_wavelength_m: 5.0e-4    # cut-off of the volume-conserving Gaussian filter; 0 = none
 //     snapshots_revolutions: [1.0e7, 3.0e7]   # worn profiles written there (and at the start and end)
 //     checkpoint_interval_s: 10      # wall time between checkpoints (the last step is always saved)
+//     fatigue: { law: burstow, threshold_N: 20, peak_at_N: 65, zero_at_N: 175, peak_damage: 1.0e-5 }
+//                                    # optional: fatigue damage per strip, Miner (wear/fatigue.h, docs/fatigue.md)
 //     collective:                    # optional: running conditions and their shares (wear/collective.h)
 //       - { weight: 0.7 }                                            # the case's own condition
 //       - { weight: 0.3, load: { normal_load_N: 2500 }, kinematics: { xi: 2.0e-3 } }
@@ -31,6 +33,7 @@
 #include <vector>
 
 #include "lib/io/case.h"
+#include "wear/fatigue.h"
 #include "wear/integrator.h"
 #include "wear/wear_law.h"
 
@@ -44,6 +47,12 @@ struct WearLimits {
   double max_depth_m = 0;      // the life ends when the maximum worn depth reaches it; 0 = none
   double max_pressure_Pa = 0;  // ... when the peak contact pressure exceeds it; 0 = none
   bool edge = true;            // ... when the contact reaches a body's edge
+  // ... when the load leaves Johnson's shakedown map (lib/subsurface/shakedown.h: the margin limit / (p0/k) - 1
+  // crosses 0), k the reference body's bodies.bodyN.shear_yield_Pa; off unless asked (docs/fatigue.md)
+  bool shakedown = false;
+  // ... when the flash temperature reaches Blok's critical one (lib/thermal, docs/fatigue.md: the scuffing margin
+  // thermal.critical_temperature_C - (bulk + flash) crosses 0); needs the thermal: section with both temperatures
+  bool scuffing = false;
 };
 
 struct WearStepping {
@@ -72,6 +81,9 @@ struct WearSection {
   std::vector<double> snapshots_revolutions;  // increasing, in (0, revolutions]
   double checkpoint_interval_s = 10;
   std::vector<WearCondition> collective;  // empty: the case's own running condition alone
+  // rolling-contact fatigue damage accumulated over the life (wear/fatigue.h, docs/fatigue.md): damage 1 on the
+  // reference body ends the life (LifeEnd::Fatigue); without the section there is none
+  std::optional<FatigueSection> fatigue;
 };
 
 struct WearCase {

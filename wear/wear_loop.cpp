@@ -18,6 +18,8 @@
 #include "lib/numeric.h"
 #include "lib/errors.h"
 #include "lib/model/contact_model.h"
+#include "lib/subsurface/shakedown.h"
+#include "lib/thermal/flash_temperature.h"
 #include "wear/collective.h"
 #include "wear/profile_update.h"
 
@@ -50,6 +52,8 @@ struct DutyCycleEnergy {
   double duration_s = 0;
   double Fx_N = 0;
   double dissipated_J = 0;
+  double flash_rise_K = std::numeric_limits<double>::quiet_NaN();  // with the model's thermal: section
+  double scuffing_margin_K = std::numeric_limits<double>::quiet_NaN();
 };
 
 DutyCycleEnergy duty_cycle_energy(const WearModel& m, const contact::ContactPatch& patch, bool need_fields) {
@@ -60,7 +64,7 @@ DutyCycleEnergy duty_cycle_energy(const WearModel& m, const contact::ContactPatc
         contact::make_tangential_problem(patch, m.materials, m.creepages, m.mu, m.speed_m_per_s);
     // the case's model (lib/model/contact_model.h); the exact theory's solve may not converge
     contact::SteadyModelSolution solved =
-        contact::solve_tangential_steady(m.scheme, patch, m.materials, problem, need_fields);
+        contact::solve_tangential_steady(m.scheme, patch, m.materials, problem, need_fields || m.thermal.has_value());
     if (!solved.status.converged())
       throw contact::SolverError("wear rate: exact steady solve: " + solved.status.message);
     const contact::TangentialSolution& s = solved.solution;
@@ -70,6 +74,15 @@ DutyCycleEnergy duty_cycle_energy(const WearModel& m, const contact::ContactPatc
     d.Fx_N = s.Fx_N;
     d.dissipated_J = s.power_W * d.duration_s;
     if (need_fields) d.stretches.push_back(cell_fields(patch, s, m.mu, m.speed_m_per_s, d.duration_s));
+    // the flash temperature of the frictional power (lib/thermal: Jaeger's band per strip, Blok's partition)
+    if (m.thermal) {
+      const contact::FlashTemperature flash = contact::flash_temperature(
+          patch.grid, s.power_W_per_m2, m.v1_m_per_s, m.v2_m_per_s, m.thermal->body1, m.thermal->body2, patch.a_m);
+      d.flash_rise_K = flash.max_rise_K;
+      if (m.thermal->bulk_temperature_C && m.thermal->critical_temperature_C)
+        d.scuffing_margin_K = contact::blok_scuffing_margin_K(*m.thermal->bulk_temperature_C, flash.max_rise_K,
+                                                              *m.thermal->critical_temperature_C);
+    }
     return d;
   }
   // the transient history, on the worn contact, with its steady stretches skipped
@@ -190,12 +203,22 @@ WearModel make_wear_model(const WearCase& c) {
   if (m.law1) m.smoothing1 = smoothing_kernel(m.profiles.body1.y_m, m.smoothing_wavelength_m);
   if (m.law2) m.smoothing2 = smoothing_kernel(m.profiles.body2.y_m, m.smoothing_wavelength_m);
   m.limits = c.wear.limits;
+  // fatigue damage at the reference body's nodes, and the shakedown limit's k (the reference body's)
+  m.fatigue = c.wear.fatigue;
+  m.nD = m.fatigue ? static_cast<int>(p.y_m.size()) : 0;
+  m.damage_scale_m = m.limits.max_depth_m > 0 ? m.limits.max_depth_m : kDamageScale_m;
+  m.shear_yield_Pa = m.law1 ? k.bodies.body1.shear_yield_Pa : k.bodies.body2.shear_yield_Pa;
+  if (k.thermal && !k.transient) {  // xi = (v2 - v1)/V, V = (v1 + v2)/2 (docs/physics.md §1)
+    m.thermal = k.thermal;
+    m.v1_m_per_s = m.speed_m_per_s * (1 - m.creepages.xi / 2);
+    m.v2_m_per_s = m.speed_m_per_s * (1 + m.creepages.xi / 2);
+  }
   // the pressure fields on the grid: read by the transient duty cycle (Satran), the per-cell laws and the
   // consistent march; not by the steady pure-xi closed form (solve_steady's skip) with the strip laws
   // (the relaxed model's steady solve is that march at scaled creepages: the same closed form)
   const bool closed_form = !m.transient && contact::tangential_traits(m.scheme).pure_xi_closed_form &&
                            m.creepages.eta == 0 && m.creepages.phi_per_m == 0;
-  m.normal_options.pressure_fields = !closed_form || needs_fields(m.law1) || needs_fields(m.law2);
+  m.normal_options.pressure_fields = !closed_form || needs_fields(m.law1) || needs_fields(m.law2) || m.thermal.has_value();
   // the fidelity: the exact physics on the same case, for the corrections or the error estimate (steady duty
   // cycles with friction: the exact theory's transient duty cycle costs a minute per solve)
   m.fidelity = k.solver.fidelity;
@@ -420,6 +443,17 @@ WearRate fast_wear_rate(const WearModel& m, const Eigen::VectorXd& state, WearCa
     r.dstate_dN.segment(m.n1, m.n2) =
         r.cycles_per_revolution * node_depth_per_cycle(m, 2, *m.law2, duty, r.strip_y0_m, r.strip_dy_m).matrix();
   r.dstate_dN(m.energy_index()) = m.energy_scale * r.energy_per_revolution_J;
+  // fatigue: Burstow's damage per pass of each strip's T-gamma, on the reference body's nodes (the mean over each
+  // node's cell, unsmoothed); each point of the reference body passes the contact once per revolution
+  if (m.nD > 0) {
+    const Eigen::ArrayXd Tg =
+        strip_tgamma_N(duty.strip_energy_J_per_m, duty.rolled_m, n.contact_y_max_m - n.contact_y_min_m);
+    const Eigen::ArrayXd d = Tg.unaryExpr([&](double t) { return burstow_damage_per_pass(m.fatigue->burstow, t); });
+    const Eigen::ArrayXd& y = m.law1 ? m.profiles.body1.y_m : m.profiles.body2.y_m;
+    r.dstate_dN.segment(m.damage_index(), m.nD) =
+        m.damage_scale_m * strips_to_nodes(d, r.strip_y0_m, r.strip_dy_m, y).matrix();
+    r.contact.max_tgamma_N = Tg.size() > 0 ? Tg.maxCoeff() : 0.0;
+  }
 
   r.contact.a_m = patch.a_m;
   r.contact.b_m = patch.b_m;
@@ -429,6 +463,13 @@ WearRate fast_wear_rate(const WearModel& m, const Eigen::VectorXd& state, WearCa
   r.contact.edge_margin_m = n.edge_margin_m;
   r.contact.edge_limit_m = n.edge_limit_m;
   r.contact.normal_solver = n.solver;
+  r.contact.flash_rise_K = duty.flash_rise_K;
+  r.contact.scuffing_margin_K = duty.scuffing_margin_K;
+  if (m.shear_yield_Pa > 0 && patch.p0_Pa > 0) {
+    const double f = std::abs(duty.Fx_N) / m.normal_load_N;
+    const double limit = contact::shakedown_limit_p0_over_k(contact::shakedown_contact_of(patch.a_m, patch.b_m), f);
+    r.contact.shakedown_margin = limit / (patch.p0_Pa / m.shear_yield_Pa) - 1;
+  }
 
   if (cache.rates.size() >= kCachedRates) cache.rates.erase(cache.rates.begin());
   cache.rates.emplace_back(key, r);
@@ -613,11 +654,22 @@ double dissipated_energy_J(const WearModel& m, const Eigen::VectorXd& state) {
   return state(m.energy_index()) / m.energy_scale;
 }
 
+double max_damage(const WearModel& m, const Eigen::VectorXd& state) {
+  return m.nD > 0 ? state.segment(m.damage_index(), m.nD).maxCoeff() / m.damage_scale_m : 0.0;
+}
+
+double max_damage_y_m(const WearModel& m, const Eigen::VectorXd& state) {
+  if (m.nD == 0) return std::numeric_limits<double>::quiet_NaN();
+  Eigen::Index i = 0;
+  if (!(state.segment(m.damage_index(), m.nD).maxCoeff(&i) > 0)) return std::numeric_limits<double>::quiet_NaN();
+  return (m.law1 ? m.profiles.body1.y_m : m.profiles.body2.y_m)(i);
+}
+
 // ---- the life ----
 
 namespace {
 
-enum Limit { kDepth, kPressure, kEdge, kLimits };
+enum Limit { kDepth, kPressure, kEdge, kFatigue, kShakedown, kScuffing, kLimits };
 
 // The wear is carried by the worn bodies' profile nodes: a contact narrower than a few node spacings
 // would put a strip's wear on one node and the next solve could not see the worn shape. Throws
@@ -664,6 +716,12 @@ Eigen::VectorXd limit_values(const WearModel& m, const Eigen::VectorXd& h, WearC
   ++cache.counters.limit_evaluations;
   Eigen::VectorXd g = Eigen::VectorXd::Constant(kLimits, -1.0);
   if (m.limits.max_depth_m > 0) g(kDepth) = max_depth_m(m, h) - m.limits.max_depth_m;
+  // fatigue: the largest damage reaches 1 (linear in the state: located on the integrator's dense output)
+  if (m.nD > 0) g(kFatigue) = max_damage(m, h) - 1;
+  // shakedown: the load factor leaves Johnson's map (the margin, read from the rate at h, crosses 0)
+  if (m.limits.shakedown) g(kShakedown) = -wear_rate(m, h, cache).contact.shakedown_margin;
+  // scuffing: the contact temperature reaches Blok's critical one (K)
+  if (m.limits.scuffing) g(kScuffing) = -wear_rate(m, h, cache).contact.scuffing_margin_K;
   if (m.limits.max_pressure_Pa <= 0 && !m.limits.edge) return g;
   // a collective's: the highest peak pressure and the widest contact of its running conditions
   bool first = true;
@@ -695,7 +753,8 @@ LifeProblem life_problem(const WearModel& m, const WearCase& c, WearCache& cache
   p.rate = [&m, &cache](double, const Eigen::VectorXd& h, Eigen::VectorXd& dhdN) {
     dhdN = wear_rate(m, h, cache).dstate_dN;
   };
-  p.limits = {LifeEnd::MaxDepth, LifeEnd::MaxPressure, LifeEnd::Edge};
+  p.limits = {LifeEnd::MaxDepth, LifeEnd::MaxPressure, LifeEnd::Edge, LifeEnd::Fatigue, LifeEnd::Shakedown,
+              LifeEnd::Scuffing};
   p.limit_values = [&m, &cache](double, const Eigen::VectorXd& h, Eigen::VectorXd& g) {
     g = limit_values(m, h, cache);
   };

@@ -10,9 +10,11 @@
 // distance it rolls). Its energy is spread evenly around each body's circumference: stop positions are
 // assumed to vary, and wear at a fixed stop position (flat spots) is out of scope.
 //
-// The state vector is [h_body1 (its profile's nodes, if it wears) | h_body2 (likewise) | e], e the
+// The state vector is [h_body1 (its profile's nodes, if it wears) | h_body2 (likewise) | e | D], e the
 // dissipated energy scaled to a depth, e = E kEnergyScale: integrated by the same Runge-Kutta weights
-// as h, it makes "worn volume = k_E x dissipated energy" checkable to rounding at every step.
+// as h, it makes "worn volume = k_E x dissipated energy" checkable to rounding at every step; D, with a
+// wear.fatigue section only, the fatigue damage at the reference body's nodes (Miner's sum of Burstow's
+// damage per pass, wear/fatigue.h, docs/fatigue.md), scaled to a depth as D x damage_scale_m.
 // The rolling radius change of the worn body (Rx) is ignored: z is measured from the unworn radius.
 #pragma once
 
@@ -32,6 +34,8 @@
 #include "lib/normal/semi_hertz.h"
 #include "lib/tangential/tangential.h"
 #include "lib/fidelity.h"
+#include "lib/io/case.h"
+#include "wear/fatigue.h"
 #include "wear/integrator.h"
 #include "wear/life.h"
 #include "wear/profile_update.h"
@@ -88,10 +92,24 @@ struct WearModel {
   // and the exact physics on the case's grid, whose normal solve gives the limits near the end of the life
   // (FidelityCorrection::exact_limits): where the life ends is the edge of the case's grid, not the coarse one's
   std::vector<WearModel> limits_physics;
+  // fatigue (wear.fatigue, docs/fatigue.md): the damage at each of the reference body's nD nodes, in the state as
+  // D x damage_scale_m (the depth limit, or kDamageScale_m without one: the integrator's tolerances and a
+  // fixed-depth step weigh damage 1 as they weigh that depth); nD = 0 without the section
+  std::optional<FatigueSection> fatigue;
+  int nD = 0;
+  double damage_scale_m = 0;
+  // the shakedown limit (wear.limits.shakedown): the reference body's shear yield stress k; 0 = not given
+  double shear_yield_Pa = 0;
+  // the flash temperature of a steady duty cycle (the case's thermal: section; lib/thermal), and the surfaces' speeds
+  std::optional<contact::ThermalSection> thermal;
+  double v1_m_per_s = 0, v2_m_per_s = 0;
 
-  int state_size() const { return n1 + n2 + 1; }
+  int state_size() const { return n1 + n2 + 1 + nD; }
   int energy_index() const { return n1 + n2; }
+  int damage_index() const { return n1 + n2 + 1; }
 };
+// the depth damage 1 stands for in the state when the case has no depth limit
+constexpr double kDamageScale_m = 1e-4;
 
 // The memory a wear run needs, estimated before its model is built (bytes): what grows with the worn
 // profiles' nodes. Per wearing body of n nodes, the smoothing kernel (wear/profile_update.h: 8 bytes per pair
@@ -140,6 +158,14 @@ struct ContactReport {
   double edge_margin_m = 0;  // lateral, 0 once the contact reaches the edge
   double edge_limit_m = 0;   // edge_limit_value_m: < 0 inside, > 0 past the edge (the edge limit's function)
   contact::NormalSolverKind normal_solver = contact::NormalSolverKind::SemiHertz;  // Hertz, semi-Hertz or half-space
+  // Johnson's shakedown margin (lib/subsurface/shakedown.h: limit / (p0/k) - 1, > 0 inside) from p0, |Fx|/Fz and
+  // the reference body's k; NaN without k
+  double shakedown_margin = std::numeric_limits<double>::quiet_NaN();
+  double max_tgamma_N = 0;  // the largest strip T-gamma (wear/fatigue.h); 0 without wear.fatigue
+  // with the case's thermal: section, the flash temperature's rise (Blok's partition, lib/thermal) and the scuffing
+  // margin critical - (bulk + flash) (with both temperatures); NaN without
+  double flash_rise_K = std::numeric_limits<double>::quiet_NaN();
+  double scuffing_margin_K = std::numeric_limits<double>::quiet_NaN();
 };
 
 struct WearRate {
@@ -263,8 +289,11 @@ NormalState exact_normal_state(const WearModel& m, const Eigen::VectorXd& state,
 FidelityError fast_model_error(const WearModel& m, double N, const Eigen::VectorXd& state, WearCache& cache);
 
 // what the state says: the largest depth over the wearing bodies, each body's worn volume
-// (2 pi R_k x the profile's worn area), the dissipated energy
+// (2 pi R_k x the profile's worn area), the dissipated energy, the largest fatigue damage (0 without
+// wear.fatigue) and the reference body's y where it is (NaN where there is no damage)
 double max_depth_m(const WearModel& m, const Eigen::VectorXd& state);
+double max_damage(const WearModel& m, const Eigen::VectorXd& state);
+double max_damage_y_m(const WearModel& m, const Eigen::VectorXd& state);
 double worn_volume_m3(const WearModel& m, const Eigen::VectorXd& state, int body);  // body 1 or 2
 double dissipated_energy_J(const WearModel& m, const Eigen::VectorXd& state);
 

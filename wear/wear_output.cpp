@@ -77,18 +77,27 @@ std::string wear_summary_header(const WearModel& m) {
                    contact::to_string(m.scheme), contact::to_string(m.fidelity));
   s += fmt::format("# revolutions of body{} (R {} m); one row per accepted step, step 0 unworn\n", m.law1 ? 1 : 2,
                    round_trip(m.reference_radius_m));
+  if (m.fatigue)
+    s += fmt::format("# fatigue: {} (T-gamma threshold {} N, peak {} per pass at {} N, none from {} N); max_damage: "
+                     "the largest Miner damage on body{}\n",
+                     to_string(m.fatigue->law), round_trip(m.fatigue->burstow.threshold_N),
+                     round_trip(m.fatigue->burstow.peak_damage), round_trip(m.fatigue->burstow.peak_at_N),
+                     round_trip(m.fatigue->burstow.zero_at_N), m.law1 ? 1 : 2);
   s += "step,revolutions,hours,max_depth_m,worn_volume_m3,dissipated_J,a_m,b_m,p0_Pa,Fx_N,power_W,"
-       "step_revolutions,error_estimate,rejected,rhs_evals\n";
+       "step_revolutions,error_estimate,rejected,rhs_evals";
+  s += m.fatigue ? ",max_damage\n" : "\n";
   return s;
 }
 
 std::string wear_summary_row(const WearModel& m, const LifeStep& s, double hours_per_rev) {
   const Eigen::VectorXd& h = *s.state;
-  return fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n", s.step, round_trip(s.N), round_trip(s.N * hours_per_rev),
+  std::string row = fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}", s.step, round_trip(s.N), round_trip(s.N * hours_per_rev),
                      round_trip(max_depth_m(m, h)), round_trip(worn_volume_m3(m, h, 1) + worn_volume_m3(m, h, 2)),
                      round_trip(dissipated_energy_J(m, h)), round_trip(s.contact.a_m), round_trip(s.contact.b_m), round_trip(s.contact.p0_Pa),
                      round_trip(s.contact.Fx_N), round_trip(s.contact.power_W), round_trip(s.info.step), round_trip(s.info.error_estimate),
                      s.info.rejected, s.info.rhs_evals);
+  if (m.fatigue) row += "," + round_trip(max_damage(m, h));
+  return row + "\n";
 }
 
 std::string wear_snapshot_csv(const WearModel& m, int body, double N, double hours, const Eigen::VectorXd& state) {
@@ -140,6 +149,25 @@ std::vector<std::pair<std::string, std::string>> fidelity_report(const WearModel
   return out;
 }
 
+std::vector<std::pair<std::string, std::string>> failure_margins(const WearModel& m, const LifeResult& l) {
+  std::vector<std::pair<std::string, std::string>> out;
+  if (!m.fatigue && !m.limits.shakedown && !m.limits.scuffing && !m.thermal) return out;
+  if (m.limits.max_depth_m > 0)
+    out.emplace_back("depth_fraction", round_trip(max_depth_m(m, l.state) / m.limits.max_depth_m));
+  if (m.fatigue) {
+    out.emplace_back("fatigue_law", to_string(m.fatigue->law));
+    out.emplace_back("max_damage", round_trip(max_damage(m, l.state)));
+    out.emplace_back("max_damage_y_m", round_trip(max_damage_y_m(m, l.state)));
+    out.emplace_back("max_tgamma_N", round_trip(l.contact.max_tgamma_N));
+  }
+  if (m.shear_yield_Pa > 0) out.emplace_back("shakedown_margin", round_trip(l.contact.shakedown_margin));
+  if (m.thermal) {
+    out.emplace_back("flash_rise_K", round_trip(l.contact.flash_rise_K));
+    if (m.thermal->critical_temperature_C) out.emplace_back("scuffing_margin_K", round_trip(l.contact.scuffing_margin_K));
+  }
+  return out;
+}
+
 std::string wear_summary_error_line(const WearModel& m, const LifeResult& l) {
   return fmt::format("# error estimate ({} fidelity, {} exact-physics solves): at N {} the fast models' total power "
                      "relative error {}, per-strip power L1 {}\n",
@@ -168,6 +196,7 @@ std::string wear_report_text(const WearModel& m, const WearReport& r) {
   own.emplace_back("a_m", round_trip(l.contact.a_m));
   own.emplace_back("b_m", round_trip(l.contact.b_m));
   own.emplace_back("normal_solver", contact::to_string(l.contact.normal_solver));
+  for (const auto& [key, value] : failure_margins(m, l)) own.emplace_back(key, value);
   for (const auto& [key, value] : fidelity_report(m, l)) own.emplace_back(key, value);
   const LifeCounters& n = l.counters;
   own.emplace_back("rate_evaluations", std::to_string(n.rate_evaluations));
@@ -264,7 +293,8 @@ CheckpointBlock correction_block(const FidelityCorrection& k) {
   return w.block(kCorrectionBlock);
 }
 
-FidelityCorrection correction_of(const CheckpointBlock& b, Eigen::Index state_size) {
+// state_size the model's state, worn_nodes its worn nodes (the rates': the state less the energy and any fatigue damage)
+FidelityCorrection correction_of(const CheckpointBlock& b, Eigen::Index state_size, Eigen::Index worn_nodes) {
   BlockReader r{b};
   FidelityCorrection k;
   k.valid = true;
@@ -276,7 +306,7 @@ FidelityCorrection correction_of(const CheckpointBlock& b, Eigen::Index state_si
   k.exact_rate = r.array().matrix();
   k.fast_rate = r.array().matrix();
   r.finish();
-  if (k.state.size() != state_size || k.exact_rate.size() != state_size - 1 || k.fast_rate.size() != state_size - 1)
+  if (k.state.size() != state_size || k.exact_rate.size() != worn_nodes || k.fast_rate.size() != worn_nodes)
     throw std::runtime_error(fmt::format("checkpoint block '{}': its state has {} values, the case's {}", b.name,
                                          k.state.size(), state_size));
   return k;
@@ -400,7 +430,7 @@ std::vector<CheckpointBlock> wear_cache_blocks(const WearCache& cache) {
 }
 
 void restore_wear_cache(const WearModel& m, const std::vector<CheckpointBlock>& blocks, WearCache& cache) {
-  if (const CheckpointBlock* b = find_block(blocks, kCorrectionBlock)) cache.correction = correction_of(*b, m.state_size());
+  if (const CheckpointBlock* b = find_block(blocks, kCorrectionBlock)) cache.correction = correction_of(*b, m.state_size(), m.n1 + m.n2);
   if (const CheckpointBlock* b = find_block(blocks, kErrorBlock)) cache.error = error_of(*b);
   if (const CheckpointBlock* b = find_block(blocks, kHalfspaceNormalBlock)) restore_halfspace_normal(*b, cache);
   if (m.conditions.empty()) return;
@@ -522,7 +552,7 @@ Checkpoint read_checkpoint(const std::filesystem::path& path) {
       next();
       k.state(i) = number(line);
     }
-    k.exact_rate.resize(n - 1);
+    k.exact_rate.resize(n - 1);  // version 2 had no fatigue damage: the rates are the state less the energy
     k.fast_rate.resize(n - 1);
     for (long i = 0; i + 1 < n; ++i) {
       next();

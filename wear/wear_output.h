@@ -4,8 +4,8 @@
 //
 //   summary.csv                        '# ' comment lines (case, bodies, law), then
 //     step,revolutions,hours,max_depth_m,worn_volume_m3,dissipated_J,a_m,b_m,p0_Pa,Fx_N,power_W,
-//     step_revolutions,error_estimate,rejected,rhs_evals
-//                                      one row per accepted step; step 0 is the unworn state; a limit
+//     step_revolutions,error_estimate,rejected,rhs_evals[,max_damage]
+//                                      one row per accepted step (max_damage with wear.fatigue); step 0 is the unworn state; a limit
 //                                      located within a step adds a last row at the limit (the step
 //                                      cut short: error_estimate 0)
 //   snapshots/snapshot_KKKK_BODY.csv   '# case: ', '# body: ', '# revolutions: ', '# hours: ', then
@@ -71,6 +71,11 @@ std::string wear_report_text(const WearModel& m, const WearReport& r);
 // which models ran and the fast models' error estimate (docs/fidelity.md): report.txt's keys tangential_model,
 // fidelity, correction_tolerance (corrected), exact_solves, error_estimate_N, error_power_rel, error_power_l1
 std::vector<std::pair<std::string, std::string>> fidelity_report(const WearModel& m, const LifeResult& l);
+// which failure mode is how far at the end of the life (docs/fatigue.md), with wear.fatigue, wear.limits.shakedown,
+// wear.limits.scuffing or a thermal: section only: report.txt's keys depth_fraction (max depth /
+// wear.limits.max_depth_m, with a depth limit), fatigue_law, max_damage, max_damage_y_m, max_tgamma_N (with fatigue),
+// shakedown_margin (with the reference body's k), flash_rise_K and scuffing_margin_K (with thermal:)
+std::vector<std::pair<std::string, std::string>> failure_margins(const WearModel& m, const LifeResult& l);
 // the same as a comment line of summary.csv, written above its header row at the end of the run
 std::string wear_summary_error_line(const WearModel& m, const LifeResult& l);
 

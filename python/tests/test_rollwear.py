@@ -138,6 +138,25 @@ def test_transient_equals_the_command_line(cli, tmp_path):
     assert r["summary"]["dissipated_J"] == float(summary["dissipated_J"][0])
 
 
+def test_run_with_fatigue_equals_the_command_line(source, cli, tmp_path):
+    # the shipped fatigue case (docs/fatigue.md): its life ends by fatigue; the damage column and the margins
+    # of report.txt are the Python result's
+    case = source / "cases" / "paper-wear-fatigue.yaml"
+    p = cli("run", case, "-o", tmp_path, "-q")
+    assert p.returncode == 0, p.stderr
+    r = rollwear.run(case)
+    rows = read_csv(tmp_path / "summary.csv")
+    assert "max_damage" in rows
+    for key, column in rows.items():
+        np.testing.assert_array_equal(r["steps"][key], numbers(column), err_msg=key)
+    report = dict(line.split(": ", 1) for line in (tmp_path / "report.txt").read_text().splitlines() if ": " in line)
+    assert r["summary"]["ended_by"] == report["ended_by"] == "fatigue"
+    assert r["summary"]["fatigue_law"] == report["fatigue_law"] == "burstow"
+    for key in ("revolutions", "depth_fraction", "max_damage", "max_damage_y_m", "max_tgamma_N"):
+        assert r["summary"][key] == float(report[key]), key
+    assert 0 < r["summary"]["depth_fraction"] < 1
+
+
 def test_run_equals_the_command_line(source, cli, tmp_path):
     case = source / "cases" / "paper-wear.yaml"
     p = cli("run", case, "-o", tmp_path, "-q")
