@@ -3,6 +3,7 @@
 // (lib/subsurface/dang_van.h, §5) by hand and against McEwen's line contact.
 #include "lib/subsurface/dang_van.h"
 #include "lib/subsurface/shakedown.h"
+#include "lib/subsurface/stress_measures.h"
 #include "lib/subsurface/subsurface.h"
 #include "lib/normal/hertz.h"
 #include "lib/numeric.h"
@@ -11,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <stdexcept>
 #include <vector>
@@ -134,12 +136,66 @@ StressTensor mcewen(double x, double z, double nu) {
   return s;
 }
 
+// The exact shakedown shift, for comparison with the product's mid-range: the centre of the smallest ball
+// enclosing the deviatoric path in the tensor norm sqrt(s:s), by Yildirim's Frank-Wolfe algorithm on the dual
+// (E. A. Yildirim, "Two algorithms for the minimum enclosing ball problem", SIAM J. Optim. 19 (2008) 1368-1391),
+// (plain, without the product's away steps), to a squared radius within 1e-6 relative: the centre within
+// 1e-3 radii
+std::array<double, 6> smallest_ball_centre(const std::vector<StressTensor>& history) {
+  const double w = std::sqrt(2.0);  // shear components count twice in s:s
+  std::vector<std::array<double, 6>> p;
+  for (const StressTensor& s : history) {
+    const double h = (s.xx + s.yy + s.zz) / 3;
+    p.push_back({s.xx - h, s.yy - h, s.zz - h, w * s.xy, w * s.xz, w * s.yz});
+  }
+  const auto dist2 = [](const std::array<double, 6>& a, const std::array<double, 6>& b) {
+    double d = 0;
+    for (int c = 0; c < 6; ++c) d += (a[c] - b[c]) * (a[c] - b[c]);
+    return d;
+  };
+  std::vector<double> u(p.size(), 1.0 / p.size());
+  std::array<double, 6> centre{};
+  for (std::size_t i = 0; i < p.size(); ++i)
+    for (int c = 0; c < 6; ++c) centre[c] += u[i] * p[i][c];
+  for (int iteration = 0; iteration < 1000000; ++iteration) {
+    double gamma = 0;  // the dual objective: sum u |p - c|^2
+    std::size_t far = 0;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      gamma += u[i] * dist2(p[i], centre);
+      if (dist2(p[i], centre) > dist2(p[far], centre)) far = i;
+    }
+    const double delta = dist2(p[far], centre) / gamma - 1;
+    if (delta <= 1e-6) break;
+    const double lambda = delta / (2 * (1 + delta));
+    for (double& v : u) v *= 1 - lambda;
+    u[far] += lambda;
+    for (int c = 0; c < 6; ++c) centre[c] = (1 - lambda) * centre[c] + lambda * p[far][c];
+  }
+  return {centre[0], centre[1], centre[2], centre[3] / w, centre[4] / w, centre[5] / w};
+}
+
+// the index with a given shift (tests' own: Tresca's shear of s - shift, p_h = tr/3)
+double index_with_shift(const std::vector<StressTensor>& history, const std::array<double, 6>& c,
+                        const DangVanConstants& k) {
+  double best = -1e300;
+  for (const StressTensor& s : history) {
+    const double h = (s.xx + s.yy + s.zz) / 3;
+    const StressTensor m{s.xx - h - c[0], s.yy - h - c[1], s.zz - h - c[2], s.xy - c[3], s.xz - c[4], s.yz - c[5]};
+    best = std::max(best, (tresca_Pa(m) + k.a * h) / k.b_Pa);
+  }
+  return best;
+}
+
 // A rolling line contact (frictionless Hertz, a long ellipse a/b = 0.05 as in tests/subsurface_test.cpp's line
 // test): the product's index per depth in the middle strip against the index of McEwen's plane-strain history at
 // the same x (the cell centres, with the unloaded state), a = 0.3, b = 0.3 p0. The ellipse is O(a/b) from
-// plane strain (sigma_x 1.7-1.9 % of p0 less compressive on the axis).
+// plane strain (sigma_x 1.7-1.9 % of p0 less compressive on the axis): within 0.01 from 0.1 a to 1.35 a
+// (measured 9e-3 at 0.1 a, below 1.6e-3 from 0.2 a), the largest 0.5527 against 0.5523, both at 0.55 a. At the
+// surface and 0.05 a the cells' tractions (0.317 and 0.260 against 0.333 and 0.307), and from 1.4 a the
+// history's end at the box's edge x = +-a, where the two fields differ most, part them (docs/subsurface.md §7).
 TEST(DangVan, RollingLineContactMatchesMcEwensHistory) {
-  constexpr double kLine = 0.02;  // of the index (of order 1): the ellipse's O(a/b) gap
+  constexpr double kLine = 0.01;  // of the index (of order 1): the ellipse's O(a/b) gap
+  constexpr double kShift = 5e-3;  // of the index: the product's centre within 1e-2 radii, the test's 1e-3
   constexpr double kNu = 0.3;
   const HertzContact h = solve_hertz({{0.010, 1.17}, {kFlat, kFlat}}, {{210e9, kNu}, {210e9, kNu}}, 2000);
   ASSERT_NEAR(h.a_m / h.b_m, 0.05, 0.005);
@@ -156,7 +212,7 @@ TEST(DangVan, RollingLineContactMatchesMcEwensHistory) {
   const DangVanConstants k{0.3, 0.3 * h.p0_Pa};
   const DangVanField field = dang_van_field(sub, grid, k);
   // McEwen's history along x at each plane's depth (his stresses times p0)
-  double best_closed = 0, best_depth = 0;
+  double best_closed = 0, best_depth = 0, worst_shift = 0;
   for (std::size_t z = 0; z < sub.planes.size(); ++z) {
     std::vector<StressTensor> history = {StressTensor{}};
     for (int i = 0; i < grid.nx; ++i) {
@@ -164,12 +220,23 @@ TEST(DangVan, RollingLineContactMatchesMcEwensHistory) {
       history.push_back({s.xx * h.p0_Pa, s.yy * h.p0_Pa, s.zz * h.p0_Pa, 0, s.xz * h.p0_Pa, 0});
     }
     const double closed = dang_van_of_history(history, k).index;
-    EXPECT_NEAR(field.index(20, static_cast<Eigen::Index>(z)), closed, kLine) << "z/a " << sub.planes[z].z_m / h.a_m;
+    // the product's shift against the test's own smallest ball (at 0.25 a, 0.55 a and 1 a: the plain method
+    // is slow)
+    if (z == 5 || z == 11 || z == 20) {
+      const double exact = index_with_shift(history, smallest_ball_centre(history), k);
+      worst_shift = std::max(worst_shift, std::abs(closed - exact));
+    }
+    const double depth = sub.planes[z].z_m / h.a_m;
+    if (depth > 0.09 && depth < 1.36)  // the cells' surface layer and the box's edge at depth: see above
+      EXPECT_NEAR(field.index(20, static_cast<Eigen::Index>(z)), closed, kLine) << "z/a " << depth;
     if (closed > best_closed) best_closed = closed, best_depth = sub.planes[z].z_m;
   }
-  EXPECT_NEAR(field.index_max, best_closed, kLine);
-  EXPECT_NEAR(field.z_m, best_depth, 0.051 * h.a_m);  // a plane apart at most
+  EXPECT_NEAR(field.index_max, best_closed, 2e-3);  // measured 4e-4: 0.5527 against 0.5523, both at 0.55 a
+  EXPECT_NEAR(field.z_m, best_depth, 1e-3 * h.a_m);
   EXPECT_NEAR(field.y_m, 0, 0.1 * h.b_m);
+  // the product's smallest ball against the test's, by the index at every depth
+  EXPECT_LT(worst_shift, kShift);
+  RecordProperty("index_gap_to_test_ball", std::to_string(worst_shift));
   RecordProperty("index_max", std::to_string(field.index_max));
   RecordProperty("depth_over_a", std::to_string(field.z_m / h.a_m));
 }
