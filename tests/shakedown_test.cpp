@@ -1,4 +1,4 @@
-// Fatigue indicators (lib/subsurface/shakedown.h, docs/subsurface.md §4): Johnson's shakedown map and the
+// Fatigue indicators (lib/subsurface/shakedown.h, docs/subsurface.md §4-5): Johnson's shakedown map and the
 // surface fatigue index of Ekberg, Kabo and Andersson; Dang Van's criterion over a rolling pass
 // (lib/subsurface/dang_van.h, §5) by hand and against McEwen's line contact.
 #include "lib/subsurface/dang_van.h"

@@ -272,7 +272,7 @@ TEST(SubsurfaceSliding, SurfaceStressOfAHertzianTractionMatchesJohnson) {
 // there, and the test above's tangential sigma_x, sigma_y at x = -a) passes the computed largest stress below
 // the surface between mu = 0.25 and 0.35. The planes sample the surface at cell centres, half a cell inside
 // the edge, where the stress falls steeply: they see the move later, between 0.30 and 0.40
-// (docs/subsurface.md §5).
+// (docs/subsurface.md §7).
 TEST(SubsurfaceSliding, VonMisesMaximumReachesTheSurfaceAsMuPassesAbout03) {
   const ContactPatch patch = circle_patch(33);
   const auto solve = [&](double mu) {
