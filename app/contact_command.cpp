@@ -26,7 +26,7 @@ CLI::App* add_contact_command(CLI::App& app, ContactOptions& opt, CommonOptions&
                  "(by default the relaxed model, matched to Kalker's exact theory; solver.tangential: consistent "
                  "for his simplified theory, exact for the exact theory), then the stresses below the surface of "
                  "both bodies. Prints a summary and writes summary.csv, strips.csv, fields.csv, subsurface.csv, "
-                 "subsurface_section.csv and, for a body with shear_yield_Pa, fatigue.csv.");
+                 "subsurface_section.csv and, for a body with shear_yield_Pa, fatigue.csv (with dang_van, dang_van.csv).");
   sub->footer(
       "The summary names the normal solver that ran (and why, for solver.normal: auto) and the number of\n"
       "contact patches. strips.csv's y_m is in the profiles' lateral coordinate. With solver.tangential:\n"
@@ -38,7 +38,8 @@ CLI::App* add_contact_command(CLI::App& app, ContactOptions& opt, CommonOptions&
       "The subsurface stresses (docs/subsurface.md) are each body's under the cells' tractions, on 31 planes\n"
       "from the surface to 1.5 min(a, b): their maxima (subsurface.csv) and the x-z section through the most\n"
       "loaded cell (subsurface_section.csv). With bodies.bodyN.shear_yield_Pa, the shakedown margin and the\n"
-      "surface fatigue index of that body (fatigue.csv).\n"
+      "surface fatigue index of that body (fatigue.csv); with bodies.bodyN.dang_van: { a, b_Pa }, Dang Van's\n"
+      "index of that body over one rolling pass, its largest value and where (dang_van.csv).\n"
       "With a lubricant: section the summary adds the EHL film thickness, the film parameter lambda and the\n"
       "regime with its friction and wear factors; with a thermal: section the flash temperature (Blok's\n"
       "partition) and, with critical_temperature_C, the scuffing margin (docs/lubrication-and-temperature.md).\n"
@@ -48,7 +49,8 @@ CLI::App* add_contact_command(CLI::App& app, ContactOptions& opt, CommonOptions&
                   "Output directory (default: the case's output.directory, else out/<case name>)");
   sub->add_flag("--no-fields", opt.no_fields, "Do not write fields.csv (the per-cell fields)");
   sub->add_flag("--no-subsurface", opt.no_subsurface,
-                "Do not compute the stresses below the surface (subsurface.csv, subsurface_section.csv, fatigue.csv)");
+                "Do not compute the stresses below the surface (subsurface.csv, subsurface_section.csv, fatigue.csv, "
+                "dang_van.csv)");
   sub->add_flag("-q,--quiet", opt.quiet,
                 "No progress line on stderr: contact shows none (taken as run, transient and sweep take it)");
   add_log_level_option(*sub, common);
@@ -112,6 +114,11 @@ void print_subsurface_summary(const ContactPatch& patch, const std::array<BodySu
                  "y = {:.4f} mm)\n",
                  f->FI_surf, f->cell_index_max, f->cell_x_m * 1e3, f->cell_y_m * 1e3);
     }
+    if (const std::optional<DangVanField>& d = bodies[k].dang_van)
+      fmt::print("    Dang Van         index {:.4f} (a = {:.3g}, b = {:.1f} MPa; >= 1: crack initiation) at depth "
+                 "{:.4f} mm, y = {:.4f} mm (peaking at x = {:.4f} mm): tau = {:.3f} MPa, p_h = {:.3f} MPa\n",
+                 d->index_max, d->constants.a, d->constants.b_Pa * 1e-6, d->z_m * 1e3, d->y_m * 1e3, d->x_m * 1e3,
+                 d->tau_Pa * 1e-6, d->hydrostatic_Pa * 1e-6);
   }
 }
 
@@ -160,7 +167,7 @@ int run_contact_command(const ContactOptions& opt) {
   };
   if (fields) files.push_back({dir / "fields.csv", fields_csv(patch, solution)});
   std::array<BodySubsurface, 2> below;
-  bool fatigue = false;
+  bool fatigue = false, dang_van = false;
   if (subsurface) {
     below = subsurface_of_contact(c, run);
     const std::vector<const Subsurface*> bodies = {&below[0].stresses, &below[1].stresses};
@@ -171,6 +178,10 @@ int run_contact_command(const ContactOptions& opt) {
     if (fatigue)
       files.push_back({dir / "fatigue.csv", fatigue_csv({below[0].fatigue ? &*below[0].fatigue : nullptr,
                                                          below[1].fatigue ? &*below[1].fatigue : nullptr})});
+    dang_van = below[0].dang_van || below[1].dang_van;
+    if (dang_van)
+      files.push_back({dir / "dang_van.csv", dang_van_csv({below[0].dang_van ? &*below[0].dang_van : nullptr,
+                                                           below[1].dang_van ? &*below[1].dang_van : nullptr})});
   }
 
   print_contact_summary(c, normal, problem, solution, scheme, exact_solve);
@@ -184,6 +195,7 @@ int run_contact_command(const ContactOptions& opt) {
     std::filesystem::remove(dir / "subsurface_section.csv");
   }
   if (!fatigue) std::filesystem::remove(dir / "fatigue.csv");
+  if (!dang_van) std::filesystem::remove(dir / "dang_van.csv");
   spdlog::info("wrote {} files to {}", files.size(), dir.string());
   return 0;
 }

@@ -346,7 +346,7 @@ py::dict contact_result(const CaseSource& source, bool fields, bool subsurface) 
     f["state"] = array(s.state);
     out["fields"] = f;
   }
-  if (subsurface) {  // subsurface.csv's maxima and fatigue.csv's values, per body ("body1", "body2")
+  if (subsurface) {  // subsurface.csv's maxima, fatigue.csv's and dang_van.csv's values, per body ("body1", "body2")
     py::dict bodies;
     for (int k = 0; k < 2; ++k) {
       const contact::Subsurface& sub = below[k].stresses;
@@ -374,6 +374,16 @@ py::dict contact_result(const CaseSource& source, bool fields, bool subsurface) 
         d["FI_surf"] = fi->FI_surf;
         d["cell_index_max"] = fi->cell_index_max;
         b["fatigue"] = d;
+      }
+      if (const std::optional<contact::DangVanField>& dv = below[k].dang_van) {  // dang_van.csv's row
+        py::dict d;
+        d["a"] = dv->constants.a;
+        d["b_Pa"] = dv->constants.b_Pa;
+        d["index_max"] = dv->index_max;
+        d["x_m"] = dv->x_m, d["y_m"] = dv->y_m, d["z_m"] = dv->z_m;
+        d["tau_Pa"] = dv->tau_Pa;
+        d["hydrostatic_Pa"] = dv->hydrostatic_Pa;
+        b["dang_van"] = d;
       }
       bodies[k == 0 ? "body1" : "body2"] = b;
     }

@@ -148,7 +148,7 @@ TEST_F(CaseReader, UnknownKeyReportsKeyAndLine) {
                      "    nu: 0.28\n"                                                   // 8
                      "load: { normal_load_N: 1500 }\n"                                  // 9
                      "friction: { mu: 0.3 }\n"),                                        // 10
-            path() + ":6:5: bodies.body2.Rz_m: unknown key, did you mean 'Rx_m'? (valid: E_Pa, Rx_m, Ry_m, nu, shear_yield_Pa)");
+            path() + ":6:5: bodies.body2.Rz_m: unknown key, did you mean 'Rx_m'? (valid: E_Pa, Rx_m, Ry_m, dang_van, nu, shear_yield_Pa)");
   // a section that does not exist (yet)
   EXPECT_EQ(error_of(kMinimalCase + "wear: { law: archard }\n"),  // 6
             path() + ":6:1: wear: unknown key (valid: bodies, friction, inertia, kinematics, load, lubricant, "

@@ -14,6 +14,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -910,6 +911,44 @@ TEST_F(CommandLine, ContactWithShearYieldReportsFatigueOfThatBody) {
   const ProcessResult bad = rollwear("contact " + quoted(c) + " -o " + quoted(out) + " --log-level warn", dir_);
   EXPECT_EQ(bad.exit_code, 2);
   EXPECT_NE(bad.err.find("bodies.body2.shear_yield_Pa"), std::string::npos) << bad.err;
+}
+
+// Dang Van's index of a body with bodies.bodyN.dang_van: the summary line, dang_van.csv; its keys checked
+TEST_F(CommandLine, ContactWithDangVanReportsItsIndex) {
+  std::string text = read_text(kSource / "cases" / "paper.yaml");
+  const std::string path_body = "body2: { Rx_m: 0.025, Ry_m: .inf,  E_Pa: 210.0e9, nu: 0.28";
+  const std::size_t at = text.find(path_body);
+  ASSERT_NE(at, std::string::npos);
+  text.insert(at + path_body.size(), ", dang_van: { a: 0.3, b_Pa: 300.0e6 }");
+  text = with_solver(text, "solver:     { nx: 80, ny: 80", "solver:     { nx: 24, ny: 24");
+  const fs::path c = dir_ / "paper-dv.yaml";
+  std::ofstream(c) << text;
+  const fs::path out = dir_ / "dv";
+  const ProcessResult r = rollwear("contact " + quoted(c) + " -o " + quoted(out) + " --log-level warn", dir_);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::vector<std::string> rows = lines_of(read_text(out / "dang_van.csv"));
+  ASSERT_EQ(rows.size(), 2u);
+  EXPECT_TRUE(is_numeric_table(rows, "body,a,b_Pa,index_max,x_m,y_m,z_m,tau_Pa,hydrostatic_Pa", {}));
+  const std::vector<std::string> row = split(rows[1]);
+  EXPECT_EQ(row[0], "2");
+  EXPECT_GT(std::stod(row[3]), 0);      // an index
+  EXPECT_GE(std::stod(row[6]), 0);      // a depth
+  EXPECT_NE(r.out.find("Dang Van         index"), std::string::npos) << r.out;
+  EXPECT_FALSE(fs::exists(out / "fatigue.csv"));  // no shear_yield_Pa
+
+  const ProcessResult quiet =
+      rollwear("contact " + quoted(c) + " -o " + quoted(out) + " --no-subsurface --log-level warn", dir_);
+  ASSERT_EQ(quiet.exit_code, 0) << quiet.err;
+  EXPECT_FALSE(fs::exists(out / "dang_van.csv"));
+
+  for (const auto& [from, to, key] : {std::array<std::string, 3>{"b_Pa: 300.0e6", "b_Pa: 0", "bodies.body2.dang_van.b_Pa"},
+                                      {"a: 0.3, ", "a: -0.3, ", "bodies.body2.dang_van.a"},
+                                      {"a: 0.3, ", "", "a"}}) {
+    std::ofstream(c) << with_solver(text, from, to);
+    const ProcessResult bad = rollwear("contact " + quoted(c) + " -o " + quoted(out) + " --log-level warn", dir_);
+    EXPECT_EQ(bad.exit_code, 2) << to;
+    EXPECT_NE(bad.err.find(key), std::string::npos) << bad.err;
+  }
 }
 
 TEST_F(CommandLine, ContactOnWornCrownRunsSemiHertz) {

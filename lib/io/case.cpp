@@ -2,6 +2,7 @@
 // cross-key checks of validate(). The generic machinery (marking keys, locations) is yaml_reader.h.
 #include "lib/io/case.h"
 #include "lib/io/case_node.h"
+#include "lib/subsurface/dang_van.h"
 #include "lib/subsurface/shakedown.h"
 
 #include <algorithm>
@@ -54,6 +55,14 @@ void read_body(YamlMap& m, BodySection& b, bool with_profiles) {
   m.required("E_Pa", b.E_Pa, kModulus);
   m.required("nu", b.nu, in_half_open(0, 0.5));
   m.optional("shear_yield_Pa", b.shear_yield_Pa, in_closed(kShearYieldMin_Pa, kShearYieldMax_Pa));
+  m.optional_value("dang_van", [&](const YamlValue& v) {
+    DangVanConstants k;
+    v.mapping([&](YamlMap& d) {
+      d.required("a", k.a, in_closed(kDangVanAMin, kDangVanAMax));
+      d.required("b_Pa", k.b_Pa, in_closed(kDangVanBMin_Pa, kDangVanBMax_Pa));
+    });
+    b.dang_van = k;
+  });
 }
 
 // ---- lateral profiles ----

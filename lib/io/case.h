@@ -36,6 +36,7 @@
 #include "lib/thermal/flash_temperature.h"
 #include "lib/io/key_locations.h"
 #include "lib/patch.h"
+#include "lib/subsurface/dang_van.h"
 #include "lib/normal/profile.h"
 #include "lib/tangential/satran.h"
 #include "lib/tangential/tangential.h"
@@ -50,6 +51,9 @@ struct BodySection {                  // bodies.body1 / bodies.body2
   // optional: the shear yield stress k for the fatigue indicators (lib/subsurface/shakedown.h), in
   // [kShearYieldMin_Pa, kShearYieldMax_Pa]; 0 (absent): none for this body
   double shear_yield_Pa = 0;
+  // optional (dang_van: { a, b_Pa }): Dang Van's constants for the subsurface fatigue index over a rolling
+  // pass (lib/subsurface/dang_van.h); absent: none for this body
+  std::optional<DangVanConstants> dang_van = std::nullopt;
 };
 struct BodiesSection {
   BodySection body1;  // upper body (roller)

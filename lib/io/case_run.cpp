@@ -56,6 +56,10 @@ std::array<BodySubsurface, 2> subsurface_of_contact(const ContactCase& c, const 
     for (StressPeak* p : {&m.von_mises, &m.tresca, &m.orthogonal_shear, &m.tension, &m.compression})
       p->y_m += run.normal.grid_y0_m;
     if (out[k].fatigue) out[k].fatigue->cell_y_m += run.normal.grid_y0_m;
+    if (bodies[k]->dang_van) {
+      out[k].dang_van = dang_van_field(out[k].stresses, patch.grid, *bodies[k]->dang_van);
+      out[k].dang_van->y_m += run.normal.grid_y0_m;
+    }
   }
   return out;
 }

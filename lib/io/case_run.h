@@ -12,6 +12,7 @@
 #include "lib/lubrication/regime.h"
 #include "lib/thermal/flash_temperature.h"
 #include "lib/normal/normal.h"
+#include "lib/subsurface/dang_van.h"
 #include "lib/subsurface/shakedown.h"
 #include "lib/subsurface/subsurface.h"
 #include "lib/tangential/satran.h"
@@ -68,9 +69,12 @@ ContactRun solve_contact_case(const ContactCase& c, bool fields);
 // stress (bodies.bodyN.shear_yield_Pa; lib/subsurface/shakedown.h). The run must have its fields (solved with
 // fields true), else the tractions are taken as frictionless. [0] is body 1, [1] body 2. The maxima's and the
 // cell index's y are in the profiles' lateral coordinate (strips.csv's y_m); the planes stay on the patch's grid.
+// With bodies.bodyN.dang_van, Dang Van's index of that body over one rolling pass (lib/subsurface/dang_van.h),
+// its y in the profiles' coordinate too.
 struct BodySubsurface {
   Subsurface stresses;
   std::optional<FatigueIndicators> fatigue;
+  std::optional<DangVanField> dang_van;
 };
 std::array<BodySubsurface, 2> subsurface_of_contact(const ContactCase& c, const ContactRun& run,
                                                     const SubsurfaceOptions& options = {});

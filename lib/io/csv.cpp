@@ -490,4 +490,20 @@ std::string fatigue_csv(const std::vector<const FatigueIndicators*>& bodies) {
   return out;
 }
 
+std::string dang_van_csv(const std::vector<const DangVanField*>& bodies) {
+  std::string out = "body,a,b_Pa,index_max,x_m,y_m,z_m,tau_Pa,hydrostatic_Pa\n";
+  for (std::size_t k = 0; k < bodies.size(); ++k) {
+    const DangVanField* d = bodies[k];
+    if (!d) continue;
+    fmt::format_to(std::back_inserter(out), "{}", k + 1);
+    for (const double v : {d->constants.a, d->constants.b_Pa, d->index_max, d->x_m, d->y_m, d->z_m, d->tau_Pa,
+                           d->hydrostatic_Pa}) {
+      out += ',';
+      put(out, v);
+    }
+    out += '\n';
+  }
+  return out;
+}
+
 }  // namespace contact

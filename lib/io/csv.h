@@ -9,6 +9,7 @@
 
 #include "lib/grid.h"
 #include "lib/patch.h"
+#include "lib/subsurface/dang_van.h"
 #include "lib/subsurface/shakedown.h"
 #include "lib/subsurface/subsurface.h"
 #include "lib/tangential/satran.h"
@@ -106,6 +107,12 @@ std::string subsurface_section_csv(const Grid& grid, const std::vector<const Sub
 //   body,shear_yield_Pa,contact,traction_coefficient,p0_over_k,limit_p0_over_k,surface_limit,margin,FI_surf,
 //   cell_index_max,cell_x_m,cell_y_m
 std::string fatigue_csv(const std::vector<const FatigueIndicators*>& bodies);
+
+// dang_van.csv: one row per body with Dang Van's constants (bodies[k] is body k + 1, null: none), its largest
+// index over one rolling pass and where (the material point's y and depth z, the x where its history peaks),
+// with the mesoscopic shear and the hydrostatic stress there:
+//   body,a,b_Pa,index_max,x_m,y_m,z_m,tau_Pa,hydrostatic_Pa
+std::string dang_van_csv(const std::vector<const DangVanField*>& bodies);
 
 // ---- the transient run (lib/tangential/satran.h) ----
 

@@ -73,6 +73,25 @@ def test_contact_equals_the_command_line(source, cli, tmp_path, monkeypatch):
     assert "subsurface" not in rollwear.contact("cases/paper.yaml", fields=False, subsurface=False)
 
 
+def test_contact_dang_van_equals_the_command_lines(source, cli, tmp_path):
+    text = (source / "cases" / "paper.yaml").read_text()
+    body = "body2: { Rx_m: 0.025, Ry_m: .inf,  E_Pa: 210.0e9, nu: 0.28"
+    assert body in text
+    text = text.replace(body, body + ", dang_van: { a: 0.3, b_Pa: 300.0e6 }")
+    text = text.replace("solver:     { nx: 80, ny: 80", "solver:     { nx: 24, ny: 24")
+    case = tmp_path / "paper-dv.yaml"
+    case.write_text(text)
+    r = rollwear.contact(str(case), fields=False)
+    p = cli("contact", case, "-o", tmp_path / "out", "--no-fields")
+    assert p.returncode == 0, p.stderr
+    rows = read_csv(tmp_path / "out" / "dang_van.csv")
+    assert rows["body"] == ["2"]
+    d = r["subsurface"]["body2"]["dang_van"]
+    for key in ("a", "b_Pa", "index_max", "x_m", "y_m", "z_m", "tau_Pa", "hydrostatic_Pa"):
+        assert d[key] == float(rows[key][0]), key
+    assert "dang_van" not in r["subsurface"]["body1"]
+
+
 def test_lubricated_contact_film_and_flash_temperature_equal_the_command_line(source, cli, tmp_path):
     case = "tests/data/lubrication/paper-lubricated.yaml"
     r = rollwear.contact(str(source / case), fields=False)
