@@ -136,7 +136,11 @@ LifeRunEnd run_wear_life_in_folder(const LifeRunOptions& opt) {
   observer.on_step = [&](const LifeStep& s) {
     cp.start = {s.N, *s.state, s.info.next_step, s.counters};
     cp.blocks = wear_cache_blocks(cache);  // at this step's end: the rate was just evaluated there
-    if (std::chrono::duration<double>(Clock::now() - last_save).count() >= c.wear.checkpoint_interval_s) {
+    // at a snapshot revolution the snapshot's save follows and carries this step: a checkpoint here would not count
+    // the snapshot, and a run killed before the snapshot's save would resume past it (the cam's run does the same)
+    const auto& at = c.wear.snapshots_revolutions;
+    if (std::chrono::duration<double>(Clock::now() - last_save).count() >= c.wear.checkpoint_interval_s &&
+        std::find(at.begin(), at.end(), s.N) == at.end()) {
       save({});
       last_save = Clock::now();
     }
