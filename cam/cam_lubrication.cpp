@@ -331,12 +331,17 @@ std::string first_failure_text(const CamLubricationSpec& spec, const RevolutionL
     others = scuffing_margin + "; " + wear;
   } else if (wear_limit_reached) {
     mode = "wear";
-    note = fmt::format("the wear limit ({}) at {:.4g} revolutions, inside shakedown and below the critical temperature "
-                       "(margins of the unworn revolution)", wear_end, life_revolutions);
+    note = fmt::format("the wear limit ({}) at {:.4g} revolutions, {} (margins of the unworn revolution)", wear_end,
+                       life_revolutions, fatigue && has_scuffing ? "inside shakedown and below the critical temperature"
+                                         : fatigue           ? "inside shakedown"
+                                                             : "below the critical temperature");
     others = fatigue_margin + "; " + scuffing_margin;
   } else {
     mode = "none";
-    note = "no failure mode reached: inside shakedown, below the critical temperature, no wear limit within the budget";
+    note = fmt::format("no failure mode reached: {}, no wear limit within the budget",
+                       fatigue && has_scuffing ? "inside shakedown, below the critical temperature"
+                       : fatigue              ? "inside shakedown"
+                                              : "below the critical temperature");
     others = fatigue_margin + "; " + scuffing_margin + "; " + wear;
   }
   return fmt::format("first_failure: {}\nfirst_failure_note: {}\nother_margins: {}\n", mode, note, others);

@@ -194,6 +194,14 @@ TEST_F(CamFatigue, FirstFailureNamesTheExceededMode) {
   l.angles[1].scuffing_margin_K = 20;
   EXPECT_NE(cam::first_failure_text(spec, l, true, "max-depth", 3e9)
                 .find("ratchetting/surface fatigue expected from the first revolutions"), std::string::npos);
+  // a mode not assessed is not claimed in the note
+  cam::CamLubricationSpec fatigue_only;
+  fatigue_only.fatigue.cam_shear_yield_Pa = 1e9;
+  l.min_shakedown_margin = 0.5;
+  const std::string f = cam::first_failure_text(fatigue_only, l, true, "max-depth", 3e9);
+  EXPECT_EQ(lines_of(f).at(1), "first_failure_note: the wear limit (max-depth) at 3e+09 revolutions, inside shakedown "
+                               "(margins of the unworn revolution)") << f;
+  EXPECT_NE(f.find("scuffing not assessed (no critical_temperature_C)"), std::string::npos) << f;
   // nothing to compare: no shear yield stress, no scuffing margin
   EXPECT_EQ(cam::first_failure_text({}, l, true, "max-depth", 3e9), "");
 }
