@@ -24,7 +24,9 @@ CLI::App* add_cam_command(CLI::App& app, CamOptions& opt, CommonOptions& common)
       "cam", "One revolution of a disc cam at constant speed with a translating roller follower (cam: section, "
              "docs/cam-follower.md): lift, pressure angle, radius of curvature, loads, the Hertz contact and the "
              "roller's regime at each cam angle; with cam.lubricant and cam.thermal the film, lambda, the lubrication "
-             "regime and the flash temperature at each angle (docs/cam-follower.md §17). Prints the jump speed and a "
+             "regime and the flash temperature at each angle (docs/cam-follower.md §17); with cam.roller.shear_yield_Pa or "
+             "cam.track.shear_yield_Pa the traction coefficient, Johnson's shakedown margin and the surface fatigue "
+             "index at each angle (§18). Prints the jump speed and a "
              "summary; writes revolution.csv.");
   sub->footer(
       "Above the jump speed the run stops with status jump (no table written), exit 1.\n"

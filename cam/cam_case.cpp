@@ -31,6 +31,8 @@ const auto kModulus = contact::plausible(Quantity::Modulus, 1e6, 1e13);    // ru
 const auto kPreload = contact::plausible(Quantity::Force, 1e-3, 1e7);      // 1 mN .. 10 MN
 const auto kSpringRate = contact::plausible(Quantity::Stiffness, 0, 1e10);
 const auto kMass = contact::plausible(Quantity::Mass, 1e-6, 1e4);          // 1 mg .. 10 t
+// a body's shear yield stress k, as bodies.bodyN.shear_yield_Pa of a contact case (lib/subsurface/shakedown.h)
+const auto kShearYield = contact::in_closed(contact::kShearYieldMin_Pa, contact::kShearYieldMax_Pa);
 std::string crown_radius(double v) {  // a crown of 0.1 mm .. 10 km, or .inf (flat)
   if (std::isinf(v) && v > 0) return "";
   const std::string sign = positive_or_inf(v);
@@ -168,6 +170,8 @@ CamCase read_cam_case(const std::string& path) {
         r.optional("inertia_kg_m2", m.train.roller_inertia_kg_m2, contact::nonnegative_finite);
         r.optional("bearing_torque_N_m", m.train.bearing_torque_N_m, contact::nonnegative_finite);
         r.optional("bearing_drag_N_m_s", m.train.bearing_drag_N_m_s, contact::nonnegative_finite);
+        // the roller's shear yield stress k: its fatigue indicators per angle (cam/cam_lubrication.h)
+        r.optional("shear_yield_Pa", c.lubrication.fatigue.roller_shear_yield_Pa, kShearYield);
         if (!std::isinf(m.bodies.roller_crown_radius_m) && m.bodies.roller_width_m >= 2 * m.bodies.roller_crown_radius_m)
           r.fail("crown_radius_m", "must exceed half the roller's width_m");
       });
@@ -177,6 +181,7 @@ CamCase read_cam_case(const std::string& path) {
         t.optional("crown_radius_m", m.bodies.track_crown_radius_m, crown_radius);
         t.required("E_Pa", m.bodies.pair.body2.E_Pa, kModulus);
         t.required("nu", m.bodies.pair.body2.nu, poisson);
+        t.optional("shear_yield_Pa", c.lubrication.fatigue.cam_shear_yield_Pa, kShearYield);  // the cam's k
         if (!std::isinf(m.bodies.track_crown_radius_m) && m.bodies.track_width_m >= 2 * m.bodies.track_crown_radius_m)
           t.fail("crown_radius_m", "must exceed half the track's width_m");
       });

@@ -16,8 +16,9 @@
 //     table_tolerance: 0.02                # lift table only: relative acceleration misfit
 //     angle_steps: 720
 //     roller: { radius_m: 0.013, width_m: 0.010, crown_radius_m: 0.5, E_Pa: 2.1e11, nu: 0.3,
-//               inertia_kg_m2: 5.0e-6, bearing_torque_N_m: 0.002, bearing_drag_N_m_s: 1.0e-5 }
-//     track:  { width_m: 0.012, crown_radius_m: .inf, E_Pa: 2.1e11, nu: 0.3 }
+//               inertia_kg_m2: 5.0e-6, bearing_torque_N_m: 0.002, bearing_drag_N_m_s: 1.0e-5,
+//               shear_yield_Pa: 1.2e9 }            # optional k: the fatigue indicators per angle (§18)
+//     track:  { width_m: 0.012, crown_radius_m: .inf, E_Pa: 2.1e11, nu: 0.3, shear_yield_Pa: 1.0e9 }
 //     follower: { spring_rate_N_per_m: 2.0e4, preload_N: 150, moving_mass_kg: 0.4, guide_mu: 0.05 }
 //     tangential: { scheme: relaxed, nx: 40, ny: 40, quasi_steady_tolerance: 1e-3, periodic_rtol: 1e-9,
 //                   max_revolutions: 30, compare_full_transient: true }    # optional, these defaults;

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <tuple>
 
 #include <spdlog/fmt/fmt.h>
 
@@ -25,6 +26,8 @@ void cell(std::string& out, double v) {
 
 }  // namespace
 
+const char* to_string(CamBody b) { return b == CamBody::Roller ? "roller" : "cam"; }
+
 AngleLubrication angle_lubrication(const CamLubricationSpec& spec, const CamModel& m, const RevolutionRow& row,
                                    const RollerAngle& roller, const contact::ContactPatch& patch,
                                    const contact::TangentialSolution* heat) {
@@ -36,7 +39,7 @@ AngleLubrication angle_lubrication(const CamLubricationSpec& spec, const CamMode
   a.entrainment_m_per_s = 0.5 * (a.cam_speed_m_per_s + a.roller_speed_m_per_s);
   a.Rx_m = 1 / (1 / m.geometry.roller_radius_m + row.kin.cam_curvature_per_m);
   a.ellipticity_k = patch.b_m / patch.a_m;
-  if (!(a.cam_speed_m_per_s > 0 && a.roller_speed_m_per_s > 0))
+  if ((spec.lubricant || spec.thermal) && !(a.cam_speed_m_per_s > 0 && a.roller_speed_m_per_s > 0))
     throw std::invalid_argument(fmt::format(
         "cam angle {:.6g} deg: the film and the flash temperature need both surfaces moving through the contact, "
         "got the cam's {:.6g} m/s and the roller's {:.6g} m/s", deg(a.theta_rad), a.cam_speed_m_per_s,
@@ -69,6 +72,20 @@ AngleLubrication angle_lubrication(const CamLubricationSpec& spec, const CamMode
       a.scuffing_margin_K =
           contact::blok_scuffing_margin_K(*th.bulk_temperature_C, a.flash_max_K, *th.critical_temperature_C);
   }
+  if (spec.fatigue.any() && heat) {  // lib/subsurface/shakedown.h on the angle's patch and steady solution
+    const CamFatigueSpec& k = spec.fatigue;
+    for (const auto& [k_Pa, margin, fi] :
+         {std::tuple{k.roller_shear_yield_Pa, &a.shakedown_margin_roller, &a.fi_surf_roller},
+          std::tuple{k.cam_shear_yield_Pa, &a.shakedown_margin_cam, &a.fi_surf_cam}}) {
+      if (!(k_Pa > 0)) continue;
+      const contact::FatigueIndicators f = contact::fatigue_indicators(patch, *heat, k_Pa);
+      a.traction_coefficient = f.traction_coefficient;
+      a.shakedown_contact = f.contact;
+      *margin = f.margin;
+      *fi = f.FI_surf;
+    }
+    a.p0_Pa = patch.p0_Pa;
+  }
   return a;
 }
 
@@ -93,7 +110,7 @@ RevolutionLubrication revolution_lubrication(const CamLubricationSpec& spec, con
         roller.slip_speed_m_per_s = xi.xi * roller.speed_m_per_s;
       }
     }
-    if (spec.thermal) {
+    if (spec.thermal || spec.fatigue.any()) {
       if (c.normal.patch.pressure_Pa.size() == 0) contact::fill_strip_pressures(c.normal.patch);  // the fields need it
       const contact::TangentialSolution heat = steady_creep(c, roller.xi, roller.speed_m_per_s, true);
       out.angles.push_back(angle_lubrication(spec, m, row, roller, c.normal.patch, &heat));
@@ -125,6 +142,19 @@ RevolutionLubrication revolution_lubrication(const CamLubricationSpec& spec, con
         const double rate = (out.angles[(i + 1) % n].flash_max_K - out.angles[(i + n - 1) % n].flash_max_K) / (2 * dt);
         const double e = a.transit_s * std::abs(rate) / top;
         if (e > out.thermal_unsteadiness) out.thermal_unsteadiness = e, out.thermal_unsteadiness_at = i;
+      }
+    }
+  }
+  if (spec.fatigue.any()) {
+    for (std::size_t i = 0; i < n; ++i) {
+      const AngleLubrication& a = out.angles[i];
+      if (a.traction_coefficient > out.angles[out.max_traction_at].traction_coefficient) out.max_traction_at = i;
+      for (const auto& [body, margin, fi] : {std::tuple{CamBody::Roller, a.shakedown_margin_roller, a.fi_surf_roller},
+                                             std::tuple{CamBody::Cam, a.shakedown_margin_cam, a.fi_surf_cam}}) {
+        if (std::isnan(margin)) continue;
+        if (margin < out.min_shakedown_margin)
+          out.min_shakedown_margin = margin, out.min_shakedown_at = i, out.min_shakedown_body = body;
+        if (fi > out.max_fi_surf) out.max_fi_surf = fi, out.max_fi_surf_at = i, out.max_fi_surf_body = body;
       }
     }
   }
@@ -173,6 +203,24 @@ std::string lubrication_summary(const CamLubricationSpec& spec, const Revolution
                        "{:.3g} of its maximum during one passage through the contact (at {:.4g} deg)\n",
                        l.min_peclet, l.thermal_unsteadiness, deg(l.angles[l.thermal_unsteadiness_at].theta_rad));
   }
+  if (spec.fatigue.any()) {
+    const AngleLubrication& w = l.angles[l.min_shakedown_at];
+    const AngleLubrication& f = l.angles[l.max_fi_surf_at];
+    const AngleLubrication& t = l.angles[l.max_traction_at];
+    const double k = l.min_shakedown_body == CamBody::Roller ? spec.fatigue.roller_shear_yield_Pa
+                                                             : spec.fatigue.cam_shear_yield_Pa;
+    out += fmt::format("shakedown (Johnson, {} contact at b/a {:.4g}): least margin {:.4g} on the {} (k {:.4g} MPa) at "
+                       "cam angle {:.4g} deg (p0 {:.5g} MPa, p0/k {:.4g}, mu_eff {:.4g}){}\n",
+                       contact::to_string(w.shakedown_contact), w.ellipticity_k, l.min_shakedown_margin,
+                       to_string(l.min_shakedown_body), k * 1e-6, deg(w.theta_rad), w.p0_Pa * 1e-6, w.p0_Pa / k,
+                       w.traction_coefficient,
+                       l.min_shakedown_margin < 0 ? ": beyond shakedown, ratchetting/surface fatigue expected" : "");
+    out += fmt::format("surface fatigue index FI_surf (Ekberg): max {:.4g} on the {} at cam angle {:.4g} deg ({}); "
+                       "mu_eff max {:.4g} at {:.4g} deg\n",
+                       l.max_fi_surf, to_string(l.max_fi_surf_body), deg(f.theta_rad),
+                       l.max_fi_surf > 0 ? "> 0: beyond the surface limit" : "< 0: inside the surface limit",
+                       t.traction_coefficient, deg(t.theta_rad));
+  }
   return out;
 }
 
@@ -184,6 +232,11 @@ std::string lubrication_csv_header(const CamLubricationSpec& spec) {
   if (spec.thermal)
     h += ",heat_W,flash_max_K,heat_share_roller,peclet_roller,peclet_cam,transit_s,contact_temperature_C,"
          "scuffing_margin_K";
+  if (spec.fatigue.any()) {
+    h += ",traction_coefficient,p0_Pa,shakedown_contact";
+    if (spec.fatigue.roller_shear_yield_Pa > 0) h += ",shakedown_margin_roller,fi_surf_roller";
+    if (spec.fatigue.cam_shear_yield_Pa > 0) h += ",shakedown_margin_cam,fi_surf_cam";
+  }
   return h;
 }
 
@@ -205,6 +258,14 @@ std::string lubrication_csv_cells(const CamLubricationSpec& spec, const AngleLub
     for (double v : {a.power_W, a.flash_max_K, a.heat_share_roller, a.peclet_roller, a.peclet_cam, a.transit_s,
                      a.contact_temperature_C, a.scuffing_margin_K})
       cell(out, v);
+  if (spec.fatigue.any()) {
+    cell(out, a.traction_coefficient);
+    cell(out, a.p0_Pa);
+    out += ',';
+    out += contact::to_string(a.shakedown_contact);
+    if (spec.fatigue.roller_shear_yield_Pa > 0) cell(out, a.shakedown_margin_roller), cell(out, a.fi_surf_roller);
+    if (spec.fatigue.cam_shear_yield_Pa > 0) cell(out, a.shakedown_margin_cam), cell(out, a.fi_surf_cam);
+  }
   return out;
 }
 
@@ -229,7 +290,61 @@ std::string lubrication_report_text(const CamLubricationSpec& spec, const Revolu
       out += fmt::format("max_contact_temperature_C: {:.6g}\n", t.contact_temperature_C);
     if (!std::isnan(t.scuffing_margin_K)) out += fmt::format("scuffing_margin_K: {:.6g}\n", t.scuffing_margin_K);
   }
+  if (spec.fatigue.any()) {
+    const AngleLubrication& w = l.angles[l.min_shakedown_at];
+    const AngleLubrication& f = l.angles[l.max_fi_surf_at];
+    out += fmt::format("shakedown_margin: {:.6g}\nshakedown_worst_deg: {:.6g}\nshakedown_worst_body: {}\n"
+                       "shakedown_contact: {}\np0_at_shakedown_worst_Pa: {:.6g}\nfi_surf_max: {:.6g}\n"
+                       "fi_surf_max_deg: {:.6g}\nfi_surf_max_body: {}\ntraction_coefficient_max: {:.6g}\n",
+                       l.min_shakedown_margin, deg(w.theta_rad), to_string(l.min_shakedown_body),
+                       contact::to_string(w.shakedown_contact), w.p0_Pa, l.max_fi_surf, deg(f.theta_rad),
+                       to_string(l.max_fi_surf_body), l.angles[l.max_traction_at].traction_coefficient);
+  }
   return out;
+}
+
+std::string first_failure_text(const CamLubricationSpec& spec, const RevolutionLubrication& l, bool wear_limit_reached,
+                               const std::string& wear_end, double life_revolutions) {
+  if (l.angles.empty()) return {};
+  const bool fatigue = spec.fatigue.any();
+  const double scuffing = spec.thermal ? l.angles[l.max_flash].scuffing_margin_K : AngleLubrication::kNaN;
+  const bool has_scuffing = !std::isnan(scuffing);
+  if (!fatigue && !has_scuffing) return {};
+  const std::string fatigue_margin =
+      fatigue ? fmt::format("shakedown margin {:.4g} ({} at {:.4g} deg)", l.min_shakedown_margin,
+                            to_string(l.min_shakedown_body), deg(l.angles[l.min_shakedown_at].theta_rad))
+              : "surface fatigue not assessed (no shear_yield_Pa)";
+  const std::string scuffing_margin = has_scuffing ? fmt::format("scuffing margin {:.4g} K at {:.4g} deg", scuffing,
+                                                                 deg(l.angles[l.max_flash].theta_rad))
+                                                   : "scuffing not assessed (no critical_temperature_C)";
+  const std::string wear = wear_limit_reached
+                               ? fmt::format("wear life {:.4g} revolutions ({})", life_revolutions, wear_end)
+                               : fmt::format("no wear limit within {:.4g} revolutions ({})", life_revolutions, wear_end);
+  std::string mode, note, others;
+  if (has_scuffing && scuffing < 0) {
+    mode = "scuffing";
+    note = "the flash temperature exceeds the critical temperature at the first pass of the hottest angle";
+    others = fatigue_margin + "; " + wear;
+  } else if (fatigue && l.min_shakedown_margin < 0) {
+    mode = "surface-fatigue";
+    note = "beyond shakedown: ratchetting/surface fatigue expected from the first revolutions";
+    others = scuffing_margin + "; " + wear;
+  } else if (wear_limit_reached) {
+    mode = "wear";
+    note = fmt::format("the wear limit ({}) at {:.4g} revolutions, {} (margins of the unworn revolution)", wear_end,
+                       life_revolutions, fatigue && has_scuffing ? "inside shakedown and below the critical temperature"
+                                         : fatigue           ? "inside shakedown"
+                                                             : "below the critical temperature");
+    others = fatigue_margin + "; " + scuffing_margin;
+  } else {
+    mode = "none";
+    note = fmt::format("no failure mode reached: {}, no wear limit within the budget",
+                       fatigue && has_scuffing ? "inside shakedown, below the critical temperature"
+                       : fatigue              ? "inside shakedown"
+                                              : "below the critical temperature");
+    others = fatigue_margin + "; " + scuffing_margin + "; " + wear;
+  }
+  return fmt::format("first_failure: {}\nfirst_failure_note: {}\nother_margins: {}\n", mode, note, others);
 }
 
 }  // namespace cam

@@ -17,7 +17,11 @@
 //                    Peclet numbers are large and the flash temperature changes little during one passage of a
 //                    surface point through the contact (the unsteadiness below, printed)
 //   scuffing         Blok's margin, critical - (bulk + flash), with the case's temperatures
-// Without either section nothing here runs and every output is the dry case's, byte for byte.
+//   fatigue          with cam.roller.shear_yield_Pa or cam.track.shear_yield_Pa (k, docs/cam-follower.md §18): the
+//                    indicators of lib/subsurface/shakedown.h (fatigue_indicators) on the angle's patch and the same
+//                    steady solution: mu_eff = |F_t|/F_n, p0, Johnson's shakedown margin (line or point contact by the
+//                    patch's b/a, shakedown_contact_of) and Ekberg's FI_surf, per body given
+// Without any of these keys nothing here runs and every output is the dry case's, byte for byte.
 #pragma once
 
 #include <array>
@@ -30,15 +34,27 @@
 #include "cam/revolution.h"
 #include "cam/roller_motion.h"
 #include "lib/io/case.h"
+#include "lib/subsurface/shakedown.h"
 
 namespace cam {
 
-// cam.lubricant (the film, lambda, regime) and cam.thermal (the flash temperature; body1 the roller, body2 the cam)
+// cam.roller.shear_yield_Pa and cam.track.shear_yield_Pa: the shear yield stress k of each body (0: not given)
+struct CamFatigueSpec {
+  double roller_shear_yield_Pa = 0, cam_shear_yield_Pa = 0;
+  bool any() const { return roller_shear_yield_Pa > 0 || cam_shear_yield_Pa > 0; }
+};
+
+// cam.lubricant (the film, lambda, regime), cam.thermal (the flash temperature; body1 the roller, body2 the cam) and
+// the bodies' shear yield stresses (the fatigue indicators)
 struct CamLubricationSpec {
   std::optional<contact::LubricantSection> lubricant;
   std::optional<contact::ThermalSection> thermal;
-  bool any() const { return lubricant.has_value() || thermal.has_value(); }
+  CamFatigueSpec fatigue;
+  bool any() const { return lubricant.has_value() || thermal.has_value() || fatigue.any(); }
 };
+
+enum class CamBody { Roller, Cam };
+const char* to_string(CamBody b);
 
 struct AngleLubrication {
   static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
@@ -62,6 +78,12 @@ struct AngleLubrication {
   double transit_s = kNaN;        // 2a / min(v_cam, v_roller): the longest passage of a surface point
   double contact_temperature_C = kNaN;  // bulk + flash, with bulk_temperature_C
   double scuffing_margin_K = kNaN;      // critical - (bulk + flash), with critical_temperature_C
+  // with a body's shear_yield_Pa: fatigue_indicators (lib/subsurface/shakedown.h) of the steady solution on the patch
+  double traction_coefficient = kNaN;   // mu_eff = |F_t| / F_n of the steady solution
+  double p0_Pa = kNaN;                  // the patch's peak pressure
+  contact::ShakedownContact shakedown_contact = contact::ShakedownContact::Point;  // by the patch's b/a
+  double shakedown_margin_roller = kNaN, fi_surf_roller = kNaN;  // with cam.roller.shear_yield_Pa
+  double shakedown_margin_cam = kNaN, fi_surf_cam = kNaN;        // with cam.track.shear_yield_Pa
 };
 
 struct RevolutionLubrication {
@@ -77,11 +99,19 @@ struct RevolutionLubrication {
   double min_peclet = std::numeric_limits<double>::infinity();
   double thermal_unsteadiness = 0;
   std::size_t thermal_unsteadiness_at = 0;
+  // with a shear yield stress: the least shakedown margin over the angles and the bodies given (where, which body),
+  // the largest FI_surf likewise, the largest mu_eff
+  std::size_t min_shakedown_at = 0, max_fi_surf_at = 0, max_traction_at = 0;
+  CamBody min_shakedown_body = CamBody::Roller, max_fi_surf_body = CamBody::Roller;
+  double min_shakedown_margin = std::numeric_limits<double>::infinity();
+  double max_fi_surf = -std::numeric_limits<double>::infinity();
 };
 
 // One angle: the film on the row's geometry with the roller's state, and (with cam.thermal and `heat`, the steady
-// solution at the roller's creepage with its fields) the flash temperature of heat.power_W_per_m2 on patch.grid.
-// Throws std::invalid_argument naming the angle when a surface does not move forward through the contact.
+// solution at the roller's creepage with its fields) the flash temperature of heat.power_W_per_m2 on patch.grid;
+// with a shear yield stress and `heat`, the fatigue indicators of that solution on patch.
+// Throws std::invalid_argument naming the angle when a surface does not move forward through the contact (with
+// cam.lubricant or cam.thermal).
 AngleLubrication angle_lubrication(const CamLubricationSpec& spec, const CamModel& m, const RevolutionRow& row,
                                    const RollerAngle& roller, const contact::ContactPatch& patch,
                                    const contact::TangentialSolution* heat);
@@ -98,5 +128,14 @@ std::string lubrication_csv_header(const CamLubricationSpec& spec);
 std::string lubrication_csv_cells(const CamLubricationSpec& spec, const AngleLubrication& a);
 // the life report's lines ("key: value\n"): the margins beside the wear life
 std::string lubrication_report_text(const CamLubricationSpec& spec, const RevolutionLubrication& l);
+
+// The life's failure modes side by side (docs/cam-follower.md §18): a margin statement, not a damage integration.
+// The shakedown and scuffing margins are the unworn periodic revolution's; the wear life is the life's end. Names
+// first_failure among surface fatigue (the least shakedown margin < 0: ratchetting from the first revolutions),
+// scuffing (the Blok margin < 0: at the first pass of the hottest angle; named before fatigue when both are
+// exceeded) and the wear life (wear_limit_reached: the life ended at a wear limit after life_revolutions), with the
+// others' margins. Empty without a shear yield stress and without a scuffing margin (nothing to compare).
+std::string first_failure_text(const CamLubricationSpec& spec, const RevolutionLubrication& l,
+                               bool wear_limit_reached, const std::string& wear_end, double life_revolutions);
 
 }  // namespace cam

@@ -185,7 +185,8 @@ LifeRunEnd run_cam_life_in_folder(const LifeRunOptions& o) {
   const std::unique_ptr<cam::CamLifeSetup> setup = set_up_life(c);
   if (!setup) return LifeRunEnd::Failed;
   const cam::CamLifeModel& life_model = setup->life;
-  // the film and the flash temperature over the unworn periodic revolution: the margins beside the wear life
+  // the film, the flash temperature and the fatigue indicators over the unworn periodic revolution: the margins
+  // beside the wear life
   cam::RevolutionLubrication lubrication;
   if (c.lubrication.any()) {
     lubrication = cam::revolution_lubrication(c.lubrication, setup->model, setup->revolution, setup->motion.motion,
@@ -288,7 +289,11 @@ LifeRunEnd run_cam_life_in_folder(const LifeRunOptions& o) {
   // the end: life.csv and the report; the checkpoint goes (the run is complete) unless the life failed
   const std::string report = cam::cam_life_report_text(c.name, c.model.omega_rad_per_s, life, setup->worn->stats(),
                                                        o.resume, earlier_cpu_s + cpu_seconds() - cpu0) +
-                             cam::lubrication_report_text(c.lubrication, lubrication);
+                             cam::lubrication_report_text(c.lubrication, lubrication) +
+                             cam::first_failure_text(c.lubrication, lubrication,
+                                                     life.ended_by == wear::LifeEnd::MaxDepth ||
+                                                         life.ended_by == wear::LifeEnd::LiftLoss,
+                                                     wear::to_string(life.ended_by), life.N);
   if (life.ended_by == wear::LifeEnd::Failed && life.steps > 0 && last.x.size() > 0) {
     save({});  // the last accepted step: --resume continues from there (e.g. with other settings)
     spdlog::error("run: the life failed after step {}; its state is saved in {}", last.steps,

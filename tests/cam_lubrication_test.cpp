@@ -94,8 +94,9 @@ TEST_F(CamLubrication, DryOutputsUnchangedAndTheLubricatedColumnsChangeNoOther) 
   EXPECT_EQ(lines_of(with).at(0).substr(lines_of(without).at(0).size()),
             ",cam_surface_speed_m_per_s,roller_surface_speed_m_per_s,entrainment_m_per_s,Rx_m,ellipticity_k,h_min_m,"
             "h_central_m,lambda,lubrication_regime,regime_mu,regime_wear_factor,heat_W,flash_max_K,heat_share_roller,"
-            "peclet_roller,peclet_cam,transit_s,contact_temperature_C,scuffing_margin_K");
-  for (const std::string& line : lines_of(with)) EXPECT_EQ(cells_in(line), base_columns + 19) << line;
+            "peclet_roller,peclet_cam,transit_s,contact_temperature_C,scuffing_margin_K,traction_coefficient,p0_Pa,"
+            "shakedown_contact,shakedown_margin_roller,fi_surf_roller,shakedown_margin_cam,fi_surf_cam");
+  for (const std::string& line : lines_of(with)) EXPECT_EQ(cells_in(line), base_columns + 26) << line;
   // the summary's lines come after the dry summary's, which they leave as it was
   const std::regex cpu("[0-9.e+-]+ s CPU");
   const std::string summary = std::regex_replace(cam::cam_summary(l), cpu, "s CPU"),
@@ -268,7 +269,8 @@ TEST_F(CamLubrication, CommandsPrintTheFilmAndTemperatureAndTheLifeReportsTheMar
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const std::string report = read_text(dir_ / "life" / "report.txt");
   for (const char* key : {"\nended_by: revolutions\n", "\nmin_lambda: ", "\nregime_at_min_lambda: boundary\n",
-                          "\nmax_flash_K: ", "\nscuffing_margin_K: "})
+                          "\nmax_flash_K: ", "\nscuffing_margin_K: ", "\nshakedown_margin: ", "\nshakedown_worst_deg: ",
+                          "\nfi_surf_max: ", "\nfirst_failure: none\n", "\nother_margins: shakedown margin "})
     EXPECT_NE(report.find(key), std::string::npos) << key << "\n" << report;
   EXPECT_NE(read_text(dir_ / "life" / "dissipation.csv").find(",flash_max_K,"), std::string::npos);
 }
