@@ -506,9 +506,9 @@ TEST(StressFidelity, CorrectedRateOnWornStatesItDidNotCorrectOn) {
 // A coarser correction grid: the exact physics and the fast models on 20-40 x 20-40 and their corrected rate
 // (x_n + c (f - f_n) at the correction's own state), on the stored exact 80 x 80 life's worn states at half and all
 // of it (tests/data/reference_lives/paper-wear_profiles.csv), against the exact physics on 80 x 80. Measured: the
-// fast models move by < 0.5 % of L1 with the grid, the exact physics by 2-8 % (not monotone in n): a coarse
+// fast models move by < 0.7 % of L1 with the grid, the exact physics by 2.5-7.5 % (not monotone in n): a coarse
 // correction carries the coarse exact physics' grid error, which is as large as the fast models' own error here
-// (2.6-2.8 %), so no correction grid below the case's improves the rate (docs/fidelity.md). The check: on each
+// (2.3-3.0 %), so no correction grid below the case's improves the rate (docs/fidelity.md). The check: on each
 // state the corrected rate from the coarsest grid, 20, is not closer to the 80 x 80 exact rate than the fast rate.
 TEST(StressFidelity, CoarseCorrectionGridsCarryTheCoarseExactPhysicsGridError) {
   const auto columns = stored_profile_columns(kSource / "tests/data/reference_lives/paper-wear_profiles.csv", 3);
