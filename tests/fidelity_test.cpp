@@ -64,7 +64,7 @@ LifeResult life_of(const WearCase& c) {
 // the overlap's end against the interpenetration bound) are different functions of the state, so their offset
 // is not held to the end (with the limits left to it the life ends at 2.81e7, -62.6 %); the limits are the exact
 // physics' own from the correction where its contact's edge is within one half-width of the end (measured at
-// 1.1-1.4e7 revolutions, 12-15 % of the life). Checked: the life ends with them in force, and the exact edge value
+// 1.1-1.4e7 revolutions, 9-15 % of the life). Checked: the life ends with them in force, and the exact edge value
 // on its final state is 0 to within 1 % of the approach (measured 9e-19 m).
 TEST(Fidelity, CorrectedLifeIsCloserToTheExactLifeThanTheFastOnTheSameGrid) {
   constexpr int kGrid = 20;
