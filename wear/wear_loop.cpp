@@ -620,6 +620,10 @@ bool update_correction(const WearModel& m, double N, const Eigen::VectorXd& stat
   c.approach_m = exact_normal.approach_m;
   c.edge_offset_m = exact_normal.edge_limit_m - fast_normal.edge_limit_m;
   c.pressure_offset_Pa = exact_normal.patch.p0_Pa - fast_normal.patch.p0_Pa;
+  // the switch to the exact physics' own limits (docs/fidelity.md, "The limits"): the half-space edge value is the
+  // approach x the distance of the contact's lateral edge past the end / the contact's half-width, the fast one a
+  // gap; the two are different functions of the state, so the offset above holds only while the exact contact's
+  // edge is more than kNearEdge half-widths from the end (its drift between corrections is well below that)
   c.exact_limits = c.exact_limits || (m.limits.edge && exact_normal.edge_limit_m > -kNearEdge * c.approach_m) ||
                    (m.limits.max_pressure_Pa > 0 &&
                     exact_normal.patch.p0_Pa > (1 - kNearEdge * m.correction_tolerance) * m.limits.max_pressure_Pa);
@@ -727,7 +731,7 @@ Eigen::VectorXd limit_values(const WearModel& m, const Eigen::VectorXd& h, WearC
   bool first = true;
   for_each_condition(m, cache, [&](const WearModel& mk, WearCache& ck) {
     // the corrected fidelity: the exact physics' limits, as the fast ones plus the last correction's offsets, or
-    // near the end of the life the exact physics' normal solve itself
+    // from the switch (FidelityCorrection::exact_limits) the exact physics' normal solve itself
     const FidelityCorrection& k = ck.correction;
     const bool exact_limits = mk.fidelity == contact::Fidelity::Corrected && k.valid && k.exact_limits;
     const bool corrected = mk.fidelity == contact::Fidelity::Corrected && k.valid && !k.exact_limits;
