@@ -157,8 +157,10 @@ struct TangentialOperator {
   fftw_plan rf[2] = {nullptr, nullptr}, cf[2] = {nullptr, nullptr};
   fftw_plan cb[2] = {nullptr, nullptr}, rb[2] = {nullptr, nullptr};
 
+  // the padded lengths: at least twice the grid's (offsets -(n - 1) ... n - 1 without wrapping onto the grid),
+  // of small prime factors (fft_size)
   TangentialOperator(int nx_ext, int ny_, double dx, double dy, double G, double nu, bool plane_strain)
-      : nxe(nx_ext), ny(ny_), mx(2 * nx_ext), my(2 * ny_), nk(nx_ext + 1),
+      : nxe(nx_ext), ny(ny_), mx(fft_size(2 * nx_ext)), my(fft_size(2 * ny_)), nk(mx / 2 + 1),
         rows_x(fftw_alloc<double>(static_cast<std::size_t>(mx) * ny_)),
         rows_y(fftw_alloc<double>(static_cast<std::size_t>(mx) * ny_)),
         spec_x(fftw_alloc<fftw_complex>(static_cast<std::size_t>(my) * nk)),
@@ -186,7 +188,8 @@ struct TangentialOperator {
       destroy_plans(&kernel_forward);
       throw std::runtime_error(fmt::format("exact: fftw_plan_many_dft failed for {} x {}", mx, my));
     }
-    // the three kernels at signed offsets, wrapped onto the padded grid (offset nxe, ny unused)
+    // the three kernels at signed offsets, wrapped onto the padded grid (offsets nxe ... mx - nxe and ny ... my - ny
+    // unused)
     std::vector<double> Kxx(n_pad), Kxy(n_pad), Kyy(n_pad);
     // the first quadrant, then by parity: xx, yy even in both offsets, xy odd in both
     for (int l = 0; l < ny; ++l) {
