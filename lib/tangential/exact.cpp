@@ -15,8 +15,8 @@
 //   A_xy = -nu R[r] / (pi G).
 //
 // Convolution. A depends on the offset of the cells only: u = A tau is a zero-padded cyclic
-// convolution on a (2 nxe x 2 ny) grid, nxe = nx + 1 (the grid plus one row ahead of the leading
-// edge). A_xx and A_yy are even in both offsets, A_xy odd in both, so all three spectra are real;
+// convolution on a grid of at least (2 nxe x 2 ny) cells, nxe = nx + 1 (the grid plus one row ahead of the
+// leading edge), each length rounded up to one of prime factors 2, 3, 5, 7 (fft_size). A_xx and A_yy are even in both offsets, A_xy odd in both, so all three spectra are real;
 // one product is two forward and two backward real 2-D transforms (FFTW, planned once per solve),
 // each done as in the normal solver: along x on the ny rows that can be nonzero, along y on all.
 //
