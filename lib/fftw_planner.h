@@ -9,4 +9,10 @@ namespace contact {
 
 std::mutex& fftw_planner_mutex();
 
+// The smallest n >= at_least whose prime factors are 2, 3, 5 and 7 only (at_least >= 1): a length FFTW
+// transforms with its own codelets. A zero-padded convolution may pad to it instead of exactly twice the
+// grid: a length with a larger prime factor (82 = 2 x 41, 322 = 2 x 7 x 23) takes FFTW's generic
+// algorithms, 1.1 to 3 times slower per transform (docs/exact-theory.md §5).
+int fft_size(int at_least);
+
 }  // namespace contact

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "lib/elastic.h"
+#include "lib/fftw_planner.h"
 #include "lib/grid.h"
 #include "lib/history.h"
 #include "lib/normal/halfspace.h"
@@ -111,6 +112,20 @@ constexpr double kCoefficientTol = 0.01;
 // Reference: Cerruti's point force (Johnson 1985, ch. 3, at the surface z = 0), both bodies:
 // u_x = Q/(pi G) [(1-nu)/r + nu x^2/r^3], u_y = Q nu x y/(pi G r^3). Far from the rectangle its
 // traction acts as a point force Q = tau dx dy; the relative error falls as (size/r)^2.
+// the padded lengths of the exact theory's convolution: the smallest with prime factors 2, 3, 5, 7 (by
+// enumeration, not by the function's own loop): 2 x 41 and 2 x 7 x 23 are replaced, 2 x 3^4 and 2^5 x 5 kept
+TEST(FftSize, SmallestLengthOfSmallPrimeFactors) {
+  EXPECT_EQ(contact::fft_size(1), 1);
+  EXPECT_EQ(contact::fft_size(2), 2);
+  EXPECT_EQ(contact::fft_size(11), 12);
+  EXPECT_EQ(contact::fft_size(82), 84);    // 40 x 40: 2 nxe = 82 = 2 x 41
+  EXPECT_EQ(contact::fft_size(162), 162);  // 80 x 80: 2 x 3^4
+  EXPECT_EQ(contact::fft_size(160), 160);
+  EXPECT_EQ(contact::fft_size(322), 324);  // 160 x 160: 2 x 7 x 23 -> 2^2 x 3^4
+  EXPECT_EQ(contact::fft_size(1031), 1050);  // 1031 prime ... 1050 = 2 x 3 x 5^2 x 7
+  EXPECT_THROW(contact::fft_size(0), std::invalid_argument);
+}
+
 TEST(ExactInfluence, FarFieldIsCerrutiPointForce) {
   const double G = 80e9, nu = 0.3, dx = 1e-4, dy = 2e-4;
   for (const auto& [x, y] : std::vector<std::pair<double, double>>{{5e-3, 3e-3}, {-4e-3, 7e-3}, {6e-3, -1e-3}}) {

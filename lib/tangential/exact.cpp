@@ -15,8 +15,8 @@
 //   A_xy = -nu R[r] / (pi G).
 //
 // Convolution. A depends on the offset of the cells only: u = A tau is a zero-padded cyclic
-// convolution on a (2 nxe x 2 ny) grid, nxe = nx + 1 (the grid plus one row ahead of the leading
-// edge). A_xx and A_yy are even in both offsets, A_xy odd in both, so all three spectra are real;
+// convolution on a grid of at least (2 nxe x 2 ny) cells, nxe = nx + 1 (the grid plus one row ahead of the
+// leading edge), each length rounded up to one of prime factors 2, 3, 5, 7 (fft_size). A_xx and A_yy are even in both offsets, A_xy odd in both, so all three spectra are real;
 // one product is two forward and two backward real 2-D transforms (FFTW, planned once per solve),
 // each done as in the normal solver: along x on the ny rows that can be nonzero, along y on all.
 //
@@ -149,16 +149,20 @@ std::unique_ptr<T, FftwFree> fftw_alloc(std::size_t n) {
 // u = A tau on the extended grid (nxe x ny), by zero-padded convolution
 struct TangentialOperator {
   int nxe, ny, mx, my, nk;
-  // the rows that can be nonzero (ny x mx, row-major: m + mx n) and the spectra (my x nk)
+  // the rows that can be nonzero (ny x mx, row-major: m + mx n) and the spectra (nk x my, column-major:
+  // n + my k, so that the transforms along y run on contiguous columns: 6 to 11 % less per product at 80 x 80
+  // than with the rows' spectra in rows, whose columns FFTW copies to and from buffers)
   std::unique_ptr<double, FftwFree> rows_x, rows_y;
   std::unique_ptr<fftw_complex, FftwFree> spec_x, spec_y;
-  std::vector<double> kxx, kxy, kyy;  // real spectra / (mx my)
+  std::vector<double> kxx, kxy, kyy;  // real spectra / (mx my), n + my k
   // per component: r2c along x on the first ny rows, c2c along y on every column, and back
   fftw_plan rf[2] = {nullptr, nullptr}, cf[2] = {nullptr, nullptr};
   fftw_plan cb[2] = {nullptr, nullptr}, rb[2] = {nullptr, nullptr};
 
+  // the padded lengths: at least twice the grid's (offsets -(n - 1) ... n - 1 without wrapping onto the grid),
+  // of small prime factors (fft_size)
   TangentialOperator(int nx_ext, int ny_, double dx, double dy, double G, double nu, bool plane_strain)
-      : nxe(nx_ext), ny(ny_), mx(2 * nx_ext), my(2 * ny_), nk(nx_ext + 1),
+      : nxe(nx_ext), ny(ny_), mx(fft_size(2 * nx_ext)), my(fft_size(2 * ny_)), nk(mx / 2 + 1),
         rows_x(fftw_alloc<double>(static_cast<std::size_t>(mx) * ny_)),
         rows_y(fftw_alloc<double>(static_cast<std::size_t>(mx) * ny_)),
         spec_x(fftw_alloc<fftw_complex>(static_cast<std::size_t>(my) * nk)),
@@ -171,12 +175,12 @@ struct TangentialOperator {
       double* rows[2] = {rows_x.get(), rows_y.get()};
       fftw_complex* spec[2] = {spec_x.get(), spec_y.get()};
       for (int c = 0; c < 2; ++c) {
-        rf[c] = fftw_plan_many_dft_r2c(1, &mx, ny, rows[c], nullptr, 1, mx, spec[c], nullptr, 1, nk, FFTW_ESTIMATE);
-        cf[c] = fftw_plan_many_dft(1, &my, nk, spec[c], nullptr, nk, 1, spec[c], nullptr, nk, 1, FFTW_FORWARD,
+        rf[c] = fftw_plan_many_dft_r2c(1, &mx, ny, rows[c], nullptr, 1, mx, spec[c], nullptr, my, 1, FFTW_ESTIMATE);
+        cf[c] = fftw_plan_many_dft(1, &my, nk, spec[c], nullptr, 1, my, spec[c], nullptr, 1, my, FFTW_FORWARD,
                                    FFTW_ESTIMATE);
-        cb[c] = fftw_plan_many_dft(1, &my, nk, spec[c], nullptr, nk, 1, spec[c], nullptr, nk, 1, FFTW_BACKWARD,
+        cb[c] = fftw_plan_many_dft(1, &my, nk, spec[c], nullptr, 1, my, spec[c], nullptr, 1, my, FFTW_BACKWARD,
                                    FFTW_ESTIMATE);
-        rb[c] = fftw_plan_many_dft_c2r(1, &mx, ny, spec[c], nullptr, 1, nk, rows[c], nullptr, 1, mx, FFTW_ESTIMATE);
+        rb[c] = fftw_plan_many_dft_c2r(1, &mx, ny, spec[c], nullptr, my, 1, rows[c], nullptr, 1, mx, FFTW_ESTIMATE);
       }
       kernel_forward = fftw_plan_dft_r2c_2d(my, mx, kernel.get(), spec_x.get(), FFTW_ESTIMATE);
     }
@@ -186,7 +190,8 @@ struct TangentialOperator {
       destroy_plans(&kernel_forward);
       throw std::runtime_error(fmt::format("exact: fftw_plan_many_dft failed for {} x {}", mx, my));
     }
-    // the three kernels at signed offsets, wrapped onto the padded grid (offset nxe, ny unused)
+    // the three kernels at signed offsets, wrapped onto the padded grid (offsets nxe ... mx - nxe and ny ... my - ny
+    // unused)
     std::vector<double> Kxx(n_pad), Kxy(n_pad), Kyy(n_pad);
     // the first quadrant, then by parity: xx, yy even in both offsets, xy odd in both
     for (int l = 0; l < ny; ++l) {
@@ -210,8 +215,10 @@ struct TangentialOperator {
     auto spectrum_of = [&](const std::vector<double>& K, std::vector<double>& out) {
       std::copy(K.begin(), K.end(), kernel.get());
       fftw_execute(kernel_forward);
-      out.resize(static_cast<std::size_t>(my) * nk);
-      for (std::size_t q = 0; q < out.size(); ++q) out[q] = spec_x.get()[q][0] * scale;
+      out.resize(static_cast<std::size_t>(my) * nk);  // the 2-D plan's (my x nk, row-major) transposed
+      for (std::size_t n = 0; n < static_cast<std::size_t>(my); ++n)
+        for (std::size_t k = 0; k < static_cast<std::size_t>(nk); ++k)
+          out[n + static_cast<std::size_t>(my) * k] = spec_x.get()[k + static_cast<std::size_t>(nk) * n][0] * scale;
     };
     spectrum_of(Kxx, kxx);
     spectrum_of(Kxy, kxy);
@@ -246,7 +253,8 @@ struct TangentialOperator {
     for (int c = 0; c < 2; ++c) {
       fftw_execute(rf[c]);
       double* S = reinterpret_cast<double*>(c == 0 ? X : Y);  // the padded rows' spectrum is zero
-      std::fill(S + 2 * static_cast<std::size_t>(ny) * nk, S + 2 * static_cast<std::size_t>(my) * nk, 0.0);
+      for (std::size_t k = 0; k < static_cast<std::size_t>(nk); ++k)
+        std::fill(S + 2 * (static_cast<std::size_t>(my) * k + ny), S + 2 * static_cast<std::size_t>(my) * (k + 1), 0.0);
       fftw_execute(cf[c]);
     }
     const std::size_t n = kxx.size();
