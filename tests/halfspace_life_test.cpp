@@ -258,6 +258,25 @@ TEST(HalfspaceOnProfiles, AnyStartConvergesToTheColdAnswer) {
   EXPECT_THROW(solve_halfspace(g, gap, h.Estar_Pa, kLoad, opt), std::invalid_argument);
 }
 
+// A start that loads one cell alone (as the coarse solve of a worn roller under spin handed its fine solve) has
+// no direction that keeps the load on its loaded set (r.t = 0) while the cells around it overlap: the solve begins
+// again from an even pressure and converges to the cold answer (it failed with "search direction lost" before)
+TEST(HalfspaceOnProfiles, StartOnOneCellConvergesToTheColdAnswer) {
+  const HertzContact h = solve_hertz({{kRx1, kRy1}, {kRx2, kFlat}}, steel(), kLoad);
+  const Grid g = make_grid(1.25 * h.a_m, 1.25 * h.b_m, GridSpec{24, 24});
+  Eigen::ArrayXXd gap(24, 24), spike = Eigen::ArrayXXd::Zero(24, 24);
+  for (int j = 0; j < 24; ++j)
+    for (int i = 0; i < 24; ++i) gap(i, j) = h.A_per_m * g.x_m(i) * g.x_m(i) + h.B_per_m * g.y_m(j) * g.y_m(j);
+  spike(12, 12) = 1e9;
+  const HalfspaceSolution cold = solve_halfspace(g, gap, h.Estar_Pa, kLoad);
+  HalfspaceOptions opt;
+  opt.initial_pressure_Pa = &spike;
+  const HalfspaceSolution warm = solve_halfspace(g, gap, h.Estar_Pa, kLoad, opt);
+  ASSERT_TRUE(warm.status.converged()) << warm.status.message;
+  EXPECT_NEAR(warm.approach_m / cold.approach_m, 1, 1e-8);
+  EXPECT_LT((warm.pressure_Pa - cold.pressure_Pa).abs().maxCoeff() / cold.pressure_Pa.maxCoeff(), 1e-6);
+}
+
 // Reference: the direct summation of Love's closed form (rectangle_influence_m_per_Pa, itself checked
 // against quadrature in halfspace_test.cpp). displacement_at_m switches to the expansion of the cell's
 // displacement beyond 4 cell sizes; near and far, it agrees with the closed form's sum within 1e-4.

@@ -54,6 +54,7 @@
 #include <utility>
 #include <cmath>
 #include <memory>
+#include <optional>
 #include <mutex>
 #include <stdexcept>
 #include <string>
@@ -465,11 +466,16 @@ HalfspaceSolution solve_halfspace(const Grid& grid, const Eigen::ArrayXXd& gap_m
                                   double normal_load_N, const HalfspaceOptions& opt) {
   check_halfspace_inputs(grid, gap_m, Estar_Pa, normal_load_N, opt);
   const int nx = grid.nx, ny = grid.ny;
-  PolonskyKeer pk(grid, gap_m, Estar_Pa, normal_load_N, opt.initial_pressure_Pa, opt.precondition);
+  std::optional<PolonskyKeer> solver;
+  solver.emplace(grid, gap_m, Estar_Pa, normal_load_N, opt.initial_pressure_Pa, opt.precondition);
+  PolonskyKeer* pk_now = &*solver;
+  bool warm = opt.initial_pressure_Pa != nullptr;
+  int earlier_products = 0;  // of a warm start given up
 
   int it = 0;
   HalfspaceSolution s;
   for (;; ++it) {
+    PolonskyKeer& pk = *pk_now;
     pk.measure_separation();
     if (pk.residual() <= opt.tol || it >= opt.max_iterations) pk.refresh_displacement();
     const double residual = pk.residual();
@@ -497,6 +503,19 @@ HalfspaceSolution solve_halfspace(const Grid& grid, const Eigen::ArrayXXd& gap_m
       pk.conjugate_direction();
       descends = pk.step_length(tau, rt);
     }
+    // A caller's start can leave a loaded set on which every direction that keeps the load is null (one loaded
+    // cell, or a separation constant over them: r.t = 0) while cells outside it overlap. The problem is convex,
+    // so its answer does not depend on the start: begin again from the even spread (seen on a worn roller under
+    // spin, whose fine solve started from the coarse one's single loaded cell).
+    if (!descends && warm) {
+      spdlog::debug("halfspace ({} x {}): the warm start's direction is lost (r.t = {:.3g}) after {} iterations; "
+                    "starting again from an even pressure", nx, ny, rt, it);
+      earlier_products += pk.products();
+      warm = false;
+      solver.emplace(grid, gap_m, Estar_Pa, normal_load_N, nullptr, opt.precondition);
+      pk_now = &*solver;
+      continue;
+    }
     if (!descends) {
       s.status.kind = SolveStatus::Kind::Failed;
       s.status.message = fmt::format("search direction lost (r.t = {:.3g}) with residual {:.2g} after {} iterations",
@@ -506,13 +525,14 @@ HalfspaceSolution solve_halfspace(const Grid& grid, const Eigen::ArrayXXd& gap_m
     pk.step(tau);
   }
 
+  PolonskyKeer& pk = *pk_now;
   s.pressure_Pa = std::move(pk.pressure());
   s.approach_m = pk.approach();
   const double cell_m2 = grid.dx_m * grid.dy_m;
   s.contact_area_m2 = static_cast<double>((s.pressure_Pa > 0).count()) * cell_m2;
   s.status.iterations = it;
   s.status.residual = pk.residual();
-  s.products = pk.products();
+  s.products = earlier_products + pk.products();
   // per solve: the pressure is non-negative and carries the load (it is rescaled to F every iteration)
   if (s.status.kind != SolveStatus::Kind::Failed) {
     ROLLWEAR_ASSERT(s.pressure_Pa.minCoeff() >= 0, fmt::format("pressure down to {} Pa", s.pressure_Pa.minCoeff()));
