@@ -86,6 +86,10 @@ bool parse_number(const std::string& text, double& value) {
   return end == text.c_str() + text.size() && std::isfinite(value) && errno != ERANGE;
 }
 
+bool has_column(const Table& t, const std::string& name) {
+  return std::find(t.header.begin(), t.header.end(), name) != t.header.end();
+}
+
 // the column of that name, each cell a finite number
 std::vector<double> column(const Table& t, const std::string& name) {
   const auto it = std::find(t.header.begin(), t.header.end(), name);
@@ -106,6 +110,7 @@ struct Snapshot {
   int index = 0;                                                  // KKKK of the file name
   double revolutions = std::numeric_limits<double>::quiet_NaN();  // "# revolutions:", nan if absent
   std::vector<double> y_m, z_original_m, z_m, depth_m;            // one per profile node
+  std::vector<double> damage;  // the Miner damage per node (a fatigue run's reference body, docs/fatigue.md), else empty
 };
 
 struct BodySnapshots {
@@ -148,6 +153,7 @@ Snapshot read_snapshot(const fs::path& path, int index) {
   s.z_original_m = column(t, "z_original_m");
   s.z_m = column(t, "z_m");
   s.depth_m = column(t, "depth_m");
+  if (has_column(t, "damage")) s.damage = column(t, "damage");
   return s;
 }
 
@@ -314,7 +320,7 @@ std::string summary_block(const RunOutput& run, double revolutions_divisor) {
   return out + "EOD\n";
 }
 
-// a snapshot as columns: y (mm), z original (mm), z (mm), depth (µm)
+// a snapshot as columns: y (mm), z original (mm), z (mm), depth (µm)[, damage]
 std::string snapshot_block(const std::string& name, const Snapshot& s) {
   std::string out = name + " << EOD\n";
   for (std::size_t r = 0; r < s.y_m.size(); ++r) {
@@ -323,6 +329,10 @@ std::string snapshot_block(const std::string& name, const Snapshot& s) {
       out += ' ';
     }
     put(out, s.depth_m[r] * 1e6);
+    if (!s.damage.empty()) {
+      out += ' ';
+      put(out, s.damage[r]);
+    }
     out += '\n';
   }
   return out + "EOD\n";
@@ -385,6 +395,31 @@ std::string depth_profile_figure(const std::string& case_name, const BodySnapsho
          "set key outside right top title 'revolutions'\n"
          "plot " +
          plot + "\n" + kFigureEnd;
+}
+
+// every snapshot of the body has the damage column (a fatigue run's reference body)
+bool has_damage(const BodySnapshots& b) {
+  return !b.snapshots.empty() &&
+         std::all_of(b.snapshots.begin(), b.snapshots.end(), [](const Snapshot& s) { return !s.damage.empty(); });
+}
+
+// the fatigue damage along the track (Miner's sum per profile node, docs/fatigue.md) at every snapshot, with the
+// crack-initiation line at damage 1
+std::string damage_profile_figure(const std::string& case_name, const BodySnapshots& b,
+                                  const std::vector<std::string>& blocks, const fs::path& output) {
+  std::string plot;
+  for (std::size_t k = 0; k < b.snapshots.size(); ++k)
+    plot += fmt::format("{} using 1:5 with lines lw 2 lc rgb '{}' {}, \\\n     ", blocks[k],
+                        snapshot_colour(k, b.snapshots.size()), snapshot_title(b.snapshots[k], k, b.snapshots.size()));
+  plot += "1 with lines lw 1.5 dt (8,6) lc rgb 'black' title 'damage 1: crack initiation'\n";
+  return figure_start(output, fmt::format("{}: {} fatigue damage along the track", case_name, b.body)) +
+         "set xlabel 'lateral position y (mm)'\n"
+         "set ylabel 'fatigue damage (Miner sum)'\n"
+         "set yrange [0:*]\n"
+         "set offsets 0, 0, graph 0.05, 0\n"
+         "set key outside right top title 'revolutions'\n"
+         "plot " +
+         plot + kFigureEnd;
 }
 
 // ---- files -------------------------------------------------------------------------------------------
@@ -521,6 +556,8 @@ std::vector<fs::path> draw(const RunOutput& run, const fs::path& plots, std::ost
     }
     script += profile_figure(run.case_name, body, blocks, picture("profile_" + body.body + ".png"));
     script += depth_profile_figure(run.case_name, body, blocks, picture("depth_profile_" + body.body + ".png"));
+    if (has_damage(body))
+      script += damage_profile_figure(run.case_name, body, blocks, picture("damage_profile_" + body.body + ".png"));
   }
   return render(script, picture.list, plots, err);
 }
@@ -599,9 +636,14 @@ SweepOutput read_sweep_output(const fs::path& dir) {
   const Table t = read_table(dir / "results.csv");
   static const std::vector<std::string> kTail = {"life_revolutions", "ended_by", "max_depth_m", "worn_volume_m3",
                                                  "status", "message"};
-  // a fatigue sweep's (docs/fatigue.md): max_damage after worn_volume_m3
-  static const std::vector<std::string> kFatigueTail = {"life_revolutions", "ended_by", "max_depth_m", "worn_volume_m3",
-                                                        "max_damage", "status", "message"};
+  // a sweep's with the failure margins (docs/fatigue.md, session/sweep.h kMarginColumns) after worn_volume_m3
+  static const std::vector<std::string> kFatigueTail = [] {
+    std::vector<std::string> tail = {"life_revolutions", "ended_by", "max_depth_m", "worn_volume_m3"};
+    std::istringstream margins(session::kMarginColumns);
+    for (std::string column; std::getline(margins, column, ',');) tail.push_back(column);
+    tail.insert(tail.end(), {"status", "message"});
+    return tail;
+  }();
   // a contact sweep's outputs, as session/sweep.h writes them: "index,<outputs>,status,message" with no keys
   static const std::vector<std::string> kContactTail = [] {
     std::vector<std::string> tail;
@@ -941,10 +983,6 @@ double round_down_125(double x) {
 }
 
 // ---- a cam's film and flash temperature over the revolution (cam.lubricant, cam.thermal: docs/cam-follower.md §17) ----
-
-bool has_column(const Table& t, const std::string& name) {
-  return std::find(t.header.begin(), t.header.end(), name) != t.header.end();
-}
 
 // the table of a lubricated cam revolution (revolution.csv of rollwear cam, dissipation.csv of a cam life) has them
 bool has_cam_film(const Table& t) { return has_column(t, "h_min_m") || has_column(t, "flash_max_K"); }

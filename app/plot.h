@@ -2,7 +2,7 @@
 //
 // Reads (columns found by their header names, so added columns do not matter):
 //   summary.csv                        revolutions, max_depth_m, p0_Pa; "# case: NAME" names the case
-//   snapshots/snapshot_KKKK_BODY.csv   y_m, z_original_m, z_m, depth_m; "# revolutions: R"
+//   snapshots/snapshot_KKKK_BODY.csv   y_m, z_original_m, z_m, depth_m[, damage]; "# revolutions: R"
 //   report.txt                         only "case: NAME", when summary.csv has no "# case:" line
 // Writes into OUTPUT_DIR/plots/ (each 1000 x 650, pngcairo, else gnuplot's png terminal):
 //   depth.png                 the maximum wear depth (µm) against revolutions
@@ -10,6 +10,8 @@
 //   profile_BODY.png          per worn body: the profile at each snapshot over the original, z (mm,
 //                             axis pointing down into the material) against y (mm)
 //   depth_profile_BODY.png    per worn body: the wear depth (µm, axis pointing down) against y (mm)
+//   damage_profile_BODY.png   a fatigue run's reference body (its snapshots have the damage column,
+//                             docs/fatigue.md): the Miner damage against y (mm) at each snapshot, the line damage 1
 // A sweep's output folder (rollwear sweep: results.csv and sweep.txt, docs/sweeps.md) instead gets
 //   life_vs_KEY.png           the life (log) against each varied key (dots every case with status ok, the
 //                             lives at the budget marked as lower bounds; on a product grid of more than one

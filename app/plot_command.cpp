@@ -6,7 +6,8 @@ namespace app {
 
 CLI::App* add_plot_command(CLI::App& app, PlotOptions& opt) {
   CLI::App* sub = app.add_subcommand("plot", "PNG plots of a wear run's output folder (gnuplot): the worn "
-                                             "profiles at every snapshot, depth and peak pressure against "
+                                             "profiles at every snapshot (and a fatigue run's damage along the "
+                                             "track), depth and peak pressure against "
                                              "revolutions, written to OUTPUT_DIR/plots/; of a sweep's folder: the life "
                                              "against each varied key and its distribution, or a contact sweep's "
                                              "contact against each varied key (docs/sweeps.md)");

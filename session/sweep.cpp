@@ -139,6 +139,27 @@ void read_input(YamlMap& m, RandomInput& in) {
     m.fail_here("[min, max] holds no probability of the normal (mean, sd): move the bounds nearer the mean");
 }
 
+// the case's report.txt has the failure margins (wear::failure_margins: wear.fatigue, wear.limits.shakedown or
+// wear.limits.scuffing true, or a thermal: section), read from its text so that a case refused as bad input has
+// the columns too
+bool has_failure_margins(const YAML::Node& doc) {
+  if (!doc.IsMap()) return false;
+  if (doc["thermal"]) return true;
+  const YAML::Node w = doc["wear"];
+  if (!w || !w.IsMap()) return false;
+  if (w["fatigue"]) return true;
+  const YAML::Node limits = w["limits"];
+  if (!limits || !limits.IsMap()) return false;
+  for (const char* key : {"shakedown", "scuffing"}) {
+    try {
+      if (limits[key] && limits[key].as<bool>()) return true;
+    } catch (const std::exception&) {
+      return true;  // not a boolean: the case is refused, its row has the columns all the same
+    }
+  }
+  return false;
+}
+
 }  // namespace
 
 Sweep read_sweep(const std::string& path) {
@@ -157,7 +178,7 @@ Sweep read_sweep(const std::string& path) {
     try {
       const YAML::Node b = contact::load_yaml_file(resolve_base(path, base).string());
       if (b.IsMap() && !b["wear"]) s.kind = SweepKind::Contact;
-      if (b.IsMap() && b["wear"] && b["wear"].IsMap() && b["wear"]["fatigue"]) s.fatigue = true;
+      if (b.IsMap() && b["wear"]) s.margins = has_failure_margins(b);
     } catch (const std::exception&) {
     }
     m.optional_section("output", [&](YamlMap& o) {
@@ -511,19 +532,19 @@ CaseStatus parse_case_status(const std::string& word) {
 
 namespace {
 // the columns of a case's outputs, between the inputs and the status
-std::string output_columns(SweepKind kind, bool fatigue) {
+std::string output_columns(SweepKind kind, bool margins) {
   if (kind == SweepKind::Contact) return "a_m,b_m,p0_Pa,approach_m,Fx_N,Fy_N,Mz_N_m,power_W,stick_fraction";
-  return std::string("life_revolutions,ended_by,max_depth_m,worn_volume_m3") + (fatigue ? ",max_damage" : "");
+  return std::string("life_revolutions,ended_by,max_depth_m,worn_volume_m3") + (margins ? std::string(",") + kMarginColumns : "");
 }
-std::size_t output_column_count(SweepKind kind, bool fatigue) {
-  return kind == SweepKind::Contact ? 9 : (fatigue ? 5 : 4);
+std::size_t output_column_count(SweepKind kind, bool margins) {
+  return kind == SweepKind::Contact ? 9 : (margins ? 8 : 4);
 }
 }  // namespace
 
-std::string results_header(const std::vector<std::string>& keys, SweepKind kind, bool fatigue) {
+std::string results_header(const std::vector<std::string>& keys, SweepKind kind, bool margins) {
   std::string h = "index";
   for (const std::string& k : keys) h += "," + csv_field(k);
-  return h + "," + output_columns(kind, fatigue) + ",status,message\n";
+  return h + "," + output_columns(kind, margins) + ",status,message\n";
 }
 
 std::string results_row(const CaseOutcome& o) {
@@ -536,15 +557,16 @@ std::string results_row(const CaseOutcome& o) {
   } else {
     r += "," + round_trip(o.life_revolutions) + "," + to_string(o.ended_by) + "," + round_trip(o.max_depth_m) + "," +
          round_trip(o.worn_volume_m3);
-    if (o.fatigue) r += "," + round_trip(o.max_damage);
+    if (o.margins)
+      for (const double v : {o.max_damage, o.depth_fraction, o.shakedown_margin, o.scuffing_margin_K}) r += "," + round_trip(v);
   }
   r += "," + to_string(o.status) + "," + csv_field(o.message);
   return r + "\n";
 }
 
-CaseStatus row_status(const std::string& row, std::size_t keys, SweepKind kind, bool fatigue) {
+CaseStatus row_status(const std::string& row, std::size_t keys, SweepKind kind, bool margins) {
   std::size_t at = 0;
-  for (std::size_t k = 0; k < keys + 1 + output_column_count(kind, fatigue); ++k) {  // index, the inputs, the outputs
+  for (std::size_t k = 0; k < keys + 1 + output_column_count(kind, margins); ++k) {  // index, the inputs, the outputs
     at = row.find(',', at);
     if (at == std::string::npos) throw std::invalid_argument("not a results row: " + contact::clipped(row));
     ++at;
@@ -567,10 +589,9 @@ CaseOutcome run_case(const std::string& yaml_text, long index, const std::vector
   CaseOutcome o;
   o.index = index;
   o.inputs = inputs;
-  // the row's max_damage column: from the text, so that a case refused as bad input has it too
+  // the row's margin columns: from the text, so that a case refused as bad input has them too
   try {
-    const YAML::Node doc = YAML::Load(yaml_text);
-    o.fatigue = doc.IsMap() && doc["wear"] && doc["wear"].IsMap() && doc["wear"]["fatigue"];
+    o.margins = has_failure_margins(YAML::Load(yaml_text));
   } catch (const std::exception&) {
   }
   std::filesystem::create_directories(dir);
@@ -614,7 +635,13 @@ CaseOutcome run_case(const std::string& yaml_text, long index, const std::vector
     o.ended_by = life.ended_by;
     o.max_depth_m = max_depth_m(m, life.state);
     o.worn_volume_m3 = (m.n1 > 0 ? worn_volume_m3(m, life.state, 1) : 0.0) + (m.n2 > 0 ? worn_volume_m3(m, life.state, 2) : 0.0);
-    if (o.fatigue) o.max_damage = max_damage(m, life.state);
+    // the margins as report.txt has them (the same text read back: the same doubles), NaN where it has none
+    if (o.margins)
+      for (const auto& [key, value] : failure_margins(m, life)) {
+        double* column = key == "max_damage" ? &o.max_damage : key == "depth_fraction" ? &o.depth_fraction
+                       : key == "shakedown_margin" ? &o.shakedown_margin : key == "scuffing_margin_K" ? &o.scuffing_margin_K : nullptr;
+        if (column) *column = std::stod(value);
+      }
     const bool failed = life.ended_by == LifeEnd::Failed || life.ended_by == LifeEnd::NotRun;
     o.status = failed ? CaseStatus::Failed : CaseStatus::Ok;
     o.message = life.message;
@@ -893,7 +920,7 @@ SweepRunSummary run_sweep(const Sweep& s, const SweepRunOptions& o) {
   long done = summary.resumed, failed = 0;
   const std::size_t nkeys = varied_keys(s).size();
   for (const auto& [i, row] : rows)
-    if (row_status(row, nkeys, s.kind, s.fatigue) != CaseStatus::Ok) ++failed;
+    if (row_status(row, nkeys, s.kind, s.margins) != CaseStatus::Ok) ++failed;
   std::size_t running = 0;
   std::exception_ptr error;  // a failure outside a case's own (the disk): the first one ends the sweep, exit 1
   const auto work = [&] {
@@ -933,7 +960,7 @@ SweepRunSummary run_sweep(const Sweep& s, const SweepRunOptions& o) {
       if (journal) journal->append(row);
       rows[row_index(row)] = row;
       ++done;
-      if (row_status(row, nkeys, s.kind, s.fatigue) != CaseStatus::Ok) ++failed;
+      if (row_status(row, nkeys, s.kind, s.margins) != CaseStatus::Ok) ++failed;
       const double elapsed_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
       if (o.progress && (elapsed_s - last_report_s >= o.progress_interval_s || done == summary.cases)) {
         o.progress(done, failed, summary.cases, elapsed_s);
@@ -969,10 +996,10 @@ SweepRunSummary run_sweep(const Sweep& s, const SweepRunOptions& o) {
   if (error) std::rethrow_exception(error);
   if (cancelled) throw SweepCancelled(fmt::format("sweep {}: cancelled after {} of {} cases", s.path, done, summary.cases));
   summary.failed = 0;
-  std::string table = results_header(varied_keys(s), s.kind, s.fatigue);
+  std::string table = results_header(varied_keys(s), s.kind, s.margins);
   for (const auto& [i, row] : rows) {
     table += row;
-    if (row_status(row, nkeys, s.kind, s.fatigue) != CaseStatus::Ok) ++summary.failed;
+    if (row_status(row, nkeys, s.kind, s.margins) != CaseStatus::Ok) ++summary.failed;
   }
   std::string info = fmt::format("fingerprint {:016x}\ncases {}\nshard {}/{}\nsampling {}\nseed {}\n", fingerprint,
                                  total, o.shard_k, o.shard_n, sampling_name(s), s.seed);

@@ -65,7 +65,9 @@ struct Sweep {
   std::string output_directory;   // output.directory, "" when not given
   bool case_files = true;         // output.case_files: each case's folder (case_NNNN/) written; false: the table alone
   SweepKind kind = SweepKind::Wear;  // from the base case: Contact when it has no wear: section
-  bool fatigue = false;              // the base case has wear.fatigue: results.csv gains max_damage
+  // the base case has wear.fatigue, wear.limits.shakedown or scuffing true, or a thermal: section (the cases whose
+  // report.txt has the failure margins, docs/fatigue.md): results.csv gains the margin columns (kMarginColumns)
+  bool margins = false;
   Sampling sampling = Sampling::Grid;
   Combine combine = Combine::Product;
   std::vector<SweepAxis> axes;    // grid
@@ -164,17 +166,23 @@ struct CaseOutcome {
   wear::LifeEnd ended_by = wear::LifeEnd::NotRun;
   double max_depth_m = std::numeric_limits<double>::quiet_NaN();
   double worn_volume_m3 = std::numeric_limits<double>::quiet_NaN();
-  // the case has wear.fatigue (docs/fatigue.md): its row carries max_damage after worn_volume_m3
-  bool fatigue = false;
+  // the case has the failure margins (Sweep::margins, has_failure_margins): its row carries them after
+  // worn_volume_m3, each report.txt's value (wear::failure_margins), NaN where the report has none
+  bool margins = false;
   double max_damage = std::numeric_limits<double>::quiet_NaN();
+  double depth_fraction = std::numeric_limits<double>::quiet_NaN();
+  double shakedown_margin = std::numeric_limits<double>::quiet_NaN();
+  double scuffing_margin_K = std::numeric_limits<double>::quiet_NaN();
   CaseStatus status = CaseStatus::Error;  // the pessimistic default
   std::string message;
 };
-// a wear sweep whose base case has wear.fatigue (fatigue) has a max_damage column after worn_volume_m3
-std::string results_header(const std::vector<std::string>& keys, SweepKind kind = SweepKind::Wear, bool fatigue = false);
+// a wear sweep whose base case has the failure margins (margins) has these columns after worn_volume_m3, in this
+// order (max_damage first: where a fatigue sweep has always had it)
+inline constexpr const char* kMarginColumns = "max_damage,depth_fraction,shakedown_margin,scuffing_margin_K";
+std::string results_header(const std::vector<std::string>& keys, SweepKind kind = SweepKind::Wear, bool margins = false);
 std::string results_row(const CaseOutcome& o);  // one line, ending in '\n'
 // a row's status (the inputs before it are `keys` columns); std::invalid_argument for a line that has none
-CaseStatus row_status(const std::string& row, std::size_t keys, SweepKind kind = SweepKind::Wear, bool fatigue = false);
+CaseStatus row_status(const std::string& row, std::size_t keys, SweepKind kind = SweepKind::Wear, bool margins = false);
 // the leading index of a row; throws std::invalid_argument for a line that has none
 long row_index(const std::string& row);
 

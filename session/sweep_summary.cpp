@@ -147,7 +147,8 @@ std::string sweep_summary(const std::string& results_csv, const std::string& swe
   std::getline(table, header);
   const std::vector<std::string> head = split_fields(header, 1000);
   if (head.size() < 7) throw std::invalid_argument("sweep_summary: not a results table");
-  // the inputs run from after the index to life_revolutions; a fatigue sweep's max_damage follows worn_volume_m3
+  // the inputs run from after the index to life_revolutions; the margin columns (with the failure margins) follow
+  // worn_volume_m3
   const auto life_column = std::find(head.begin(), head.end(), "life_revolutions");
   if (life_column == head.end()) throw std::invalid_argument("sweep_summary: not a results table (no life_revolutions)");
   const std::size_t k = static_cast<std::size_t>(life_column - head.begin()) - 1;

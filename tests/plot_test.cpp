@@ -16,6 +16,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include <spdlog/fmt/fmt.h>
@@ -175,6 +176,38 @@ TEST_F(PlotCommand, DrawsEveryPictureOfARunAndListsThem) {
     EXPECT_TRUE(is_png(run / "plots" / name));
     EXPECT_NE(r.out.find((run / "plots" / name).string() + "\n"), std::string::npos) << r.out;
   }
+  EXPECT_FALSE(has_temporary(run));
+}
+
+// a fatigue run's folder (docs/fatigue.md): the reference body's snapshots carry the Miner damage per node, the other
+// body's do not; the damage along the track is drawn for body1 beside its worn profiles, for body2 not
+TEST_F(PlotCommand, FatigueRunDrawsTheDamageAlongTheTrackOfTheBodyThatHasIt) {
+  const fs::path run = dir_ / "run";
+  write_run_output(run);
+  for (const auto& [file, revolutions, peak] : {std::tuple{"snapshot_0000_body1.csv", 1.5e7, 0.4},
+                                                std::tuple{"snapshot_0001_body1.csv", 3.0e7, 0.8}}) {
+    std::istringstream in(snapshot_csv(revolutions, 5e-6));
+    std::string text, line;
+    while (std::getline(in, line)) {
+      if (line.rfind("#", 0) == 0) text += line + "\n";
+      else if (line.rfind("y_m", 0) == 0) text += line + ",damage\n";
+      else {
+        const double y = std::stod(line.substr(0, line.find(',')));
+        text += line + "," + fmt::format("{}", peak * std::exp(-(y / 0.004) * (y / 0.004))) + "\n";
+      }
+    }
+    write_text(run / "snapshots" / file, text);
+  }
+  write_text(run / "snapshots" / "snapshot_0000_body2.csv", snapshot_csv(3.0e7, 1e-6));
+  const Result r = plot(run);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.err, "");
+  const std::vector<std::string> pictures = {"damage_profile_body1.png", "depth.png", "depth_profile_body1.png",
+                                             "depth_profile_body2.png", "pressure.png", "profile_body1.png",
+                                             "profile_body2.png"};
+  EXPECT_EQ(files_under(run / "plots"), pictures);
+  EXPECT_TRUE(is_png(run / "plots" / "damage_profile_body1.png"));
+  EXPECT_NE(r.out.find((run / "plots" / "damage_profile_body1.png").string() + "\n"), std::string::npos) << r.out;
   EXPECT_FALSE(has_temporary(run));
 }
 

@@ -517,6 +517,60 @@ TEST_F(SweepFile, GridElasticityOfArchardsCoefficientIsMinusOne) {
   ASSERT_FALSE(line.empty()) << summary;
   EXPECT_NEAR(std::stod(line.substr(std::string("  wear.body1.archard_k: ").size())), -1.0, kTolerance) << summary;
   EXPECT_NE(line.find("central"), std::string::npos) << summary;
+  // a base case without wear.fatigue, a shakedown or scuffing limit or thermal: (docs/fatigue.md): no margin
+  // columns in the table, no damage column in the snapshots
+  std::istringstream table(read_text(dir_ / "out" / "results.csv"));
+  std::string header, row;
+  std::getline(table, header);
+  EXPECT_EQ(header, "index,wear.body1.archard_k,life_revolutions,ended_by,max_depth_m,worn_volume_m3,status,message");
+  while (std::getline(table, row)) {  // the status right after worn_volume_m3 (the message may hold commas)
+    const std::string before_status = row.substr(0, row.find(",ok,"));
+    EXPECT_EQ(std::count(before_status.begin(), before_status.end(), ','), 5) << row;
+  }
+  const std::string snapshot = read_text(dir_ / "out" / "case_0000" / "snapshots" / "snapshot_0000_body1.csv");
+  EXPECT_NE(snapshot.find("\ny_m,z_original_m,z_m,depth_m\n"), std::string::npos) << snapshot.substr(0, 200);
+}
+
+// Which base cases give the table the margin columns: those whose report.txt has the failure margins
+// (wear::failure_margins: wear.fatigue, wear.limits.shakedown or scuffing true, a thermal: section); read, not run
+TEST_F(SweepFile, MarginColumnsFollowTheSectionsThatGiveTheReportItsMargins) {
+  const std::string plain = read_text(dir_ / "base.yaml");
+  int variants = 0;
+  const auto margins_of = [&](const std::string& base) {
+    const std::string name = "variant" + std::to_string(variants++);
+    write_text(dir_ / (name + ".yaml"), base);
+    write_text(dir_ / (name + "_sweep.yaml"), "base: " + name + ".yaml\naxes:\n  - { key: friction.mu, values: [0.2] }\n");
+    return read_sweep((dir_ / (name + "_sweep.yaml")).string()).margins;
+  };
+  const auto with_wear_key = [&](const std::string& line) {
+    return std::regex_replace(plain, std::regex("\nwear:\n"), "\nwear:\n" + line + "\n");
+  };
+  ASSERT_NE(with_wear_key("  x: 1"), plain) << "the base case has no 'wear:' line to add keys under";
+  EXPECT_FALSE(margins_of(plain));
+  EXPECT_TRUE(margins_of(with_wear_key("  fatigue: { law: burstow }")));
+  EXPECT_TRUE(margins_of(plain + "\nthermal: { bulk_temperature_C: 80 }\n"));  // top level (plain ends indented)
+  const auto with_limit = [&](const std::string& entry) {
+    return std::regex_replace(plain, std::regex("edge: true \\}"), "edge: true, " + entry + " }");
+  };
+  ASSERT_NE(with_limit("shakedown: true"), plain) << "the base case has no limits to add one to";
+  EXPECT_TRUE(margins_of(with_limit("shakedown: true")));
+  EXPECT_TRUE(margins_of(with_limit("scuffing: true")));
+  EXPECT_FALSE(margins_of(with_limit("shakedown: false")));
+  EXPECT_EQ(results_header({"friction.mu"}),
+            "index,friction.mu,life_revolutions,ended_by,max_depth_m,worn_volume_m3,status,message\n");
+  EXPECT_EQ(results_header({"friction.mu"}, SweepKind::Wear, true),
+            "index,friction.mu,life_revolutions,ended_by,max_depth_m,worn_volume_m3,max_damage,depth_fraction,"
+            "shakedown_margin,scuffing_margin_K,status,message\n");
+  // a row without margins is as it was; with them, a case refused as bad input has NaN in each
+  CaseOutcome o;
+  o.index = 3;
+  o.inputs = {0.2};
+  o.status = CaseStatus::BadInput;
+  o.message = "bad";
+  EXPECT_EQ(results_row(o), "3,0.2,nan,not_run,nan,nan,bad_input,bad\n");
+  o.margins = true;
+  EXPECT_EQ(results_row(o), "3,0.2,nan,not_run,nan,nan,nan,nan,nan,nan,bad_input,bad\n");
+  EXPECT_EQ(row_status(results_row(o), 1, SweepKind::Wear, true), CaseStatus::BadInput);
 }
 
 // A sweep of a fatigue case (docs/fatigue.md): results.csv carries max_damage after worn_volume_m3; at 10 % slip the
@@ -535,7 +589,8 @@ TEST_F(SweepFile, FatigueSweepCarriesTheDamageColumn) {
   std::getline(table, header);
   std::getline(table, slow);
   std::getline(table, fast);
-  EXPECT_EQ(header, "index,kinematics.xi,life_revolutions,ended_by,max_depth_m,worn_volume_m3,max_damage,status,message");
+  EXPECT_EQ(header, "index,kinematics.xi,life_revolutions,ended_by,max_depth_m,worn_volume_m3,max_damage,depth_fraction,"
+                    "shakedown_margin,scuffing_margin_K,status,message");
   const auto field = [](const std::string& row, int k) {
     std::istringstream in(row);
     std::string f;
@@ -547,7 +602,31 @@ TEST_F(SweepFile, FatigueSweepCarriesTheDamageColumn) {
   EXPECT_LT(std::stod(field(slow, 6)), 1.0) << slow;
   EXPECT_EQ(field(fast, 3), "fatigue") << fast;
   EXPECT_NEAR(std::stod(field(fast, 6)), 1.0, 1e-9) << fast;
-  EXPECT_EQ(field(fast, 7), "ok") << fast;
+  EXPECT_EQ(field(fast, 10), "ok") << fast;
+  // the margins are each case's report.txt's, to the digit; the case has no k and no thermal: NaN there
+  for (const auto& [row, folder] : {std::pair{slow, "case_0000"}, std::pair{fast, "case_0001"}}) {
+    const std::string report = read_text(dir_ / "out" / folder / "report.txt");
+    for (const auto& [column, key] : {std::pair{6, "max_damage"}, std::pair{7, "depth_fraction"}})
+      EXPECT_NE(report.find(std::string("\n") + key + ": " + field(row, column) + "\n"), std::string::npos)
+          << key << " " << row << "\n" << report;
+    EXPECT_EQ(field(row, 8), "nan") << row;
+    EXPECT_EQ(field(row, 9), "nan") << row;
+    // the damage along the track: the last snapshot's damage column, whose largest is the row's max_damage
+    std::istringstream snapshot(read_text(dir_ / "out" / folder / "snapshots" / "snapshot_0001_body1.csv"));
+    std::string line;
+    while (std::getline(snapshot, line) && line.rfind("#", 0) == 0) {
+    }
+    EXPECT_EQ(line, "y_m,z_original_m,z_m,depth_m,damage");
+    double largest = 0;
+    int nodes = 0;
+    while (std::getline(snapshot, line)) {
+      largest = std::max(largest, std::stod(field(line, 4)));
+      ++nodes;
+    }
+    EXPECT_GT(nodes, 10);
+    EXPECT_EQ(largest, std::stod(field(row, 6))) << folder;
+  }
+  EXPECT_FALSE(fs::exists(dir_ / "out" / "case_0001" / "snapshots" / "snapshot_0001_body2.csv"));
   EXPECT_NE(read_text(dir_ / "out" / "summary.txt").find("2 ok"), std::string::npos) << read_text(dir_ / "out" / "summary.txt");
   EXPECT_EQ(rollwear("plot " + q(dir_ / "out"), dir_).exit_code, 0);
 }

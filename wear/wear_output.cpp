@@ -107,10 +107,15 @@ std::string wear_snapshot_csv(const WearModel& m, int body, double N, double hou
   if (n == 0) throw std::invalid_argument(fmt::format("wear snapshot: body{} does not wear", body));
   std::string s = fmt::format("# case: {}\n# body: body{}\n# revolutions: {}\n# hours: {}\n", m.name, body, round_trip(N),
                               round_trip(hours));
-  s += "y_m,z_original_m,z_m,depth_m\n";
+  // with wear.fatigue, the reference body's (the first that wears) Miner damage at each node (docs/fatigue.md §2)
+  const bool damage = m.nD > 0 && body == (m.law1 ? 1 : 2);
+  if (damage && m.nD != n) throw std::logic_error("wear snapshot: the damage's nodes are not the reference body's");
+  s += damage ? "y_m,z_original_m,z_m,depth_m,damage\n" : "y_m,z_original_m,z_m,depth_m\n";
   for (int i = 0; i < n; ++i) {
     const double d = state(offset + i);
-    s += fmt::format("{},{},{},{}\n", round_trip(p.y_m(i)), round_trip(p.z_m(i)), round_trip(p.z_m(i) + d), round_trip(d));
+    s += fmt::format("{},{},{},{}", round_trip(p.y_m(i)), round_trip(p.z_m(i)), round_trip(p.z_m(i) + d), round_trip(d));
+    if (damage) s += "," + round_trip(state(m.damage_index() + i) / m.damage_scale_m);
+    s += "\n";
   }
   return s;
 }

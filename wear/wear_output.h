@@ -9,7 +9,9 @@
 //                                      located within a step adds a last row at the limit (the step
 //                                      cut short: error_estimate 0)
 //   snapshots/snapshot_KKKK_BODY.csv   '# case: ', '# body: ', '# revolutions: ', '# hours: ', then
-//     y_m,z_original_m,z_m,depth_m     one row per profile node of a worn body
+//     y_m,z_original_m,z_m,depth_m[,damage]
+//                                      one row per profile node of a worn body (damage: with wear.fatigue, the
+//                                      Miner damage of the reference body's node, on its snapshots only)
 //   report.txt                         'key: value' lines: the predicted life and what ended it
 //                                      (life_report_text)
 //   checkpoint.txt                     the state to resume from and what the rate carries from step to step
