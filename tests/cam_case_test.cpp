@@ -18,11 +18,14 @@
 #include "cam/revolution.h"
 #include "lib/errors.h"
 #include "lib/numeric.h"
+#include "tests/run_rollwear.h"
 #include "tests/temp_dir.h"
 
 namespace {
 
 namespace fs = std::filesystem;
+using rollwear_test::CommandRun;
+using rollwear_test::rollwear;
 using rollwear_test::TempDirTest;
 
 const fs::path kSource = ROLLWEAR_SOURCE_DIR;
@@ -233,16 +236,6 @@ TEST_F(CamCaseTest, LiftTableIsReadFittedAndRunLikeTheLaw) {
   }
 }
 
-struct CommandRun {
-  int exit_code = -1;
-  std::string out, err;
-};
-CommandRun rollwear(const std::string& args, const fs::path& dir) {
-  const fs::path out = dir / "stdout.txt", err = dir / "stderr.txt";
-  const int status = std::system(("'" + std::string(ROLLWEAR_EXE) + "' " + args + " >'" + out.string() + "' 2>'" +
-                                  err.string() + "'").c_str());
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, read_text(out), read_text(err)};
-}
 
 // (the shipped case on 180 angle steps and a 16 x 16 grid: the command's work, not its resolution, is checked)
 TEST_F(CamCaseTest, CommandWritesTheRevolutionTableAndStopsAboveTheJumpSpeed) {

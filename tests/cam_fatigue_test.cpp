@@ -18,6 +18,7 @@
 #include "lib/errors.h"
 #include "lib/numeric.h"
 #include "lib/subsurface/shakedown.h"
+#include "tests/run_rollwear.h"
 #include "tests/temp_dir.h"
 #include "tests/test_text.h"
 
@@ -26,6 +27,8 @@ namespace {
 namespace fs = std::filesystem;
 using rollwear_test::lines_of;
 using rollwear_test::read_text;
+using rollwear_test::CommandRun;
+using rollwear_test::rollwear;
 using rollwear_test::TempDirTest;
 
 const fs::path kSource = ROLLWEAR_SOURCE_DIR;
@@ -127,16 +130,6 @@ TEST_F(CamFatigue, WithoutTheKeysNothingChangesAndTheColumnsChangeNoOther) {
       << cam::cam_summary(w);
 }
 
-struct CommandRun {
-  int exit_code = -1;
-  std::string out, err;
-};
-CommandRun rollwear(const std::string& args, const fs::path& dir) {
-  const fs::path out = dir / "stdout.txt", err = dir / "stderr.txt";
-  const int status = std::system(("'" + std::string(ROLLWEAR_EXE) + "' " + args + " >'" + out.string() + "' 2>'" +
-                                  err.string() + "'").c_str());
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, read_text(out), read_text(err)};
-}
 
 int line_of(const std::string& file_text, const std::string& text) {
   const std::size_t at = file_text.find(text);

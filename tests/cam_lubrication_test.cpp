@@ -21,6 +21,7 @@
 #include "lib/errors.h"
 #include "lib/lubrication/film.h"
 #include "lib/thermal/flash_temperature.h"
+#include "tests/run_rollwear.h"
 #include "tests/temp_dir.h"
 #include "tests/test_text.h"
 
@@ -29,6 +30,8 @@ namespace {
 namespace fs = std::filesystem;
 using rollwear_test::lines_of;
 using rollwear_test::read_text;
+using rollwear_test::CommandRun;
+using rollwear_test::rollwear;
 using rollwear_test::TempDirTest;
 
 const fs::path kSource = ROLLWEAR_SOURCE_DIR;
@@ -185,16 +188,6 @@ TEST_F(CamLubrication, ShippedLubricatedCaseIsQuasiSteadyInTemperature) {
   for (const cam::AngleLubrication& a : l.angles) EXPECT_GE(a.lambda, l.angles[l.min_lambda].lambda);
 }
 
-struct CommandRun {
-  int exit_code = -1;
-  std::string out, err;
-};
-CommandRun rollwear(const std::string& args, const fs::path& dir) {
-  const fs::path out = dir / "stdout.txt", err = dir / "stderr.txt";
-  const int status = std::system(("'" + std::string(ROLLWEAR_EXE) + "' " + args + " >'" + out.string() + "' 2>'" +
-                                  err.string() + "'").c_str());
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, read_text(out), read_text(err)};
-}
 
 std::string error_of(const fs::path& p) {
   try {
