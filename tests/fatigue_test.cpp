@@ -19,6 +19,7 @@
 #include "wear/wear_case.h"
 #include "wear/wear_loop.h"
 #include "wear/wear_output.h"
+#include "tests/test_text.h"
 
 namespace wear {
 namespace {
@@ -26,12 +27,7 @@ namespace {
 namespace fs = std::filesystem;
 const fs::path kSource = ROLLWEAR_SOURCE_DIR;
 
-std::string read_text(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using rollwear_test::read_text;
 
 // the shipped fatigue case's text with one piece replaced
 std::string fatigue_case_text(const std::string& from = "", const std::string& to = "") {

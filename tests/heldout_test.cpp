@@ -28,6 +28,7 @@
 #include "lib/tangential/kalker.h"
 #include "lib/tangential/relaxed.h"
 #include "lib/tangential/relaxed_mix_table.h"
+#include "tests/ellipse_patch.h"
 
 namespace contact {
 namespace {
@@ -45,15 +46,7 @@ constexpr double kTransientTarget = 0.03;  // of the steady value, at every roll
 
 ElasticPair steel(double nu) { return {{210e9, nu}, {210e9, nu}}; }
 
-// fast_model_report's contact: a Hertz ellipse of a/b, b = 1 mm, p0 = 1 GPa, on n x n cells
-ContactPatch ellipse_patch(double ab, int n) {
-  HertzContact h;
-  h.b_m = 1e-3;
-  h.a_m = ab * h.b_m;
-  h.p0_Pa = 1e9;
-  h.normal_load_N = 2 * kPi * h.a_m * h.b_m * h.p0_Pa / 3;
-  return hertz_patch(h, make_grid(h.a_m, h.b_m, {n, n}));
-}
+using rollwear_test::ellipse_patch;
 
 // uniform in [0, 1) from the 53 high bits of mt19937_64, whose sequence the standard fixes (its distributions
 // are the library's own: not portable)

@@ -25,6 +25,7 @@
 #include "lib/tangential/kalker.h"
 #include "lib/tangential/satran.h"
 #include "lib/tangential/steady.h"
+#include "tests/ellipse_patch.h"
 
 namespace contact {
 namespace {
@@ -49,15 +50,7 @@ ContactPatch paper_patch(int n) {
   return solve_normal_hertz(bodies, kSteel, 1500, {n, n});
 }
 
-// a Hertz ellipse of a/b with b = 1 mm, p0 = 1 GPa on n x n cells (fast_model_report's contact)
-ContactPatch ellipse_patch(double ab, int n) {
-  HertzContact h;
-  h.b_m = 1e-3;
-  h.a_m = ab * h.b_m;
-  h.p0_Pa = 1e9;
-  h.normal_load_N = 2 * kPi * h.a_m * h.b_m * h.p0_Pa / 3;
-  return hertz_patch(h, make_grid(h.a_m, h.b_m, {n, n}));
-}
+using rollwear_test::ellipse_patch;
 
 // the targets (not loosened): the transient force within 2 % of the exact steady force at every rolled
 // distance, the steady Fx within 2 %
