@@ -21,7 +21,9 @@
 #include <fstream>
 #include <iomanip>
 #include <sstream>
+#include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "lib/grid.h"
@@ -877,18 +879,24 @@ TEST_F(CommandLine, ExactTheoryRefusedWhereItDoesNotRun) {
 
 // ---- contact on profiles ---------------------------------------------------------------------------
 
+// cases/paper.yaml on 24 x 24 with `extra` added to body 2's keys (the path), written to dir/name; its text too
+std::pair<fs::path, std::string> paper_case_with_body2_keys(const fs::path& dir, const std::string& name,
+                                                            const std::string& extra) {
+  std::string text = read_text(kSource / "cases" / "paper.yaml");
+  const std::string path_body = "body2: { Rx_m: 0.025, Ry_m: .inf,  E_Pa: 210.0e9, nu: 0.28";
+  const std::size_t at = text.find(path_body);
+  if (at == std::string::npos) throw std::runtime_error("cases/paper.yaml: body 2's line not found");
+  text.insert(at + path_body.size(), extra);
+  text = with_solver(text, "solver:     { nx: 80, ny: 80", "solver:     { nx: 24, ny: 24");
+  std::ofstream(dir / name) << text;
+  return {dir / name, text};
+}
+
 // the worn crown is not of constant curvature: solver.normal auto runs the semi-Hertzian solver
 // bodies.body2.shear_yield_Pa: the path's fatigue indicators (fatigue.csv, the summary); --no-subsurface
 // writes none of the three and removes an earlier run's; a k out of range is bad input naming the key
 TEST_F(CommandLine, ContactWithShearYieldReportsFatigueOfThatBody) {
-  std::string text = read_text(kSource / "cases" / "paper.yaml");
-  const std::string path_body = "body2: { Rx_m: 0.025, Ry_m: .inf,  E_Pa: 210.0e9, nu: 0.28";
-  const std::size_t at = text.find(path_body);
-  ASSERT_NE(at, std::string::npos);
-  text.insert(at + path_body.size(), ", shear_yield_Pa: 350.0e6");
-  text = with_solver(text, "solver:     { nx: 80, ny: 80", "solver:     { nx: 24, ny: 24");
-  const fs::path c = dir_ / "paper-k.yaml";
-  std::ofstream(c) << text;
+  const auto [c, text] = paper_case_with_body2_keys(dir_, "paper-k.yaml", ", shear_yield_Pa: 350.0e6");
   const fs::path out = dir_ / "k";
   const ProcessResult r = rollwear("contact " + quoted(c) + " -o " + quoted(out) + " --log-level warn", dir_);
   ASSERT_EQ(r.exit_code, 0) << r.err;
@@ -917,14 +925,7 @@ TEST_F(CommandLine, ContactWithShearYieldReportsFatigueOfThatBody) {
 
 // Dang Van's index of a body with bodies.bodyN.dang_van: the summary line, dang_van.csv; its keys checked
 TEST_F(CommandLine, ContactWithDangVanReportsItsIndex) {
-  std::string text = read_text(kSource / "cases" / "paper.yaml");
-  const std::string path_body = "body2: { Rx_m: 0.025, Ry_m: .inf,  E_Pa: 210.0e9, nu: 0.28";
-  const std::size_t at = text.find(path_body);
-  ASSERT_NE(at, std::string::npos);
-  text.insert(at + path_body.size(), ", dang_van: { a: 0.3, b_Pa: 300.0e6 }");
-  text = with_solver(text, "solver:     { nx: 80, ny: 80", "solver:     { nx: 24, ny: 24");
-  const fs::path c = dir_ / "paper-dv.yaml";
-  std::ofstream(c) << text;
+  const auto [c, text] = paper_case_with_body2_keys(dir_, "paper-dv.yaml", ", dang_van: { a: 0.3, b_Pa: 300.0e6 }");
   const fs::path out = dir_ / "dv";
   const ProcessResult r = rollwear("contact " + quoted(c) + " -o " + quoted(out) + " --log-level warn", dir_);
   ASSERT_EQ(r.exit_code, 0) << r.err;
