@@ -586,6 +586,19 @@ TEST(Fidelity, CorrectedCollectiveStoppedAndResumedFromItsCheckpointIsTheUninter
   EXPECT_TRUE(std::isfinite(whole.error.power_l1));
 }
 
+// A corrected transient duty cycle stopped and resumed from its checkpoint (its correction holds the steady part's
+// rates) ends as the uninterrupted life to the bit. start-stop-wear on 12 x 12, fixed-depth steps.
+TEST(Fidelity, CorrectedTransientLifeStoppedAndResumedFromItsCheckpointIsTheUninterruptedOneToTheBit) {
+  WearCase c = shipped_case("start-stop-wear", contact::Fidelity::Corrected, 12);
+  c.wear.snapshots_revolutions.clear();
+  c.wear.stepping.method = IntegratorOptions::Method::FixedDepth;
+  c.wear.stepping.max_depth_step_m = 2e-6;
+  c.wear.limits.max_depth_m = 1.6e-5;
+  LifeResult whole;
+  ASSERT_NO_FATAL_FAILURE(expect_resumed_life_is_the_whole_one(c, 4, "transient_corrected_checkpoint.txt", whole));
+  EXPECT_GT(whole.exact_solves, 1);
+}
+
 // The corrected fidelity refuses, at its key with the file and line, a transient duty cycle without a steady part
 // and a collective's condition without friction (naming the condition)
 TEST(Fidelity, CorrectedRefusesWhatItCannotCorrectAtTheKey) {
