@@ -87,6 +87,11 @@ void print_contact_summary(const ContactCase& c, const NormalSolution& normal, c
   fmt::print("  creep forces    Fx = {:.6g} N, Fy = {:.6g} N, Mz = {:.6g} N m\n", s.Fx_N, s.Fy_N, s.Mz_N_m);
   fmt::print("  dissipated      P  = {:.6g} W, creep work = {:.6g} W\n", s.power_W, s.creep_work_W);
   fmt::print("  stick fraction     {:.4f}\n", s.stick_fraction);
+  // which models ran, and the error estimate a wear life reports (docs/fidelity.md): none here
+  const bool exact = normal.solver == NormalSolverKind::Halfspace && scheme == TangentialScheme::Exact;
+  fmt::print("  error estimate     {}\n", exact ? "none needed: the exact physics ran (half-space, Kalker's exact theory)"
+                                                : "not estimated against the exact physics (solver: { normal: halfspace, "
+                                                  "tangential: exact } solves it; docs/fidelity.md)");
 }
 
 // the subsurface maxima and, where a body has k, its fatigue indicators

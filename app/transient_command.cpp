@@ -115,6 +115,11 @@ void print_transient_summary(const ContactCase& c, const TransientCase& t, const
   }
   for (std::size_t k = 0; k < res.snapshots.size(); ++k)
     fmt::print("  snapshot {}      t  = {:.6g} s\n", k + 1, res.snapshots[k].t_s);
+  // the error estimate a wear life reports (docs/fidelity.md): none here
+  fmt::print("  error estimate     {}\n", c.solver.tangential == TangentialScheme::Exact
+                                            ? "none needed: Kalker's exact theory ran"
+                                            : "not estimated against the exact physics (solver: { tangential: exact } "
+                                              "solves it; docs/fidelity.md)");
 }
 
 }  // namespace

@@ -65,4 +65,12 @@ int collective_threads(const WearModel& m);
 // largest over the conditions. A condition's exception (the first in k's order) is rethrown.
 WearRate collective_rate(const WearModel& m, const Eigen::VectorXd& state, WearCache& cache);
 
+// The collective's error estimate (docs/fidelity.md) from its conditions' (each at its own last correction, or on
+// the final state for the fast fidelity): N the oldest of theirs; the total power's relative error of the
+// weighted sum, sum_k w_k E_k (1 + rel_k) / sum_k w_k E_k - 1 (E_k the exact physics' energy per revolution); the
+// per-strip L1 as the energy-weighted mean of theirs, sum_k w_k E_k L1_k / sum_k w_k E_k, which bounds the
+// weighted sum's L1 from above (the triangle inequality; equal where the conditions' errors have one sign at
+// every node). NaN unless every condition has an estimate.
+FidelityError collective_error(const WearModel& m, const WearCache& cache);
+
 }  // namespace wear
