@@ -17,7 +17,6 @@
 #include <memory>
 #include <mutex>
 #include <numeric>
-#include <regex>
 #include <set>
 #include <sstream>
 #include <stdexcept>

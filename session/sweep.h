@@ -37,11 +37,13 @@
 #include <utility>
 #include <vector>
 
-#include <yaml-cpp/yaml.h>
-
 #include "lib/io/case.h"
 #include "session/sweep_random.h"
 #include "wear/wear_loop.h"
+
+namespace YAML {
+class Node;  // <yaml-cpp/yaml.h>, which only session/sweep*.cpp need
+}  // namespace YAML
 
 namespace session {
 

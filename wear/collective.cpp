@@ -9,6 +9,7 @@
 #include <utility>
 
 #include "lib/errors.h"
+#include "lib/io/yaml_reader.h"
 #include "lib/number.h"
 
 namespace wear {

@@ -25,9 +25,12 @@
 #include <vector>
 
 #include "lib/io/case.h"
-#include "lib/io/yaml_reader.h"
 #include "wear/wear_case.h"
 #include "wear/wear_loop.h"
+
+namespace contact {
+class YamlValue;  // lib/io/yaml_reader.h (yaml-cpp stays out of the wear loop's includes)
+}  // namespace contact
 
 namespace wear {
 
