@@ -60,6 +60,7 @@ ExtrapolatedExactSolution solve_exact_steady_extrapolated(const ContactPatch& pa
     r.status.message = "coarse grid of the extrapolation: " + r.status.message;
     return r;
   }
+  r.status.message += "; on half the cells: " + r.coarse.status.message + " (grid extrapolation)";
   const TangentialSolution &h = r.fine.fields, &c = r.coarse.fields;
   // Richardson: Q_h + (Q_h - Q_2h)/(2^p - 1)
   const double w = 1 / (std::pow(2.0, order) - 1);
