@@ -786,10 +786,27 @@ TEST_F(CaseReader, TypoInARequiredKeyNamesItAndTheClosestKey) {
                                      "section is missing)");
   // inside a section: an optional key misspelt is named with the closest one
   EXPECT_EQ(error_of(kMinimalCase + "solver: { nx: 20, nyy: 20 }\n"),
-            path() + ":6:19: solver.nyy: unknown key, did you mean 'ny'? (valid: correction_grid, correction_tolerance, error_estimate, fidelity, max_memory_bytes, normal, nx, ny, tangential)");
+            path() + ":6:19: solver.nyy: unknown key, did you mean 'ny'? (valid: correction_grid, correction_tolerance, error_estimate, fidelity, grid_extrapolation, max_memory_bytes, normal, nx, ny, tangential)");
   // a key like none: no suggestion
   EXPECT_EQ(error_of(kMinimalCase + "solver: { grid_size: 20 }\n"),
-            path() + ":6:11: solver.grid_size: unknown key (valid: correction_grid, correction_tolerance, error_estimate, fidelity, max_memory_bytes, normal, nx, ny, tangential)");
+            path() + ":6:11: solver.grid_size: unknown key (valid: correction_grid, correction_tolerance, error_estimate, fidelity, grid_extrapolation, max_memory_bytes, normal, nx, ny, tangential)");
+}
+
+// solver.grid_extrapolation (lib/tangential/grid_extrapolation.h): of the exact theory's steady solves, on
+// even grids; refused with another tangential model, an odd grid or a transient run, at the key's line
+TEST_F(CaseReader, GridExtrapolationNeedsTheExactTheoryOnAnEvenGrid) {
+  const std::string exact = kMinimalCase + "solver: { tangential: exact, grid_extrapolation: true, nx: 20, ny: 20 }\n";
+  EXPECT_TRUE(read_contact_case(write(exact)).solver.grid_extrapolation);
+  EXPECT_FALSE(read_contact_case(write(kMinimalCase)).solver.grid_extrapolation);
+  const std::string relaxed = error_of(kMinimalCase + "solver: { grid_extrapolation: true }\n");
+  EXPECT_EQ(relaxed.rfind(path() + ":6:31: solver.grid_extrapolation, solver.tangential: ", 0), 0u) << relaxed;
+  EXPECT_NE(relaxed.find("not relaxed"), std::string::npos) << relaxed;
+  const std::string odd_line = "solver: { tangential: exact, grid_extrapolation: true, nx: 21, ny: 20 }\n";
+  const std::string odd = error_of(kMinimalCase + odd_line);
+  EXPECT_EQ(odd.rfind(path() + ":6:" + std::to_string(odd_line.find("21") + 1) + ": solver.nx, solver.grid_extrapolation: ", 0), 0u) << odd;
+  const std::string transient = error_of(kMinimalCase + "solver: { tangential: exact, grid_extrapolation: true }\n" +
+                                         "transient: { t_end_s: 1.0e-3 }\n");
+  EXPECT_NE(transient.find("solver.grid_extrapolation, transient: "), std::string::npos) << transient;
 }
 
 // A message never echoes a huge value whole: its first 80 characters and its size.

@@ -18,6 +18,7 @@
 #include <utility>
 #include <vector>
 
+#include "tests/log_capture.h"
 #include "wear/wear_case.h"
 #include "wear/wear_loop.h"
 
@@ -45,11 +46,14 @@ std::map<std::string, double> stored_lives(const std::string& name) {
   return out;
 }
 
-double shipped_life(const std::string& name, const std::string& solver = "", const std::string& stepping = "") {
+// edge_off: the case's edge limit off (scripts/reference-lives --no-edge)
+double shipped_life(const std::string& name, const std::string& solver = "", const std::string& stepping = "",
+                    bool edge_off = false) {
   std::ifstream in(kSource / "cases" / (name + ".yaml"));
   std::stringstream text;
   text << in.rdbuf();
   std::string t = text.str();
+  if (edge_off) t = std::regex_replace(t, std::regex("edge: true"), "edge: false");
   if (!solver.empty()) t = std::regex_replace(t, std::regex("\nsolver:[^\n]*"), "\nsolver: " + solver);
   if (!stepping.empty()) t = std::regex_replace(t, std::regex("\n  stepping:[^\n]*"), "\n  stepping: " + stepping);
   const WearCase c = read_wear_case_text(t, name, kSource / "cases");
@@ -145,6 +149,49 @@ TEST(ReferenceLives, DepthLimitedPaperWearLifeConvergesInTheGrid) {
   const double uncertainty = std::stod(stored_column(name, "extrapolated", "uncertainty"));
   EXPECT_LT(uncertainty, 0.01);
   EXPECT_NEAR(coarse / fine, 1.0, uncertainty) << coarse << " " << fine;
+}
+
+// The depth-limited paper-wear life with the exact theory's grid extrapolation (solver.grid_extrapolation,
+// docs/exact-theory.md §4), stored in grid_extrapolation/ by scripts/reference-lives: on 40, 80, 160 its lives
+// converge from above (the plain ones from below), and on 80 x 80 it is within the 0.5 % of the grid limit,
+// both of its own series' Richardson limit and of the plain series' (measured +0.12 % and +0.49 %); the two limits
+// agree within the plain one's uncertainty (0.36 % apart, uncertainty 0.39 %). The plain 80 x 80 life misses the
+// 0.5 % (-0.97 %).
+TEST(ReferenceLives, ExtrapolatedPaperWearLifeOn80IsWithinHalfAPercentOfTheGridLimit) {
+  const std::string name = "grid_extrapolation/paper-wear_no-edge", plain_name = "paper-wear_no-edge";
+  const std::map<std::string, double> lives = stored_lives(name), plain = stored_lives(plain_name);
+  const std::string rtol = stored_column(name, "extrapolated", "rtol");
+  ASSERT_FALSE(rtol.empty()) << name << ": no extrapolated row";
+  ASSERT_EQ(rtol, stored_column(plain_name, "extrapolated", "rtol"));
+  std::vector<double> N;
+  for (const char* g : {"40", "80", "160"}) {
+    ASSERT_TRUE(lives.count(std::string(g) + "/" + rtol)) << g;
+    N.push_back(lives.at(std::string(g) + "/" + rtol));
+  }
+  EXPECT_LT(N[1], N[0]);  // from above
+  EXPECT_LT(N[2], N[1]);
+  EXPECT_LT(N[1] - N[2], N[0] - N[1]);
+  const double own = richardson(N[0], N[1], N[2]).first, limit = plain.at("extrapolated/" + rtol);
+  EXPECT_NEAR(lives.at("extrapolated/" + rtol) / own, 1.0, 1e-7);
+  constexpr double kTarget = 0.005;  // the 0.5 %
+  EXPECT_NEAR(N[1] / own, 1.0, kTarget) << N[1] << " " << own;
+  EXPECT_NEAR(N[1] / limit, 1.0, kTarget) << N[1] << " " << limit;
+  EXPECT_NEAR(own / limit, 1.0, std::stod(stored_column(plain_name, "extrapolated", "uncertainty")));
+  EXPECT_GT(std::abs(plain.at("80/" + rtol) / limit - 1), kTarget) << "the plain 80 x 80 life";
+}
+
+// The stored 20 x 20 life with the grid extrapolation (the depth limit, rtol 1e-3), run again: about 2 s.
+TEST(StressReferenceLives, ExtrapolatedPaperWearRepeatsItsStoredLife) {
+  const std::map<std::string, double> lives = stored_lives("grid_extrapolation/paper-wear_no-edge");
+  ASSERT_TRUE(lives.count("20/0.001"));
+  const rollwear_test::ExpectWarnings warnings;  // the worn contact reaches the roller's ends: with the edge limit off
+  const double N =
+      shipped_life("paper-wear", "{ normal: halfspace, tangential: exact, grid_extrapolation: true, nx: 20, ny: 20 }",
+                   "{ method: adaptive, rtol: 0.001, atol_m: 1.0e-9, max_steps: 1000000 }", true);
+  EXPECT_NEAR(N / lives.at("20/0.001"), 1.0, 1e-3) << N;  // to the wear step's accuracy: see below
+  EXPECT_GE(warnings.count(), 1);
+  for (const std::string& m : warnings.messages())
+    EXPECT_NE(m.find("reaches the end of the profiles' overlap"), std::string::npos) << m;
 }
 
 // The coarsest stored exact-physics life (20 x 20, rtol 1e-4), run again: about 5 s.

@@ -64,7 +64,8 @@ DutyCycleEnergy duty_cycle_energy(const WearModel& m, const contact::ContactPatc
         contact::make_tangential_problem(patch, m.materials, m.creepages, m.mu, m.speed_m_per_s);
     // the case's model (lib/model/contact_model.h); the exact theory's solve may not converge
     contact::SteadyModelSolution solved =
-        contact::solve_tangential_steady(m.scheme, patch, m.materials, problem, need_fields || m.thermal.has_value());
+        contact::solve_tangential_steady(m.scheme, patch, m.materials, problem, need_fields || m.thermal.has_value(),
+                                         m.steady_options);
     if (!solved.status.converged())
       throw contact::SolverError("wear rate: exact steady solve: " + solved.status.message);
     const contact::TangentialSolution& s = solved.solution;
@@ -180,6 +181,10 @@ WearModel make_own_model(const WearCase& c) {
   m.normal_load_N = k.load.normal_load_N.value.front();
   m.mu = k.friction.mu;
   m.scheme = k.solver.tangential;  // one the duty cycle can run (validate)
+  m.steady_options.grid_extrapolation = k.solver.grid_extrapolation && m.scheme == contact::TangentialScheme::Exact;
+  if (k.solver.grid_extrapolation && k.transient)
+    throw contact::SettingError("solver", "grid_extrapolation",
+                                "is of steady solves; a transient duty cycle steps its grid by one cell");
   if (k.transient) {
     m.transient = contact::transient_case_of(k);
     m.transient->settings.skip_steady = true;

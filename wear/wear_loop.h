@@ -35,6 +35,7 @@
 #include "lib/tangential/tangential.h"
 #include "lib/fidelity.h"
 #include "lib/io/case.h"
+#include "lib/model/contact_model.h"
 #include "wear/fatigue.h"
 #include "wear/integrator.h"
 #include "wear/life.h"
@@ -57,6 +58,8 @@ struct WearModel {
   double normal_load_N = 0;
   double mu = 0;
   contact::TangentialScheme scheme = contact::kDefaultTangentialScheme;
+  // the exact theory's steady solves extrapolated over grids h and 2h (solver.grid_extrapolation)
+  contact::SteadyModelOptions steady_options;
   // the duty cycle: steady running at speed and creepages, or the transient history
   double speed_m_per_s = 0;
   contact::Creepages creepages;

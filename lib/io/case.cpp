@@ -313,6 +313,7 @@ void read_solver(YamlMap& m, SolverSection& s) {
   read_choice(m, "fidelity", s.fidelity, parse_fidelity);
   m.optional("correction_tolerance", s.correction_tolerance, in_closed(1e-6, 10));
   m.optional("error_estimate", s.error_estimate);
+  m.optional("grid_extrapolation", s.grid_extrapolation);
   m.optional("correction_grid", s.correction_grid, in_closed(0, 4096));
   // the exact fidelity is the exact physics: the half-space normal problem and Kalker's exact theory
   if (s.fidelity == Fidelity::Exact) {
@@ -505,6 +506,33 @@ void validate(const ContactCase& c) {
       model.needs_friction && !(c.friction.mu > 0))
     throw key_error(c, "friction.mu", std::string("friction.mu, solver.tangential: the ") + model.needs_friction_as +
                     " needs mu > 0");
+
+  // the grid extrapolation of the exact theory's steady solves (lib/tangential/grid_extrapolation.h)
+  if (c.solver.grid_extrapolation) {
+    const bool exact = c.solver.tangential == TangentialScheme::Exact;
+    if (!exact && c.solver.fidelity != Fidelity::Corrected)
+      throw key_error(c, "solver.grid_extrapolation", "solver.grid_extrapolation, solver.tangential: the grid "
+                      "extrapolation is of Kalker's exact theory's solves; give tangential: exact (or fidelity: exact "
+                      "or corrected), not " + to_string(c.solver.tangential));
+    if (c.transient)
+      throw key_error(c, "solver.grid_extrapolation", "solver.grid_extrapolation, transient: the grid extrapolation "
+                      "is of steady solves; a transient run steps its grid by one cell (leave it out)");
+    // on half the cells each way: even counts, at least 2 coarse cells
+    const auto even = [](int n) { return n >= 4 && n % 2 == 0; };
+    for (const auto& [key, n] : {std::pair{"nx", c.solver.nx}, std::pair{"ny", c.solver.ny}})
+      if (exact && !even(n))
+        throw key_error(c, std::string("solver.") + key, std::string("solver.") + key + ", solver.grid_extrapolation: "
+                        "the extrapolation solves on half the cells each way: give an even number of cells, at least 4, "
+                        "not " + std::to_string(n));
+    if (c.solver.fidelity == Fidelity::Corrected && c.solver.correction_grid > 0 && !even(c.solver.correction_grid))
+      throw key_error(c, "solver.correction_grid", "solver.correction_grid, solver.grid_extrapolation: the "
+                      "extrapolation solves on half the cells each way: give an even number of cells, at least 4, not " +
+                      std::to_string(c.solver.correction_grid));
+    if (c.solver.fidelity == Fidelity::Corrected && c.solver.correction_grid == 0 && !(even(c.solver.nx) && even(c.solver.ny)))
+      throw key_error(c, "solver.nx", "solver.nx, solver.ny, solver.grid_extrapolation: the corrected fidelity's exact "
+                      "physics solves on the case's grid, and the extrapolation on half its cells each way: give even "
+                      "numbers of cells, at least 4 (or an even solver.correction_grid)");
+  }
 
   // the run: snapshots within it, a time step for the fixed-step schemes
   if (c.transient) {

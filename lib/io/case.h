@@ -100,6 +100,10 @@ struct SolverSection {
   // the fast fidelity's error estimate at the end of a wear life: one exact-physics solve on the final worn state
   // (about 70 ms on the paper's roller at 80 x 80); false leaves it out (large sweeps)
   bool error_estimate = true;
+  // Kalker's exact theory's steady solves extrapolated in the grid: each solved on the grid and on half its cells
+  // each way and combined (lib/tangential/grid_extrapolation.h, docs/exact-theory.md §4); needs the exact theory
+  // (tangential: exact, or the exact physics of a corrected fidelity), nx and ny even, steady running
+  bool grid_extrapolation = false;
   // a run whose memory is estimated above this is refused before it starts, naming the keys that drive the
   // estimate (a wear run: wear/wear_loop.h estimate_memory_bytes); 2 GiB
   double max_memory_bytes = 2.0 * 1024 * 1024 * 1024;

@@ -23,7 +23,8 @@ ContactRun solve_contact_case(const ContactCase& c, bool fields) {
   const TangentialProblem problem =
       make_tangential_problem(patch, materials_of(c), creepages_of(c), c.friction.mu, speed_of(c));
   SteadyModelSolution s =
-      solve_tangential_steady(r.scheme, patch, materials_of(c), problem, fields || c.thermal.has_value());
+      solve_tangential_steady(r.scheme, patch, materials_of(c), problem, fields || c.thermal.has_value(),
+                              SteadyModelOptions{c.solver.grid_extrapolation});
   if (!s.status.converged()) throw SolverError("exact steady solve: " + s.status.message);
   if (!s.status.message.empty()) {  // an iterative model's solve (the exact theory's)
     spdlog::info("exact steady solve: {}", s.status.message);

@@ -7,6 +7,7 @@
 
 #include "lib/solve_status.h"
 #include "lib/tangential/exact.h"
+#include "lib/tangential/grid_extrapolation.h"
 #include "lib/tangential/relaxed.h"
 #include "lib/tangential/steady.h"
 
@@ -52,19 +53,25 @@ SteadyModelSolution relaxed_steady(const ContactPatch& patch, const ElasticPair&
                 solve_relaxed_steady(patch, pair, problem.creepages, problem.mu, problem.speed_m_per_s, fields));
 }
 
-// Kalker's exact theory on the half-space (lib/tangential/exact.h); it computes its fields in any case
-SteadyModelSolution exact_steady(const ContactPatch& patch, const ElasticPair& pair, const TangentialProblem& problem,
-                                 bool) {
-  const ExactSolution e = solve_exact_steady(patch, combined_shear_modulus_Pa(pair), combined_poisson(pair),
-                                             problem.creepages, problem.mu, problem.speed_m_per_s);
+// an exact-theory solve as the model's solution
+SteadyModelSolution exact_model_solution(const TangentialProblem& problem, const TangentialSolution& fields,
+                                         const SolveStatus& status) {
   SteadyModelSolution s;
   s.problem = problem;
   // the simplified theory's coefficients play no part in this solve: not reported (nan in summary.csv)
   s.problem.C.C11 = s.problem.C.C22 = s.problem.C.C23 = s.problem.C.C33 = std::numeric_limits<double>::quiet_NaN();
   s.problem.L_m_per_Pa = std::numeric_limits<double>::quiet_NaN();
-  s.solution = e.fields;
-  s.status = e.status;
+  s.solution = fields;
+  s.status = status;
   return s;
+}
+
+// Kalker's exact theory on the half-space (lib/tangential/exact.h); it computes its fields in any case
+SteadyModelSolution exact_steady(const ContactPatch& patch, const ElasticPair& pair, const TangentialProblem& problem,
+                                 bool) {
+  const ExactSolution e = solve_exact_steady(patch, combined_shear_modulus_Pa(pair), combined_poisson(pair),
+                                             problem.creepages, problem.mu, problem.speed_m_per_s);
+  return exact_model_solution(problem, e.fields, e.status);
 }
 
 TransientResult satran_run(const TransientCase& t, const StepObserver& observe) { return run_transient(t, observe); }
@@ -137,8 +144,17 @@ std::string transient_run_name(TangentialScheme scheme, TransientScheme transien
 }
 
 SteadyModelSolution solve_tangential_steady(TangentialScheme scheme, const ContactPatch& patch,
-                                            const ElasticPair& pair, const TangentialProblem& problem, bool fields) {
-  return model_of(scheme).steady(patch, pair, problem, fields);
+                                            const ElasticPair& pair, const TangentialProblem& problem, bool fields,
+                                            const SteadyModelOptions& options) {
+  if (!options.grid_extrapolation) return model_of(scheme).steady(patch, pair, problem, fields);
+  if (scheme != TangentialScheme::Exact)
+    throw std::invalid_argument("grid extrapolation is for the exact theory, not the tangential model " +
+                                to_string(scheme));
+  // Kalker's exact theory on grids h and 2h, extrapolated (lib/tangential/grid_extrapolation.h)
+  const ExtrapolatedExactSolution e =
+      solve_exact_steady_extrapolated(patch, combined_shear_modulus_Pa(pair), combined_poisson(pair),
+                                      problem.creepages, problem.mu, problem.speed_m_per_s);
+  return exact_model_solution(problem, e.fields, e.status);
 }
 
 TransientResult run_tangential_transient(TangentialScheme scheme, const TransientCase& t,

@@ -60,11 +60,20 @@ struct SteadyModelSolution {
   SolveStatus status;
 };
 
+// How a steady solve is done beyond the model's choice (solver section of a case)
+struct SteadyModelOptions {
+  // the exact theory: its solve on the patch's grid and on half the cells each way, extrapolated in the grid
+  // (lib/tangential/grid_extrapolation.h, solver.grid_extrapolation; nx and ny even and at least 4); the other
+  // models refuse it (std::invalid_argument: the case reader refuses the key with them)
+  bool grid_extrapolation = false;
+};
+
 // The steady tangential problem on `patch` with the model `scheme`: problem holds the creepages, mu and the
 // rolling speed (and the simplified theory's coefficients, make_tangential_problem), pair the materials.
 // fields: the per-cell fields computed (else left empty).
 SteadyModelSolution solve_tangential_steady(TangentialScheme scheme, const ContactPatch& patch,
-                                            const ElasticPair& pair, const TangentialProblem& problem, bool fields);
+                                            const ElasticPair& pair, const TangentialProblem& problem, bool fields,
+                                            const SteadyModelOptions& options = {});
 
 // The transient run of t with the model `scheme`: Satran (classic and consistent), the relaxed model's run,
 // or the exact theory's. Throws what the run throws (SettingError for settings it refuses).
