@@ -193,19 +193,6 @@ struct Corrected {
 // the pure creepages' factors at the level of c, and the mix correction: `mix` (levels) in place of the table's
 // where given
 Corrected corrected(const ContactPatch& patch, const ElasticPair& pair, const Creepages& c, double mu,
-                    const RelaxedMix* mix);
-
-// in a transient, the spin's lateral rate at phi_lateral (the second stage) and its longitudinal one at c's phi:
-// xi, eta, the lateral rate and the moment corrected at (xi, eta, phi_lateral), the longitudinal rate at c
-Corrected corrected(const ContactPatch& patch, const ElasticPair& pair, const Creepages& c, double mu,
-                    const RelaxedMix* mix, double phi_lateral) {
-  if (!(phi_lateral == phi_lateral) || phi_lateral == c.phi_per_m) return corrected(patch, pair, c, mu, mix);
-  Corrected r = corrected(patch, pair, {c.xi, c.eta, phi_lateral}, mu, mix);
-  r.phi_x_per_m = corrected(patch, pair, c, mu, mix).phi_x_per_m;
-  return r;
-}
-
-Corrected corrected(const ContactPatch& patch, const ElasticPair& pair, const Creepages& c, double mu,
                     const RelaxedMix* mix) {
   const Levels l = levels(patch, pair, c, mu);
   if (!l.valid) return {c, c.phi_per_m};
@@ -238,14 +225,12 @@ void scale_to_shape(TangentialProblem& pb, const ContactPatch& patch) {
 }
 
 // the steady model at the creepages c, its power scaled to the creep forces' work at `work_at`
-// (phi_lateral: the spin's lateral rate at it, a transient's second stage; NaN: at c's phi)
 TangentialSolution steady_at(const ContactPatch& patch, const ElasticPair& pair, const Creepages& c,
                              const Creepages& work_at, double mu, double V, bool fields,
-                             const RelaxedMix* mix = nullptr,
-                             double phi_lateral = std::numeric_limits<double>::quiet_NaN()) {
+                             const RelaxedMix* mix = nullptr) {
   SteadyOptions o;
   o.fields = fields;
-  const Corrected cor = corrected(patch, pair, c, mu, mix, phi_lateral);
+  const Corrected cor = corrected(patch, pair, c, mu, mix);
   const Creepages& solved = cor.c;
   TangentialProblem pb = make_tangential_problem(patch, pair, solved, mu, V);
   scale_to_shape(pb, patch);
@@ -373,21 +358,23 @@ void relax_effective(const ContactPatch& patch, const ElasticPair& pair, const C
   if (patch.a_m > 0 && patch.b_m > 0) relax_stages(state, c, dq_m, stage_lengths(patch, pair, mu, state));
 }
 
-// the model at the state: the steady model at the first stage with the spin's lateral rate at the second, and
-// the transient moment (relaxed.h); `imposed` the creepages whose work creep_work_W is
+// the model at the state: the steady model at the first stage and the second stage's corrections (relaxed.h);
+// `imposed` the creepages whose work creep_work_W is
 TangentialSolution transient_at(const ContactPatch& patch, const ElasticPair& pair, const RelaxedState& state,
                                 const Creepages& imposed, double mu, double V, bool fields) {
   const Creepages& c1 = state.effective;
   const Creepages& c2 = state.lagged;
-  TangentialSolution s = steady_at(patch, pair, c1, imposed, mu, V, fields, nullptr, c2.phi_per_m);
+  TangentialSolution s = steady_at(patch, pair, c1, imposed, mu, V, fields);
   if (c1.eta != c2.eta || c1.phi_per_m != c2.phi_per_m) {
     const Levels l1 = levels(patch, pair, c1, mu), l2 = levels(patch, pair, c2, mu);
     if (l1.valid) {
-      const double ab = patch.a_m / patch.b_m;
+      const double ab = patch.a_m / patch.b_m, muN = mu * patch.normal_load_N;
+      const double Ap = std::isfinite(state.force_phi) ? state.force_phi : over_ab(TT::kForcePhi, ab);
       const double Ke = std::isfinite(state.moment_eta) ? state.moment_eta : over_ab(TT::kMomentEta, ab);
       const double Kp = std::isfinite(state.moment_phi) ? state.moment_phi : over_ab(TT::kMomentPhi, ab);
-      s.Mz_N_m += (Ke * (l2.eta - l1.eta) + Kp * (l1.phi - l2.phi)) * mu * patch.normal_load_N *
-                  std::sqrt(patch.a_m * patch.b_m);
+      const double slope = std::pow(1 - std::min(l1.e(), 1.0), 2);  // of 1 - (1 - e)^3, over its value at e = 0
+      s.Fy_N += slope * Ap * (l2.phi - l1.phi) * muN;
+      s.Mz_N_m += slope * (Ke * (l2.eta - l1.eta) + Kp * (l1.phi - l2.phi)) * muN * std::sqrt(patch.a_m * patch.b_m);
     }
   }
   return s;

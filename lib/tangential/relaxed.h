@@ -13,13 +13,18 @@
 //     material to roll in before it builds (Kalker: the lateral traction of spin's lateral rate phi x, the moment
 //     of eta's lateral traction, both second order in q at a start). So eta and phi have a second stage,
 //       d c_lag/dq = (c_eff - c_lag) / sigma2,  sigma2_k = s2_k(a/b) a (1 - min(e_eff, 1))^p(a/b),
-//     (each step advanced in closed form, sigma held over the step), and the step is the steady model with the
-//     spin's lateral rate at phi_lag, its longitudinal rate (Mz) at phi_eff, plus a transient moment
-//       dMz = mu N sqrt(ab) [K_eta(a/b) (u_eta,lag - u_eta,eff) + K_phi(a/b) (u_phi,eff - u_phi,lag)],
-//     u the levels below: eta's moment follows the second stage (K_eta the steady slope of Mz in u_eta), and the
-//     spin's lateral traction, while it builds from the leading edge, has a first moment (2 x q phi / L3) that
-//     the steady state has not (the overshoot of the exact Mz under spin, K_phi). Zero in the steady state.
-//     s_phi (first stage, short: the longitudinal rate), s2, K: lib/tangential/relaxed_transient_table.h;
+//     (each step advanced in closed form, sigma held over the step), and the step is the steady model at c_eff
+//     (as before: one creepage vector, so the mix corrections and the saturation stay consistent and the steady
+//     map's peaks are not run through late) plus the second stage's share, linear in the levels u (below):
+//       dFy = s(e_eff) A_phi(a/b) (u_phi,lag - u_phi,eff) mu N,
+//       dMz = s(e_eff) [K_eta(a/b) (u_eta,lag - u_eta,eff) + K_phi(a/b) (u_phi,eff - u_phi,lag)] mu N sqrt(ab),
+//     s(e) = (1 - min(e, 1))^2 the slope of the closed form 1 - (1 - e)^3 over its linear one. A_phi: the spin's
+//     lateral force follows the second stage (A_phi its steady slope in u_phi, 3 g_phi in the linear range);
+//     K_eta: eta's moment does; K_phi: the spin's moment leads its lateral force (the longitudinal rate phi y
+//     builds it at once), and while the lateral traction builds from the leading edge it has a first moment
+//     (2 x q phi / L3) that the steady state has not (the overshoot of the exact Mz under spin). Zero in the
+//     steady state.
+//     s_phi (first stage), s2, A, K: lib/tangential/relaxed_transient_table.h;
 //   - steady forces: the simplified theory's force at a creepage is that of the exact theory at a
 //     slightly different one: each creepage is scaled by a factor g_k(a/b, e) of the saturation level
 //     e = G a b C |c| / (3 mu N) before the steady solve;
@@ -60,13 +65,14 @@ namespace contact {
 
 // the effective creepages of a transient run (not the imposed ones): two stages in series (relaxed.h, transient)
 struct RelaxedState {
-  Creepages effective;   // first stage: xi, eta and the spin's longitudinal rate (its Mz)
-  Creepages lagged;      // second stage, relaxing towards the first: eta's moment and the spin's lateral rate (its Fy)
+  Creepages effective;   // first stage (the steady model is solved at it)
+  Creepages lagged;      // second stage (eta, phi), relaxing towards the first: spin's Fy, eta's Mz, spin's Mz
   Creepages sigma_m;     // first-stage relaxation lengths in place of the table's where > 0 (for the fit)
   double exponent = -1;  // the exponent p in place of the table's if >= 0 (for the fit)
   Creepages sigma2_m;    // second-stage lengths (eta, phi) in place of the table's where > 0 (for the fit)
   double moment_eta = std::numeric_limits<double>::quiet_NaN();  // K_eta in place of the table's if finite (fit)
   double moment_phi = std::numeric_limits<double>::quiet_NaN();  // K_phi in place of the table's if finite (fit)
+  double force_phi = std::numeric_limits<double>::quiet_NaN();   // A_phi in place of the table's if finite (fit)
 };
 
 inline RelaxedState relaxed_rest() { return {}; }
@@ -117,7 +123,7 @@ TangentialSolution solve_relaxed_steady_with_mix(const ContactPatch& patch, cons
 
 // One step rolling dq_m >= 0 with the imposed creepages c (the step's mean): the effective creepages
 // relax, c_eff <- c + (c_eff - c) exp(-dq / sigma), and the second stage with them (closed form, sigma at the
-// step's start), then the steady model at c_eff (the spin's lateral rate at phi_lag) with the transient moment.
+// step's start), then the steady model at c_eff with the second stage's force and moments.
 // Its power is the steady model's at c_eff (-V c_eff . F); creep_work_W is that of the imposed creepages.
 TangentialSolution relaxed_step(const ContactPatch& patch, const ElasticPair& pair, const Creepages& creepages,
                                 double mu, double speed_m_per_s, double dq_m, RelaxedState& state,

@@ -574,17 +574,17 @@ void fit_sigma(double ab, int n, int dir) {
 }
 
 
-// "R ab s_phi1 s_phi2 K_phi err_phi s_eta2 K_eta err_eta unconverged": the transient law's second stage
+// "R ab s_phi1 s_phi2 A_phi K_phi err_phi s_eta2 K_eta err_eta unconverged": the transient law's second stage
 // (lib/tangential/relaxed.h): fitted to the exact start-ups from rest under pure phi and pure eta at 50 % and 90 %
-// of saturation over q <= 8a. Spin: the first stage (its longitudinal rate), the second (its lateral rate) and
-// K_phi together, err_phi the largest of |Fy/Fy_ss model - exact| and |Mz/Mz_ss model - exact| over q and both
-// levels; eta: its second stage and K_eta (its first stage is the table's, fitted on Fy), err_eta Mz's. K enters
-// Mz linearly: for each pair of lengths the run is made once and K scanned over it.
+// of saturation over q <= 8a. Spin: the first and second stages' lengths, A_phi and K_phi together, err_phi the
+// largest of |Fy/Fy_ss model - exact| and |Mz/Mz_ss model - exact| over q and both levels; eta: its second stage
+// and K_eta (its first stage is the table's, fitted on Fy), err_eta Mz's. A and K enter Fy and Mz linearly: for
+// each pair of lengths the run is made once and they are scanned over it.
 void fit_transient(double ab, int n) {
   const ContactPatch p = ellipse_patch(ab, n);
   const double G = combined_shear_modulus_Pa(kPair), nu = combined_poisson(kPair), dx = p.grid.dx_m, a = p.a_m;
   const int steps = static_cast<int>(std::lround(8 * a / dx));
-  const double muNc = kMu * p.normal_load_N * std::sqrt(p.a_m * p.b_m);
+  const double muN = kMu * p.normal_load_N, sab = std::sqrt(p.a_m * p.b_m);
   int unconverged = 0;
   struct Run {
     Creepages c;
@@ -613,66 +613,70 @@ void fit_transient(double ab, int n) {
     }
     return v;
   };
-  // the model's run at the lengths s1 (first stage, 0: the table's), s2 with K = 0: Fy, Mz and the transient
-  // moment's factor h (dMz = K h), each as shares of the model's steady value
+  // the model's run at the lengths s1 (first stage, 0: the table's), s2 with A = K = 0: Fy, Mz and the second
+  // stage's factors hF, hM (dFy = A hF, dMz = K hM), each as shares of the model's steady value
   struct Model {
-    std::vector<double> Fy, Mz, h;
+    std::vector<double> Fy, Mz, hF, hM;
   };
+  const KalkerCoefficients C = kalker_coefficients(p.a_m, p.b_m, nu);
+  const double unit = 3 * kMu * p.normal_load_N / (G * p.a_m * p.b_m);
   auto model_run = [&](const Run& r, int dir, double s1, double s2) {
     Model m;
     RelaxedState st = relaxed_rest();
     if (dir == 2 && s1 > 0) st.sigma_m.phi_per_m = s1 * a;
     (dir == 1 ? st.sigma2_m.eta : st.sigma2_m.phi_per_m) = s2 * a;
-    st.moment_eta = st.moment_phi = 0;
-    const KalkerCoefficients C = kalker_coefficients(p.a_m, p.b_m, nu);
-    const double unit = 3 * kMu * p.normal_load_N / (G * p.a_m * p.b_m);
+    st.moment_eta = st.moment_phi = st.force_phi = 0;
     for (int s = 1; s <= steps; ++s) {
       const TangentialSolution f = relaxed_step(p, kPair, r.c, kMu, kV, dx, st, false);
       m.Fy.push_back(f.Fy_N / r.Fy_ss);
       m.Mz.push_back(f.Mz_N_m / r.Mz_ss);
-      const double u = dir == 1 ? (st.lagged.eta - st.effective.eta) * C.C22 / unit
-                                : (st.effective.phi_per_m - st.lagged.phi_per_m) * std::sqrt(p.a_m * p.b_m) * C.C23 / unit;
-      m.h.push_back(u * muNc / r.Mz_ss);
+      const Creepages& c1 = st.effective;
+      const double u1[3] = {c1.xi * C.C11 / unit, c1.eta * C.C22 / unit, c1.phi_per_m * sab * C.C23 / unit};
+      const double e1 = std::sqrt(u1[0] * u1[0] + u1[1] * u1[1] + u1[2] * u1[2]);
+      const double slope = std::pow(1 - std::min(e1, 1.0), 2);
+      const double du = dir == 1 ? (st.lagged.eta - c1.eta) * C.C22 / unit
+                                 : (st.lagged.phi_per_m - c1.phi_per_m) * sab * C.C23 / unit;  // lag - eff
+      m.hF.push_back(slope * du * muN / r.Fy_ss);
+      m.hM.push_back(slope * (dir == 1 ? du : -du) * muN * sab / r.Mz_ss);
     }
     return m;
   };
-  // the best K over the runs for Mz (and the Fy error, which K does not change): (K, error)
-  auto best_k = [&](const std::vector<Run>& rs, const std::vector<Model>& ms, bool with_fy) {
-    double fy = 0;
-    if (with_fy)
-      for (std::size_t l = 0; l < rs.size(); ++l)
-        for (int s = 0; s < steps; ++s) fy = std::max(fy, std::abs(ms[l].Fy[s] - rs[l].Fy[s]));
+  // the best coefficient for Fy (moment false) or Mz over the runs: (coefficient, error)
+  auto best = [&](const std::vector<Run>& rs, const std::vector<Model>& ms, bool moment) {
     double bk = 0, be = 1e300;
-    for (double K = -4; K <= 4 + 1e-9; K += 0.01) {
-      double e = fy;
+    for (double K = -6; K <= 6 + 1e-9; K += 0.02) {
+      double e = 0;
       for (std::size_t l = 0; l < rs.size() && e < be; ++l)
-        for (int s = 0; s < steps; ++s) e = std::max(e, std::abs(ms[l].Mz[s] + K * ms[l].h[s] - rs[l].Mz[s]));
+        for (int s = 0; s < steps; ++s)
+          e = std::max(e, moment ? std::abs(ms[l].Mz[s] + K * ms[l].hM[s] - rs[l].Mz[s])
+                                 : std::abs(ms[l].Fy[s] + K * ms[l].hF[s] - rs[l].Fy[s]));
       if (e < be) be = e, bk = K;
     }
     return std::pair<double, double>{bk, be};
   };
   const std::vector<Run> phi = exact_runs(2), eta = exact_runs(1);
-  double bp[4] = {0, 0, 0, 1e300};
-  for (double s1 = 0.1; s1 <= 2.0 + 1e-9; s1 += 0.1)
-    for (double s2 = 0.2; s2 <= 4.0 + 1e-9; s2 += 0.1) {
+  double bp[5] = {0, 0, 0, 0, 1e300};
+  for (double s1 = 0.1; s1 <= 4.0 + 1e-9; s1 += 0.1)
+    for (double s2 = 0.1; s2 <= 3.0 + 1e-9; s2 += 0.1) {
       std::vector<Model> ms;
       for (const Run& r : phi) ms.push_back(model_run(r, 2, s1, s2));
-      const auto [K, e] = best_k(phi, ms, true);
-      if (e < bp[3]) bp[0] = s1, bp[1] = s2, bp[2] = K, bp[3] = e;
+      const auto [A, eF] = best(phi, ms, false);
+      const auto [K, eM] = best(phi, ms, true);
+      if (std::max(eF, eM) < bp[4]) bp[0] = s1, bp[1] = s2, bp[2] = A, bp[3] = K, bp[4] = std::max(eF, eM);
     }
   double be[3] = {0, 0, 1e300};
-  for (double s2 = 0.1; s2 <= 4.0 + 1e-9; s2 += 0.05) {
+  for (double s2 = 0.1; s2 <= 3.0 + 1e-9; s2 += 0.05) {
     std::vector<Model> ms;
     for (const Run& r : eta) ms.push_back(model_run(r, 1, 0, s2));
-    const auto [K, e] = best_k(eta, ms, false);
+    const auto [K, e] = best(eta, ms, true);
     if (e < be[2]) be[0] = s2, be[1] = K, be[2] = e;
   }
-  std::printf("R %g %.3f %.3f %.3f %.5f %.3f %.3f %.5f %d\n", ab, bp[0], bp[1], bp[2], bp[3], be[0], be[1], be[2],
-              unconverged);
+  std::printf("R %g %.3f %.3f %.3f %.3f %.5f %.3f %.3f %.5f %d\n", ab, bp[0], bp[1], bp[2], bp[3], bp[4], be[0], be[1],
+              be[2], unconverged);
 }
 
 // the relaxed model's transient knobs from the environment (RELAXED_S1PHI, RELAXED_S2PHI, RELAXED_S2ETA in units of
-// a, RELAXED_KPHI, RELAXED_KETA): in place of the table's where set (for trying the law, scripts/fit-relaxed)
+// a, RELAXED_APHI, RELAXED_KPHI, RELAXED_KETA): in place of the table's where set (for trying the law, scripts/fit-relaxed)
 void knobs_from_env(RelaxedState& st, double a) {
   auto get = [](const char* k, double& v) {
     if (const char* e = std::getenv(k)) v = std::atof(e);
@@ -686,6 +690,7 @@ void knobs_from_env(RelaxedState& st, double a) {
   st.sigma2_m.eta = s2e * a;
   get("RELAXED_KPHI", st.moment_phi);
   get("RELAXED_KETA", st.moment_eta);
+  get("RELAXED_APHI", st.force_phi);
 }
 
 // "Q q/a exact Fx Fy Mz relaxed Fx Fy Mz": a held-out run of tests/heldout_test.cpp traced (nu on both bodies, the
