@@ -339,7 +339,9 @@ StageLengths stage_lengths(const ContactPatch& patch, const ElasticPair& pair, d
 // deviations from c; its limit d1 (dq/s) e^(-dq/s) at s1 = s2). xi has no second stage (it follows the first).
 void relax_stages(RelaxedState& state, const Creepages& c, double dq, const StageLengths& sg) {
   auto two = [dq](double& x1, double& x2, double target, double s1, double s2) {
-    const double d1 = x1 - target, d2 = x2 - target, e1 = std::exp(-dq / s1), e2 = std::exp(-dq / s2);
+    const double d1 = x1 - target, d2 = x2 - target;
+    if (d1 == 0 && d2 == 0) return;  // settled (a creepage not imposed: the pure-xi path's cost)
+    const double e1 = std::exp(-dq / s1), e2 = std::exp(-dq / s2);
     const double w = std::abs(s1 - s2) <= 1e-6 * std::max(s1, s2) ? dq / s2 * e2 : s1 / (s1 - s2) * (e1 - e2);
     x1 = target + d1 * e1;
     x2 = target + d2 * e2 + d1 * w;
