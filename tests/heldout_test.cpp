@@ -471,6 +471,7 @@ TEST(StressHeldout, TransientsAtHeldOutPoints) {
     std::printf("HC start pure xi 50 %% a/b 0.1 Fx %.2f\n", 100 * e.Fx);
   }
   std::vector<double> fx, fy, mz, shape;
+  double startup_fy = 0;  // the largest Fy error of the start-ups from rest
   int unconverged = 0;
   for (const TransientRun& t : transient_runs()) {
     const TransientErrors e = transient_errors(t.h, t.axis, t.factor, kTransientCells);
@@ -484,6 +485,7 @@ TEST(StressHeldout, TransientsAtHeldOutPoints) {
     fy.push_back(e.Fy);
     mz.push_back(e.Mz);
     shape.push_back(e.shape);
+    if (t.axis < 0) startup_fy = std::max(startup_fy, e.Fy);
   }
   print_distribution("T-Fx", fx, kTransientTarget);
   print_distribution("T-Fy", fy, kTransientTarget);
@@ -491,21 +493,26 @@ TEST(StressHeldout, TransientsAtHeldOutPoints) {
   print_distribution("T-shape", shape, kTransientTarget);
   EXPECT_EQ(unconverged, 0);
   // The target (3 % of the steady value at every rolled distance) is missed; the measured distribution (seed
-  // kSeed + 1 ... + 4, 40^2, dq = dx, 12a; docs/accuracy-vs-exact.md "Held-out points") as a regression guard:
+  // kSeed + 1 ... + 4, 40^2, dq = dx, 12a; docs/accuracy-vs-exact.md "Held-out points") as a regression guard,
+  // one run of slack in the counts. With the second stage for eta and spin (relaxed.h) the medians of Fy and Mz
+  // fell (8.7 to 6.5 %, 38 to 11 %) and the start-ups' Fy (34 to 15 % at worst); the counts within 3 % did not move.
   const Distribution dfx = distribution(fx, kTransientTarget), dfy = distribution(fy, kTransientTarget),
                      dmz = distribution(mz, kTransientTarget);
-  // Fx: 17 of 32 within, median 2.44 %, the worst 61.6 % (a step of spin reversing it with eta, a/b 0.38); steps
-  // of xi that reverse it 7-15 %.
+  // Fx: 17 of 32 within, median 2.86 %, the worst 62.8 % (a step of spin reversing it with eta, a/b 0.38); steps
+  // of xi that reverse it 7-15 % (the first stage's, unchanged).
   EXPECT_GE(dfx.within, 16);
   EXPECT_LE(dfx.median, kTransientTarget);
   EXPECT_LE(dfx.max, 0.65);
-  // Fy: 7 of 32 within, median 8.7 %, the worst 63.8 % (steps of spin); start-ups with eta or spin 12-34 %.
+  // Fy: 7 of 32 within, median 6.5 %, the worst 98.8 % (the same step of spin: reversed under eta near 50 % of
+  // saturation, where the second stage's linear share overshoots); start-ups 1.5-15.1 %.
   EXPECT_GE(dfy.within, 6);
-  EXPECT_LE(dfy.median, 0.095);
-  EXPECT_LE(dfy.max, 0.67);
-  // Mz: 6 of 32 within, median 38 % of |Mz_ss|.
+  EXPECT_LE(dfy.median, 0.07);
+  EXPECT_LE(dfy.max, 1.0);
+  EXPECT_LE(startup_fy, 0.16);
+  // Mz: 6 of 32 within, median 11.3 % of |Mz_ss|, 90th percentile 51 %.
   EXPECT_GE(dmz.within, 5);
-  EXPECT_LE(dmz.median, 0.40);
+  EXPECT_LE(dmz.median, 0.12);
+  EXPECT_LE(dmz.p90, 0.52);
 }
 
 }  // namespace

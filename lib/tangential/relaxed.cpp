@@ -16,6 +16,7 @@
 #include "lib/tangential/relaxed_mix_table.h"
 #include "lib/tangential/relaxed_shape.h"
 #include "lib/tangential/relaxed_table.h"
+#include "lib/tangential/relaxed_transient_table.h"
 #include "lib/tangential/shift_run.h"
 #include "lib/tangential/steady.h"
 
@@ -24,6 +25,8 @@ namespace contact {
 namespace {
 
 namespace T = relaxed_table;
+namespace TT = relaxed_transient_table;
+static_assert(TT::kNab == T::kNab, "the transient table's rows are the factors' a/b");
 
 // linear interpolation in log(a/b) between the rows abs[0..n) of a table, clamped at its ends: (row, weight of
 // row + 1)
@@ -267,7 +270,12 @@ TangentialSolution steady_at(const ContactPatch& patch, const ElasticPair& pair,
 
 Creepages relaxation_lengths_m(double a_m, double b_m) {
   const double ab = a_m / b_m;
-  return {over_ab(T::kSigmaX, ab) * a_m, over_ab(T::kSigmaY, ab) * a_m, over_ab(T::kSigmaPhi, ab) * a_m};
+  return {over_ab(T::kSigmaX, ab) * a_m, over_ab(T::kSigmaY, ab) * a_m, over_ab(TT::kSigmaPhi1, ab) * a_m};
+}
+
+Creepages second_stage_lengths_m(double a_m, double b_m) {
+  const double ab = a_m / b_m;
+  return {0, over_ab(TT::kSigmaEta2, ab) * a_m, over_ab(TT::kSigmaPhi2, ab) * a_m};
 }
 
 double relaxed_xi_saturation_level(const ContactPatch& patch) {
@@ -307,29 +315,71 @@ TangentialSolution solve_relaxed_steady_with_mix(const ContactPatch& patch, cons
 
 namespace {
 
-// relaxed_step's relaxation of the effective creepages over dq_m (sigma at the step's start)
+// the relaxation lengths of both stages at the state's saturation level (the table's, or the state's overrides)
+struct StageLengths {
+  Creepages first, second;
+};
+StageLengths stage_lengths(const ContactPatch& patch, const ElasticPair& pair, double mu, const RelaxedState& state) {
+  Creepages s1 = relaxation_lengths_m(patch.a_m, patch.b_m), s2 = second_stage_lengths_m(patch.a_m, patch.b_m);
+  if (state.sigma_m.xi > 0) s1.xi = state.sigma_m.xi;
+  if (state.sigma_m.eta > 0) s1.eta = state.sigma_m.eta;
+  if (state.sigma_m.phi_per_m > 0) s1.phi_per_m = state.sigma_m.phi_per_m;
+  if (state.sigma2_m.eta > 0) s2.eta = state.sigma2_m.eta;
+  if (state.sigma2_m.phi_per_m > 0) s2.phi_per_m = state.sigma2_m.phi_per_m;
+  const double e = saturation_level(patch, pair, state.effective, mu);
+  const double p = state.exponent >= 0 ? state.exponent : over_ab(T::kExponent, patch.a_m / patch.b_m);
+  // the smallest share of sigma kept as the contact saturates (full sliding: the steady state at once)
+  constexpr double kMinShare = 1e-6;
+  const double share = std::max(kMinShare, std::pow(1 - std::clamp(e, 0.0, 1.0), p));
+  return {{s1.xi * share, s1.eta * share, s1.phi_per_m * share}, {0, s2.eta * share, s2.phi_per_m * share}};
+}
+
+// both stages advanced over dq towards the imposed c at the lengths sg, in closed form: the first
+// d1 <- d1 e^(-dq/s1), the second d2 <- d2 e^(-dq/s2) + d1 s1/(s1 - s2) (e^(-dq/s1) - e^(-dq/s2)) (d the
+// deviations from c; its limit d1 (dq/s) e^(-dq/s) at s1 = s2). xi has no second stage (it follows the first).
+void relax_stages(RelaxedState& state, const Creepages& c, double dq, const StageLengths& sg) {
+  auto two = [dq](double& x1, double& x2, double target, double s1, double s2) {
+    const double d1 = x1 - target, d2 = x2 - target;
+    if (d1 == 0 && d2 == 0) return;  // settled (a creepage not imposed: the pure-xi path's cost)
+    const double e1 = std::exp(-dq / s1), e2 = std::exp(-dq / s2);
+    const double w = std::abs(s1 - s2) <= 1e-6 * std::max(s1, s2) ? dq / s2 * e2 : s1 / (s1 - s2) * (e1 - e2);
+    x1 = target + d1 * e1;
+    x2 = target + d2 * e2 + d1 * w;
+  };
+  state.effective.xi = c.xi + (state.effective.xi - c.xi) * std::exp(-dq / sg.first.xi);
+  state.lagged.xi = state.effective.xi;
+  two(state.effective.eta, state.lagged.eta, c.eta, sg.first.eta, sg.second.eta);
+  two(state.effective.phi_per_m, state.lagged.phi_per_m, c.phi_per_m, sg.first.phi_per_m, sg.second.phi_per_m);
+}
+
+// relaxed_step's relaxation of the state over dq_m (sigma at the step's start)
 void relax_effective(const ContactPatch& patch, const ElasticPair& pair, const Creepages& c, double mu, double dq_m,
                      RelaxedState& state) {
   if (!(dq_m >= 0) || !std::isfinite(dq_m))
     throw std::invalid_argument("relaxed step: rolled distance must be >= 0 and finite");
-  if (patch.a_m > 0 && patch.b_m > 0) {
-    Creepages sigma = relaxation_lengths_m(patch.a_m, patch.b_m);
-    if (state.sigma_m.xi > 0) sigma.xi = state.sigma_m.xi;
-    if (state.sigma_m.eta > 0) sigma.eta = state.sigma_m.eta;
-    if (state.sigma_m.phi_per_m > 0) sigma.phi_per_m = state.sigma_m.phi_per_m;
-    const double e = saturation_level(patch, pair, state.effective, mu);
-    const double p = state.exponent >= 0 ? state.exponent : over_ab(T::kExponent, patch.a_m / patch.b_m);
-    // the smallest share of sigma kept as the contact saturates (full sliding: the steady state at once)
-    constexpr double kMinShare = 1e-6;
-    const double share = std::max(kMinShare, std::pow(1 - std::clamp(e, 0.0, 1.0), p));
-    sigma.xi *= share;
-    sigma.eta *= share;
-    sigma.phi_per_m *= share;
-    auto relax = [dq_m](double& eff, double target, double s) { eff = target + (eff - target) * std::exp(-dq_m / s); };
-    relax(state.effective.xi, c.xi, sigma.xi);
-    relax(state.effective.eta, c.eta, sigma.eta);
-    relax(state.effective.phi_per_m, c.phi_per_m, sigma.phi_per_m);
+  if (patch.a_m > 0 && patch.b_m > 0) relax_stages(state, c, dq_m, stage_lengths(patch, pair, mu, state));
+}
+
+// the model at the state: the steady model at the first stage and the second stage's corrections (relaxed.h);
+// `imposed` the creepages whose work creep_work_W is
+TangentialSolution transient_at(const ContactPatch& patch, const ElasticPair& pair, const RelaxedState& state,
+                                const Creepages& imposed, double mu, double V, bool fields) {
+  const Creepages& c1 = state.effective;
+  const Creepages& c2 = state.lagged;
+  TangentialSolution s = steady_at(patch, pair, c1, imposed, mu, V, fields);
+  if (c1.eta != c2.eta || c1.phi_per_m != c2.phi_per_m) {
+    const Levels l1 = levels(patch, pair, c1, mu), l2 = levels(patch, pair, c2, mu);
+    if (l1.valid) {
+      const double ab = patch.a_m / patch.b_m, muN = mu * patch.normal_load_N;
+      const double Ap = std::isfinite(state.force_phi) ? state.force_phi : over_ab(TT::kForcePhi, ab);
+      const double Ke = std::isfinite(state.moment_eta) ? state.moment_eta : over_ab(TT::kMomentEta, ab);
+      const double Kp = std::isfinite(state.moment_phi) ? state.moment_phi : over_ab(TT::kMomentPhi, ab);
+      const double slope = std::pow(1 - std::min(l1.e(), 1.0), 2);  // of 1 - (1 - e)^3, over its value at e = 0
+      s.Fy_N += slope * Ap * (l2.phi - l1.phi) * muN;
+      s.Mz_N_m += slope * (Ke * (l2.eta - l1.eta) + Kp * (l1.phi - l2.phi)) * muN * std::sqrt(patch.a_m * patch.b_m);
+    }
   }
+  return s;
 }
 
 }  // namespace
@@ -337,7 +387,7 @@ void relax_effective(const ContactPatch& patch, const ElasticPair& pair, const C
 TangentialSolution relaxed_step(const ContactPatch& patch, const ElasticPair& pair, const Creepages& c, double mu,
                                 double speed_m_per_s, double dq_m, RelaxedState& state, bool fields) {
   relax_effective(patch, pair, c, mu, dq_m, state);
-  return steady_at(patch, pair, state.effective, c, mu, speed_m_per_s, fields);
+  return transient_at(patch, pair, state, c, mu, speed_m_per_s, fields);
 }
 
 namespace {
@@ -496,7 +546,7 @@ TransientResult run_relaxed_transient(const TransientCase& c, const StepObserver
     bool valid = false;
     const ContactPatch* patch = nullptr;
     double load_N = 0;
-    Creepages effective, imposed;
+    Creepages effective, lagged, imposed;
     double V = 0;
     TangentialSolution f;
   } memo;
@@ -504,12 +554,10 @@ TransientResult run_relaxed_transient(const TransientCase& c, const StepObserver
   Creepages imposed;
   ShiftSkip skip;
   // the relaxation lengths of the last step (sigma shrunk with the saturation, as relaxed_step does)
-  auto sigmas = [&] {
-    Creepages sigma = relaxation_lengths_m(last->a_m, last->b_m);
-    const double e = saturation_level(*last, c.materials, state.effective, c.mu);
-    const double p = over_ab(T::kExponent, last->a_m / last->b_m);
-    const double share = std::max(1e-6, std::pow(1 - std::clamp(e, 0.0, 1.0), p));
-    return Creepages{sigma.xi * share, sigma.eta * share, sigma.phi_per_m * share};
+  auto sigmas = [&] { return stage_lengths(*last, c.materials, c.mu, state); };
+  // the second stage's deviation (eta, phi)
+  auto lag_deviation = [&] {
+    return Creepages{0, state.lagged.eta - imposed.eta, state.lagged.phi_per_m - imposed.phi_per_m};
   };
   auto deviation = [&] {
     return Creepages{state.effective.xi - imposed.xi, state.effective.eta - imposed.eta,
@@ -524,11 +572,13 @@ TransientResult run_relaxed_transient(const TransientCase& c, const StepObserver
       if (saturation_level(*last, c.materials, parts[i], c.mu) > kSettledLevel) k = k == -1 ? i : -2;
     return k;
   };
-  // settled: the effective creepages are the imposed ones to kSettledLevel, or one alone relaxes within kTailLevel
+  // settled: both stages are the imposed creepages to kSettledLevel, or xi alone relaxes within kTailLevel (the
+  // tail's closed form below follows one deviation; eta and phi carry a second stage that it does not)
   skip.settled = [&] {
     if (!last) return false;
     const double e = saturation_level(*last, c.materials, deviation(), c.mu);
-    return e >= 0 && (e <= kSettledLevel || (e <= kTailLevel && relaxing() >= 0));
+    const double e2 = saturation_level(*last, c.materials, lag_deviation(), c.mu);
+    return e >= 0 && e2 <= kSettledLevel && (e <= kSettledLevel || (e <= kTailLevel && relaxing() == 0));
   };
   // the effective creepages advanced over n whole steps of dx as relaxed_step advances them (sigma at each step's
   // start from the saturation level of c_eff), without the steady solves; u1 and u2 get the sums over the steps of
@@ -544,14 +594,7 @@ TransientResult run_relaxed_transient(const TransientCase& c, const StepObserver
     };
     const double d0 = dev_k();
     double s1 = 0, s2 = 0, i = 0, u = 1;
-    auto relax_all = [&](double dq, const Creepages& sg) {
-      auto relax = [dq](double& eff, double target, double sigma) {
-        eff = target + (eff - target) * std::exp(-dq / sigma);
-      };
-      relax(state.effective.xi, imposed.xi, sg.xi);
-      relax(state.effective.eta, imposed.eta, sg.eta);
-      relax(state.effective.phi_per_m, imposed.phi_per_m, sg.phi_per_m);
-    };
+    auto relax_all = [&](double dq, const StageLengths& sg) { relax_stages(state, imposed, dq, sg); };
     for (; i < n && std::abs(u) >= kFrozenShare; ++i) {
       relax_all(dx, sigmas());
       u = dev_k() / d0;
@@ -559,8 +602,8 @@ TransientResult run_relaxed_transient(const TransientCase& c, const StepObserver
       s2 += u * u;
     }
     if (i < n) {  // the rest at sigma held: u r^j, j = 1 .. m
-      const Creepages sg = sigmas();
-      const double m = n - i, r = std::exp(-dx / (k == 0 ? sg.xi : k == 1 ? sg.eta : sg.phi_per_m));
+      const StageLengths sg = sigmas();
+      const double m = n - i, r = std::exp(-dx / (k == 0 ? sg.first.xi : k == 1 ? sg.first.eta : sg.first.phi_per_m));
       s1 += u * r * (1 - std::pow(r, m)) / (1 - r);
       s2 += u * u * r * r * (1 - std::pow(r, 2 * m)) / (1 - r * r);
       relax_all(m * dx, sg);
@@ -596,11 +639,7 @@ TransientResult run_relaxed_transient(const TransientCase& c, const StepObserver
     if (!last) return;
     const int k = relaxing();
     if (k >= 0) return advance(std::round(rolled_m / last->grid.dx_m), k, nullptr, nullptr);
-    const Creepages sigma = sigmas();  // settled: sigma held
-    auto relax = [rolled_m](double& eff, double target, double s) { eff = target + (eff - target) * std::exp(-rolled_m / s); };
-    relax(state.effective.xi, imposed.xi, sigma.xi);
-    relax(state.effective.eta, imposed.eta, sigma.eta);
-    relax(state.effective.phi_per_m, imposed.phi_per_m, sigma.phi_per_m);
+    relax_stages(state, imposed, rolled_m, sigmas());  // settled: sigma held
   };
   return run_shift_steps(
       c, observe,
@@ -613,11 +652,12 @@ TransientResult run_relaxed_transient(const TransientCase& c, const StepObserver
         // on V, its slip velocities and powers are proportional to it
         relax_effective(patch, c.materials, s.creepages, c.mu, s.dq_m, state);
         const bool same = memo.valid && memo.patch == &patch && memo.load_N == s.normal_load_N &&
-                          same_creepages(memo.effective, state.effective) && same_creepages(memo.imposed, s.creepages) &&
+                          same_creepages(memo.effective, state.effective) && same_creepages(memo.lagged, state.lagged) &&
+                          same_creepages(memo.imposed, s.creepages) &&
                           !s.fields && memo.V > 0 && s.speed_m_per_s > 0;
         if (same) return scaled_by_speed(memo.f, s.speed_m_per_s / memo.V);
-        TangentialSolution f = steady_at(patch, c.materials, state.effective, s.creepages, c.mu, s.speed_m_per_s, s.fields);
-        memo = {true, &patch, s.normal_load_N, state.effective, s.creepages, s.speed_m_per_s, f};
+        TangentialSolution f = transient_at(patch, c.materials, state, s.creepages, c.mu, s.speed_m_per_s, s.fields);
+        memo = {true, &patch, s.normal_load_N, state.effective, state.lagged, s.creepages, s.speed_m_per_s, f};
         return f;
       },
       [&](const Grid&) {  // out of contact: nothing is held

@@ -8,7 +8,23 @@
 //       sigma_k = s_k(a/b) a (1 - min(e_eff, 1))^p(a/b),
 //     e_eff the saturation level of c_eff (below): the relaxation length shrinks with the slope of the
 //     force-creepage curve as the contact saturates (the contact's tangential stiffness stays), and
-//     each step is the steady model at c_eff (quasi-steady: the springs' own 2a memory is not used);
+//     each step is the steady model at c_eff (quasi-steady: the springs' own 2a memory is not used).
+//     A first-order lag starts with a finite slope; the exact theory does not wherever a force needs the
+//     material to roll in before it builds (Kalker: the lateral traction of spin's lateral rate phi x, the moment
+//     of eta's lateral traction, both second order in q at a start). So eta and phi have a second stage,
+//       d c_lag/dq = (c_eff - c_lag) / sigma2,  sigma2_k = s2_k(a/b) a (1 - min(e_eff, 1))^p(a/b),
+//     (each step advanced in closed form, sigma held over the step), and the step is the steady model at c_eff
+//     (as before: one creepage vector, so the mix corrections and the saturation stay consistent and the steady
+//     map's peaks are not run through late) plus the second stage's share, linear in the levels u (below):
+//       dFy = s(e_eff) A_phi(a/b) (u_phi,lag - u_phi,eff) mu N,
+//       dMz = s(e_eff) [K_eta(a/b) (u_eta,lag - u_eta,eff) + K_phi(a/b) (u_phi,eff - u_phi,lag)] mu N sqrt(ab),
+//     s(e) = (1 - min(e, 1))^2 the slope of the closed form 1 - (1 - e)^3 over its linear one. A_phi: the spin's
+//     lateral force follows the second stage (A_phi its steady slope in u_phi, 3 g_phi in the linear range);
+//     K_eta: eta's moment does; K_phi: the spin's moment leads its lateral force (the longitudinal rate phi y
+//     builds it at once), and while the lateral traction builds from the leading edge it has a first moment
+//     (2 x q phi / L3) that the steady state has not (the overshoot of the exact Mz under spin). Zero in the
+//     steady state.
+//     s_phi (first stage), s2, A, K: lib/tangential/relaxed_transient_table.h;
 //   - steady forces: the simplified theory's force at a creepage is that of the exact theory at a
 //     slightly different one: each creepage is scaled by a factor g_k(a/b, e) of the saturation level
 //     e = G a b C |c| / (3 mu N) before the steady solve;
@@ -38,6 +54,8 @@
 // scripts/fit-relaxed (fit error in docs/accuracy-vs-exact.md).
 #pragma once
 
+#include <limits>
+
 #include "lib/elastic.h"
 #include "lib/patch.h"
 #include "lib/tangential/satran.h"
@@ -45,19 +63,32 @@
 
 namespace contact {
 
-// the effective creepages of a transient run (not the imposed ones)
+// the effective creepages of a transient run (not the imposed ones): two stages in series (relaxed.h, transient)
 struct RelaxedState {
-  Creepages effective;
-  Creepages sigma_m;     // relaxation lengths in place of the table's where > 0 (for the fit, scripts/fit-relaxed)
+  Creepages effective;   // first stage (the steady model is solved at it)
+  Creepages lagged;      // second stage (eta, phi), relaxing towards the first: spin's Fy, eta's Mz, spin's Mz
+  Creepages sigma_m;     // first-stage relaxation lengths in place of the table's where > 0 (for the fit)
   double exponent = -1;  // the exponent p in place of the table's if >= 0 (for the fit)
+  Creepages sigma2_m;    // second-stage lengths (eta, phi) in place of the table's where > 0 (for the fit)
+  double moment_eta = std::numeric_limits<double>::quiet_NaN();  // K_eta in place of the table's if finite (fit)
+  double moment_phi = std::numeric_limits<double>::quiet_NaN();  // K_phi in place of the table's if finite (fit)
+  double force_phi = std::numeric_limits<double>::quiet_NaN();   // A_phi in place of the table's if finite (fit)
 };
 
 inline RelaxedState relaxed_rest() { return {}; }
-// the steady state at the creepages c (the effective creepages are the imposed ones)
-inline RelaxedState relaxed_steady_state(const Creepages& c) { return {c, {}, -1}; }
+// the steady state at the creepages c (both stages at the imposed creepages)
+inline RelaxedState relaxed_steady_state(const Creepages& c) {
+  RelaxedState s;
+  s.effective = c;
+  s.lagged = c;
+  return s;
+}
 
-// the relaxation lengths (m) of xi, eta and phi on a contact of semi-axes a_m (along rolling), b_m
+// the first stage's relaxation lengths (m) of xi, eta and phi on a contact of semi-axes a_m (along rolling), b_m
+// (linear, before the shrink with saturation)
 Creepages relaxation_lengths_m(double a_m, double b_m);
+// the second stage's (eta and phi; xi has none: 0)
+Creepages second_stage_lengths_m(double a_m, double b_m);
 
 // the saturation level e = G a b C11 |xi| / (3 mu N) at which the model under xi alone is as saturated as the
 // simplified theory at e = 1 (Johnson and Vermeulen's saturation creepage; the same force, without Heathcote
@@ -91,8 +122,9 @@ TangentialSolution solve_relaxed_steady_with_mix(const ContactPatch& patch, cons
                                                  double speed_m_per_s, bool fields = false);
 
 // One step rolling dq_m >= 0 with the imposed creepages c (the step's mean): the effective creepages
-// relax, c_eff <- c + (c_eff - c) exp(-dq / sigma) (sigma at the step's start), then the steady model at c_eff. Its power is the
-// steady model's at c_eff (-V c_eff . F); creep_work_W is that of the imposed creepages.
+// relax, c_eff <- c + (c_eff - c) exp(-dq / sigma), and the second stage with them (closed form, sigma at the
+// step's start), then the steady model at c_eff with the second stage's force and moments.
+// Its power is the steady model's at c_eff (-V c_eff . F); creep_work_W is that of the imposed creepages.
 TangentialSolution relaxed_step(const ContactPatch& patch, const ElasticPair& pair, const Creepages& creepages,
                                 double mu, double speed_m_per_s, double dq_m, RelaxedState& state,
                                 bool fields = false);

@@ -6,10 +6,10 @@ namespace contact::relaxed_table {
 
 constexpr int kNab = 5;
 constexpr double kAb[kNab] = {0.0500, 0.1000, 0.3000, 1.0000, 3.0000};
-// relaxation length / a of xi, eta, phi at each a/b (start-up from rest on 40 x 40 cells)
+// relaxation length / a of xi, eta at each a/b (start-up from rest on 40 x 40 cells; phi's two stages:
+// relaxed_transient_table.h)
 constexpr double kSigmaX[kNab] = {3.6500, 3.0500, 2.3000, 1.7000, 1.3000};
 constexpr double kSigmaY[kNab] = {3.1000, 2.6000, 1.9500, 1.4500, 1.2000};
-constexpr double kSigmaPhi[kNab] = {3.1000, 2.6000, 1.9500, 1.4500, 1.2000};
 // the exponent p of sigma = sigma0 (1 - e_eff)^p at each a/b (xi's fit)
 constexpr double kExponent[kNab] = {1.2500, 1.2500, 1.5000, 2.0000, 1.7500};
 // creepage factors over the saturation level e = G a b C |c| / (3 mu N) at each a/b (steady, 80 x 80 cells)

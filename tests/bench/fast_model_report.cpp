@@ -9,6 +9,9 @@
 //   fast_model_report step AB N DIR     from steady at 50 % to 90 % of saturation in DIR (xi, eta, phi)
 //   fast_model_report fit AB N          the creepage factors of the relaxed model (lines "G", scripts/fit-relaxed)
 //   fast_model_report fitsigma AB N DIR its relaxation length in DIR (line "Z", scripts/fit-relaxed)
+//   fast_model_report heldtrace AB N NU K UXI UETA UPHI AXIS FACTOR  a held-out transient run traced (lines "Q")
+//   fast_model_report fittransient AB N its transient law's second stage under eta and phi (line "R",
+//                                       scripts/fit-relaxed --transient-only)
 //   fast_model_report checkspin AB N    the relaxed model's spin between the fitted levels (lines "K")
 //   fast_model_report linear AB N       the linear limit of Fy(phi), Mz(eta), Mz(phi) against Kalker's C23, C33
 //   fast_model_report fitspin AB N      its two spin factors (lines "H", scripts/fit-relaxed --spin-only)
@@ -482,21 +485,25 @@ void check_mix(double ab, int n) {
     }
 }
 
-// "X ab n case steady_consistent_us steady_relaxed_us ratio step_satran_us step_relaxed_us ratio": the cost of
+// "X ab n case steady_consistent_us steady_relaxed_us ratio step_satran_us step_relaxed_us ratio step_moving_us ratio":
 // the relaxed model against the consistent steady solve and Satran's shift step (fields off), medians of
-// interleaved repetitions (the machine is shared: the ratios, not the times, are the measure)
+// interleaved repetitions (the machine is shared: the ratios, not the times, are the measure); step_moving: a
+// relaxed step with both stages relaxing (from the steady state at half the creepages), over the settled one
 void cost(double ab, int n, int reps) {
   const ContactPatch p = ellipse_patch(ab, n);
   const double dx = p.grid.dx_m;
   for (const Labelled& l : steady_cases(p)) {
     if (l.label != "xi50" && l.label != "eta50" && l.label != "phi50" && l.label != "mix50" && l.label != "mixneg90")
       continue;
-    std::vector<double> tc, tr, ts, tq;
+    std::vector<double> tc, tr, ts, tq, tt;
     SteadyOptions o;
     o.fields = false;
     const TangentialProblem pr = make_tangential_problem(p, kPair, l.c, kMu, kV);
     TransientState st = rest_state(p.grid);
     RelaxedState rs = relaxed_steady_state(l.c);
+    // a step in a transient (from the steady state at half the creepages: both stages relaxing, the second
+    // stage's corrections made)
+    const RelaxedState half = relaxed_steady_state({l.c.xi / 2, l.c.eta / 2, l.c.phi_per_m / 2});
     const StepKinematics kin{dx / kV, dx, l.c.xi * dx, l.c.eta * dx, l.c.phi_per_m * dx};
     double sink = 0;
     for (int k = 0; k < reps; ++k) {
@@ -512,14 +519,18 @@ void cost(double ab, int n, int reps) {
       t0 = std::chrono::steady_clock::now();
       sink += relaxed_step(p, kPair, l.c, kMu, kV, dx, rs, false).Fx_N;
       tq.push_back(ms_since(t0));
+      RelaxedState moving = half;
+      t0 = std::chrono::steady_clock::now();
+      sink += relaxed_step(p, kPair, l.c, kMu, kV, dx, moving, false).Fx_N;
+      tt.push_back(ms_since(t0));
     }
     auto med = [](std::vector<double> v) {
       std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
       return 1e3 * v[v.size() / 2];
     };
-    const double c = med(tc), r = med(tr), s = med(ts), q = med(tq);
-    std::printf("X %g %d %s %.1f %.1f %.2f %.1f %.1f %.2f %s\n", ab, n, l.label.c_str(), c, r, r / c, s, q, q / s,
-                sink == 0.123 ? "!" : "");
+    const double c = med(tc), r = med(tr), s = med(ts), q = med(tq), t = med(tt);
+    std::printf("X %g %d %s %.1f %.1f %.2f %.1f %.1f %.2f %.1f %.2f %s\n", ab, n, l.label.c_str(), c, r, r / c, s, q,
+                q / s, t, t / q, sink == 0.123 ? "!" : "");
   }
 }
 
@@ -570,6 +581,167 @@ void fit_sigma(double ab, int n, int dir) {
   std::printf("Z %d %g %.3f %.3f %.5f %d\n", dir, ab, best_s, best_p, best_err, unconverged);
 }
 
+
+// "R ab s_phi1 s_phi2 A_phi K_phi err_phi s_eta2 K_eta err_eta unconverged": the transient law's second stage
+// (lib/tangential/relaxed.h): fitted to the exact start-ups from rest under pure phi and pure eta at 50 % and 90 %
+// of saturation over q <= 8a. Spin: the first and second stages' lengths, A_phi and K_phi together, err_phi the
+// largest of |Fy/Fy_ss model - exact| and |Mz/Mz_ss model - exact| over q and both levels; eta: its second stage
+// and K_eta (its first stage is the table's, fitted on Fy), err_eta Mz's. A and K enter Fy and Mz linearly: for
+// each pair of lengths the run is made once and they are scanned over it.
+void fit_transient(double ab, int n) {
+  const ContactPatch p = ellipse_patch(ab, n);
+  const double G = combined_shear_modulus_Pa(kPair), nu = combined_poisson(kPair), dx = p.grid.dx_m, a = p.a_m;
+  const int steps = static_cast<int>(std::lround(8 * a / dx));
+  const double muN = kMu * p.normal_load_N, sab = std::sqrt(p.a_m * p.b_m);
+  int unconverged = 0;
+  struct Run {
+    Creepages c;
+    std::vector<double> Fy, Mz;  // exact over the steps, as shares of the exact steady value
+    double Fy_ss = 0, Mz_ss = 0;  // the model's steady
+  };
+  auto exact_runs = [&](int dir) {
+    std::vector<Run> v;
+    for (double k : {0.5, 0.9}) {
+      Run r;
+      r.c = level(p, k, 0, dir == 1 ? 1.0 : 0, dir == 2 ? 1.0 : 0);
+      const ExactSolution ss = solve_exact_steady(p, G, nu, r.c, kMu, kV);
+      unconverged += !ss.status.converged();
+      ExactSolution prev;
+      for (int s = 1; s <= steps; ++s) {
+        ExactSolution e = solve_exact_rolling_step(p, G, nu, r.c, kMu, kV, s == 1 ? nullptr : &prev, exact_run_options());
+        unconverged += !e.status.converged();
+        r.Fy.push_back(e.fields.Fy_N / ss.fields.Fy_N);
+        r.Mz.push_back(e.fields.Mz_N_m / ss.fields.Mz_N_m);
+        prev = std::move(e);
+      }
+      const TangentialSolution m = solve_relaxed_steady(p, kPair, r.c, kMu, kV, false);
+      r.Fy_ss = m.Fy_N;
+      r.Mz_ss = m.Mz_N_m;
+      v.push_back(r);
+    }
+    return v;
+  };
+  // the model's run at the lengths s1 (first stage, 0: the table's), s2 with A = K = 0: Fy, Mz and the second
+  // stage's factors hF, hM (dFy = A hF, dMz = K hM), each as shares of the model's steady value
+  struct Model {
+    std::vector<double> Fy, Mz, hF, hM;
+  };
+  const KalkerCoefficients C = kalker_coefficients(p.a_m, p.b_m, nu);
+  const double unit = 3 * kMu * p.normal_load_N / (G * p.a_m * p.b_m);
+  auto model_run = [&](const Run& r, int dir, double s1, double s2) {
+    Model m;
+    RelaxedState st = relaxed_rest();
+    if (dir == 2 && s1 > 0) st.sigma_m.phi_per_m = s1 * a;
+    (dir == 1 ? st.sigma2_m.eta : st.sigma2_m.phi_per_m) = s2 * a;
+    st.moment_eta = st.moment_phi = st.force_phi = 0;
+    for (int s = 1; s <= steps; ++s) {
+      const TangentialSolution f = relaxed_step(p, kPair, r.c, kMu, kV, dx, st, false);
+      m.Fy.push_back(f.Fy_N / r.Fy_ss);
+      m.Mz.push_back(f.Mz_N_m / r.Mz_ss);
+      const Creepages& c1 = st.effective;
+      const double u1[3] = {c1.xi * C.C11 / unit, c1.eta * C.C22 / unit, c1.phi_per_m * sab * C.C23 / unit};
+      const double e1 = std::sqrt(u1[0] * u1[0] + u1[1] * u1[1] + u1[2] * u1[2]);
+      const double slope = std::pow(1 - std::min(e1, 1.0), 2);
+      const double du = dir == 1 ? (st.lagged.eta - c1.eta) * C.C22 / unit
+                                 : (st.lagged.phi_per_m - c1.phi_per_m) * sab * C.C23 / unit;  // lag - eff
+      m.hF.push_back(slope * du * muN / r.Fy_ss);
+      m.hM.push_back(slope * (dir == 1 ? du : -du) * muN * sab / r.Mz_ss);
+    }
+    return m;
+  };
+  // the best coefficient for Fy (moment false) or Mz over the runs: (coefficient, error)
+  auto best = [&](const std::vector<Run>& rs, const std::vector<Model>& ms, bool moment) {
+    double bk = 0, be = 1e300;
+    for (double K = -6; K <= 6 + 1e-9; K += 0.02) {
+      double e = 0;
+      for (std::size_t l = 0; l < rs.size() && e < be; ++l)
+        for (int s = 0; s < steps; ++s)
+          e = std::max(e, moment ? std::abs(ms[l].Mz[s] + K * ms[l].hM[s] - rs[l].Mz[s])
+                                 : std::abs(ms[l].Fy[s] + K * ms[l].hF[s] - rs[l].Fy[s]));
+      if (e < be) be = e, bk = K;
+    }
+    return std::pair<double, double>{bk, be};
+  };
+  const std::vector<Run> phi = exact_runs(2), eta = exact_runs(1);
+  double bp[5] = {0, 0, 0, 0, 1e300};
+  for (double s1 = 0.1; s1 <= 4.0 + 1e-9; s1 += 0.1)
+    for (double s2 = 0.1; s2 <= 3.0 + 1e-9; s2 += 0.1) {
+      std::vector<Model> ms;
+      for (const Run& r : phi) ms.push_back(model_run(r, 2, s1, s2));
+      const auto [A, eF] = best(phi, ms, false);
+      const auto [K, eM] = best(phi, ms, true);
+      if (std::max(eF, eM) < bp[4]) bp[0] = s1, bp[1] = s2, bp[2] = A, bp[3] = K, bp[4] = std::max(eF, eM);
+    }
+  double be[3] = {0, 0, 1e300};
+  for (double s2 = 0.1; s2 <= 3.0 + 1e-9; s2 += 0.05) {
+    std::vector<Model> ms;
+    for (const Run& r : eta) ms.push_back(model_run(r, 1, 0, s2));
+    const auto [K, e] = best(eta, ms, true);
+    if (e < be[2]) be[0] = s2, be[1] = K, be[2] = e;
+  }
+  std::printf("R %g %.3f %.3f %.3f %.3f %.5f %.3f %.3f %.5f %d\n", ab, bp[0], bp[1], bp[2], bp[3], bp[4], be[0], be[1],
+              be[2], unconverged);
+}
+
+// the relaxed model's transient knobs from the environment (RELAXED_S1PHI, RELAXED_S2PHI, RELAXED_S2ETA in units of
+// a, RELAXED_APHI, RELAXED_KPHI, RELAXED_KETA): in place of the table's where set (for trying the law, scripts/fit-relaxed)
+void knobs_from_env(RelaxedState& st, double a) {
+  auto get = [](const char* k, double& v) {
+    if (const char* e = std::getenv(k)) v = std::atof(e);
+  };
+  double s1 = 0, s2 = 0, s2e = 0;
+  get("RELAXED_S1PHI", s1);
+  get("RELAXED_S2PHI", s2);
+  get("RELAXED_S2ETA", s2e);
+  st.sigma_m.phi_per_m = s1 * a;
+  st.sigma2_m.phi_per_m = s2 * a;
+  st.sigma2_m.eta = s2e * a;
+  get("RELAXED_KPHI", st.moment_phi);
+  get("RELAXED_KETA", st.moment_eta);
+  get("RELAXED_APHI", st.force_phi);
+}
+
+// "Q q/a exact Fx Fy Mz relaxed Fx Fy Mz": a held-out run of tests/heldout_test.cpp traced (nu on both bodies, the
+// share k of saturation, the direction u in levels; AXIS -1 a start from rest, 0-2 a step of xi, eta, phi from the
+// steady state at that creepage times FACTOR), 40 x 40 cells to 12a; the exact steady forces first ("Q 0 ...")
+void held_trace(double ab, int n, double nu, double k, const double u[3], int axis, double factor) {
+  const ContactPatch p = ellipse_patch(ab, n);
+  const ElasticPair pair{{210e9, nu}, {210e9, nu}};
+  const double G = combined_shear_modulus_Pa(pair), nuc = combined_poisson(pair), dx = p.grid.dx_m;
+  const KalkerCoefficients C = kalker_coefficients(p.a_m, p.b_m, nuc);
+  const double e = 1 - std::cbrt(1 - k), unit = 3 * kMu * p.normal_load_N / (G * p.a_m * p.b_m);
+  const Creepages c1{e * u[0] * unit / C.C11, e * u[1] * unit / C.C22,
+                     e * u[2] * unit / (std::sqrt(p.a_m * p.b_m) * C.C23)};
+  Creepages c0 = c1;
+  if (axis == 0) c0.xi *= factor;
+  if (axis == 1) c0.eta *= factor;
+  if (axis == 2) c0.phi_per_m *= factor;
+  const ExactSolution ss = solve_exact_steady(p, G, nuc, c1, kMu, kV);
+  const TangentialSolution ms = solve_relaxed_steady(p, pair, c1, kMu, kV, false);
+  std::printf("Q 0 %.6e %.6e %.6e %.6e %.6e %.6e\n", ss.fields.Fx_N, ss.fields.Fy_N, ss.fields.Mz_N_m, ms.Fx_N, ms.Fy_N,
+              ms.Mz_N_m);
+  ExactSolution prev;
+  bool have = false;
+  RelaxedState st = relaxed_rest();
+  if (axis >= 0) {
+    if (with_exact()) prev = solve_exact_steady(p, G, nuc, c0, kMu, kV);
+    have = true;
+    st = relaxed_steady_state(c0);
+  }
+  knobs_from_env(st, p.a_m);
+  const int steps = static_cast<int>(std::lround(12 * p.a_m / dx));
+  for (int s = 1; s <= steps; ++s) {
+    double ex[3] = {0, 0, 0};
+    if (with_exact()) {
+      ExactSolution x = solve_exact_rolling_step(p, G, nuc, c1, kMu, kV, have ? &prev : nullptr, exact_run_options());
+      ex[0] = x.fields.Fx_N, ex[1] = x.fields.Fy_N, ex[2] = x.fields.Mz_N_m;
+      prev = std::move(x);
+      have = true;
+    }
+    const TangentialSolution m = relaxed_step(p, pair, c1, kMu, kV, dx, st);
+    std::printf("Q %.4f %.6e %.6e %.6e %.6e %.6e %.6e\n", s * dx / p.a_m, ex[0], ex[1], ex[2], m.Fx_N, m.Fy_N, m.Mz_N_m);
+  }
+}
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -586,6 +758,11 @@ int main(int argc, char** argv) {
     fit_factors(ab, n);
   } else if (what == "cost") {
     cost(ab, n, argc >= 5 ? std::atoi(argv[4]) : 200);
+  } else if (what == "heldtrace" && argc >= 11) {
+    const double u[3] = {std::atof(argv[6]), std::atof(argv[7]), std::atof(argv[8])};
+    held_trace(ab, n, std::atof(argv[4]), std::atof(argv[5]), u, std::atoi(argv[9]), std::atof(argv[10]));
+  } else if (what == "fittransient") {
+    fit_transient(ab, n);
   } else if (what == "fitmix") {
     fit_mix(ab, n);
   } else if (what == "checkmix") {
