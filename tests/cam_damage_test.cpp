@@ -231,4 +231,74 @@ TEST_F(CamDamageCase, BadFatigueKeysNameFileLineAndKey) {
   EXPECT_NE(r.err.find("cam.wear.fatigue.peak_damage"), std::string::npos) << r.err;
 }
 
+// the shipped case's rolling roller dissipates little: its strips' T-gamma is below 1e-3 N, far under Burstow's rail
+// threshold of 20 N (no damage by the published function: docs/cam-follower.md §19); with a function scaled to it
+// (threshold 1e-4 N, peak 5e-4 N) the life ends by fatigue before the wear limit, on the roller, whose surface passes
+// the contact about 2.8 times per cam revolution; the report, life.csv and the damage maps agree, and the plot draws
+// the damage along the track
+TEST_F(CamDamageCase, RunEndsByFatigueWhereTheMapsSayAndPlotDrawsTheDamage) {
+  const fs::path out = dir_ / "out";
+  const rollwear_test::CommandRun r = rollwear_test::rollwear(
+      "run '" +
+          write_case("    fatigue: { law: burstow, threshold_N: 1.0e-4, peak_at_N: 5.0e-4, zero_at_N: 1.0e-2, "
+                     "peak_damage: 1.0e-9 }\n    snapshots_revolutions: [1.0e8]\n")
+              .string() +
+          "' -o '" + out.string() + "' -q",
+      dir_);
+  ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+  const std::string report = read_text(out / "report.txt");
+  std::map<std::string, std::string> key;
+  std::istringstream lines(report);
+  for (std::string line; std::getline(lines, line);)
+    if (const std::size_t c = line.find(": "); c != std::string::npos) key[line.substr(0, c)] = line.substr(c + 2);
+  EXPECT_EQ(key["ended_by"], "fatigue") << report;
+  EXPECT_EQ(key["fatigue_law"], "burstow");
+  EXPECT_EQ(key["max_damage"], "1");
+  EXPECT_EQ(key["max_damage_body"], "roller");
+  EXPECT_LT(std::stod(key["max_depth_m"]), 2e-6);  // before the wear limit
+  // the end's maps: their largest is the report's, where it says
+  const double at_y = std::stod(key["max_damage_y_m"]);
+  double cam_max = 0, roller_max = 0, roller_at_y = -1;
+  {
+    std::istringstream m(read_text(out / "snapshots" / "roller_damage_0002.csv"));
+    std::string line;
+    while (std::getline(m, line) && line.rfind("#", 0) == 0) {
+    }
+    EXPECT_EQ(line, "y_m,damage");
+    while (std::getline(m, line)) {
+      const double y = std::stod(line.substr(0, line.find(','))), d = std::stod(line.substr(line.find(',') + 1));
+      roller_max = std::max(roller_max, d);
+      if (std::abs(y - at_y) < 1e-9) roller_at_y = d;
+    }
+    std::istringstream t(read_text(out / "snapshots" / "damage_map_0002.csv"));
+    while (std::getline(t, line) && line.rfind("#", 0) == 0) {
+    }
+    EXPECT_EQ(line, "cam_angle_deg,cam_arc_m,y_m,damage");
+    while (std::getline(t, line)) cam_max = std::max(cam_max, std::stod(line.substr(line.rfind(',') + 1)));
+  }
+  EXPECT_NEAR(roller_max, 1, 1e-9);
+  EXPECT_GT(cam_max, 0.1);  // the track is damaged too, less
+  EXPECT_LT(cam_max, roller_max);
+  EXPECT_NEAR(roller_at_y, roller_max, 1e-9);  // the report's y is a cell of the largest (two of them, mirrored)
+  // life.csv's last row: the located end, damage 1
+  const std::string life = read_text(out / "life.csv");
+  EXPECT_NE(life.find("step,revolutions,max_depth_m,lift_loss_m,lift_loss_at_deg,energy_J,max_damage\n"),
+            std::string::npos) << life;
+  const std::string last = life.substr(life.rfind('\n', life.size() - 2) + 1);
+  EXPECT_NEAR(std::stod(last.substr(last.rfind(',') + 1)), 1, 1e-9) << last;
+  EXPECT_NEAR(std::stod(last.substr(last.find(',') + 1)), std::stod(key["revolutions"]),
+              1e-5 * std::stod(key["revolutions"])) << last;
+  if (std::system("command -v gnuplot >/dev/null 2>&1") == 0) {
+    const rollwear_test::CommandRun p = rollwear_test::rollwear("plot '" + out.string() + "'", dir_);
+    EXPECT_EQ(p.exit_code, 0) << p.err;
+    EXPECT_TRUE(fs::exists(out / "plots" / "cam_damage.png"));
+  }
+  // without the section: no damage map, no column, no picture
+  const fs::path plain = dir_ / "plain";
+  ASSERT_EQ(rollwear_test::rollwear("run '" + write_case("").string() + "' -o '" + plain.string() + "' -q", dir_).exit_code, 0);
+  EXPECT_FALSE(fs::exists(plain / "snapshots" / "damage_map_0000.csv"));
+  EXPECT_EQ(read_text(plain / "life.csv").find("max_damage"), std::string::npos);
+  EXPECT_EQ(read_text(plain / "report.txt").find("max_damage"), std::string::npos);
+}
+
 }  // namespace
