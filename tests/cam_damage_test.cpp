@@ -181,6 +181,41 @@ TEST(CamDamage, TheRollerFailsFirstWhenEveryAngleDamages) {
   EXPECT_NEAR(life.damage.cam.maxCoeff(), life.N * 1e-5, 1e-9);
 }
 
+// the damage is in the life's state, so a life stopped after a step and resumed from that step's start (a
+// checkpoint's content) ends where the uninterrupted one does, to the bit, with the same damage
+TEST(CamDamage, AFatigueLifeStoppedAndResumedIsTheUninterruptedOne) {
+  cam::CamLifeModel m = model();
+  m.stepping.method = wear::IntegratorOptions::Method::FixedDepth;  // several steps (the adaptive life takes few)
+  m.stepping.max_depth_step_m = 0.1 * m.damage_scale_m;             // damage 0.1 per step
+  // the rate depends on the worn state (a producer that ignores it would not show a bad restart of the damage)
+  const auto producer = [](const cam::CamWearState& s) {
+    RevolutionDissipation rev = revolution();
+    for (AngleDissipation& a : rev) a.power_W_per_m *= 1 + 1e4 * s.cam_depth_m.maxCoeff();  // +20 % at 20 um
+    return rev;
+  };
+  m.laws.cam->k_E_m3_per_J = 1e-13;  // about 20 um at the fatigue end, the depth limit 1 mm
+  const cam::CamLifeResult whole = cam::run_cam_life(m, producer);
+  ASSERT_EQ(whole.ended_by, wear::LifeEnd::Fatigue) << whole.message;
+  ASSERT_GT(whole.steps, 4);
+  cam::CamLifeStart at;
+  cam::CamLifeHooks stop;
+  stop.on_step = [&](const cam::CamLifeStep& s) { at = s.resume; };
+  stop.stop_after = [](const cam::CamLifeStep& s) { return s.step == 3; };
+  ASSERT_EQ(cam::run_cam_life(m, producer, stop).ended_by, wear::LifeEnd::Stopped);
+  const cam::CamLifeResult resumed = cam::run_cam_life(m, producer, {}, at);
+  EXPECT_EQ(resumed.ended_by, wear::LifeEnd::Fatigue);
+  EXPECT_EQ(resumed.N, whole.N);
+  EXPECT_EQ(resumed.steps, whole.steps);
+  EXPECT_TRUE((resumed.damage.cam == whole.damage.cam).all());
+  EXPECT_TRUE((resumed.damage.roller == whole.damage.roller).all());
+  EXPECT_TRUE((resumed.state.cam_depth_m == whole.state.cam_depth_m).all());
+  // a start without the damage (a life's state of another model) is refused
+  cam::CamLifeStart short_start = at;
+  short_start.x.conservativeResize(at.x.size() - m.grid.arc_cells * m.grid.track_cells - m.grid.roller_cells);
+  short_start.rate.resize(0);
+  EXPECT_THROW(cam::run_cam_life(m, producer, {}, short_start), std::invalid_argument);
+}
+
 // ---- the case and the command ----
 
 class CamDamageCase : public rollwear_test::TempDirTest {
