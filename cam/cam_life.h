@@ -8,6 +8,8 @@
 // their stability control; the case's stepping keys are a wear case's) until a limit ends the life:
 //   max_depth      the deepest wear of either body reaches max_depth_m;
 //   lift_loss      the follower's lift has dropped by max_lift_loss_m at some cam angle.
+//   fatigue        with the model's fatigue (cam/cam_damage.h), the largest damage of a track cell or a roller
+//                  cell reaches 1 (max D - 1).
 // Both are signed, continuous functions of the state (g < 0 inside the life), handed to the driver as its
 // limits, as the roller's wear loop hands its own: it locates them on the integrator's dense output
 // (adaptive) or its step's line (fixed).
