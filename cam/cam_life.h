@@ -10,7 +10,7 @@
 //   lift_loss      the follower's lift has dropped by max_lift_loss_m at some cam angle.
 //   fatigue        with the model's fatigue (cam/cam_damage.h), the largest damage of a track cell or a roller
 //                  cell reaches 1 (max D - 1).
-// Both are signed, continuous functions of the state (g < 0 inside the life), handed to the driver as its
+// Each is a signed, continuous function of the state (g < 0 inside the life), handed to the driver as its
 // limits, as the roller's wear loop hands its own: it locates them on the integrator's dense output
 // (adaptive) or its step's line (fixed).
 //
