@@ -983,6 +983,63 @@ fs::path last_wear_map(const fs::path& dir) {
   return best;
 }
 
+// snapshots/PREFIX_KKKK.csv of a cam life (the fatigue damage maps: damage_map, roller_damage), by KKKK
+std::vector<fs::path> cam_snapshots(const fs::path& dir, const std::string& prefix) {
+  std::map<int, fs::path> found;
+  std::error_code ec;
+  for (const fs::directory_entry& e : fs::directory_iterator(dir / "snapshots", ec)) {
+    const std::string leaf = e.path().filename().string();
+    if (leaf.size() != prefix.size() + 9 || leaf.compare(0, prefix.size() + 1, prefix + "_") != 0 ||
+        leaf.compare(prefix.size() + 5, 4, ".csv") != 0 ||
+        leaf.substr(prefix.size() + 1, 4).find_first_not_of("0123456789") != std::string::npos)
+      continue;
+    found[std::stoi(leaf.substr(prefix.size() + 1, 4))] = e.path();
+  }
+  std::vector<fs::path> out;
+  for (const auto& [k, p] : found) out.push_back(p);
+  return out;
+}
+
+// cam_damage.png (cam.wear.fatigue, docs/cam-follower.md §19): the track's largest damage across its width at each
+// arc cell over the cam angle at which the contact passes, at every snapshot, and the roller's across its width
+// at the last, with the crack-initiation line at damage 1
+std::string cam_damage_script(const fs::path& dir, const std::string& name, Pictures& picture) {
+  const std::vector<fs::path> maps = cam_snapshots(dir, "damage_map"), roller = cam_snapshots(dir, "roller_damage");
+  if (maps.empty()) return "";
+  std::string script, plot;
+  for (std::size_t k = 0; k < maps.size(); ++k) {
+    const Table t = read_table(maps[k]);
+    double N = std::numeric_limits<double>::quiet_NaN();
+    if (const auto it = t.comments.find("revolutions"); it != t.comments.end()) parse_number(it->second.first, N);
+    const std::vector<double> angle = column(t, "cam_angle_deg"), arc = column(t, "cam_arc_m"), d = column(t, "damage");
+    script += fmt::format("$damage{} << EOD\n", k);
+    for (std::size_t r = 0; r < arc.size();) {  // one row per arc cell: its largest across the track
+      double worst = 0;
+      std::size_t e = r;
+      for (; e < arc.size() && arc[e] == arc[r]; ++e) worst = std::max(worst, d[e]);
+      script += fmt::format("{:.8g} {:.8g}\n", angle[r], worst);
+      r = e;
+    }
+    script += "EOD\n";
+    plot += fmt::format("$damage{} using 1:2 with lines lw 2 title {}, ", k, quote(revolutions_label(N)));
+  }
+  plot += "1 with lines lw 1.5 dt (8,6) lc rgb 'black' title 'damage 1'\n";
+  std::string roller_plot;
+  if (!roller.empty()) {
+    const Table t = read_table(roller.back());
+    const std::vector<double> y = column(t, "y_m"), d = column(t, "damage");
+    script += "$roller << EOD\n";
+    for (std::size_t r = 0; r < y.size(); ++r) script += fmt::format("{:.8g} {:.8g}\n", y[r] * 1e3, d[r]);
+    script += "EOD\n";
+    roller_plot = "set title 'the roller, at the last snapshot'\nset xlabel 'across the roller y (mm)'\n"
+                  "set xrange [*:*]\nset xtics autofreq\nunset key\nplot $roller using 1:2 with lines lw 2 lc rgb '#1f4e9c'\n";
+  }
+  return script + figure_start(picture("cam_damage.png"), name + ": fatigue damage (Miner's sum) along the track") +
+         "set multiplot layout 1,2\nset ylabel 'damage'\nset key top right\n"
+         "set title 'the track: largest across its width'\nset xlabel 'cam angle at which the contact passes (deg)'\n"
+         "set xrange [0:360]\nset xtics 60\nplot " + plot + roller_plot + "unset multiplot\n" + kFigureEnd;
+}
+
 // 1, 2 or 5 times a power of ten, the largest not above x (x > 0)
 double round_down_125(double x) {
   const double decade = std::pow(10.0, std::floor(std::log10(x)));
@@ -1149,6 +1206,7 @@ std::vector<fs::path> draw_cam(const fs::path& dir, const fs::path& plots, std::
             "$cam using 3:4 with lines lw 2 lc rgb '#c0392b' title " +
             quote(fmt::format("worn, depth × {:g}", scale)) + "\n" + kFigureEnd;
   if (has_cam_film(dis)) script += cam_film_script(dis, name, picture);  // a lubricated cam's life
+  script += cam_damage_script(dir, name, picture);                        // a cam life with fatigue
   return render(script, picture.list, plots, err);
 }
 

@@ -23,14 +23,30 @@ namespace cam {
 
 namespace {
 
-// the state vector: [track map, arc-major columns as Eigen stores them | roller | e], e = E energy_scale
+// the state vector: [track map, arc-major columns as Eigen stores them | roller | e | with fatigue: the track's
+// damage, as the map | the roller's], e = E energy_scale, the damage D damage_scale_m
 struct Layout {
   int n_cam = 0, n_roller = 0;
-  int size() const { return n_cam + n_roller + 1; }
+  bool damage = false;
+  int size() const { return (n_cam + n_roller) * (damage ? 2 : 1) + 1; }
   int energy() const { return n_cam + n_roller; }
+  int damage_start() const { return n_cam + n_roller + 1; }
 };
 
-Layout layout(const CamWearGrid& g) { return {g.arc_cells * g.track_cells, g.roller_cells}; }
+Layout layout(const CamWearGrid& g, bool damage = false) {
+  return {g.arc_cells * g.track_cells, g.roller_cells, damage};
+}
+Layout layout(const CamLifeModel& m) { return layout(m.grid, m.fatigue.has_value()); }
+
+// the damage held in x (with the model's fatigue)
+CamDamage damage_of(const CamLifeModel& m, const Eigen::VectorXd& x) {
+  const Layout lay = layout(m);
+  CamDamage d;
+  d.cam = Eigen::Map<const Eigen::ArrayXXd>(x.data() + lay.damage_start(), m.grid.arc_cells, m.grid.track_cells) /
+          m.damage_scale_m;
+  d.roller = x.segment(lay.damage_start() + lay.n_cam, lay.n_roller).array() / m.damage_scale_m;
+  return d;
+}
 
 CamWearState state_of(const CamWearGrid& g, const Eigen::VectorXd& x) {
   CamWearState s;
@@ -256,6 +272,22 @@ std::string cam_life_report_text(const std::string& case_name, double omega_rad_
   return wear::life_report_text(r);
 }
 
+std::string cam_damage_report_text(const CamLifeModel& m, const CamLifeResult& life) {
+  if (!m.fatigue) return "";
+  const auto g6 = [](double v) { return fmt::format("{:.6g}", v); };
+  const CamDamageMax& d = life.max_damage;
+  std::string out;
+  out += "fatigue_law: " + wear::to_string(m.fatigue->law) + "\n";
+  out += "max_damage: " + g6(d.value) + "\n";
+  out += "max_damage_body: " + (d.body.empty() ? std::string("none") : d.body) + "\n";
+  out += "max_damage_at_deg: " + fmt::format("{:.4g}", d.theta_rad * kDegPerRad) + "\n";
+  out += "max_damage_arc_m: " + g6(d.arc_m) + "\n";
+  out += "max_damage_y_m: " + g6(d.y_m) + "\n";
+  out += "max_tgamma_N: " + g6(life.max_tgamma_N) + "\n";
+  out += "max_tgamma_at_deg: " + fmt::format("{:.4g}", life.max_tgamma_at_rad * kDegPerRad) + "\n";
+  return out;
+}
+
 double cam_worn_volume_m3(const CamWearGrid& g, const CamWearState& s) {
   return s.cam_depth_m.sum() * g.arc_cell_m() * g.track_cell_m();
 }
@@ -288,6 +320,8 @@ CamLifeModel make_cam_life_model(const std::string& name, const CamWearSpec& spe
   m.scheme = spec.scheme;
   m.smoothing_wavelength_m = spec.smoothing_wavelength_m;
   m.snapshots_revolutions = spec.snapshots_revolutions;
+  m.fatigue = spec.fatigue;
+  if (spec.max_depth_m > 0) m.damage_scale_m = spec.max_depth_m;
   return m;
 }
 
@@ -297,6 +331,8 @@ void check_life_model(const CamLifeModel& m) {
   check_grid(m.grid);
   if (!(m.revolutions > 0)) throw std::invalid_argument("cam life: the budget of revolutions must be > 0");
   if (!m.laws.cam && !m.laws.roller) throw std::invalid_argument("cam life: nothing wears");
+  if (m.fatigue && !(m.damage_scale_m > 0 && std::isfinite(m.damage_scale_m)))
+    throw std::invalid_argument("cam life: the damage's scale must be > 0 and finite");
 }
 
 // f(x): the wear per revolution on the worn geometry, smoothed across the width, with the dissipated energy
@@ -305,7 +341,7 @@ void check_life_model(const CamLifeModel& m) {
 class CamRate {
  public:
   CamRate(const CamLifeModel& m, const DissipationOf& dissipation)
-      : m_(m), dissipation_(dissipation), layout_(layout(m.grid)), smooth_(m.smoothing_wavelength_m > 0) {
+      : m_(m), dissipation_(dissipation), layout_(layout(m)), smooth_(m.smoothing_wavelength_m > 0) {
     // the lateral filter's kernels on the cells' centres (which never move)
     const auto centres = [](double width_m, int n) {
       return Eigen::ArrayXd::LinSpaced(n, -0.5 * width_m + 0.5 * width_m / n, 0.5 * width_m - 0.5 * width_m / n);
@@ -320,7 +356,8 @@ class CamRate {
   const Eigen::VectorXd& operator()(const Eigen::VectorXd& h) {
     if (last_x_.size() == h.size() && last_x_ == h) return last_f_;
     const CamWearState s = state_of(m_.grid, h);
-    CamWearRate r = wear_per_revolution(dissipation_(s), m_.grid, m_.laws);
+    const RevolutionDissipation rev = dissipation_(s);
+    CamWearRate r = wear_per_revolution(rev, m_.grid, m_.laws);
     ++solved;
     if (smooth_) {
       Eigen::ArrayXXd& h_cam = r.depth_per_revolution.cam_depth_m;
@@ -337,6 +374,7 @@ class CamRate {
     last_f_.head(lay.n_cam) = Eigen::Map<const Eigen::VectorXd>(r.depth_per_revolution.cam_depth_m.data(), lay.n_cam);
     last_f_.segment(lay.n_cam, lay.n_roller) = r.depth_per_revolution.roller_depth_m.matrix();
     last_f_(lay.energy()) = r.energy_J * energy_scale;
+    if (lay.damage) damage_rate(rev);
     last_x_ = h;
     return last_f_;
   }
@@ -353,6 +391,7 @@ class CamRate {
 
   double energy_scale = 0;  // e = E energy_scale
   long solved = 0;          // calls of the producer
+  double max_tgamma_N = 0, max_tgamma_at_rad = 0;  // the last evaluation's (with fatigue)
 
  private:
   const CamLifeModel& m_;
@@ -361,7 +400,24 @@ class CamRate {
   bool smooth_;
   wear::SmoothingKernel track_kernel_, roller_kernel_;
   Eigen::VectorXd last_x_, last_f_;
+
+  // with fatigue: the damage per revolution of the same dissipation into the rate's damage segment
+  void damage_rate(const RevolutionDissipation& rev) {
+    const CamDamageRate d = damage_per_revolution(rev, m_.grid, *m_.fatigue);
+    const Layout& lay = layout_;
+    last_f_.segment(lay.damage_start(), lay.n_cam) =
+        Eigen::Map<const Eigen::VectorXd>(d.per_revolution.cam.data(), lay.n_cam) * m_.damage_scale_m;
+    last_f_.segment(lay.damage_start() + lay.n_cam, lay.n_roller) = d.per_revolution.roller.matrix() * m_.damage_scale_m;
+    max_tgamma_N = d.max_tgamma_N;
+    max_tgamma_at_rad = d.max_tgamma_at_rad;
+  }
 };
+
+// the largest damage held in x, and where (with the model's fatigue; value 0 without)
+CamDamageMax max_damage_in(const CamLifeModel& m, const Eigen::VectorXd& x) {
+  if (!m.fatigue) return {};
+  return max_damage(m.grid, damage_of(m, x));
+}
 
 // the cam's life as the driver's problem: its rate, its limits (the depth and the lift loss, g < 0 inside
 // the life, -1 where a limit is off); any failure of the producer ends the life at its last accepted step
@@ -369,11 +425,16 @@ wear::LifeProblem cam_life_problem(const CamLifeModel& m, CamRate& rate, const L
   wear::LifeProblem p;
   p.rate = [&rate](double, const Eigen::VectorXd& h, Eigen::VectorXd& dhdN) { dhdN = rate(h); };
   p.limits = {wear::LifeEnd::MaxDepth, wear::LifeEnd::LiftLoss};
+  if (m.fatigue) p.limits.push_back(wear::LifeEnd::Fatigue);  // g = max D - 1
   p.limit_values = [&m, &lift_loss](double, const Eigen::VectorXd& h, Eigen::VectorXd& g) {
-    g = Eigen::VectorXd::Constant(2, -1.0);
+    g = Eigen::VectorXd::Constant(m.fatigue ? 3 : 2, -1.0);
     const CamWearState s = state_of(m.grid, h);
     if (m.max_depth_m > 0) g(0) = max_depth_of(s) - m.max_depth_m;
     if (m.max_lift_loss_m > 0) g(1) = lift_loss(s).max_m - m.max_lift_loss_m;
+    if (m.fatigue) {
+      const Layout lay = layout(m);
+      g(2) = h.segment(lay.damage_start(), lay.n_cam + lay.n_roller).maxCoeff() / m.damage_scale_m - 1;
+    }
   };
   p.options = wear::integrator_options(m.stepping);
   p.options.scheme = m.scheme;
@@ -396,7 +457,7 @@ wear::LifeProblem cam_life_problem(const CamLifeModel& m, CamRate& rate, const L
 // memory restored: the uninterrupted life's next evaluation starts from the same)
 wear::LifeStart driver_start(const CamLifeModel& m, const CamLifeStart& start, CamRate& rate,
                              const ProducerMemory& memory) {
-  const Layout lay = layout(m.grid);
+  const Layout lay = layout(m);
   if (start.x.size() != lay.size() || !(start.energy_scale > 0) || !(start.N >= 0) || !(start.N <= m.revolutions) ||
       (start.rate.size() != 0 && start.rate.size() != lay.size()))
     throw std::invalid_argument(fmt::format("cam life: the start (state of {} values at N {:.10g}, energy scale "
@@ -430,6 +491,7 @@ CamLifeStep cam_life_step(const CamLifeModel& m, const wear::LifeStepEnd& e, con
   step.max_depth_m = max_depth_of(s);
   step.lift_loss = lift_loss(s);
   step.energy_J = (*e.state)(layout(m.grid).energy()) / energy_scale;
+  step.damage = max_damage_in(m, *e.state);
   step.resume.N = e.N;
   step.resume.x = *e.state;
   step.resume.energy_scale = energy_scale;
@@ -445,7 +507,8 @@ CamLifeStep cam_life_step(const CamLifeModel& m, const wear::LifeStepEnd& e, con
 
 // the life's end: the worn state and what it says, and its snapshot (none for a stopped life: a kill's state)
 CamLifeResult finish_cam_life(const CamLifeModel& m, const wear::LifeOutcome& out, const LiftLossProbe& lift_loss,
-                              double energy_scale, const CamLifeHooks& hooks) {
+                              const CamRate& rate, const CamLifeHooks& hooks) {
+  const double energy_scale = rate.energy_scale;
   CamLifeResult life;
   life.ended_by = out.ended_by;
   life.failure = out.failure;
@@ -461,6 +524,14 @@ CamLifeResult finish_cam_life(const CamLifeModel& m, const wear::LifeOutcome& ou
   life.rejected = out.counters.rejected;
   life.rhs_evals = out.counters.rhs_evals;
   life.revolutions_solved = out.counters.tangential_solves;
+  if (m.fatigue) {
+    life.damage = damage_of(m, out.state);
+    life.max_damage = max_damage(m.grid, life.damage);
+    life.max_tgamma_N = rate.max_tgamma_N;
+    life.max_tgamma_at_rad = rate.max_tgamma_at_rad;
+  }
+  if (out.ended_by != wear::LifeEnd::Stopped && m.fatigue && hooks.on_damage_snapshot)
+    hooks.on_damage_snapshot(life.N, life.damage);
   if (out.ended_by != wear::LifeEnd::Stopped && hooks.on_snapshot) hooks.on_snapshot(life.N, life.state);
   return life;
 }
@@ -473,6 +544,7 @@ CamLifeResult run_cam_life(const CamLifeModel& m, const DissipationOf& dissipati
   CamRate rate(m, dissipation);
   const LiftLossProbe lift_loss(m.unworn, m.grid, m.samples);
   const wear::LifeProblem problem = cam_life_problem(m, rate, lift_loss);
+  const Layout lay = layout(m);
 
   // where the life starts: a checkpoint's step end, or the unworn state, whose revolution fixes the energy's
   // scale (and fails early on a bad producer)
@@ -480,7 +552,8 @@ CamLifeResult run_cam_life(const CamLifeModel& m, const DissipationOf& dissipati
   if (start.x.size() > 0) {
     from = driver_start(m, start, rate, memory);
   } else {
-    from.state = Eigen::VectorXd::Zero(layout(m.grid).size());
+    from.state = Eigen::VectorXd::Zero(lay.size());
+    if (m.fatigue && hooks.on_damage_snapshot) hooks.on_damage_snapshot(0, damage_of(m, from.state));
     if (hooks.on_snapshot) hooks.on_snapshot(0, unworn_state(m.grid));
     try {
       rate(from.state);
@@ -491,7 +564,7 @@ CamLifeResult run_cam_life(const CamLifeModel& m, const DissipationOf& dissipati
       failed.message = fmt::format("the unworn revolution failed: {}", e.what());
       failed.state = from.state;
       failed.counters.tangential_solves = rate.solved;
-      return finish_cam_life(m, failed, lift_loss, rate.energy_scale, hooks);
+      return finish_cam_life(m, failed, lift_loss, rate, hooks);
     }
     from.counters.tangential_solves = rate.solved;
   }
@@ -506,10 +579,11 @@ CamLifeResult run_cam_life(const CamLifeModel& m, const DissipationOf& dissipati
       return !(hooks.stop_after && hooks.stop_after(step));
     };
   driver.on_snapshot = [&](double N, const Eigen::VectorXd& x) {
+    if (m.fatigue && hooks.on_damage_snapshot) hooks.on_damage_snapshot(N, damage_of(m, x));
     if (hooks.on_snapshot) hooks.on_snapshot(N, state_of(m.grid, x));
   };
   const wear::LifeOutcome out = wear::integrate_life(problem, from, driver);
-  return finish_cam_life(m, out, lift_loss, rate.energy_scale, hooks);
+  return finish_cam_life(m, out, lift_loss, rate, hooks);
 }
 
 }  // namespace cam

@@ -8,7 +8,9 @@
 // their stability control; the case's stepping keys are a wear case's) until a limit ends the life:
 //   max_depth      the deepest wear of either body reaches max_depth_m;
 //   lift_loss      the follower's lift has dropped by max_lift_loss_m at some cam angle.
-// Both are signed, continuous functions of the state (g < 0 inside the life), handed to the driver as its
+//   fatigue        with the model's fatigue (cam/cam_damage.h), the largest damage of a track cell or a roller
+//                  cell reaches 1 (max D - 1).
+// Each is a signed, continuous function of the state (g < 0 inside the life), handed to the driver as its
 // limits, as the roller's wear loop hands its own: it locates them on the integrator's dense output
 // (adaptive) or its step's line (fixed).
 //
@@ -28,9 +30,11 @@
 
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "cam/cam_damage.h"
 #include "cam/cam_wear.h"
 #include "cam/revolution.h"
 #include "cam/roller_dynamics.h"
@@ -119,6 +123,11 @@ struct CamLifeModel {
   wear::IntegratorOptions::Scheme scheme = wear::IntegratorOptions::Scheme::Euler;  // the fixed steps' update
   double smoothing_wavelength_m = 0;       // the rate's lateral filter on each arc cell's row and the roller's
   std::vector<double> snapshots_revolutions;  // increasing, in (0, revolutions]
+  // the track's and the roller's fatigue damage (cam/cam_damage.h, docs/cam-follower.md §19): integrated with
+  // the depths, stored as D damage_scale_m (the depth limit, or 1e-4 m without one: the integrator's tolerances
+  // and a fixed-depth step weigh damage 1 as the depth limit), the life ending where its largest reaches 1
+  std::optional<wear::FatigueSection> fatigue;
+  double damage_scale_m = 1e-4;
 };
 
 // the model of a case's wear: section (spec) on the grid of its unworn revolution (the circumference and
@@ -158,18 +167,21 @@ struct CamLifeStep {
   double max_depth_m = 0;
   LiftLoss lift_loss;
   double energy_J = 0;  // dissipated since N = 0
+  CamDamageMax damage;  // with the model's fatigue: the largest damage and where (else value 0)
   CamLifeStart resume;  // the start that continues the life from this step's end (a checkpoint's content)
 };
 
 struct CamLifeHooks {
   std::function<void(const CamLifeStep&)> on_step;                          // after each accepted step
   std::function<void(double N, const CamWearState& state)> on_snapshot;     // at 0, each snapshot, the end
+  // with the model's fatigue: the damage there, called just before on_snapshot with the same N
+  std::function<void(double N, const CamDamage& damage)> on_damage_snapshot;
   // after on_step: true ends the life there, wear::LifeEnd::Stopped, with no end snapshot (a kill's state)
   std::function<bool(const CamLifeStep&)> stop_after;
 };
 
 struct CamLifeResult {
-  wear::LifeEnd ended_by = wear::LifeEnd::NotRun;  // the cam's limits: MaxDepth, LiftLoss
+  wear::LifeEnd ended_by = wear::LifeEnd::NotRun;  // the cam's limits: MaxDepth, LiftLoss, Fatigue
   wear::LifeFailure failure = wear::LifeFailure::None;
   std::string message;
   double N = 0;
@@ -179,6 +191,10 @@ struct CamLifeResult {
   double energy_J = 0;             // dissipated over the life
   double cam_volume_m3 = 0;        // worn from the track: sum of cell depth x cell area
   double roller_volume_m3 = 0;     // worn from the roller: 2 pi R_r x its worn area
+  // with the model's fatigue: the damage at the end, its largest and where, and the end's largest strip T-gamma
+  CamDamage damage;
+  CamDamageMax max_damage;
+  double max_tgamma_N = 0, max_tgamma_at_rad = 0;
   long steps = 0, rejected = 0, rhs_evals = 0;
   long revolutions_solved = 0;     // calls of the dissipation producer
 };
@@ -197,6 +213,11 @@ CamLifeResult run_cam_life(const CamLifeModel& m, const DissipationOf& dissipati
 // interpolated_angle_steps, normal_solves, approach_evaluations, creep_evaluations, cold_retries), cpu_s
 std::string cam_life_report_text(const std::string& case_name, double omega_rad_per_s, const CamLifeResult& life,
                                  const WornRevolutionStats& worn, bool resumed, double cpu_s);
+
+// with the model's fatigue, the lines report.txt adds after cam_life_report_text's (docs/cam-follower.md §19):
+// fatigue_law, max_damage, max_damage_body, max_damage_at_deg, max_damage_arc_m, max_damage_y_m, max_tgamma_N,
+// max_tgamma_at_deg; "" without
+std::string cam_damage_report_text(const CamLifeModel& m, const CamLifeResult& life);
 
 // A case's life, set up: the unworn revolution (status Jump: nothing else is set), the roller's periodic
 // motion, the unworn quasi-steady dissipation (the same producer as on the worn geometry, so that the rate

@@ -20,9 +20,8 @@ namespace {
 
 bool positive_finite(double v) { return std::isfinite(v) && v > 0; }
 
-// Adds amount, spread evenly over [lo, hi) (hi > lo), onto the cells [i dx, (i + 1) dx), i in [0, n), of
-// out by overlap. periodic: positions are taken modulo n dx (hi - lo <= n dx); otherwise what falls
-// outside [0, n dx) is dropped. Returns what was deposited.
+}  // namespace
+
 double deposit(double lo, double hi, double amount, double dx, int n, bool periodic, double* out) {
   const double length = n * dx;
   const double density = amount / (hi - lo);
@@ -48,8 +47,6 @@ double deposit(double lo, double hi, double amount, double dx, int n, bool perio
   return deposited;
 }
 
-// the edges of the strips whose centres are y (strictly increasing, >= 2): half-way between centres, the
-// outer ones half a neighbouring spacing beyond
 Eigen::ArrayXd strip_edges(const Eigen::ArrayXd& y) {
   const Eigen::Index n = y.size();
   Eigen::ArrayXd e(n + 1);
@@ -58,6 +55,8 @@ Eigen::ArrayXd strip_edges(const Eigen::ArrayXd& y) {
   e(n) = y(n - 1) + 0.5 * (y(n - 1) - y(n - 2));
   return e;
 }
+
+namespace {
 
 // the depth for energy per unit width E spread over a length (the circumference a worn surface's point
 // goes round once): the wear law's depth per duty cycle with 2 pi R_w = length
@@ -259,18 +258,16 @@ double normal_recession_m(const contact::Profiles& unworn, const CamWearGrid& g,
   return gap - gap0;
 }
 
-namespace {
-std::string header(const CamWearGrid& g, double revolutions, const std::string& name, const std::string& what) {
+std::string grid_csv_header(const CamWearGrid& g, double revolutions, const std::string& name, const std::string& what) {
   return fmt::format("# case: {}\n# {}\n# revolutions: {}\n# grid: {} arc cells over {} m, {} track cells over {} m, "
                      "{} roller cells over {} m\n",
                      name, what, contact::round_trip(revolutions), g.arc_cells, contact::round_trip(g.circumference_m),
                      g.track_cells, contact::round_trip(g.track_width_m), g.roller_cells,
                      contact::round_trip(g.roller_width_m));
 }
-}  // namespace
 
 std::string wear_map_csv(const CamWearGrid& g, const CamWearState& s, double revolutions, const std::string& name) {
-  std::string out = header(g, revolutions, name,
+  std::string out = grid_csv_header(g, revolutions, name,
                            "the cam track's worn depth; cam_angle_deg: the cam angle at which the contact passes");
   out += "cam_angle_deg,cam_arc_m,y_m,depth_m\n";
   const bool angles = g.cell_theta_rad.size() == g.arc_cells;
@@ -284,7 +281,7 @@ std::string wear_map_csv(const CamWearGrid& g, const CamWearState& s, double rev
 }
 
 std::string roller_wear_csv(const CamWearGrid& g, const CamWearState& s, double revolutions, const std::string& name) {
-  std::string out = header(g, revolutions, name, "the roller's worn depth, even around its circumference");
+  std::string out = grid_csv_header(g, revolutions, name, "the roller's worn depth, even around its circumference");
   out += "y_m,depth_m\n";
   for (int j = 0; j < g.roller_cells; ++j)
     fmt::format_to(std::back_inserter(out), "{:.10g},{:.10g}\n", g.roller_y_m(j), s.roller_depth_m(j));
@@ -339,6 +336,7 @@ void read_cam_wear(contact::YamlMap& m, CamWearSpec& spec) {
              [](int v) { return v >= 2 && v <= 10000 ? "" : "must be in [2, 10000]"; });
   m.optional("smoothing_wavelength_m", spec.smoothing_wavelength_m, contact::in_closed(0, 0.1));
   m.optional("checkpoint_interval_s", spec.checkpoint_interval_s, contact::nonnegative_finite);
+  m.optional_section("fatigue", [&](contact::YamlMap& s) { wear::read_wear_fatigue(s, spec.fatigue.emplace()); });
   m.optional_value("snapshots_revolutions", [&](const contact::YamlValue& v) {
     const std::vector<contact::YamlValue> e = v.elements("a list of revolutions, e.g. [1.0e7, 2.0e7]");
     for (std::size_t k = 0; k < e.size(); ++k) {

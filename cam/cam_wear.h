@@ -37,6 +37,7 @@
 
 #include "cam/angle_dissipation.h"
 #include "lib/normal/profile.h"
+#include "wear/fatigue.h"
 #include "wear/wear_case.h"
 #include "wear/wear_law.h"
 
@@ -106,6 +107,14 @@ void check_dissipation(const RevolutionDissipation& rev, const CamWearGrid& g);
 // feed (kth, usfd).
 CamWearRate wear_per_revolution(const RevolutionDissipation& rev, const CamWearGrid& g, const CamWearLaws& laws);
 
+// Adds amount, spread evenly over [lo, hi) (hi > lo), onto the cells [i dx, (i + 1) dx), i in [0, n), of
+// out by overlap. periodic: positions are taken modulo n dx (hi - lo <= n dx); otherwise what falls
+// outside [0, n dx) is dropped. Returns what was deposited. (The wear map's and the damage map's.)
+double deposit(double lo, double hi, double amount, double dx, int n, bool periodic, double* out);
+// the edges of the strips whose centres are y (strictly increasing, >= 2): half-way between centres, the
+// outer ones half a neighbouring spacing beyond
+Eigen::ArrayXd strip_edges(const Eigen::ArrayXd& y);
+
 // ---- the worn geometry ----
 
 // linear interpolation weights between cell centres x_c = (c + 0.5) dx of n cells: x lies between cells c0 and c1,
@@ -132,6 +141,8 @@ double normal_recession_m(const contact::Profiles& unworn, const CamWearGrid& g,
 
 // ---- output ----
 
+// the header lines of a map on the grid (the case, what, the revolutions, the grid): the wear maps' and the damage's
+std::string grid_csv_header(const CamWearGrid& g, double revolutions, const std::string& name, const std::string& what);
 // The wear map at a revolution, one row per (arc cell, lateral cell), arc-major:
 //   cam_angle_deg,cam_arc_m,y_m,depth_m
 // cam_angle_deg the cam angle at which the contact passes the cell (nan when the grid does not know it),
@@ -153,6 +164,7 @@ std::string roller_wear_csv(const CamWearGrid& g, const CamWearState& s, double 
 //     smoothing_wavelength_m: 5.0e-4   # cut-off of the rate's lateral Gaussian filter (as a wear case's)
 //     snapshots_revolutions: [1.0e8, 1.0e9]   # wear maps written there (and at the start and end)
 //     checkpoint_interval_s: 10     # wall time between checkpoints of `rollwear run` (0: every step)
+//     fatigue: { law: burstow, threshold_N: 20, ... }   # as wear.fatigue (docs/fatigue.md): damage per cell, §19
 struct CamWearSpec {
   CamWearLaws laws;  // mu is the case's cam.mu
   double revolutions = 0;
@@ -170,6 +182,9 @@ struct CamWearSpec {
   double smoothing_wavelength_m = 5e-4;  // the wear rate's lateral filter (wear/profile_update.h), 0 = none
   std::vector<double> snapshots_revolutions;
   double checkpoint_interval_s = 10;  // `rollwear run`: wall time between checkpoints (a wear case's default)
+  // the track's and the roller's fatigue damage (cam/cam_damage.h), accumulated over the life, which ends at
+  // damage 1 (wear::LifeEnd::Fatigue)
+  std::optional<wear::FatigueSection> fatigue;
 };
 
 // reads the wear: section under cam: (the wear laws and the stepping with the keys of a wear case);

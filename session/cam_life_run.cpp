@@ -205,10 +205,9 @@ LifeRunEnd run_cam_life_in_folder(const LifeRunOptions& o) {
                    "and the resumed life may end elsewhere than the uninterrupted one would (docs/cam-follower.md §13)",
                    folder.checkpoint_path().string());
   } else {
-    folder.start_afresh("(wear_map|roller_wear)_[0-9]{4}\\.csv");
-    life_csv = "# case: " + c.name +
-               "\nstep,revolutions,max_depth_m,lift_loss_m,lift_loss_at_deg,energy_J\n"
-               "0,0,0,0,0,0\n";
+    folder.start_afresh("(wear_map|roller_wear|damage_map|roller_damage)_[0-9]{4}\\.csv");
+    life_csv = "# case: " + c.name + "\nstep,revolutions,max_depth_m,lift_loss_m,lift_loss_at_deg,energy_J" +
+               (life_model.fatigue ? ",max_damage\n0,0,0,0,0,0,0\n" : "\n0,0,0,0,0,0\n");
   }
   fs::create_directories(dir / "snapshots");
   contact::write_files_atomic({{dir / "revolution.csv", cam::revolution_csv(setup->revolution)},
@@ -231,6 +230,12 @@ LifeRunEnd run_cam_life_in_folder(const LifeRunOptions& o) {
   using Clock = std::chrono::steady_clock;
   Clock::time_point last_save = Clock::now();
   cam::CamLifeHooks hooks;
+  // the damage maps (cam.wear.fatigue) go with the wear maps of the same number, written just before them
+  hooks.on_damage_snapshot = [&](double N, const cam::CamDamage& d) {
+    contact::write_files_atomic(
+        {{dir / snapshot_path("damage_map", snapshots), cam::damage_map_csv(life_model.grid, d, N, c.name)},
+         {dir / snapshot_path("roller_damage", snapshots), cam::roller_damage_csv(life_model.grid, d, N, c.name)}});
+  };
   hooks.on_snapshot = [&](double N, const cam::CamWearState& s) {
     std::vector<contact::OutputFile> files = {
         {dir / snapshot_path("wear_map", snapshots), cam::wear_map_csv(life_model.grid, s, N, c.name)},
@@ -247,13 +252,15 @@ LifeRunEnd run_cam_life_in_folder(const LifeRunOptions& o) {
   };
   // a row of life.csv: a step's end, or the life's end where a limit cut its last step short
   const auto append_row = [&](long step, double N, double max_depth_m, const cam::LiftLoss& lift_loss,
-                              double energy_J) {
-    fmt::format_to(std::back_inserter(life_csv), "{},{:.10g},{:.10g},{:.10g},{:.6g},{:.10g}\n", step, N, max_depth_m,
+                              double energy_J, double max_damage) {
+    fmt::format_to(std::back_inserter(life_csv), "{},{:.10g},{:.10g},{:.10g},{:.6g},{:.10g}", step, N, max_depth_m,
                    lift_loss.max_m, lift_loss.at_theta_rad * cam::kDegPerRad, energy_J);
+    if (life_model.fatigue) fmt::format_to(std::back_inserter(life_csv), ",{:.10g}", max_damage);
+    life_csv += "\n";
   };
   double last_row_N = o.resume ? start.N : 0;
   hooks.on_step = [&](const cam::CamLifeStep& step) {
-    append_row(step.step, step.N, step.max_depth_m, step.lift_loss, step.energy_J);
+    append_row(step.step, step.N, step.max_depth_m, step.lift_loss, step.energy_J, step.damage.value);
     last_row_N = step.N;
     last = step.resume;
     if (std::chrono::duration<double>(Clock::now() - last_save).count() >= c.wear->checkpoint_interval_s &&
@@ -283,16 +290,18 @@ LifeRunEnd run_cam_life_in_folder(const LifeRunOptions& o) {
 
   // a limit located within a step ends the life between step ends (the step the report counts): its last row
   if (life.ended_by != wear::LifeEnd::Failed && life.N > last_row_N)
-    append_row(life.steps, life.N, life.max_depth_m, life.lift_loss, life.energy_J);
+    append_row(life.steps, life.N, life.max_depth_m, life.lift_loss, life.energy_J, life.max_damage.value);
 
   // the end: life.csv and the report; the checkpoint goes (the run is complete) unless the life failed
   const std::string report = cam::cam_life_report_text(c.name, c.model.omega_rad_per_s, life, setup->worn->stats(),
                                                        o.resume, earlier_cpu_s + cpu_seconds() - cpu0) +
+                             cam::cam_damage_report_text(life_model, life) +
                              cam::lubrication_report_text(c.lubrication, lubrication) +
+                             (life.ended_by == wear::LifeEnd::Fatigue ? std::string() :  // not a margin's mode
                              cam::first_failure_text(c.lubrication, lubrication,
                                                      life.ended_by == wear::LifeEnd::MaxDepth ||
                                                          life.ended_by == wear::LifeEnd::LiftLoss,
-                                                     wear::to_string(life.ended_by), life.N);
+                                                     wear::to_string(life.ended_by), life.N));
   if (life.ended_by == wear::LifeEnd::Failed && life.steps > 0 && last.x.size() > 0) {
     save({});  // the last accepted step: --resume continues from there (e.g. with other settings)
     spdlog::error("run: the life failed after step {}; its state is saved in {}", last.steps,

@@ -331,5 +331,6 @@ IntegratorOptions::Method parse_stepping_method(const std::string& name) {
 
 void read_wear_law(YamlMap& m, WearLaw& law) { read_law(m, law); }
 void read_wear_stepping(YamlMap& m, WearStepping& s) { read_stepping(m, s); }
+void read_wear_fatigue(YamlMap& m, FatigueSection& f) { read_fatigue(m, f); }
 
 }  // namespace wear

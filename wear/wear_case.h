@@ -132,5 +132,6 @@ IntegratorOptions::Method parse_stepping_method(const std::string& name);
 // the cases that carry a wear section of their own: the cam's, cam/cam_wear.h)
 void read_wear_law(contact::YamlMap& m, WearLaw& law);
 void read_wear_stepping(contact::YamlMap& m, WearStepping& s);
+void read_wear_fatigue(contact::YamlMap& m, FatigueSection& f);  // wear.fatigue's keys (the cam's cam.wear.fatigue)
 
 }  // namespace wear

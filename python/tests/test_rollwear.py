@@ -232,6 +232,42 @@ def test_sweep_runs_its_cases(source, tmp_path):
     assert os.path.exists(os.path.join(s["directory"], "case_0001", "report.txt"))
 
 
+def test_sweep_carries_the_failure_modes_columns(source, tmp_path):
+    # docs/fatigue.md §5: with wear.fatigue, a shear yield stress and a thermal section the sweep's results.csv and
+    # the Python result carry max_damage, depth_fraction, shakedown_margin and scuffing_margin_K, each case's
+    # report.txt value; one case ends by fatigue (damage 1), the slower one by wear with damage below 1
+    text = (source / "cases" / "paper-wear-fatigue.yaml").read_text()
+    text = text.replace("nx: 80, ny: 80", "nx: 24, ny: 24")
+    text = "\n".join(l for l in text.splitlines() if not l.lstrip().startswith(("snapshots_revolutions", "output:")))
+    text = text.replace("body1: { Rx_m: 0.020, E_Pa: 210.0e9, nu: 0.28 }",
+                        "body1: { Rx_m: 0.020, E_Pa: 210.0e9, nu: 0.28, shear_yield_Pa: 5.0e8 }")
+    assert "shear_yield_Pa" in text
+    text += ("\nthermal:\n"
+             "  body1: { conductivity_W_per_m_K: 46, density_kg_per_m3: 7850, specific_heat_J_per_kg_K: 470 }\n"
+             "  body2: { conductivity_W_per_m_K: 46, density_kg_per_m3: 7850, specific_heat_J_per_kg_K: 470 }\n"
+             "  bulk_temperature_C: 80\n  critical_temperature_C: 1000\n")
+    (tmp_path / "fatigue.yaml").write_text(text)
+    sweep = tmp_path / "sweep.yaml"
+    sweep.write_text("base: fatigue.yaml\naxes:\n  - { key: kinematics.xi, values: [0.05, 0.1] }\n")
+    s = rollwear.sweep(sweep, output_dir=tmp_path / "out", threads=2)
+    res = s["results"]
+    columns = ("max_damage", "depth_fraction", "shakedown_margin", "scuffing_margin_K")
+    table = read_csv(tmp_path / "out" / "results.csv")
+    header = (tmp_path / "out" / "results.csv").read_text().splitlines()[0].split(",")
+    assert header[header.index("worn_volume_m3") + 1:header.index("worn_volume_m3") + 5] == list(columns)
+    assert res["status"] == ["ok", "ok"]
+    assert list(res["ended_by"]) == ["edge", "fatigue"]
+    for i in range(2):
+        report = dict(line.split(": ", 1) for line in
+                      (tmp_path / "out" / f"case_{i:04d}" / "report.txt").read_text().splitlines() if ": " in line)
+        for key in columns:
+            assert math.isfinite(res[key][i]), (key, i)
+            assert res[key][i] == float(report[key]) == float(table[key][i]), (key, i)
+    assert 0.1 < res["max_damage"][0] < 1
+    assert res["max_damage"][1] == pytest.approx(1, abs=1e-9)  # located to the root finding's tolerance
+    assert res["shakedown_margin"][0] > 0 and res["scuffing_margin_K"][0] > 0
+
+
 def test_sweep_arguments_are_checked_as_the_command_line_checks_them(source, tmp_path):
     sweep = tmp_path / "two.yaml"
     sweep.write_text(f"base: {source / 'cases' / 'paper-wear.yaml'}\n"
