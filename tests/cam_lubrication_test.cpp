@@ -234,14 +234,22 @@ TEST_F(CamLubrication, BadKeysNameFileLineAndKey) {
   write(p, t);
   e = error_of(p);
   EXPECT_NE(e.find("cam.thermal.critical_temperature_C: Blok's criterion is on bulk + flash"), std::string::npos) << e;
-  // the regime's friction asked for the solves: refused at its line, saying what the revolution does instead
+  // the regime's friction fed back: not a bool at its line; a full-film mu of 0 (the solves' mu and archard's
+  // K/(H mu) need mu > 0) at the friction's line
   t = coarse("cam-follower-lubricated.yaml", "    viscosity_Pa_s: 0.009",
-             "    friction_by_regime: true\n    viscosity_Pa_s: 0.009");
+             "    friction_by_regime: yes please\n    viscosity_Pa_s: 0.009");
   write(p, t);
   e = error_of(p);
-  EXPECT_EQ(e.rfind(fmt::format("{}:{}:", p.string(), line_of(t, "friction_by_regime: true")), 0), 0u) << e;
-  EXPECT_NE(e.find("cam.lubricant.friction_by_regime: not built: the revolution's solves and the wear use cam.mu"),
-            std::string::npos) << e;
+  EXPECT_EQ(e.rfind(fmt::format("{}:{}:", p.string(), line_of(t, "friction_by_regime: yes please")), 0), 0u) << e;
+  EXPECT_NE(e.find("cam.lubricant.friction_by_regime: expected true or false"), std::string::npos) << e;
+  t = coarse("cam-follower-lubricated.yaml", "    viscosity_Pa_s: 0.009",
+             "    friction_by_regime: true\n    viscosity_Pa_s: 0.009");
+  t.replace(t.find("full_film: 0.03 }"), 17, "full_film: 0 }");
+  write(p, t);
+  e = error_of(p);
+  EXPECT_EQ(e.rfind(fmt::format("{}:{}:", p.string(), line_of(t, "    friction: ")), 0), 0u) << e;
+  EXPECT_NE(e.find("cam.lubricant.friction: full_film: with friction_by_regime the solves use it as cam.mu: must be in "
+                   "(0, 2], got 0"), std::string::npos) << e;
   // a thermal body's property missing: at the body's mapping
   t = coarse("cam-follower-lubricated.yaml", "    body2: { conductivity_W_per_m_K: 46, ", "    body2: { ");
   write(p, t);
