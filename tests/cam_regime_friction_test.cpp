@@ -44,10 +44,9 @@ std::string lubricated(std::initializer_list<std::pair<std::string, std::string>
 // the case's friction_by_regime line (the shipped case may carry it or not)
 std::string with_feedback(const std::string& t, bool on) {
   std::string out = t;
-  const std::string key = "    friction_by_regime: true\n";
-  const std::size_t at = out.find(key);
-  if (at != std::string::npos) out.erase(at, key.size());
-  if (on) out.replace(out.find("    viscosity_Pa_s:"), 0, key);
+  const std::size_t at = out.find("    friction_by_regime:");
+  if (at != std::string::npos) out.erase(at, out.find('\n', at) + 1 - at);
+  if (on) out.replace(out.find("    viscosity_Pa_s:"), 0, "    friction_by_regime: true\n");
   return out;
 }
 
