@@ -19,29 +19,6 @@ namespace app {
 
 using namespace contact;
 
-CLI::App* add_cam_command(CLI::App& app, CamOptions& opt, CommonOptions& common) {
-  CLI::App* sub = app.add_subcommand(
-      "cam", "One revolution of a disc cam at constant speed with a translating roller follower (cam: section, "
-             "docs/cam-follower.md): lift, pressure angle, radius of curvature, loads, the Hertz contact and the "
-             "roller's regime at each cam angle; with cam.lubricant and cam.thermal the film, lambda, the lubrication "
-             "regime and the flash temperature at each angle (docs/cam-follower.md §17); with cam.roller.shear_yield_Pa or "
-             "cam.track.shear_yield_Pa the traction coefficient, Johnson's shakedown margin and the surface fatigue "
-             "index at each angle (§18). Prints the jump speed and a "
-             "summary; writes revolution.csv.");
-  sub->footer(
-      "Above the jump speed the run stops with status jump (no table written), exit 1.\n"
-      "A design the model refuses (acceleration jump, table fit, undercut, pressure angle) is bad input at its\n"
-      "key's line, naming the cam angle.\n"
-      "Exit status: 0 success, 2 bad input (case file, options), 1 any other failure.");
-  sub->add_option("case", opt.case_path, "Cam case file (YAML), e.g. cases/cam-follower.yaml")->required();
-  sub->add_option("-o,--output", opt.output_directory,
-                  "Output directory (default: the case's output.directory, else out/<case name>)");
-  sub->add_flag("-q,--quiet", opt.quiet,
-                "No progress line on stderr: cam shows none (taken as run, transient and sweep take it)");
-  add_log_level_option(*sub, common);
-  return sub;
-}
-
 int run_cam_command(const CamOptions& opt) {
   const cam::CamCase c = cam::read_cam_case(opt.case_path);
   const std::filesystem::path dir = session::output_directory(opt.output_directory, c.output_directory, c.name);

@@ -1,13 +1,16 @@
-// rollwear's subcommands (app/main.cpp wires them): each declares its options (add_<name>_command) and does its
-// work (run_<name>_command) in app/<name>_command.cpp. They parse and print; the output folder, the lives and the
-// sweeps are session/'s. Each returns the exit status; errors are thrown and mapped to a status by main
-// (lib/errors.h: 2 bad input, 1 any other failure).
+// rollwear's subcommands: each has its options and help (add_<name>_command, in app/main.cpp, which wires them:
+// CLI11, a header library slow to compile, compiled once) and does its work (run_<name>_command) in
+// app/<name>_command.cpp. They parse and print; the output folder, the lives and the sweeps are session/'s. Each
+// returns the exit status; errors are thrown and mapped to a status by main (lib/errors.h: 2 bad input, 1 any other
+// failure).
 #pragma once
 
 #include <string>
 #include <vector>
 
-#include <CLI/CLI.hpp>
+namespace CLI {
+class App;  // <CLI/CLI.hpp>, included by app/main.cpp alone
+}  // namespace CLI
 
 namespace app {
 

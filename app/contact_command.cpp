@@ -19,44 +19,6 @@ namespace app {
 
 using namespace contact;
 
-CLI::App* add_contact_command(CLI::App& app, ContactOptions& opt, CommonOptions& common) {
-  CLI::App* sub = app.add_subcommand(
-      "contact", "Steady rolling contact of one case: the normal problem (Hertz, or on the case's profiles the "
-                 "semi-Hertzian or half-space solver, as solver.normal says), then the tangential problem "
-                 "(by default the relaxed model, matched to Kalker's exact theory; solver.tangential: consistent "
-                 "for his simplified theory, exact for the exact theory), then the stresses below the surface of "
-                 "both bodies. Prints a summary and writes summary.csv, strips.csv, fields.csv, subsurface.csv, "
-                 "subsurface_section.csv and, for a body with shear_yield_Pa, fatigue.csv (with dang_van, dang_van.csv).");
-  sub->footer(
-      "The summary names the normal solver that ran (and why, for solver.normal: auto) and the number of\n"
-      "contact patches. strips.csv's y_m is in the profiles' lateral coordinate. With solver.tangential:\n"
-      "exact the summary names the exact solve in place of the simplified theory's C11 ... L (nan in\n"
-      "summary.csv), and a transient run's summary.csv says scheme exact.\n"
-      "A contact that reaches a body's edge (the end of its profile) is a warning line in the summary; the\n"
-      "outputs are written and the exit status stays 0 (if its normal solve converged; an unconverged one,\n"
-      "at an edge or not, is exit 1).\n"
-      "The subsurface stresses (docs/subsurface.md) are each body's under the cells' tractions, on 31 planes\n"
-      "from the surface to 1.5 min(a, b): their maxima (subsurface.csv) and the x-z section through the most\n"
-      "loaded cell (subsurface_section.csv). With bodies.bodyN.shear_yield_Pa, the shakedown margin and the\n"
-      "surface fatigue index of that body (fatigue.csv); with bodies.bodyN.dang_van: { a, b_Pa }, Dang Van's\n"
-      "index of that body over one rolling pass, its largest value and where (dang_van.csv).\n"
-      "With a lubricant: section the summary adds the EHL film thickness, the film parameter lambda and the\n"
-      "regime with its friction and wear factors; with a thermal: section the flash temperature (Blok's\n"
-      "partition) and, with critical_temperature_C, the scuffing margin (docs/lubrication-and-temperature.md).\n"
-      "Exit status: 0 success, 2 bad input (case file, options), 1 any other failure.");
-  sub->add_option("case", opt.case_path, "Case file (YAML), e.g. cases/paper.yaml")->required();
-  sub->add_option("-o,--output", opt.output_directory,
-                  "Output directory (default: the case's output.directory, else out/<case name>)");
-  sub->add_flag("--no-fields", opt.no_fields, "Do not write fields.csv (the per-cell fields)");
-  sub->add_flag("--no-subsurface", opt.no_subsurface,
-                "Do not compute the stresses below the surface (subsurface.csv, subsurface_section.csv, fatigue.csv, "
-                "dang_van.csv)");
-  sub->add_flag("-q,--quiet", opt.quiet,
-                "No progress line on stderr: contact shows none (taken as run, transient and sweep take it)");
-  add_log_level_option(*sub, common);
-  return sub;
-}
-
 namespace {
 
 // exact_solve: the exact solve's status message (scheme Exact), printed in place of the simplified
@@ -87,6 +49,11 @@ void print_contact_summary(const ContactCase& c, const NormalSolution& normal, c
   fmt::print("  creep forces    Fx = {:.6g} N, Fy = {:.6g} N, Mz = {:.6g} N m\n", s.Fx_N, s.Fy_N, s.Mz_N_m);
   fmt::print("  dissipated      P  = {:.6g} W, creep work = {:.6g} W\n", s.power_W, s.creep_work_W);
   fmt::print("  stick fraction     {:.4f}\n", s.stick_fraction);
+  // which models ran, and the error estimate a wear life reports (docs/fidelity.md): none here
+  const bool exact = normal.solver == NormalSolverKind::Halfspace && scheme == TangentialScheme::Exact;
+  fmt::print("  error estimate     {}\n", exact ? "none needed: the exact physics ran (half-space, Kalker's exact theory)"
+                                                : "not estimated against the exact physics (solver: { normal: halfspace, "
+                                                  "tangential: exact } solves it; docs/fidelity.md)");
 }
 
 // the subsurface maxima and, where a body has k, its fatigue indicators

@@ -634,16 +634,18 @@ SweepOutput read_sweep_output(const fs::path& dir) {
     }
   }
   const Table t = read_table(dir / "results.csv");
-  static const std::vector<std::string> kTail = {"life_revolutions", "ended_by", "max_depth_m", "worn_volume_m3",
-                                                 "status", "message"};
-  // a sweep's with the failure margins (docs/fatigue.md, session/sweep.h kMarginColumns) after worn_volume_m3
-  static const std::vector<std::string> kFatigueTail = [] {
+  // a wear sweep's outputs: life_revolutions .. worn_volume_m3, with the failure margins (docs/fatigue.md,
+  // session/sweep.h kMarginColumns) after worn_volume_m3, then the fidelity and error estimate (kErrorColumns;
+  // a table written before they were has none), status and message
+  const auto wear_tail = [](bool margins, bool error) {
     std::vector<std::string> tail = {"life_revolutions", "ended_by", "max_depth_m", "worn_volume_m3"};
-    std::istringstream margins(session::kMarginColumns);
-    for (std::string column; std::getline(margins, column, ',');) tail.push_back(column);
+    for (const char* columns : {margins ? session::kMarginColumns : "", error ? session::kErrorColumns : ""}) {
+      std::istringstream list(columns);
+      for (std::string column; std::getline(list, column, ',');) tail.push_back(column);
+    }
     tail.insert(tail.end(), {"status", "message"});
     return tail;
-  }();
+  };
   // a contact sweep's outputs, as session/sweep.h writes them: "index,<outputs>,status,message" with no keys
   static const std::vector<std::string> kContactTail = [] {
     std::vector<std::string> tail;
@@ -659,14 +661,21 @@ SweepOutput read_sweep_output(const fs::path& dir) {
     return n >= tail.size() + 2 && t.header.front() == "index" && std::equal(tail.begin(), tail.end(), t.header.end() - static_cast<long>(tail.size()));
   };
   o.contact = ends_with(kContactTail);
-  const bool fatigue = !o.contact && ends_with(kFatigueTail);
+  std::vector<std::string> plain_tail, margins_tail;
+  for (const bool error : {true, false})
+    if (plain_tail.empty() && (ends_with(wear_tail(false, error)) || ends_with(wear_tail(true, error)))) {
+      plain_tail = wear_tail(false, error);
+      margins_tail = wear_tail(true, error);
+    }
+  if (plain_tail.empty()) plain_tail = margins_tail = wear_tail(false, true);
+  const bool fatigue = !o.contact && ends_with(margins_tail);
   std::string contact_columns;
   for (const std::string& c : kContactTail) contact_columns += (contact_columns.empty() ? "" : ", ") + c;
-  if (!o.contact && !fatigue && !ends_with(kTail))
+  if (!o.contact && !fatigue && !ends_with(plain_tail))
     throw bad_input(fmt::format("{}: not a sweep's results table (index, the varied keys, then life_revolutions, ended_by, "
-                                "max_depth_m, worn_volume_m3, status, message; or a contact sweep's {})",
+                                "max_depth_m, worn_volume_m3, [the margins,] [fidelity, exact_solves, error_power_rel, error_power_l1,] status, message; or a contact sweep's {})",
                                 where(t.path, t.header_line), contact_columns));
-  const std::size_t tail = o.contact ? kContactTail.size() : fatigue ? kFatigueTail.size() : kTail.size();
+  const std::size_t tail = o.contact ? kContactTail.size() : fatigue ? margins_tail.size() : plain_tail.size();
   o.keys.assign(t.header.begin() + 1, t.header.end() - static_cast<long>(tail));
   if (o.contact) o.output_names.assign(kContactTail.begin(), kContactTail.end() - 2);
   for (const std::string& k : o.keys) o.base.push_back(base.count(k) ? base[k] : std::numeric_limits<double>::quiet_NaN());

@@ -53,31 +53,6 @@ std::string duration(double s) {
 
 }  // namespace
 
-CLI::App* add_sweep_command(CLI::App& app, SweepOptions& opt, CommonOptions& common) {
-  CLI::App* sub = app.add_subcommand(
-      "sweep", "Many wear lives (or, on a base case without wear:, steady contacts as `contact` solves them) of one base case: a grid of values (lists, linear and logarithmic ranges; product or "
-               "zip) or random sampling (Monte Carlo, Latin hypercube) of any keys of the case, run on all cores. "
-               "Writes results.csv (a row per case) and each case's outputs in case_NNNN/ (docs/sweeps.md).");
-  sub->footer(
-      "Every case is read and checked before any runs: a value the case reader refuses is exit 2, naming the\n"
-      "sweep file's line of the axis, the key and the case. A case that fails while running is a row with its\n"
-      "status and message; the sweep goes on. Killed, the same command resumes: finished cases are not run again.\n"
-      "--shard K/N runs the cases i with i mod N = K-1; --merge DIR... -o OUT joins the shards' results.csv into\n"
-      "OUT/results.csv, the table the whole sweep gives.\n"
-      "Exit status: 0 every case ran (failed cases included: see the status column), 2 bad input, 1 any other failure.");
-  sub->add_option("sweep", opt.sweep_path, "Sweep file (YAML), e.g. cases/sweep-grid.yaml");
-  sub->add_option("-o,--output", opt.output_directory,
-                  "Output folder (default: the sweep's output.directory, else out/<sweep file stem>)");
-  sub->add_option("--shard", opt.shard, "Run the K-th of N disjoint parts, K/N (default 1/1: the whole sweep)");
-  sub->add_option("-j,--threads", opt.threads, "Cases run at once (default: the number of cores)")
-      ->check(CLI::NonNegativeNumber);
-  sub->add_flag("-q,--quiet", opt.quiet, "No progress line");
-  sub->add_flag("--force", opt.force, "Run a sweep of more than 10000 cases in this shard (kSweepMaxCases)");
-  sub->add_option("--merge", opt.merge, "Join the results of these shard folders into -o OUT")->expected(1, -1);
-  add_log_level_option(*sub, common);
-  return sub;
-}
-
 int run_sweep_command(const SweepOptions& opt) {
   if (!opt.merge.empty()) {
     if (!opt.sweep_path.empty()) throw CaseError("--merge takes shard folders, not a sweep file");

@@ -23,53 +23,6 @@ namespace app {
 
 using namespace contact;
 
-CLI::App* add_transient_command(CLI::App& app, TransientOptions& opt, CommonOptions& common) {
-  CLI::App* sub = app.add_subcommand(
-      "transient",
-      "Transient rolling contact of one case: the tangential problem stepped in time (by default the relaxed "
-      "model; Satran with solver.tangential: consistent) over the "
-      "case's histories of load, speed and creepages, or with the roller's inertia. Needs a transient: "
-      "section. Writes timeseries.csv, strip_power.csv, strip_energy.csv, snapshot_<k>.csv, summary.csv.");
-  sub->footer(
-      "Outputs (in the output directory; SI units, numbers at full precision):\n"
-      "  timeseries.csv    one row per step: step,t_s,q_m,dt_s,speed_m_per_s,xi,eta,phi_per_m,normal_load_N,\n"
-      "                    omega1_rad_per_s,Fx_N,Fy_N,Mz_N_m,power_W,stick_fraction,balance_residual_W,cfl,\n"
-      "                    shortened,step_scheme (t_s, q_m: where the forces hold, the middle of a whole\n"
-      "                    shift step, else its end; shortened 1: the last step, cut short to end at t_end_s;\n"
-      "                    step_scheme: what the step ran, upwind in a shift run being the fallback at CFL < 1)\n"
-      "  strip_power.csv   step,t_s,y_m,power_W_per_m: one row per strip and step (not with --no-fields)\n"
-      "  strip_energy.csv  y_m,energy_J_per_m: each strip's power integrated over the run\n"
-      "  snapshot_<k>.csv  x_m,y_m,pressure_Pa,tau_x_Pa,tau_y_Pa,slip_x_m_per_s,slip_y_m_per_s,t_s: the fields\n"
-      "                    for the k-th time of transient.snapshots_s (k from 1), at the end of the step that\n"
-      "                    reached it; t_s is that step's end\n"
-      "  summary.csv       name,scheme,nx,ny,steps,t_end_s,q_end_m,dissipated_J, then the last whole step's\n"
-      "                    Fx_N,Fy_N,Mz_N_m,power_W,stick_fraction,omega1_rad_per_s (not the shortened last\n"
-      "                    step's), sliding_end_s (t_s of the first step whose creep force falls below mu F\n"
-      "                    after gross sliding; nan if the contact never slid whole or slid to the end), end_step\n"
-      "                    (the step those values are from) and fallback_steps (upwind steps of a shift run)\n"
-      "The time series stream to temporary files during the run; every file is renamed into place at the\n"
-      "end, so a failed or interrupted run leaves no partial file (SIGINT, SIGTERM, SIGHUP remove the\n"
-      "temporaries at once; those of a killed run are removed by the next command on the folder).\n"
-      "Before it runs, the output is estimated (one step per dx rolled and per dt_s); a run estimated above\n"
-      "output.max_bytes (default 1 GiB) or half the free disk is refused (exit 2) unless --force.\n"
-      "Progress: on a terminal one line redrawn in place; otherwise an info line every 5 s.\n"
-      "Exit status: 0 success, 2 bad input (case file, options, a step that breaks CFL, an output estimated\n"
-      "too large), 1 any other failure (a solver's, or the folder held by another run).");
-  sub->add_option("case", opt.case_path, "Case file (YAML) with a transient: section, e.g. cases/paper-startup.yaml")
-      ->required();
-  sub->add_option("-o,--output", opt.output_directory,
-                  "Output directory (default: the case's output.directory, else out/<case name>)");
-  sub->add_flag("--no-fields", opt.no_fields,
-                "Do not write the fields: the snapshot_<k>.csv (nor compute them) and strip_power.csv (per strip "
-                "and step; strip_energy.csv keeps its integral)");
-  sub->add_flag("-q,--quiet", opt.quiet,
-                "No progress line on stderr (the summary still goes to stdout, log messages by --log-level)");
-  sub->add_flag("--force", opt.force,
-                "Run even if the output is estimated above output.max_bytes or half the free disk");
-  add_log_level_option(*sub, common);
-  return sub;
-}
-
 namespace {
 
 // what the stdout summary needs from the steps
@@ -115,6 +68,11 @@ void print_transient_summary(const ContactCase& c, const TransientCase& t, const
   }
   for (std::size_t k = 0; k < res.snapshots.size(); ++k)
     fmt::print("  snapshot {}      t  = {:.6g} s\n", k + 1, res.snapshots[k].t_s);
+  // the error estimate a wear life reports (docs/fidelity.md): none here
+  fmt::print("  error estimate     {}\n", c.solver.tangential == TangentialScheme::Exact
+                                            ? "none needed: Kalker's exact theory ran"
+                                            : "not estimated against the exact physics (solver: { tangential: exact } "
+                                              "solves it; docs/fidelity.md)");
 }
 
 }  // namespace

@@ -296,6 +296,9 @@ py::dict contact_result(const CaseSource& source, bool fields, bool subsurface) 
   summary["ny"] = p.grid.ny;
   summary["normal_solver"] = contact::to_string(r->normal.solver);
   summary["normal_solver_reason"] = r->normal.reason;
+  // the error estimate against the exact physics (docs/fidelity.md): a contact run makes none
+  const bool exact = r->normal.solver == contact::NormalSolverKind::Halfspace && r->scheme == contact::TangentialScheme::Exact;
+  summary["error_estimate"] = exact ? "none needed: the exact physics ran" : "not estimated";
   summary["patches"] = r->normal.patches;
   summary["reaches_edge"] = r->normal.reaches_edge;
   if (const auto& l = r->lubrication) {  // summary.csv's film columns (lubricant:)
@@ -451,6 +454,10 @@ py::dict transient_result(const CaseSource& source, bool fields, bool force) {
   summary["steps"] = res.steps;
   summary["t_end_s"] = res.t_end_s;
   summary["q_end_m"] = res.q_end_m;
+  // the error estimate against the exact physics (docs/fidelity.md): a transient run makes none
+  summary["tangential_model"] = contact::to_string(c->solver.tangential);
+  summary["error_estimate"] = c->solver.tangential == contact::TangentialScheme::Exact
+                                  ? "none needed: Kalker's exact theory ran" : "not estimated";
   summary["dissipated_J"] = res.dissipated_J;
   summary["Fx_N"] = res.end.Fx_N;
   summary["Fy_N"] = res.end.Fy_N;
@@ -587,6 +594,7 @@ py::dict run_result(const CaseSource& source) {
   summary["tangential_model"] = contact::to_string(m->scheme);
   summary["fidelity"] = contact::to_string(m->fidelity);
   summary["exact_solves"] = life.exact_solves;
+  summary["error_estimate_of"] = wear::error_estimate_of(*m);
   summary["error_estimate_N"] = life.error.N;
   summary["error_power_rel"] = life.error.power_rel;
   summary["error_power_l1"] = life.error.power_l1;

@@ -8,7 +8,6 @@
 #include <memory>
 #include <filesystem>
 #include <fstream>
-#include <regex>
 #include <sstream>
 #include <stdexcept>
 
@@ -207,7 +206,7 @@ LifeRunEnd run_cam_life_in_folder(const LifeRunOptions& o) {
                    "and the resumed life may end elsewhere than the uninterrupted one would (docs/cam-follower.md §13)",
                    folder.checkpoint_path().string());
   } else {
-    folder.start_afresh(std::regex("(wear_map|roller_wear)_[0-9]{4}\\.csv"));
+    folder.start_afresh("(wear_map|roller_wear)_[0-9]{4}\\.csv");
     life_csv = "# case: " + c.name +
                "\nstep,revolutions,max_depth_m,lift_loss_m,lift_loss_at_deg,energy_J\n"
                "0,0,0,0,0,0\n";

@@ -1,6 +1,9 @@
 // The output folder a life is driven into (session/life_folder.h).
 #include "session/life_folder.h"
 
+#include <regex>
+#include <string>
+
 #include <spdlog/fmt/fmt.h>
 
 #include "lib/errors.h"
@@ -42,11 +45,12 @@ std::string LifeFolder::resume_line() const {
       checkpoint_path().string(), o_.case_path, o_.dir.string());
 }
 
-void LifeFolder::start_afresh(const std::regex& snapshot_names) const {
+void LifeFolder::start_afresh(const std::string& snapshot_names) const {
+  const std::regex names(snapshot_names);
   std::error_code ec;
   const std::filesystem::path snapshots = o_.dir / "snapshots";
   for (const auto& entry : std::filesystem::directory_iterator(snapshots, ec))
-    if (entry.is_regular_file() && std::regex_match(entry.path().filename().string(), snapshot_names))
+    if (entry.is_regular_file() && std::regex_match(entry.path().filename().string(), names))
       std::filesystem::remove(entry.path(), ec);
   if (std::filesystem::is_empty(snapshots, ec)) std::filesystem::remove(snapshots, ec);
   std::filesystem::remove(o_.dir / "report.txt");

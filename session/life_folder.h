@@ -7,7 +7,6 @@
 
 #include <cstdint>
 #include <filesystem>
-#include <regex>
 #include <string>
 #include <vector>
 
@@ -42,9 +41,10 @@ class LifeFolder {
   // what a signal prints once a checkpoint exists: how to continue from it
   std::string resume_line() const;
 
-  // a fresh start: the previous run's snapshot files (names matching snapshot_names, in snapshots/), its report
-  // and its checkpoint removed; any other file stays
-  void start_afresh(const std::regex& snapshot_names) const;
+  // a fresh start: the previous run's snapshot files (in snapshots/, whole names matching the regular expression
+  // snapshot_names; std::regex compiled in life_folder.cpp alone), its report and its checkpoint removed; any
+  // other file stays
+  void start_afresh(const std::string& snapshot_names) const;
   // files, then the table, then the checkpoint (when cp is given), in one atomic write; with a checkpoint, a
   // signal from then on prints the --resume command. The one place a life's checkpoint is written.
   void save(std::vector<contact::OutputFile> files, const std::string& table, const wear::Checkpoint* cp) const;

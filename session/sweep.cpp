@@ -17,7 +17,6 @@
 #include <memory>
 #include <mutex>
 #include <numeric>
-#include <regex>
 #include <set>
 #include <sstream>
 #include <stdexcept>
@@ -534,10 +533,11 @@ namespace {
 // the columns of a case's outputs, between the inputs and the status
 std::string output_columns(SweepKind kind, bool margins) {
   if (kind == SweepKind::Contact) return "a_m,b_m,p0_Pa,approach_m,Fx_N,Fy_N,Mz_N_m,power_W,stick_fraction";
-  return std::string("life_revolutions,ended_by,max_depth_m,worn_volume_m3") + (margins ? std::string(",") + kMarginColumns : "");
+  return std::string("life_revolutions,ended_by,max_depth_m,worn_volume_m3") + (margins ? std::string(",") + kMarginColumns : "") +
+         "," + kErrorColumns;
 }
 std::size_t output_column_count(SweepKind kind, bool margins) {
-  return kind == SweepKind::Contact ? 9 : (margins ? 8 : 4);
+  return kind == SweepKind::Contact ? 9 : (margins ? 8 : 4) + 4;
 }
 }  // namespace
 
@@ -559,6 +559,8 @@ std::string results_row(const CaseOutcome& o) {
          round_trip(o.worn_volume_m3);
     if (o.margins)
       for (const double v : {o.max_damage, o.depth_fraction, o.shakedown_margin, o.scuffing_margin_K}) r += "," + round_trip(v);
+    r += "," + csv_field(o.fidelity) + "," + std::to_string(o.exact_solves) + "," + round_trip(o.error_power_rel) + "," +
+         round_trip(o.error_power_l1);
   }
   r += "," + to_string(o.status) + "," + csv_field(o.message);
   return r + "\n";
@@ -642,6 +644,11 @@ CaseOutcome run_case(const std::string& yaml_text, long index, const std::vector
                        : key == "shakedown_margin" ? &o.shakedown_margin : key == "scuffing_margin_K" ? &o.scuffing_margin_K : nullptr;
         if (column) *column = std::stod(value);
       }
+    // the fidelity and the error estimate, as report.txt has them
+    o.fidelity = contact::to_string(m.fidelity);
+    o.exact_solves = life.exact_solves;
+    o.error_power_rel = life.error.power_rel;
+    o.error_power_l1 = life.error.power_l1;
     const bool failed = life.ended_by == LifeEnd::Failed || life.ended_by == LifeEnd::NotRun;
     o.status = failed ? CaseStatus::Failed : CaseStatus::Ok;
     o.message = life.message;

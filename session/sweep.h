@@ -37,11 +37,13 @@
 #include <utility>
 #include <vector>
 
-#include <yaml-cpp/yaml.h>
-
 #include "lib/io/case.h"
 #include "session/sweep_random.h"
 #include "wear/wear_loop.h"
+
+namespace YAML {
+class Node;  // <yaml-cpp/yaml.h>, which only session/sweep*.cpp need
+}  // namespace YAML
 
 namespace session {
 
@@ -155,7 +157,7 @@ struct ContactOutputs {
 };
 
 // one case's row: index, the varied inputs, then a wear case's life_revolutions, ended_by, max_depth_m,
-// worn_volume_m3 or a contact case's a_m, b_m, p0_Pa, approach_m, Fx_N, Fy_N, Mz_N_m, power_W,
+// worn_volume_m3 (the margins), fidelity, exact_solves, error_power_rel, error_power_l1 or a contact case's a_m, b_m, p0_Pa, approach_m, Fx_N, Fy_N, Mz_N_m, power_W,
 // stick_fraction; then status, message
 struct CaseOutcome {
   long index = 0;
@@ -173,12 +175,20 @@ struct CaseOutcome {
   double depth_fraction = std::numeric_limits<double>::quiet_NaN();
   double shakedown_margin = std::numeric_limits<double>::quiet_NaN();
   double scuffing_margin_K = std::numeric_limits<double>::quiet_NaN();
+  // a wear case's fidelity and error estimate (kErrorColumns; report.txt's, docs/fidelity.md)
+  std::string fidelity;
+  long exact_solves = 0;
+  double error_power_rel = std::numeric_limits<double>::quiet_NaN();
+  double error_power_l1 = std::numeric_limits<double>::quiet_NaN();
   CaseStatus status = CaseStatus::Error;  // the pessimistic default
   std::string message;
 };
 // a wear sweep whose base case has the failure margins (margins) has these columns after worn_volume_m3, in this
 // order (max_damage first: where a fatigue sweep has always had it)
 inline constexpr const char* kMarginColumns = "max_damage,depth_fraction,shakedown_margin,scuffing_margin_K";
+// a wear sweep's last output columns (after the margins, before status): which fidelity ran, its exact-physics
+// solves and its error estimate against the exact physics (docs/fidelity.md; NaN where not estimated)
+inline constexpr const char* kErrorColumns = "fidelity,exact_solves,error_power_rel,error_power_l1";
 std::string results_header(const std::vector<std::string>& keys, SweepKind kind = SweepKind::Wear, bool margins = false);
 std::string results_row(const CaseOutcome& o);  // one line, ending in '\n'
 // a row's status (the inputs before it are `keys` columns); std::invalid_argument for a line that has none

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include <spdlog/spdlog.h>
+#include <yaml-cpp/yaml.h>
 
 namespace session::mpi {
 

@@ -102,7 +102,7 @@ LifeRunEnd run_wear_life_in_folder(const LifeRunOptions& opt) {
     spdlog::info("run: resuming at revolution {:.6g} (step {}) from {}", cp.start.N, cp.start.counters.steps,
                  checkpoint_path.string());
   } else {
-    folder.start_afresh(std::regex("snapshot_[0-9]{4}_body[12]\\.csv"));  // a previous run's are not this run's
+    folder.start_afresh("snapshot_[0-9]{4}_body[12]\\.csv");  // a previous run's are not this run's
     cp.case_hash = fingerprint;
     summary = wear_summary_header(m);
     cp.start = fresh_wear_start(m, cache, observer);

@@ -183,12 +183,10 @@ INSTANTIATE_TEST_SUITE_P(HalfspaceHertzCases, HalfspaceHertz, testing::ValuesIn(
 // ---------------------------------------------------------------------------------------------
 // contact conditions
 
-// The converged pressure against a direct O(N^2) summation of the influence coefficients (not the
-// FFT): the separation h + K p - delta vanishes on the loaded cells and is non-negative elsewhere.
-TEST(HalfspaceComplementarity, SeparationVanishesUnderLoadAndIsOpenElsewhere) {
+void separation_vanishes_under_load_and_is_open_elsewhere(GridSpec n) {
   constexpr double kGapTol = 1e-8;  // of delta: residual tol 1e-9 plus rounding of the two sums
   const HertzContact h = solve_hertz({{0.020, 0.500}, {0.025, kFlat}}, steel(), 1500);
-  const Grid g = hertz_grid(h, 24);
+  const Grid g = make_grid(kBox * h.a_m, kBox * h.b_m, n);
   const Eigen::ArrayXXd gap = hertz_gap(h, g);
   const HalfspaceSolution s = solve_halfspace(g, gap, h.Estar_Pa, 1500);
   ASSERT_TRUE(s.status.converged()) << s.status.message;
@@ -211,6 +209,17 @@ TEST(HalfspaceComplementarity, SeparationVanishesUnderLoadAndIsOpenElsewhere) {
     }
   EXPECT_GT(loaded, 100);
   EXPECT_GT(open, 100);
+}
+
+// The converged pressure against a direct O(N^2) summation of the influence coefficients (not the
+// FFT): the separation h + K p - delta vanishes on the loaded cells and is non-negative elsewhere.
+// On 24 x 24 (padded to 48 x 48) and on 25 x 14, whose padded lengths are 49 = 2 x 25 - 1 and
+// 27 = 2 x 14 - 1 (fft_size): the kernel's offsets -(n-1)..(n-1) fill the padded grid without a gap.
+TEST(HalfspaceComplementarity, SeparationVanishesUnderLoadAndIsOpenElsewhere) {
+  for (const GridSpec n : {GridSpec{24, 24}, GridSpec{25, 14}}) {
+    SCOPED_TRACE(std::to_string(n.nx) + " x " + std::to_string(n.ny));
+    separation_vanishes_under_load_and_is_open_elsewhere(n);
+  }
 }
 
 // Outside the Hertz ellipse the gap opens: no pressure beyond the cells the edge cuts.

@@ -522,10 +522,13 @@ TEST_F(SweepFile, GridElasticityOfArchardsCoefficientIsMinusOne) {
   std::istringstream table(read_text(dir_ / "out" / "results.csv"));
   std::string header, row;
   std::getline(table, header);
-  EXPECT_EQ(header, "index,wear.body1.archard_k,life_revolutions,ended_by,max_depth_m,worn_volume_m3,status,message");
-  while (std::getline(table, row)) {  // the status right after worn_volume_m3 (the message may hold commas)
+  EXPECT_EQ(header, "index,wear.body1.archard_k,life_revolutions,ended_by,max_depth_m,worn_volume_m3,fidelity,exact_solves,error_power_rel,error_power_l1,status,message");
+  while (std::getline(table, row)) {  // the status right after the estimate (the message may hold commas)
     const std::string before_status = row.substr(0, row.find(",ok,"));
-    EXPECT_EQ(std::count(before_status.begin(), before_status.end(), ','), 5) << row;
+    EXPECT_EQ(std::count(before_status.begin(), before_status.end(), ','), 9) << row;
+    // the fast fidelity, its one exact solve and its estimate (report.txt's numbers)
+    EXPECT_NE(before_status.find(",fast,1,"), std::string::npos) << row;
+    EXPECT_EQ(before_status.find("nan"), std::string::npos) << row;
   }
   const std::string snapshot = read_text(dir_ / "out" / "case_0000" / "snapshots" / "snapshot_0000_body1.csv");
   EXPECT_NE(snapshot.find("\ny_m,z_original_m,z_m,depth_m\n"), std::string::npos) << snapshot.substr(0, 200);
@@ -557,19 +560,19 @@ TEST_F(SweepFile, MarginColumnsFollowTheSectionsThatGiveTheReportItsMargins) {
   EXPECT_TRUE(margins_of(with_limit("scuffing: true")));
   EXPECT_FALSE(margins_of(with_limit("shakedown: false")));
   EXPECT_EQ(results_header({"friction.mu"}),
-            "index,friction.mu,life_revolutions,ended_by,max_depth_m,worn_volume_m3,status,message\n");
+            "index,friction.mu,life_revolutions,ended_by,max_depth_m,worn_volume_m3,fidelity,exact_solves,error_power_rel,error_power_l1,status,message\n");
   EXPECT_EQ(results_header({"friction.mu"}, SweepKind::Wear, true),
             "index,friction.mu,life_revolutions,ended_by,max_depth_m,worn_volume_m3,max_damage,depth_fraction,"
-            "shakedown_margin,scuffing_margin_K,status,message\n");
+            "shakedown_margin,scuffing_margin_K,fidelity,exact_solves,error_power_rel,error_power_l1,status,message\n");
   // a row without margins is as it was; with them, a case refused as bad input has NaN in each
   CaseOutcome o;
   o.index = 3;
   o.inputs = {0.2};
   o.status = CaseStatus::BadInput;
   o.message = "bad";
-  EXPECT_EQ(results_row(o), "3,0.2,nan,not_run,nan,nan,bad_input,bad\n");
+  EXPECT_EQ(results_row(o), "3,0.2,nan,not_run,nan,nan,,0,nan,nan,bad_input,bad\n");
   o.margins = true;
-  EXPECT_EQ(results_row(o), "3,0.2,nan,not_run,nan,nan,nan,nan,nan,nan,bad_input,bad\n");
+  EXPECT_EQ(results_row(o), "3,0.2,nan,not_run,nan,nan,nan,nan,nan,nan,,0,nan,nan,bad_input,bad\n");
   EXPECT_EQ(row_status(results_row(o), 1, SweepKind::Wear, true), CaseStatus::BadInput);
 }
 
@@ -590,7 +593,7 @@ TEST_F(SweepFile, FatigueSweepCarriesTheDamageColumn) {
   std::getline(table, slow);
   std::getline(table, fast);
   EXPECT_EQ(header, "index,kinematics.xi,life_revolutions,ended_by,max_depth_m,worn_volume_m3,max_damage,depth_fraction,"
-                    "shakedown_margin,scuffing_margin_K,status,message");
+                    "shakedown_margin,scuffing_margin_K,fidelity,exact_solves,error_power_rel,error_power_l1,status,message");
   const auto field = [](const std::string& row, int k) {
     std::istringstream in(row);
     std::string f;
@@ -602,7 +605,9 @@ TEST_F(SweepFile, FatigueSweepCarriesTheDamageColumn) {
   EXPECT_LT(std::stod(field(slow, 6)), 1.0) << slow;
   EXPECT_EQ(field(fast, 3), "fatigue") << fast;
   EXPECT_NEAR(std::stod(field(fast, 6)), 1.0, 1e-9) << fast;
-  EXPECT_EQ(field(fast, 10), "ok") << fast;
+  EXPECT_EQ(field(fast, 10), "fast") << fast;  // the fidelity and its error estimate (docs/fidelity.md)
+  EXPECT_EQ(field(fast, 11), "1") << fast;
+  EXPECT_EQ(field(fast, 14), "ok") << fast;
   // the margins are each case's report.txt's, to the digit; the case has no k and no thermal: NaN there
   for (const auto& [row, folder] : {std::pair{slow, "case_0000"}, std::pair{fast, "case_0001"}}) {
     const std::string report = read_text(dir_ / "out" / folder / "report.txt");

@@ -4,10 +4,12 @@
 #include <algorithm>
 #include <cmath>
 #include <exception>
+#include <limits>
 #include <thread>
 #include <utility>
 
 #include "lib/errors.h"
+#include "lib/io/yaml_reader.h"
 #include "lib/number.h"
 
 namespace wear {
@@ -68,7 +70,11 @@ void validate_collective(const WearCase& c) {
 WearModel make_collective_model(const WearCase& c) {
   validate(c);
   WearModel m = make_wear_model(condition_case(c, 0));
-  m.exact_physics.clear();  // a collective's rate is its conditions': no error estimate of its own (yet)
+  // a collective's rate is its conditions', each corrected by its own exact physics: none of its own
+  m.exact_physics.clear();
+  m.correction_fast.clear();
+  m.limits_physics.clear();
+  m.steady_part.reset();
   for (std::size_t k = 0; k < c.wear.collective.size(); ++k) {
     WearModel mk = make_wear_model(condition_case(c, k));
     mk.energy_scale = m.energy_scale;  // one scale for the state's energy: the conditions' energies add
@@ -149,6 +155,28 @@ WearRate collective_rate(const WearModel& m, const Eigen::VectorXd& state, WearC
   r.contact.edge_margin_m = std::min(r.contact.edge_margin_m, rates[0].contact.edge_margin_m);
   r.contact.edge_limit_m = std::max(r.contact.edge_limit_m, rates[0].contact.edge_limit_m);
   return r;
+}
+
+FidelityError collective_error(const WearModel& m, const WearCache& cache) {
+  FidelityError e;
+  if (cache.conditions.size() != m.conditions.size() || m.conditions.empty()) return e;
+  double N = std::numeric_limits<double>::infinity(), energy = 0, fast = 0, l1 = 0;
+  for (std::size_t k = 0; k < m.conditions.size(); ++k) {
+    const FidelityError& ek = cache.conditions[k].error;
+    if (!(std::isfinite(ek.N) && std::isfinite(ek.power_rel) && std::isfinite(ek.power_l1) &&
+          std::isfinite(ek.exact_energy_J)))
+      return e;
+    N = std::min(N, ek.N);
+    const double w = m.weights[k] * ek.exact_energy_J;
+    energy += w;
+    fast += w * (1 + ek.power_rel);
+    l1 += w * ek.power_l1;
+  }
+  e.N = N;
+  e.exact_energy_J = energy;
+  e.power_rel = fast / energy - 1;
+  e.power_l1 = l1 / energy;
+  return e;
 }
 
 }  // namespace wear

@@ -25,9 +25,12 @@
 #include <vector>
 
 #include "lib/io/case.h"
-#include "lib/io/yaml_reader.h"
 #include "wear/wear_case.h"
 #include "wear/wear_loop.h"
+
+namespace contact {
+class YamlValue;  // lib/io/yaml_reader.h (yaml-cpp stays out of the wear loop's includes)
+}  // namespace contact
 
 namespace wear {
 
@@ -64,5 +67,13 @@ int collective_threads(const WearModel& m);
 // the condition's with the highest peak pressure, the edge margin the smallest and the edge limit the
 // largest over the conditions. A condition's exception (the first in k's order) is rethrown.
 WearRate collective_rate(const WearModel& m, const Eigen::VectorXd& state, WearCache& cache);
+
+// The collective's error estimate (docs/fidelity.md) from its conditions' (each at its own last correction, or on
+// the final state for the fast fidelity): N the oldest of theirs; the total power's relative error of the
+// weighted sum, sum_k w_k E_k (1 + rel_k) / sum_k w_k E_k - 1 (E_k the exact physics' energy per revolution); the
+// per-strip L1 as the energy-weighted mean of theirs, sum_k w_k E_k L1_k / sum_k w_k E_k, which bounds the
+// weighted sum's L1 from above (the triangle inequality; equal where the conditions' errors have one sign at
+// every node). NaN unless every condition has an estimate.
+FidelityError collective_error(const WearModel& m, const WearCache& cache);
 
 }  // namespace wear

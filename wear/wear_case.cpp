@@ -1,5 +1,6 @@
 #include "wear/wear_case.h"
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 #include <stdexcept>
@@ -262,15 +263,45 @@ void validate(const WearCase& c) {
                       "shakedown limit needs the shear yield stress k of body{0}, the reference body (the first that "
                       "wears); give bodies.body{0}.shear_yield_Pa", reference));
   }
-  // the corrected fidelity (docs/fidelity.md): the exact theory needs friction; steady duty cycles only so far
-  if (k.solver.fidelity == contact::Fidelity::Corrected) {
+  // the corrected fidelity (docs/fidelity.md): the exact theory needs friction; a transient duty cycle is corrected
+  // at its steady part, which it must have (a collective's conditions are checked each by validate_collective)
+  if (k.solver.fidelity == contact::Fidelity::Corrected && w.collective.empty()) {
     if (!(k.friction.mu > 0))
       throw key_error(k, "friction.mu", "friction.mu, solver.fidelity: the corrected fidelity solves Kalker's exact "
                       "theory, which needs friction; got mu = " + number(k.friction.mu));
-    if (k.transient || !w.collective.empty())
-      throw key_error(k, "solver.fidelity", std::string("solver.fidelity: the corrected fidelity runs steady duty "
-                      "cycles (no transient: section, no wear.collective) so far; use fast or exact"));
+    if (k.transient) {
+      const contact::TransientCase t = contact::transient_case_of(k);
+      if (!steady_part(t.inputs, t.settings.t_end_s))
+        throw key_error(k, "solver.fidelity", "solver.fidelity, kinematics, transient.t_end_s: the corrected fidelity "
+                        "corrects a transient duty cycle by the exact physics in steady rolling at the cycle's steady "
+                        "part (a stretch of constant speed > 0, creepages and load, docs/fidelity.md); this duty cycle "
+                        "has none before t_end_s = " + number(t.settings.t_end_s) + "; use fast or exact");
+    }
   }
+}
+
+std::optional<SteadyPart> steady_part(const contact::TransientInputs& in, double t_end_s) {
+  const contact::History* histories[] = {&in.speed_m_per_s, &in.xi, &in.eta, &in.phi_per_m, &in.normal_load_N};
+  std::vector<double> t = {0.0, t_end_s};
+  for (const contact::History* h : histories)
+    for (const double ti : h->t_s)
+      if (ti > 0 && ti < t_end_s) t.push_back(ti);
+  std::sort(t.begin(), t.end());
+  t.erase(std::unique(t.begin(), t.end()), t.end());
+  std::optional<SteadyPart> best;
+  for (std::size_t i = 0; i + 1 < t.size(); ++i) {
+    const double t0 = t[i], t1 = t[i + 1];
+    bool constant = true;
+    for (const contact::History* h : histories) constant = constant && contact::constant_until(*h, t0) >= t1;
+    if (!constant) continue;
+    SteadyPart part;
+    part.t0_s = t0;
+    part.t1_s = t1;
+    part.speed_m_per_s = contact::value_at(in.speed_m_per_s, t0);
+    part.creepages = {contact::value_at(in.xi, t0), contact::value_at(in.eta, t0), contact::value_at(in.phi_per_m, t0)};
+    if (part.speed_m_per_s > 0 && (!best || part.rolled_m() > best->rolled_m())) best = part;
+  }
+  return best;
 }
 
 void check_profile_resolves_contact(const WearCase& c, int body, double node_spacing_m, double contact_width_m,

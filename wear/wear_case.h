@@ -101,6 +101,18 @@ WearCase read_wear_case_text(const std::string& text, const std::string& label, 
 // cross-key checks (read_wear_case runs them)
 void validate(const WearCase& c);
 
+// The steady part of a transient duty cycle (docs/fidelity.md, "Transient duty cycles"): the longest stretch, by
+// distance rolled, between the breakpoints of the speed, creepage and load histories over [0, t_end_s] on which
+// all of them are constant and the speed is > 0. The corrected fidelity corrects the cycle by the exact physics
+// in steady rolling at its speed and creepages. Empty when the cycle has no such stretch.
+struct SteadyPart {
+  double t0_s = 0, t1_s = 0;
+  double speed_m_per_s = 0;
+  contact::Creepages creepages;
+  double rolled_m() const { return speed_m_per_s * (t1_s - t0_s); }
+};
+std::optional<SteadyPart> steady_part(const contact::TransientInputs& inputs, double t_end_s);
+
 // The worn body's profile must resolve the contact, its nodes carrying the wear: at least min_nodes
 // across the contact's width. Throws contact::CaseError at profiles.body<N> (file, line) with what the
 // user can set: a generated profile's nodes are width_m * kProfileMaxSpacingFraction apart, so the

@@ -164,10 +164,10 @@ void check_memory(const WearCase& c) {
                                             : fmt::format(", for each of {} running conditions", c.wear.collective.size())));
 }
 
-WearModel make_wear_model(const WearCase& c) {
-  check_memory(c);  // before any kernel is built
-  if (!c.wear.collective.empty()) return make_collective_model(c);
-  validate(c);
+namespace {
+
+// the case's model with the case's own normal and tangential models, without the fidelity's other models
+WearModel make_own_model(const WearCase& c) {
   const contact::ContactCase& k = c.contact;
   WearModel m;
   m.name = k.name;
@@ -228,30 +228,57 @@ WearModel make_wear_model(const WearCase& c) {
   const bool closed_form = !m.transient && contact::tangential_traits(m.scheme).pure_xi_closed_form &&
                            m.creepages.eta == 0 && m.creepages.phi_per_m == 0;
   m.normal_options.pressure_fields = !closed_form || needs_fields(m.law1) || needs_fields(m.law2) || m.thermal.has_value();
-  // the fidelity: the exact physics on the same case, for the corrections or the error estimate (steady duty
-  // cycles with friction: the exact theory's transient duty cycle costs a minute per solve)
   m.fidelity = k.solver.fidelity;
   m.correction_tolerance = k.solver.correction_tolerance;
   m.error_estimate = k.solver.error_estimate;
-  if (m.fidelity != contact::Fidelity::Exact && !m.transient && k.friction.mu > 0) {
+  return m;
+}
+
+}  // namespace
+
+WearModel make_wear_model(const WearCase& c) {
+  check_memory(c);  // before any kernel is built
+  if (!c.wear.collective.empty()) return make_collective_model(c);
+  validate(c);
+  const contact::ContactCase& k = c.contact;
+  WearModel m = make_own_model(c);
+  // the fidelity: the exact physics on the same case, for the corrections or the error estimate; a transient duty
+  // cycle's is steady rolling at its steady part (docs/fidelity.md, "Transient duty cycles": the exact theory's
+  // transient duty cycle costs a minute per solve), and the correction compares it with the fast models there
+  const std::optional<SteadyPart> part =
+      m.transient ? steady_part(m.transient->inputs, m.transient->settings.t_end_s) : std::nullopt;
+  if (m.fidelity != contact::Fidelity::Exact && k.friction.mu > 0 && (!m.transient || part)) {
+    // a model as another's, in steady rolling at the transient duty cycle's steady part
+    const auto at_steady_part = [&part](WearModel model) {
+      if (!part) return model;
+      model.transient.reset();
+      model.speed_m_per_s = part->speed_m_per_s;
+      model.creepages = part->creepages;
+      model.normal_options.pressure_fields = true;
+      return model;
+    };
     WearCase exact = c;
     exact.contact.solver.normal = contact::NormalChoice::Halfspace;
     exact.contact.solver.tangential = contact::TangentialScheme::Exact;
     exact.contact.solver.fidelity = contact::Fidelity::Exact;
     const int grid = k.solver.correction_grid;
     if (grid > 0) exact.contact.solver.nx = exact.contact.solver.ny = grid;
-    m.exact_physics.push_back(make_wear_model(exact));
-    // the fast models on the correction grid, when it is another: the correction's like with like
-    if (grid > 0 && (grid != k.solver.nx || grid != k.solver.ny)) {
+    m.exact_physics.push_back(at_steady_part(make_own_model(exact)));
+    m.steady_part = part;
+    // the fast models on the correction grid, when it is another, or at a transient cycle's steady part: the
+    // correction's like with like
+    const bool other_grid = grid > 0 && (grid != k.solver.nx || grid != k.solver.ny);
+    if (other_grid || part) {
       WearCase fast = c;
-      fast.contact.solver.nx = fast.contact.solver.ny = grid;
+      if (other_grid) fast.contact.solver.nx = fast.contact.solver.ny = grid;
       fast.contact.solver.correction_grid = 0;
       fast.contact.solver.fidelity = contact::Fidelity::Fast;
-      m.correction_fast.push_back(make_wear_model(fast));
-      m.correction_fast.front().exact_physics.clear();
+      m.correction_fast.push_back(at_steady_part(make_own_model(fast)));
+    }
+    if (other_grid) {
       exact.contact.solver.nx = k.solver.nx;
       exact.contact.solver.ny = k.solver.ny;
-      m.limits_physics.push_back(make_wear_model(exact));
+      m.limits_physics.push_back(at_steady_part(make_own_model(exact)));
     }
   }
   return m;
@@ -531,6 +558,7 @@ FidelityError rate_error(const WearModel& m, double N, const WearRate& fast, con
   FidelityError e;
   e.N = N;
   e.power_rel = fast.energy_per_revolution_J / exact.energy_per_revolution_J - 1;
+  e.exact_energy_J = exact.energy_per_revolution_J;
   const Eigen::ArrayXd& y = reference_nodes(m);
   const Eigen::ArrayXd uf = node_energy_per_revolution(m, fast), ux = node_energy_per_revolution(m, exact);
   e.power_l1 = profile_area_m2((uf - ux).abs(), y) / profile_area_m2(ux.abs(), y);
@@ -596,6 +624,24 @@ NormalState exact_normal_state(const WearModel& m, const Eigen::VectorXd& state,
   return solved_normal_state(m.exact_physics.front(), state, cache.exact_physics.front());
 }
 
+bool has_exact_physics(const WearModel& m) {
+  if (m.conditions.empty()) return !m.exact_physics.empty();
+  return std::any_of(m.conditions.begin(), m.conditions.end(), [](const WearModel& mk) { return !mk.exact_physics.empty(); });
+}
+
+bool correction_made(const WearModel& m, const WearCache& cache) {
+  if (m.conditions.empty()) return cache.correction.valid;
+  if (cache.conditions.size() != m.conditions.size()) return false;
+  return std::all_of(cache.conditions.begin(), cache.conditions.end(), [](const WearCache& ck) { return ck.correction.valid; });
+}
+
+long exact_solves(const WearModel& m, const WearCache& cache) {
+  long n = cache.correction.solves;
+  if (!m.conditions.empty())
+    for (const WearCache& ck : cache.conditions) n += ck.correction.solves;
+  return n;
+}
+
 WearRate wear_rate(const WearModel& m, const Eigen::VectorXd& state, WearCache& cache) {
   ++cache.counters.rate_evaluations;
   if (!m.conditions.empty()) return collective_rate(m, state, cache);
@@ -605,6 +651,18 @@ WearRate wear_rate(const WearModel& m, const Eigen::VectorXd& state, WearCache& 
 }
 
 bool update_correction(const WearModel& m, double N, const Eigen::VectorXd& state, WearCache& cache) {
+  if (!m.conditions.empty()) {
+    // a collective: each running condition on its own schedule, the estimate combined over them
+    if (m.fidelity != contact::Fidelity::Corrected) return false;
+    prepare_condition_caches(m, cache);
+    const std::vector<LifeCounters> before = condition_counters(cache);
+    bool any = false;
+    for (std::size_t k = 0; k < m.conditions.size(); ++k)
+      any = update_correction(m.conditions[k], N, state, cache.conditions[k]) || any;
+    add_condition_solves(cache, before);
+    cache.error = collective_error(m, cache);
+    return any;
+  }
   if (m.fidelity != contact::Fidelity::Corrected || m.exact_physics.empty()) return false;
   FidelityCorrection& c = cache.correction;
   const WearRate fast = fast_wear_rate(m, state, cache);
@@ -646,6 +704,17 @@ bool update_correction(const WearModel& m, double N, const Eigen::VectorXd& stat
 }
 
 FidelityError fast_model_error(const WearModel& m, double N, const Eigen::VectorXd& state, WearCache& cache) {
+  if (!m.conditions.empty()) {  // each condition's, combined (collective_error); its solves in each condition's count
+    prepare_condition_caches(m, cache);
+    const std::vector<LifeCounters> before = condition_counters(cache);
+    for (std::size_t k = 0; k < m.conditions.size(); ++k) {
+      WearCache& ck = cache.conditions[k];
+      ck.error = fast_model_error(m.conditions[k], N, state, ck);
+      if (!m.conditions[k].exact_physics.empty()) ++ck.correction.solves;
+    }
+    add_condition_solves(cache, before);
+    return collective_error(m, cache);
+  }
   if (m.exact_physics.empty()) return {};
   return rate_error(m, N, like_fast_wear_rate(m, state, cache), exact_wear_rate(m, state, cache));
 }
@@ -803,7 +872,7 @@ LifeResult run_life(const WearModel& m, const WearCase& c, const LifeStart& star
       check_profile_resolves_contact(c, mk, solved_normal_state(mk, state, ck));
     });
     // the corrected fidelity's first correction (a resumed life has its checkpoint's)
-    if (!cache.correction.valid) update_correction(m, N, state, cache);
+    if (!correction_made(m, cache)) update_correction(m, N, state, cache);
   };
   // each accepted step reported with the contact at its end; the contact where the life ends
   driver.on_step = [&](const LifeStepEnd& e) {
@@ -821,16 +890,16 @@ LifeResult run_life(const WearModel& m, const WearCase& c, const LifeStart& star
     life.contact = wear_rate(m, state, cache).contact;
     // the fast fidelity's error estimate: one exact-physics solve on the final worn state (the corrected one's
     // is its last correction's); a solve that fails leaves it NaN
-    if (m.fidelity == contact::Fidelity::Fast && m.error_estimate && !m.exact_physics.empty()) try {
+    if (m.fidelity == contact::Fidelity::Fast && m.error_estimate && has_exact_physics(m)) try {
         cache.error = fast_model_error(m, N, state, cache);
-        ++cache.correction.solves;
+        if (m.conditions.empty()) ++cache.correction.solves;
       } catch (const std::exception& e) {
         spdlog::info("wear: no error estimate at the end of the life: {}", e.what());
       }
   };
   static_cast<LifeOutcome&>(life) = integrate_life(life_problem(m, c, cache), from, driver);
   life.error = cache.error;
-  life.exact_solves = cache.correction.solves;
+  life.exact_solves = exact_solves(m, cache);
   if (life.ended_by == LifeEnd::Edge)
     spdlog::info("wear: the contact has spread to the edge of the narrower body at {:.6g} revolutions (step {}); "
                  "the life ends there (wear.limits.edge)",

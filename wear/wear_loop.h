@@ -83,10 +83,15 @@ struct WearModel {
   double correction_tolerance = 0.1;
   bool error_estimate = true;  // the fast fidelity's estimate at the end of the life (solver.error_estimate)
   // the exact physics on the same case (half-space normal, Kalker's exact theory, the case's grid): the
-  // corrected fidelity's corrections and the fast fidelity's error estimate at the end of the life; empty for
-  // the exact fidelity, transient duty cycles and collectives (no estimate)
+  // corrected fidelity's corrections and the fast fidelity's error estimate at the end of the life (a transient
+  // duty cycle's: in steady rolling at its steady part); empty for the exact fidelity, mu = 0, a transient duty
+  // cycle without a steady part, and a collective (its conditions have theirs)
   std::vector<WearModel> exact_physics;
-  // the fast models on the exact physics' grid when solver.correction_grid makes it another than the case's:
+  // a transient duty cycle's steady part (wear/wear_case.h), where the exact physics above runs in steady rolling;
+  // empty for a steady duty cycle
+  std::optional<SteadyPart> steady_part;
+  // the fast models on the exact physics' grid when solver.correction_grid makes it another than the case's, and
+  // at the steady part of a transient duty cycle:
   // a correction is the exact physics' rate over these, both on that grid (the fast models' own dependence on
   // the grid cancels in the ratio, the exact physics' does not: docs/fidelity.md), applied to the fast rate on
   // the case's grid; empty otherwise
@@ -221,6 +226,7 @@ struct FidelityError {
   double N = std::numeric_limits<double>::quiet_NaN();
   double power_rel = std::numeric_limits<double>::quiet_NaN();
   double power_l1 = std::numeric_limits<double>::quiet_NaN();
+  double exact_energy_J = std::numeric_limits<double>::quiet_NaN();  // the exact physics' per revolution there
 };
 
 // the last results, keyed by the worn profiles' hash (an unchanged profile is not solved again)
@@ -290,6 +296,12 @@ WearRate wear_rate(const WearModel& m, const Eigen::VectorXd& state, WearCache& 
 // revolution has moved by more than correction_tolerance (relative); returns whether it did. Also sets
 // cache.error from that solve. False for the other fidelities.
 bool update_correction(const WearModel& m, double N, const Eigen::VectorXd& state, WearCache& cache);
+// whether the model has exact physics to estimate its error with (a collective: any condition has)
+bool has_exact_physics(const WearModel& m);
+// whether the corrected fidelity's correction is in force (a collective: every condition's)
+bool correction_made(const WearModel& m, const WearCache& cache);
+// the exact-physics solves counted in the cache (a collective: its conditions' added)
+long exact_solves(const WearModel& m, const WearCache& cache);
 // the exact physics' normal solve on the state, in cache.exact_physics (the corrected fidelity's limits near the end)
 NormalState exact_normal_state(const WearModel& m, const Eigen::VectorXd& state, WearCache& cache);
 // The fast models' error against the exact physics on the state (one exact solve), as in FidelityError;

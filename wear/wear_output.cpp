@@ -1,5 +1,6 @@
 #include "wear/wear_output.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -142,12 +143,33 @@ std::string life_report_text(const LifeReport& r) {
   return s;
 }
 
+std::string error_estimate_of(const WearModel& m) {
+  if (m.fidelity == contact::Fidelity::Exact) return "not estimated: the exact physics ran";
+  if (!has_exact_physics(m)) {
+    if (!m.conditions.empty() || !(m.mu > 0)) return "not estimated: mu = 0 (the exact theory needs friction)";
+    return "not estimated: the transient duty cycle has no steady part (constant speed > 0, creepages and load)";
+  }
+  if (m.fidelity == contact::Fidelity::Fast && !m.error_estimate) return "not estimated: solver.error_estimate false";
+  if (!m.conditions.empty()) {
+    const bool transient = std::any_of(m.conditions.begin(), m.conditions.end(), [](const WearModel& mk) { return mk.transient.has_value(); });
+    return std::string("each running condition's, energy-weighted") +
+           (transient ? " (a transient condition's at its steady part)" : "");
+  }
+  if (m.steady_part)
+    return fmt::format("the transient duty cycle's steady part (steady rolling at {} m/s, xi {}, eta {}, phi {} 1/m; "
+                       "its start and stop not estimated)",
+                       round_trip(m.steady_part->speed_m_per_s), round_trip(m.steady_part->creepages.xi),
+                       round_trip(m.steady_part->creepages.eta), round_trip(m.steady_part->creepages.phi_per_m));
+  return "the steady duty cycle";
+}
+
 std::vector<std::pair<std::string, std::string>> fidelity_report(const WearModel& m, const LifeResult& l) {
   std::vector<std::pair<std::string, std::string>> out;
   out.emplace_back("tangential_model", contact::to_string(m.scheme));
   out.emplace_back("fidelity", contact::to_string(m.fidelity));
   if (m.fidelity == contact::Fidelity::Corrected) out.emplace_back("correction_tolerance", round_trip(m.correction_tolerance));
   out.emplace_back("exact_solves", std::to_string(l.exact_solves));
+  out.emplace_back("error_estimate_of", error_estimate_of(m));
   out.emplace_back("error_estimate_N", round_trip(l.error.N));
   out.emplace_back("error_power_rel", round_trip(l.error.power_rel));
   out.emplace_back("error_power_l1", round_trip(l.error.power_l1));
@@ -175,9 +197,9 @@ std::vector<std::pair<std::string, std::string>> failure_margins(const WearModel
 
 std::string wear_summary_error_line(const WearModel& m, const LifeResult& l) {
   return fmt::format("# error estimate ({} fidelity, {} exact-physics solves): at N {} the fast models' total power "
-                     "relative error {}, per-strip power L1 {}\n",
+                     "relative error {}, per-strip power L1 {}; of {}\n",
                      contact::to_string(m.fidelity), l.exact_solves, round_trip(l.error.N),
-                     round_trip(l.error.power_rel), round_trip(l.error.power_l1));
+                     round_trip(l.error.power_rel), round_trip(l.error.power_l1), error_estimate_of(m));
 }
 
 std::string wear_report_text(const WearModel& m, const WearReport& r) {
@@ -328,16 +350,18 @@ FidelityCorrection correction_of(const CheckpointBlock& b, Eigen::Index state_si
   return k;
 }
 
-CheckpointBlock error_block(const FidelityError& e) {
+CheckpointBlock error_block(const FidelityError& e, const std::string& name = kErrorBlock) {
   BlockWriter w;
-  for (const double v : {e.N, e.power_rel, e.power_l1}) w.put(v);
-  return w.block(kErrorBlock);
+  for (const double v : {e.N, e.power_rel, e.power_l1, e.exact_energy_J}) w.put(v);
+  return w.block(name);
 }
 
+// (a block of three numbers, without the exact energy: written before the collectives were corrected)
 FidelityError error_of(const CheckpointBlock& b) {
   BlockReader r{b};
   FidelityError e;
   for (double* v : {&e.N, &e.power_rel, &e.power_l1}) *v = r.number();
+  if (b.values.size() > 3) e.exact_energy_J = r.number();
   r.finish();
   return e;
 }
@@ -442,6 +466,14 @@ std::vector<CheckpointBlock> wear_cache_blocks(const WearCache& cache) {
   };
   halfspace(cache, kHalfspaceNormalBlock);
   for (std::size_t k = 0; k < cache.conditions.size(); ++k) halfspace(cache.conditions[k], condition_block_name(k));
+  // a collective's conditions' corrections (the corrected fidelity)
+  for (std::size_t k = 0; k < cache.conditions.size(); ++k)
+    if (const FidelityCorrection& ck = cache.conditions[k].correction; ck.valid) {
+      CheckpointBlock b = correction_block(ck);
+      b.name = fmt::format("{}_{}", kCorrectionBlock, k);
+      out.push_back(std::move(b));
+      out.push_back(error_block(cache.conditions[k].error, fmt::format("{}_{}", kErrorBlock, k)));
+    }
   return out;
 }
 
@@ -451,8 +483,15 @@ void restore_wear_cache(const WearModel& m, const std::vector<CheckpointBlock>& 
   if (const CheckpointBlock* b = find_block(blocks, kHalfspaceNormalBlock)) restore_halfspace_normal(*b, cache);
   if (m.conditions.empty()) return;
   prepare_condition_caches(m, cache);
-  for (std::size_t k = 0; k < m.conditions.size(); ++k)
-    if (const CheckpointBlock* b = find_block(blocks, condition_block_name(k))) restore_halfspace_normal(*b, cache.conditions[k]);
+  for (std::size_t k = 0; k < m.conditions.size(); ++k) {
+    WearCache& ck = cache.conditions[k];
+    if (const CheckpointBlock* b = find_block(blocks, condition_block_name(k))) restore_halfspace_normal(*b, ck);
+    const WearModel& mk = m.conditions[k];
+    if (const CheckpointBlock* b = find_block(blocks, fmt::format("{}_{}", kCorrectionBlock, k)))
+      ck.correction = correction_of(*b, mk.state_size(), mk.n1 + mk.n2);
+    if (const CheckpointBlock* b = find_block(blocks, fmt::format("{}_{}", kErrorBlock, k))) ck.error = error_of(*b);
+  }
+  if (m.fidelity == contact::Fidelity::Corrected) cache.error = collective_error(m, cache);
 }
 
 std::string checkpoint_text(const Checkpoint& c) {

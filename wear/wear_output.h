@@ -71,8 +71,11 @@ struct WearReport {
 };
 std::string wear_report_text(const WearModel& m, const WearReport& r);
 // which models ran and the fast models' error estimate (docs/fidelity.md): report.txt's keys tangential_model,
-// fidelity, correction_tolerance (corrected), exact_solves, error_estimate_N, error_power_rel, error_power_l1
+// fidelity, correction_tolerance (corrected), exact_solves, error_estimate_of, error_estimate_N, error_power_rel, error_power_l1
 std::vector<std::pair<std::string, std::string>> fidelity_report(const WearModel& m, const LifeResult& l);
+// what the error estimate compares (report.txt's error_estimate_of): the steady duty cycle, a transient one's steady
+// part, a collective's conditions, or "not estimated: WHY"
+std::string error_estimate_of(const WearModel& m);
 // which failure mode is how far at the end of the life (docs/fatigue.md), with wear.fatigue, wear.limits.shakedown,
 // wear.limits.scuffing or a thermal: section only: report.txt's keys depth_fraction (max depth /
 // wear.limits.max_depth_m, with a depth limit), fatigue_law, max_damage, max_damage_y_m, max_tgamma_N (with fatigue),

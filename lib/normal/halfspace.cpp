@@ -11,10 +11,11 @@
 // keeps its digits on either side of the rectangle. K_ij = u(x_i - x_j, y_i - y_j).
 //
 // Convolution. K_ij depends on the offset of the cells only, so u = K p is a discrete convolution;
-// on a zero-padded (2nx x 2ny) grid with the kernel stored at offsets -(n-1)..(n-1) (wrapped, the
-// offset n unused) the cyclic convolution equals the linear one on the nx x ny block:
-//   u = IFFT( FFT(K) . FFT(p) ) / (4 nx ny).
-// The kernel is even in both offsets, so FFT(K) is real. The padded rows ny..2ny-1 of p are zero and
+// on a zero-padded (mx x my) grid with the kernel stored at offsets -(n-1)..(n-1) (wrapped: they do not
+// overlap on any length >= 2n - 1; mx, my are fft_size's, the smallest with prime factors 2, 3, 5, 7
+// only) the cyclic convolution equals the linear one on the nx x ny block:
+//   u = IFFT( FFT(K) . FFT(p) ) / (mx my).
+// The kernel is even in both offsets, so FFT(K) is real. The padded rows ny..my-1 of p are zero and
 // those of u are not wanted: r2c along x on the first ny rows, c2c along y on every column, and back
 // the same way (a quarter less work than the full 2-D transform). FFTW, planned once per process and
 // grid size (FFTW_ESTIMATE; a plan costs about 0.5 ms, so a solve of its own would pay a third of a
@@ -109,8 +110,8 @@ const HalfspacePlans& plans_for(int nx, int ny) {
   const std::lock_guard<std::mutex> lock(fftw_planner_mutex());
   const auto found = cache.find({nx, ny});
   if (found != cache.end()) return found->second;
-  int mx = 2 * nx, my = 2 * ny;
-  const int nk = nx + 1;
+  int mx = fft_size(2 * nx - 1), my = fft_size(2 * ny - 1);
+  const int nk = mx / 2 + 1;
   auto rows = fftw_array<double>(static_cast<std::size_t>(mx) * ny);
   auto spectrum = fftw_array<fftw_complex>(static_cast<std::size_t>(my) * nk);
   auto columns = fftw_array<fftw_complex>(static_cast<std::size_t>(my) * nk);
@@ -147,21 +148,28 @@ const HalfspacePlans& plans_for(int nx, int ny) {
 // the influence operator u = K p on one grid: padded buffers and the kernel's spectrum
 struct HalfspaceWorkspace {
   int nx, ny;      // grid
-  int mx, my;      // padded grid 2nx x 2ny, row-major for FFTW: row n (along y) holds mx values along x
-  int nk;          // mx/2 + 1 = nx + 1 complex values per row of the spectrum
+  int mx, my;      // padded grid (>= 2n - 1: fft_size), row-major for FFTW: row n (along y) holds mx values along x
+  int nk;          // mx/2 + 1 complex values per row of the spectrum
   const HalfspacePlans& plans;
-  std::unique_ptr<double, FftwFree> rows;           // (ny x mx): the rows that can be nonzero
-  std::unique_ptr<fftw_complex, FftwFree> spectrum;  // (my x nk)
-  std::unique_ptr<fftw_complex, FftwFree> columns;   // (nk x my): the spectrum's columns, each contiguous
+  // the product's input and output sides in buffers of their own, so that the input's zero padding (the
+  // columns nx..mx-1 of rows, the rows ny..my-1 of spectrum) is written once, not on every product
+  std::unique_ptr<double, FftwFree> rows;               // (ny x mx): the rows of p that can be nonzero, padded
+  std::unique_ptr<fftw_complex, FftwFree> spectrum;     // (my x nk): their r2c along x, rows ny.. zero
+  std::unique_ptr<fftw_complex, FftwFree> columns;      // (nk x my): the spectrum's columns, each contiguous
+  std::unique_ptr<fftw_complex, FftwFree> spectrum_out;  // (my x nk): the product's columns transformed back
+  std::unique_ptr<double, FftwFree> rows_out;           // (ny x mx): u on the first nx of each row
   std::vector<double> kernel_spectrum;              // (nk x my) FFT of the even kernel (real) / (mx my)
   Eigen::ArrayXXd quadrant;                         // (nx x ny) K at the offsets (k dx, l dy), k, l >= 0
   int products = 0;                                 // convolutions u = K p so far
 
   HalfspaceWorkspace(const Grid& g, double Estar_Pa)
-      : nx(g.nx), ny(g.ny), mx(2 * g.nx), my(2 * g.ny), nk(g.nx + 1), plans(plans_for(g.nx, g.ny)),
+      : nx(g.nx), ny(g.ny), mx(fft_size(2 * g.nx - 1)), my(fft_size(2 * g.ny - 1)), nk(mx / 2 + 1),
+        plans(plans_for(g.nx, g.ny)),
         rows(fftw_array<double>(static_cast<std::size_t>(mx) * ny)),
         spectrum(fftw_array<fftw_complex>(static_cast<std::size_t>(my) * nk)),
         columns(fftw_array<fftw_complex>(static_cast<std::size_t>(my) * nk)),
+        spectrum_out(fftw_array<fftw_complex>(static_cast<std::size_t>(my) * nk)),
+        rows_out(fftw_array<double>(static_cast<std::size_t>(mx) * ny)),
         kernel_spectrum(static_cast<std::size_t>(my) * nk), quadrant(g.nx, g.ny) {
     // kernel at the offsets of the first quadrant (Love's form, top of file), from Love's antiderivative
     // on the lattice of the cells' corners, G_ij = G((i + 1/2) dx, (j + 1/2) dy), each corner's value
@@ -179,38 +187,37 @@ struct HalfspaceWorkspace {
     auto kernel = fftw_array<double>(static_cast<std::size_t>(mx) * my);
     double* K = kernel.get();
     for (int n = 0; n < my; ++n) {
-      const int l = n < ny ? n : my - n;  // |offset| along y; n = ny is the unused offset
+      const int l = n < ny ? n : my - n;  // |offset| along y; ny..my - ny are no offset (l >= ny)
       for (int m = 0; m < mx; ++m) {
         const int k = m < nx ? m : mx - m;
         K[m + mx * n] = (k < nx && l < ny) ? quadrant(k, l) : 0.0;
       }
     }
-    fftw_execute_dft_r2c(plans.kernel_forward, K, spectrum.get());
+    fftw_execute_dft_r2c(plans.kernel_forward, K, spectrum_out.get());
     const double scale = 1.0 / (static_cast<double>(mx) * my);
     for (int n = 0; n < my; ++n)
       for (int m = 0; m < nk; ++m)
-        kernel_spectrum[static_cast<std::size_t>(m) * my + n] = spectrum.get()[static_cast<std::size_t>(n) * nk + m][0] * scale;
+        kernel_spectrum[static_cast<std::size_t>(m) * my + n] = spectrum_out.get()[static_cast<std::size_t>(n) * nk + m][0] * scale;
+    // the padding, once: the out-of-place r2c and c2c transforms of apply() do not write their inputs
+    std::fill_n(rows.get(), static_cast<std::size_t>(mx) * ny, 0.0);
+    std::fill_n(reinterpret_cast<double*>(spectrum.get()), 2 * static_cast<std::size_t>(my) * nk, 0.0);
   }
 
   // u = K p: zero-padded cyclic convolution
   void apply(const Eigen::ArrayXXd& p, Eigen::ArrayXXd& u) {
     ++products;
-    Eigen::Map<Eigen::ArrayXXd> padded(rows.get(), mx, ny);
-    padded.topRows(nx) = p;
-    padded.bottomRows(nx).setZero();
-    fftw_complex* S = spectrum.get();
-    fftw_execute_dft_r2c(plans.rows_forward, rows.get(), S);
-    double* S_values = reinterpret_cast<double*>(S);  // interleaved re, im
-    std::fill(S_values + 2 * ny * nk, S_values + 2 * my * nk, 0.0);
+    Eigen::Map<Eigen::ArrayXXd>(rows.get(), mx, ny).topRows(nx) = p;  // the rest stays zero
+    fftw_complex* const S = spectrum.get();
+    fftw_execute_dft_r2c(plans.rows_forward, rows.get(), S);  // its rows 0..ny-1; the rest stay zero
     fftw_complex* const Tc = columns.get();
     fftw_execute_dft(plans.columns_forward, S, Tc);
     for (std::size_t q = 0; q < kernel_spectrum.size(); ++q) {
       Tc[q][0] *= kernel_spectrum[q];
       Tc[q][1] *= kernel_spectrum[q];
     }
-    fftw_execute_dft(plans.columns_backward, Tc, S);
-    fftw_execute_dft_c2r(plans.rows_backward, S, rows.get());
-    u = padded.topRows(nx);
+    fftw_execute_dft(plans.columns_backward, Tc, spectrum_out.get());
+    fftw_execute_dft_c2r(plans.rows_backward, spectrum_out.get(), rows_out.get());  // destroys spectrum_out
+    u = Eigen::Map<const Eigen::ArrayXXd>(rows_out.get(), mx, ny).topRows(nx);
   }
 
   // u += w K e_(i, j): the displacement of one cell's pressure w, from the kernel in real space

@@ -13,7 +13,7 @@
 
 #include <cstring>
 
-#include <Eigen/Dense>
+#include <Eigen/QR>
 
 #include <algorithm>
 #include <cmath>

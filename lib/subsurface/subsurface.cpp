@@ -43,7 +43,9 @@ struct FftwFree {
   void operator()(void* p) const { fftw_free(p); }
 };
 
-// one padded 2nx x 2ny real array and its spectrum, with the two plans between them
+// one zero-padded mx x my real array and its spectrum, with the two plans between them: the offsets
+// -(n-1)..(n-1) of an n-cell grid wrap without overlap onto any length >= 2n - 1, taken as fft_size's
+// (prime factors 2, 3, 5, 7 only)
 struct PlaneTransform {
   int mx, my, nk;
   std::unique_ptr<double, FftwFree> real;
@@ -51,7 +53,7 @@ struct PlaneTransform {
   fftw_plan forward = nullptr, backward = nullptr;
 
   PlaneTransform(int nx, int ny)
-      : mx(2 * nx), my(2 * ny), nk(nx + 1),
+      : mx(fft_size(2 * nx - 1)), my(fft_size(2 * ny - 1)), nk(mx / 2 + 1),
         real(static_cast<double*>(fftw_malloc(sizeof(double) * mx * my))),
         spectrum(static_cast<fftw_complex*>(fftw_malloc(sizeof(fftw_complex) * my * nk))) {
     if (!real || !spectrum) throw std::bad_alloc();
@@ -133,7 +135,7 @@ std::vector<StressPlane> stress_planes(const SurfaceTractions& t, double nu, con
   const double scale = 1.0 / (static_cast<double>(mx) * my);
   const int loads = has_shear(t) ? kLoads : 1;
 
-  // the loads' spectra, zero-padded to 2nx x 2ny
+  // the loads' spectra, zero-padded to mx x my
   std::vector<std::vector<std::complex<double>>> load_spectra;
   for (int l = 0; l < loads; ++l) {
     const Eigen::ArrayXXd& a = l == 0 ? t.pressure_Pa : l == 1 ? t.shear_x_Pa : t.shear_y_Pa;
@@ -144,19 +146,20 @@ std::vector<StressPlane> stress_planes(const SurfaceTractions& t, double nu, con
   }
 
   std::vector<StressPlane> planes;
-  std::vector<CornerTerms> lattice(static_cast<std::size_t>(mx) * my);
+  const int lx = 2 * nx, ly = 2 * ny;  // the corners' lattice: offsets -nx..nx - 1 (+ 1/2) cells
+  std::vector<CornerTerms> lattice(static_cast<std::size_t>(lx) * ly);
   std::vector<double> kernels(static_cast<std::size_t>(kComponents) * kLoads * mx * my);
   const auto kernel = [&](int c, int l) { return kernels.data() + static_cast<std::size_t>(c * kLoads + l) * mx * my; };
   for (const double z : depths_m) {
     // the corners of every cell offset: X = (q - nx + 1/2) dx, Y = (r - ny + 1/2) dy
-    for (int r = 0; r < my; ++r)
-      for (int q = 0; q < mx; ++q)
-        lattice[q + static_cast<std::size_t>(mx) * r] = corner_terms((q - nx + 0.5) * g.dx_m, (r - ny + 0.5) * g.dy_m, z);
+    for (int r = 0; r < ly; ++r)
+      for (int q = 0; q < lx; ++q)
+        lattice[q + static_cast<std::size_t>(lx) * r] = corner_terms((q - nx + 0.5) * g.dx_m, (r - ny + 0.5) * g.dy_m, z);
     // the rectangle solutions at the offsets (field - source) = (k dx, l dy), wrapped onto the padded grid
     std::fill(kernels.begin(), kernels.end(), 0.0);
     for (int l = -(ny - 1); l <= ny - 1; ++l)
       for (int k = -(nx - 1); k <= nx - 1; ++k) {
-        const auto at = [&](int q, int r) -> const CornerTerms& { return lattice[q + static_cast<std::size_t>(mx) * r]; };
+        const auto at = [&](int q, int r) -> const CornerTerms& { return lattice[q + static_cast<std::size_t>(lx) * r]; };
         const CornerTerms sum = corner_sum(at(k + nx, l + ny), at(k + nx, l + ny - 1), at(k + nx - 1, l + ny),
                                            at(k + nx - 1, l + ny - 1));
         const RectangleStress rs = stress_from_corners(sum, z, nu);

@@ -153,7 +153,7 @@ def _shard_of(shard):
     raise _input_error(f'sweep: shard: expected (K, N) or "K/N", e.g. (2, 8) or "2/8", got {shard!r}', "shard")
 
 
-_TEXT_COLUMNS = ("ended_by", "status", "message")
+_TEXT_COLUMNS = ("ended_by", "status", "message", "fidelity")
 
 
 def read_results(path):

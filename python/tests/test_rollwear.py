@@ -62,6 +62,9 @@ def test_contact_equals_the_command_line(source, cli, tmp_path, monkeypatch):
     for key, column in strips.items():
         np.testing.assert_array_equal(r["strips"][key], numbers(column), err_msg=key)
     assert r["summary"]["normal_solver"] == "hertz"
+    assert r["summary"]["error_estimate"] == "not estimated"  # docs/fidelity.md: a contact run makes none
+    assert "not estimated against the exact physics" in cli("contact", "cases/paper.yaml", "-o", tmp_path / "e",
+                                                             "--no-fields").stdout
     # the subsurface maxima, as subsurface.csv's (body, measure) rows
     maxima = read_csv(tmp_path / "subsurface.csv")
     assert len(maxima["body"]) == 10
@@ -155,6 +158,8 @@ def test_transient_equals_the_command_line(cli, tmp_path):
     np.testing.assert_array_equal(r["snapshots"][0]["tau_x_Pa"].ravel(order="F"), numbers(snap["tau_x_Pa"]))
     summary = read_csv(tmp_path / "out" / "summary.csv")
     assert r["summary"]["dissipated_J"] == float(summary["dissipated_J"][0])
+    assert r["summary"]["error_estimate"] == "not estimated"  # docs/fidelity.md: a transient run makes none
+    assert r["summary"]["tangential_model"] == "relaxed"
 
 
 def test_run_with_fatigue_equals_the_command_line(source, cli, tmp_path):
@@ -188,14 +193,15 @@ def test_run_equals_the_command_line(source, cli, tmp_path):
     assert r["summary"]["ended_by"] == report["ended_by"] == "edge"
     assert r["summary"]["revolutions"] == float(report["revolutions"])
     # which models ran and the fast models' error estimate (docs/fidelity.md), as report.txt says
-    for key in ("tangential_model", "fidelity"):
+    for key in ("tangential_model", "fidelity", "error_estimate_of"):
         assert r["summary"][key] == report[key]
+    assert report["error_estimate_of"] == "the steady duty cycle"
     assert r["summary"]["exact_solves"] == int(report["exact_solves"]) == 1
     for key in ("error_estimate_N", "error_power_rel", "error_power_l1"):
         assert r["summary"][key] == float(report[key]), key
     text = (tmp_path / "summary.csv").read_text()
     assert "# models: normal auto, tangential relaxed, fidelity fast\n" in text
-    assert f"per-strip power L1 {report['error_power_l1']}\n" in text
+    assert f"per-strip power L1 {report['error_power_l1']}; of the steady duty cycle\n" in text
     body1 = r["profiles"]["body1"]
     last = sorted((tmp_path / "snapshots").glob("snapshot_*_body1.csv"))[-1]
     worn = read_csv(last)
@@ -218,6 +224,11 @@ def test_sweep_runs_its_cases(source, tmp_path):
     alone = rollwear.run(source / "cases" / "paper-wear.yaml")
     assert res["life_revolutions"][0] == alone["summary"]["revolutions"]
     assert res["max_depth_m"][0] == alone["summary"]["max_depth_m"]
+    # the fidelity and its error estimate, as the case's report has them (docs/fidelity.md)
+    assert res["fidelity"] == ["fast", "fast"]
+    np.testing.assert_array_equal(res["exact_solves"], [1, 1])
+    assert res["error_power_l1"][0] == alone["summary"]["error_power_l1"]
+    assert res["error_power_rel"][0] == alone["summary"]["error_power_rel"]
     assert os.path.exists(os.path.join(s["directory"], "case_0001", "report.txt"))
 
 
