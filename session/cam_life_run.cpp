@@ -135,7 +135,8 @@ std::unique_ptr<cam::CamLifeSetup> set_up_life(const cam::CamCase& c) {
   const cam::CamModel& m = c.model;
   std::unique_ptr<cam::CamLifeSetup> setup;
   try {
-    setup = cam::set_up_cam_life(c.name, m, *c.wear, cam::roller_dynamics_of(c.solver));
+    // with cam.lubricant.friction_by_regime the regime law's friction and wear factor per angle (cam/cam_lubrication.h)
+    setup = cam::set_up_lubricated_cam_life(c.name, c.lubrication, m, *c.wear, cam::roller_dynamics_of(c.solver));
   } catch (const cam::CamError& e) {
     throw cam::case_error_of(c, e);
   }
