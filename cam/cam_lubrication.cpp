@@ -384,12 +384,12 @@ std::string lubrication_report_text(const CamLubricationSpec& spec, const Revolu
 }
 
 std::string first_failure_text(const CamLubricationSpec& spec, const RevolutionLubrication& l, bool wear_limit_reached,
-                               const std::string& wear_end, double life_revolutions) {
+                               const std::string& wear_end, double life_revolutions, bool damage_reached) {
   if (l.angles.empty()) return {};
   const bool fatigue = spec.fatigue.any();
   const double scuffing = spec.thermal ? l.angles[l.max_flash].scuffing_margin_K : AngleLubrication::kNaN;
   const bool has_scuffing = !std::isnan(scuffing);
-  if (!fatigue && !has_scuffing) return {};
+  if (!fatigue && !has_scuffing && !damage_reached) return {};
   const std::string fatigue_margin =
       fatigue ? fmt::format("shakedown margin {:.4g} ({} at {:.4g} deg)", l.min_shakedown_margin,
                             to_string(l.min_shakedown_body), deg(l.angles[l.min_shakedown_at].theta_rad))
@@ -397,9 +397,10 @@ std::string first_failure_text(const CamLubricationSpec& spec, const RevolutionL
   const std::string scuffing_margin = has_scuffing ? fmt::format("scuffing margin {:.4g} K at {:.4g} deg", scuffing,
                                                                  deg(l.angles[l.max_flash].theta_rad))
                                                    : "scuffing not assessed (no critical_temperature_C)";
-  const std::string wear = wear_limit_reached
-                               ? fmt::format("wear life {:.4g} revolutions ({})", life_revolutions, wear_end)
-                               : fmt::format("no wear limit within {:.4g} revolutions ({})", life_revolutions, wear_end);
+  const std::string wear =
+      wear_limit_reached ? fmt::format("wear life {:.4g} revolutions ({})", life_revolutions, wear_end)
+      : damage_reached   ? fmt::format("no wear limit before fatigue at {:.4g} revolutions", life_revolutions)
+                         : fmt::format("no wear limit within {:.4g} revolutions ({})", life_revolutions, wear_end);
   std::string mode, note, others;
   if (has_scuffing && scuffing < 0) {
     mode = "scuffing";
@@ -409,6 +410,10 @@ std::string first_failure_text(const CamLubricationSpec& spec, const RevolutionL
     mode = "surface-fatigue";
     note = "beyond shakedown: ratchetting/surface fatigue expected from the first revolutions";
     others = scuffing_margin + "; " + wear;
+  } else if (damage_reached) {
+    mode = "fatigue";
+    note = fmt::format("fatigue damage 1 (Miner) at {:.4g} revolutions, before any wear limit", life_revolutions);
+    others = fatigue_margin + "; " + scuffing_margin + "; " + wear;
   } else if (wear_limit_reached) {
     mode = "wear";
     note = fmt::format("the wear limit ({}) at {:.4g} revolutions, {} (margins of the unworn revolution)", wear_end,

@@ -170,8 +170,11 @@ std::string lubrication_report_text(const CamLubricationSpec& spec, const Revolu
 // first_failure among surface fatigue (the least shakedown margin < 0: ratchetting from the first revolutions),
 // scuffing (the Blok margin < 0: at the first pass of the hottest angle; named before fatigue when both are
 // exceeded) and the wear life (wear_limit_reached: the life ended at a wear limit after life_revolutions), with the
-// others' margins. Empty without a shear yield stress and without a scuffing margin (nothing to compare).
+// others' margins; damage_reached: the life ended at fatigue damage 1 (Miner, docs/cam-follower.md §19) after
+// life_revolutions, named after scuffing and surface fatigue (those are exceeded from the first revolutions) and in
+// place of the wear life. Empty without a shear yield stress, a scuffing margin or damage (nothing to compare).
 std::string first_failure_text(const CamLubricationSpec& spec, const RevolutionLubrication& l,
-                               bool wear_limit_reached, const std::string& wear_end, double life_revolutions);
+                               bool wear_limit_reached, const std::string& wear_end, double life_revolutions,
+                               bool damage_reached = false);
 
 }  // namespace cam

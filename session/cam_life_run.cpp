@@ -298,11 +298,11 @@ LifeRunEnd run_cam_life_in_folder(const LifeRunOptions& o) {
                                                        o.resume, earlier_cpu_s + cpu_seconds() - cpu0) +
                              cam::cam_damage_report_text(life_model, life) +
                              cam::lubrication_report_text(c.lubrication, lubrication) +
-                             (life.ended_by == wear::LifeEnd::Fatigue ? std::string() :  // not a margin's mode
                              cam::first_failure_text(c.lubrication, lubrication,
                                                      life.ended_by == wear::LifeEnd::MaxDepth ||
                                                          life.ended_by == wear::LifeEnd::LiftLoss,
-                                                     wear::to_string(life.ended_by), life.N));
+                                                     wear::to_string(life.ended_by), life.N,
+                                                     life.ended_by == wear::LifeEnd::Fatigue);
   if (life.ended_by == wear::LifeEnd::Failed && life.steps > 0 && last.x.size() > 0) {
     save({});  // the last accepted step: --resume continues from there (e.g. with other settings)
     spdlog::error("run: the life failed after step {}; its state is saved in {}", last.steps,
