@@ -250,5 +250,22 @@ TEST(Fatigue, BadKeysNameFileLineAndKey) {
   EXPECT_NE(m.find("wear.limits.shakedown, bodies.body1.shear_yield_Pa"), std::string::npos) << m;
 }
 
+// Dang Van's index on a life's final worn contact is of steady rolling: with a transient duty cycle the key is
+// refused at its line (wear/dang_van_life.h)
+TEST(Fatigue, DangVanWithATransientDutyCycleIsRefusedAtItsKey) {
+  std::string text = read_text(kSource / "cases" / "start-stop-wear.yaml");
+  const std::string path = "body2: { Rx_m: 0.025, E_Pa: 210.0e9, nu: 0.28";
+  ASSERT_NE(text.find(path), std::string::npos);
+  text.insert(text.find(path) + path.size(), ", dang_van: { a: 0.3, b_Pa: 300.0e6 }");
+  try {
+    read_wear_case_text(text, "transient.yaml", kSource / "cases");
+    ADD_FAILURE() << "a transient life with dang_van was read";
+  } catch (const contact::CaseError& e) {
+    EXPECT_EQ(e.location.key, "bodies.body2.dang_van");
+    EXPECT_NE(std::string(e.what()).find("transient.yaml:17:"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("steady rolling"), std::string::npos) << e.what();
+  }
+}
+
 }  // namespace
 }  // namespace wear
