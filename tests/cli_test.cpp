@@ -1596,6 +1596,14 @@ TEST_F(CommandLine, RunWithDangVanReportsTheIndexOfTheFinalWornContact) {
   EXPECT_NEAR(std::stod(row[3]), index, 1e-12 * index);
   EXPECT_NEAR(std::stod(row[5]), std::stod(report_value(report, "dang_van_body1_y_m")), 1e-12);
   EXPECT_NEAR(std::stod(row[6]), std::stod(report_value(report, "dang_van_body1_depth_m")), 1e-12);
+  // the contact solved there is the life's final one (its models on its profile): a, b and p0 as the report's
+  const std::vector<std::string> summary = lines_of(read_text(out / "summary.csv"));  // name,a_m,b_m,p0_Pa,...
+  ASSERT_GE(summary.size(), 2u);
+  const std::vector<std::string> contact = split(summary[1]);
+  for (const auto& [column, key] : {std::pair{1, "a_m"}, std::pair{2, "b_m"}, std::pair{3, "p0_Pa"}}) {
+    const double life_value = std::stod(report_value(report, key));
+    EXPECT_NEAR(std::stod(contact[static_cast<std::size_t>(column)]), life_value, 1e-12 * life_value) << key;
+  }
 
   // without the key: no such field
   std::ofstream(c) << plain;
