@@ -619,7 +619,7 @@ py::dict run_result(const CaseSource& source) {
     summary[(body + "index").c_str()] = d.field.index_max;
     summary[(body + "depth_m").c_str()] = d.field.z_m;
     summary[(body + "y_m").c_str()] = d.field.y_m;
-    if (d.condition >= 0) summary[(body + "condition").c_str()] = d.condition;
+    if (d.condition > 0) summary[(body + "condition").c_str()] = d.condition;
   }
   py::dict out;
   out["summary"] = summary;

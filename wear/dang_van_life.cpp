@@ -28,7 +28,7 @@ std::vector<LifeDangVan> dang_van_on_worn(const WearModel& m, const WearCase& c,
     const std::array<contact::BodySubsurface, 2> below = contact::subsurface_of_contact(worn_case, run);
     for (int k = 0; k < 2; ++k) {
       if (!below[k].dang_van) continue;
-      const int condition = c.wear.collective.empty() ? -1 : static_cast<int>(i);
+      const int condition = c.wear.collective.empty() ? 0 : static_cast<int>(i) + 1;
       auto seen = std::find_if(out.begin(), out.end(), [&](const LifeDangVan& d) { return d.body == k + 1; });
       if (seen == out.end())
         out.push_back({k + 1, condition, *below[k].dang_van});

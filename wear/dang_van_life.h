@@ -20,7 +20,8 @@ struct WearModel;
 
 struct LifeDangVan {
   int body = 0;         // 1 or 2
-  int condition = -1;   // a collective's condition (0-based) with the largest index; -1 for the case's own
+  int condition = 0;    // a collective's condition with the largest index, 1-based as wear.collective[k] in the
+                        // messages; 0 for the case's own running condition
   contact::DangVanField field;  // index_max and where (y in the profiles' coordinate, as strips.csv's)
 };
 

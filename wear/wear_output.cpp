@@ -197,7 +197,7 @@ std::vector<std::pair<std::string, std::string>> failure_margins(const WearModel
     out.emplace_back(body + "index", round_trip(d.field.index_max));
     out.emplace_back(body + "depth_m", round_trip(d.field.z_m));
     out.emplace_back(body + "y_m", round_trip(d.field.y_m));
-    if (d.condition >= 0) out.emplace_back(body + "condition", std::to_string(d.condition));
+    if (d.condition > 0) out.emplace_back(body + "condition", std::to_string(d.condition));
   }
   return out;
 }
