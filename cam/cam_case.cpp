@@ -245,12 +245,17 @@ CamCase read_cam_case(const std::string& path) {
       // thermal: keys (lib/io/case.h), body1 the roller, body2 the cam, with the same checks at their lines
       s.optional_section("lubricant", [&](YamlMap& l) {
         contact::LubricantSection& lub = c.lubrication.lubricant.emplace();
-        // the regime's mu and wear factor are reported per angle, not used by the solves: a key asking for them refused
-        if (l.optional_value("friction_by_regime", [](const YamlValue&) {}))
-          l.fail("friction_by_regime", "not built: the revolution's solves and the wear use cam.mu and the wear law's "
-                                       "coefficient; the regime's mu and wear factor are reported per angle "
-                                       "(docs/cam-follower.md §17)");
+        // the regime law's mu and wear factor fed back to the solves and the wear (else reported only)
+        l.optional("friction_by_regime", c.lubrication.friction_by_regime);
         contact::read_lubricant(l, lub);
+        if (c.lubrication.friction_by_regime)  // the solves' mu (cam.mu's range) and archard's K/(H mu) need mu > 0
+          for (const auto& [key, regime] : {std::pair{"boundary", contact::LubricationRegime::Boundary},
+                                            std::pair{"full_film", contact::LubricationRegime::FullFilm}}) {
+            const double mu = lub.by_regime.mu[static_cast<int>(regime)];
+            if (!(mu > 0 && mu <= 2))
+              l.fail("friction", fmt::format("{}: with friction_by_regime the solves use it as cam.mu: must be in "
+                                             "(0, 2], got {}", key, mu));
+          }
         if (!(lub.thresholds.lambda_full_film > lub.thresholds.lambda_mixed))
           l.fail("lambda_full_film", fmt::format("need lambda_mixed < lambda_full_film, got {} and {}",
                                                  lub.thresholds.lambda_mixed, lub.thresholds.lambda_full_film));

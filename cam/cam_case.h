@@ -31,7 +31,8 @@
 //     lubricant: { viscosity_Pa_s: 0.009, pressure_viscosity_1_per_Pa: 1.6e-8,   # optional (docs/cam-follower.md
 //                  roughness_Rq_m: { body1: 0.1e-6, body2: 0.25e-6 },          #   §17): a contact case's lubricant:
 //                  friction: { boundary: 0.1, mixed: 0.05, full_film: 0.01 },  #   keys, body1 the roller, body2 the cam
-//                  wear_factor: { boundary: 1, mixed: 0.3, full_film: 0 } }
+//                  wear_factor: { boundary: 1, mixed: 0.3, full_film: 0 },
+//                  friction_by_regime: true }   # optional: the regime law's mu and factor per angle used
 //     thermal: { body1: { conductivity_W_per_m_K: 46, density_kg_per_m3: 7800, specific_heat_J_per_kg_K: 460 },
 //                body2: { ... }, bulk_temperature_C: 100, critical_temperature_C: 200 }   # optional, likewise
 //   output: { directory: out/cam-follower }

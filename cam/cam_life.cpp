@@ -184,7 +184,7 @@ RevolutionDissipation worn_revolution_dissipation(const CamModel& m, const Revol
     const RevolutionRow& row = r.rows[i];
     const contact::Profiles worn = worn_profiles_at(unworn, g, s, row.contact_arc_m);
     const AngleContact c = angle_contact(m.bodies, worn, m.geometry.roller_radius_m, row.kin, motion.angles[i].normal_N,
-                                         m.mu, fixed);
+                                         mu_at(m, i), fixed);
     RollerAngle roller = motion.angles[i];
     const CreepageForForce xi = creepage_for_force(c, roller.tangential_N);
     if (xi.found) {

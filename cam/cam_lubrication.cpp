@@ -55,6 +55,7 @@ AngleLubrication angle_lubrication(const CamLubricationSpec& spec, const CamMode
     a.regime = contact::regime_of(a.lambda, lub.thresholds);
     a.regime_mu = lub.by_regime.mu[static_cast<int>(a.regime)];
     a.regime_wear_factor = lub.by_regime.wear_factor[static_cast<int>(a.regime)];
+    a.law = contact::regime_friction(a.lambda, lub.by_regime, lub.thresholds);
   }
   if (spec.thermal && heat) {
     const contact::ThermalSection& th = *spec.thermal;
@@ -102,7 +103,7 @@ RevolutionLubrication revolution_lubrication(const CamLubricationSpec& spec, con
   for (std::size_t i = 0; i < r.rows.size(); ++i) {
     const RevolutionRow& row = r.rows[i];
     RollerAngle roller = motion.angles[i];
-    AngleContact c = angle_contact(m.bodies, profiles, m.geometry.roller_radius_m, row.kin, roller.normal_N, m.mu, law);
+    AngleContact c = angle_contact(m.bodies, profiles, m.geometry.roller_radius_m, row.kin, roller.normal_N, mu_at(m, i), law);
     if (!own_creepage) {  // the creepage carrying the motion's F_t with this law, on this contact (as the dissipation)
       const CreepageForForce xi = creepage_for_force(c, roller.tangential_N);
       if (xi.found) {
@@ -117,6 +118,7 @@ RevolutionLubrication revolution_lubrication(const CamLubricationSpec& spec, con
     } else {
       out.angles.push_back(angle_lubrication(spec, m, row, roller, c.normal.patch, nullptr));
     }
+    out.angles.back().mu_used = mu_at(m, i);
   }
   const std::size_t n = out.angles.size();
   if (spec.lubricant) {
@@ -125,6 +127,7 @@ RevolutionLubrication revolution_lubrication(const CamLubricationSpec& spec, con
       if (a.lambda < out.angles[out.min_lambda].lambda) out.min_lambda = i;
       ++out.regime_steps[static_cast<int>(a.regime)];
       if (!a.within_fit_range) ++out.outside_fit_steps;
+      if (spec.friction_by_regime) out.max_mu_mismatch = std::max(out.max_mu_mismatch, std::abs(a.law.mu - a.mu_used));
     }
   }
   if (spec.thermal) {
@@ -161,6 +164,55 @@ RevolutionLubrication revolution_lubrication(const CamLubricationSpec& spec, con
   return out;
 }
 
+RegimeFeedback regime_feedback(const CamLubricationSpec& spec, const RevolutionLubrication& l) {
+  if (!spec.lubricant) throw std::invalid_argument("regime feedback: needs cam.lubricant");
+  RegimeFeedback f;
+  for (const AngleLubrication& a : l.angles) {
+    const contact::RegimeFriction r = contact::regime_friction(a.lambda, spec.lubricant->by_regime,
+                                                               spec.lubricant->thresholds);
+    f.mu.push_back(r.mu);
+    f.wear_factor.push_back(r.wear_factor);
+    f.asperity_share.push_back(r.asperity_share);
+  }
+  return f;
+}
+
+CamModel with_regime_friction(const CamLubricationSpec& spec, const CamModel& m, const RollerDynamicsSettings& dynamics,
+                              RegimeFeedback* feedback) {
+  if (!spec.friction_by_regime) return m;
+  if (!spec.lubricant) throw std::invalid_argument("friction by regime: needs cam.lubricant");
+  const Revolution r = run_revolution(m);
+  if (r.status != RevolutionStatus::Complete)
+    throw std::runtime_error("friction by regime: the follower jumps; no film to take the friction from");
+  const PeriodicMotion motion = periodic_motion(m, r, dynamics);
+  if (!motion.converged)
+    throw std::runtime_error("friction by regime: the roller's motion with cam.mu is not periodic");
+  CamLubricationSpec film_only;
+  film_only.lubricant = spec.lubricant;
+  const RegimeFeedback f = regime_feedback(film_only, revolution_lubrication(film_only, m, r, motion.motion, dynamics.law));
+  CamModel out = m;
+  out.mu_by_step = f.mu;
+  if (feedback) *feedback = f;
+  return out;
+}
+
+CamWearLaws regime_wear_laws(CamWearLaws laws, const RegimeFeedback& f) {
+  laws.mu_by_step = f.mu;
+  laws.wear_factor_by_step = f.wear_factor;
+  return laws;
+}
+
+std::unique_ptr<CamLifeSetup> set_up_lubricated_cam_life(const std::string& name, const CamLubricationSpec& lubrication,
+                                                         const CamModel& m, const CamWearSpec& spec,
+                                                         const RollerDynamicsSettings& dynamics) {
+  if (!lubrication.friction_by_regime) return set_up_cam_life(name, m, spec, dynamics);
+  RegimeFeedback f;
+  const CamModel model = with_regime_friction(lubrication, m, dynamics, &f);
+  CamWearSpec s = spec;
+  s.laws = regime_wear_laws(s.laws, f);
+  return set_up_cam_life(name, model, s, dynamics);
+}
+
 std::string lubrication_summary(const CamLubricationSpec& spec, const RevolutionLubrication& l) {
   std::string out;
   if (l.angles.empty()) return out;
@@ -186,7 +238,22 @@ std::string lubrication_summary(const CamLubricationSpec& spec, const Revolution
                        l.regime_steps[static_cast<int>(contact::LubricationRegime::Boundary)],
                        l.regime_steps[static_cast<int>(contact::LubricationRegime::Mixed)],
                        l.regime_steps[static_cast<int>(contact::LubricationRegime::FullFilm)]);
-    out += "friction: the revolution's solves use cam.mu; the regime's mu and wear factor are reported per angle\n";
+    if (spec.friction_by_regime) {
+      const auto [mu_lo, mu_hi] = std::minmax_element(l.angles.begin(), l.angles.end(), [](const auto& x, const auto& y) {
+        return x.mu_used < y.mu_used;
+      });
+      const auto [wf_lo, wf_hi] = std::minmax_element(l.angles.begin(), l.angles.end(), [](const auto& x, const auto& y) {
+        return x.law.wear_factor < y.law.wear_factor;
+      });
+      out += fmt::format("friction by regime (load sharing, docs/lubrication-and-temperature.md §2): the solves use mu "
+                         "{:.4g} to {:.4g} (at {:.4g} and {:.4g} deg), the wear factor {:.4g} to {:.4g} (at {:.4g} and "
+                         "{:.4g} deg); the law on this motion's film differs from the mu used by {:.3g} at most\n",
+                         mu_lo->mu_used, mu_hi->mu_used, deg(mu_lo->theta_rad), deg(mu_hi->theta_rad),
+                         wf_lo->law.wear_factor, wf_hi->law.wear_factor, deg(wf_lo->theta_rad), deg(wf_hi->theta_rad),
+                         l.max_mu_mismatch);
+    } else {
+      out += "friction: the revolution's solves use cam.mu; the regime's mu and wear factor are reported per angle\n";
+    }
   }
   if (spec.thermal) {
     const AngleLubrication& t = l.angles[l.max_flash];
@@ -229,6 +296,7 @@ std::string lubrication_csv_header(const CamLubricationSpec& spec) {
   if (!spec.any()) return h;
   h += ",cam_surface_speed_m_per_s,roller_surface_speed_m_per_s,entrainment_m_per_s,Rx_m,ellipticity_k";
   if (spec.lubricant) h += ",h_min_m,h_central_m,lambda,lubrication_regime,regime_mu,regime_wear_factor";
+  if (spec.lubricant && spec.friction_by_regime) h += ",asperity_share,law_mu,mu_used,wear_factor_used";
   if (spec.thermal)
     h += ",heat_W,flash_max_K,heat_share_roller,peclet_roller,peclet_cam,transit_s,contact_temperature_C,"
          "scuffing_margin_K";
@@ -253,6 +321,8 @@ std::string lubrication_csv_cells(const CamLubricationSpec& spec, const AngleLub
     out += contact::to_string(a.regime);
     cell(out, a.regime_mu);
     cell(out, a.regime_wear_factor);
+    if (spec.friction_by_regime)
+      for (double v : {a.law.asperity_share, a.law.mu, a.mu_used, a.law.wear_factor}) cell(out, v);
   }
   if (spec.thermal)
     for (double v : {a.power_W, a.flash_max_K, a.heat_share_roller, a.peclet_roller, a.peclet_cam, a.transit_s,
@@ -281,6 +351,16 @@ std::string lubrication_report_text(const CamLubricationSpec& spec, const Revolu
                        l.regime_steps[static_cast<int>(contact::LubricationRegime::Boundary)],
                        l.regime_steps[static_cast<int>(contact::LubricationRegime::Mixed)],
                        l.regime_steps[static_cast<int>(contact::LubricationRegime::FullFilm)]);
+    if (spec.friction_by_regime) {
+      double mu_lo = l.angles[0].mu_used, mu_hi = mu_lo, wf_lo = l.angles[0].law.wear_factor, wf_hi = wf_lo;
+      for (const AngleLubrication& a : l.angles) {
+        mu_lo = std::min(mu_lo, a.mu_used), mu_hi = std::max(mu_hi, a.mu_used);
+        wf_lo = std::min(wf_lo, a.law.wear_factor), wf_hi = std::max(wf_hi, a.law.wear_factor);
+      }
+      out += fmt::format("min_mu_used: {:.6g}\nmax_mu_used: {:.6g}\nmin_wear_factor_used: {:.6g}\n"
+                         "max_wear_factor_used: {:.6g}\nmax_mu_mismatch: {:.6g}\n",
+                         mu_lo, mu_hi, wf_lo, wf_hi, l.max_mu_mismatch);
+    }
   }
   if (spec.thermal) {
     const AngleLubrication& t = l.angles[l.max_flash];
@@ -304,12 +384,12 @@ std::string lubrication_report_text(const CamLubricationSpec& spec, const Revolu
 }
 
 std::string first_failure_text(const CamLubricationSpec& spec, const RevolutionLubrication& l, bool wear_limit_reached,
-                               const std::string& wear_end, double life_revolutions) {
+                               const std::string& wear_end, double life_revolutions, bool damage_reached) {
   if (l.angles.empty()) return {};
   const bool fatigue = spec.fatigue.any();
   const double scuffing = spec.thermal ? l.angles[l.max_flash].scuffing_margin_K : AngleLubrication::kNaN;
   const bool has_scuffing = !std::isnan(scuffing);
-  if (!fatigue && !has_scuffing) return {};
+  if (!fatigue && !has_scuffing && !damage_reached) return {};
   const std::string fatigue_margin =
       fatigue ? fmt::format("shakedown margin {:.4g} ({} at {:.4g} deg)", l.min_shakedown_margin,
                             to_string(l.min_shakedown_body), deg(l.angles[l.min_shakedown_at].theta_rad))
@@ -317,9 +397,10 @@ std::string first_failure_text(const CamLubricationSpec& spec, const RevolutionL
   const std::string scuffing_margin = has_scuffing ? fmt::format("scuffing margin {:.4g} K at {:.4g} deg", scuffing,
                                                                  deg(l.angles[l.max_flash].theta_rad))
                                                    : "scuffing not assessed (no critical_temperature_C)";
-  const std::string wear = wear_limit_reached
-                               ? fmt::format("wear life {:.4g} revolutions ({})", life_revolutions, wear_end)
-                               : fmt::format("no wear limit within {:.4g} revolutions ({})", life_revolutions, wear_end);
+  const std::string wear =
+      wear_limit_reached ? fmt::format("wear life {:.4g} revolutions ({})", life_revolutions, wear_end)
+      : damage_reached   ? fmt::format("no wear limit before fatigue at {:.4g} revolutions", life_revolutions)
+                         : fmt::format("no wear limit within {:.4g} revolutions ({})", life_revolutions, wear_end);
   std::string mode, note, others;
   if (has_scuffing && scuffing < 0) {
     mode = "scuffing";
@@ -329,6 +410,10 @@ std::string first_failure_text(const CamLubricationSpec& spec, const RevolutionL
     mode = "surface-fatigue";
     note = "beyond shakedown: ratchetting/surface fatigue expected from the first revolutions";
     others = scuffing_margin + "; " + wear;
+  } else if (damage_reached) {
+    mode = "fatigue";
+    note = fmt::format("fatigue damage 1 (Miner) at {:.4g} revolutions, before any wear limit", life_revolutions);
+    others = fatigue_margin + "; " + scuffing_margin + "; " + wear;
   } else if (wear_limit_reached) {
     mode = "wear";
     note = fmt::format("the wear limit ({}) at {:.4g} revolutions, {} (margins of the unworn revolution)", wear_end,

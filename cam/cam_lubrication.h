@@ -21,6 +21,11 @@
 //                    indicators of lib/subsurface/shakedown.h (fatigue_indicators) on the angle's patch and the same
 //                    steady solution: mu_eff = |F_t|/F_n, p0, Johnson's shakedown margin (line or point contact by the
 //                    patch's b/a, shakedown_contact_of) and Ekberg's FI_surf, per body given
+//   friction by regime  with cam.lubricant.friction_by_regime: true, the regime law of lib/lubrication/regime.h
+//                    (Johnson, Greenwood and Poon's load sharing: mu and the wear factor from the asperity load share
+//                    f_a(lambda)) at each angle's lambda is fed back: the angle's mu reaches the roller's motion, the
+//                    transient, the tangential solves and the wear's k_E = K/(H mu), and its wear factor scales the
+//                    angle's wear (with_regime_friction, regime_wear_laws)
 // Without any of these keys nothing here runs and every output is the dry case's, byte for byte.
 #pragma once
 
@@ -30,8 +35,11 @@
 #include <string>
 #include <vector>
 
+#include "cam/cam_life.h"
+#include "cam/cam_wear.h"
 #include "cam/creep_law.h"
 #include "cam/revolution.h"
+#include "cam/roller_dynamics.h"
 #include "cam/roller_motion.h"
 #include "lib/io/case.h"
 #include "lib/subsurface/shakedown.h"
@@ -50,6 +58,7 @@ struct CamLubricationSpec {
   std::optional<contact::LubricantSection> lubricant;
   std::optional<contact::ThermalSection> thermal;
   CamFatigueSpec fatigue;
+  bool friction_by_regime = false;  // cam.lubricant.friction_by_regime: the regime law's mu and wear factor used
   bool any() const { return lubricant.has_value() || thermal.has_value() || fatigue.any(); }
 };
 
@@ -69,7 +78,9 @@ struct AngleLubrication {
   bool within_fit_range = true;  // k in Hamrock and Dowson's [1, 8]
   double lambda = kNaN;
   contact::LubricationRegime regime = contact::LubricationRegime::Boundary;
-  double regime_mu = kNaN, regime_wear_factor = kNaN;
+  double regime_mu = kNaN, regime_wear_factor = kNaN;  // the case's values of the angle's regime (per regime)
+  contact::RegimeFriction law;  // the regime law at lambda (lib/lubrication/regime.h regime_friction)
+  double mu_used = kNaN;        // the friction the revolution's solves used at this angle (mu_at)
   // with cam.thermal
   double power_W = kNaN;          // the steady solution's dissipated power: the heat
   double flash_max_K = kNaN;      // Blok's flash temperature (the maximum, equal on both surfaces)
@@ -92,6 +103,8 @@ struct RevolutionLubrication {
   std::size_t min_lambda = 0;
   std::array<int, 3> regime_steps{};
   int outside_fit_steps = 0;
+  // with friction_by_regime: the largest |law.mu - mu_used| over the angles (the feedback's one pass, below)
+  double max_mu_mismatch = 0;
   // with cam.thermal: the angle of the largest flash temperature, the least Peclet number of either surface, and
   // the quasi-steady measure: the largest change of the flash temperature during one passage (transit_s), over the
   // revolution's largest flash temperature (central differences over the angle steps)
@@ -121,6 +134,29 @@ AngleLubrication angle_lubrication(const CamLubricationSpec& spec, const CamMode
 RevolutionLubrication revolution_lubrication(const CamLubricationSpec& spec, const CamModel& m, const Revolution& r,
                                              const RollerMotion& motion, const CreepLawSettings& law);
 
+// cam.lubricant.friction_by_regime (docs/cam-follower.md §17): the regime law's mu and wear factor per angle step
+struct RegimeFeedback {
+  std::vector<double> mu, wear_factor, asperity_share;
+};
+// the law at each angle of l (regime_friction at its lambda, the case's boundary and full-film values)
+RegimeFeedback regime_feedback(const CamLubricationSpec& spec, const RevolutionLubrication& l);
+// The model whose solves use the regime's friction per angle step: the film on m's periodic revolution (its
+// revolution and the roller's motion with m's friction, dynamics as the case asks), the law's mu at each angle put in
+// m.mu_by_step. One pass: the film depends on the friction only through the roller's slip (u = V - w/2, w/V below
+// 1e-3 where the roller rolls) and the loads, so the film of the returned model's motion differs little; the
+// revolution's lubrication on that motion reports the difference (max_mu_mismatch). feedback (if given) receives
+// the law's values. Without friction_by_regime, m itself. Throws as run_revolution, periodic_motion and
+// revolution_lubrication; std::runtime_error for a jump or a motion that is not periodic.
+CamModel with_regime_friction(const CamLubricationSpec& spec, const CamModel& m, const RollerDynamicsSettings& dynamics,
+                              RegimeFeedback* feedback = nullptr);
+// the wear laws with the feedback's per-angle friction and wear factor (cam/cam_wear.h CamWearLaws)
+CamWearLaws regime_wear_laws(CamWearLaws laws, const RegimeFeedback& f);
+// the life's set-up (cam/cam_life.h set_up_cam_life) with the regime law fed back when lubrication asks for it: the
+// model with_regime_friction, the wear laws regime_wear_laws; else set_up_cam_life's own
+std::unique_ptr<CamLifeSetup> set_up_lubricated_cam_life(const std::string& name, const CamLubricationSpec& lubrication,
+                                                         const CamModel& m, const CamWearSpec& spec,
+                                                         const RollerDynamicsSettings& dynamics);
+
 // the printed lines (`rollwear cam`, `rollwear run`): the film's and the temperature's extremes and where
 std::string lubrication_summary(const CamLubricationSpec& spec, const RevolutionLubrication& l);
 // the per-angle columns added to a table: the header's part (",name,...") and a row's (",value,...")
@@ -134,8 +170,11 @@ std::string lubrication_report_text(const CamLubricationSpec& spec, const Revolu
 // first_failure among surface fatigue (the least shakedown margin < 0: ratchetting from the first revolutions),
 // scuffing (the Blok margin < 0: at the first pass of the hottest angle; named before fatigue when both are
 // exceeded) and the wear life (wear_limit_reached: the life ended at a wear limit after life_revolutions), with the
-// others' margins. Empty without a shear yield stress and without a scuffing margin (nothing to compare).
+// others' margins; damage_reached: the life ended at fatigue damage 1 (Miner, docs/cam-follower.md §19) after
+// life_revolutions, named after scuffing and surface fatigue (those are exceeded from the first revolutions) and in
+// place of the wear life. Empty without a shear yield stress, a scuffing margin or damage (nothing to compare).
 std::string first_failure_text(const CamLubricationSpec& spec, const RevolutionLubrication& l,
-                               bool wear_limit_reached, const std::string& wear_end, double life_revolutions);
+                               bool wear_limit_reached, const std::string& wear_end, double life_revolutions,
+                               bool damage_reached = false);
 
 }  // namespace cam

@@ -184,8 +184,27 @@ CamWearRate wear_per_revolution(const RevolutionDissipation& rev, const CamWearG
   Eigen::ArrayXd roller_energy = Eigen::ArrayXd::Zero(g.roller_cells);
   CamWearRate r;
   Eigen::ArrayXd lateral(g.track_cells);
+  // the regime law's weights per step (CamWearLaws): none, or f_k (energy) and f_k mu / mu_k (archard) per body
+  const bool weighted = !laws.mu_by_step.empty() || !laws.wear_factor_by_step.empty();
+  if (weighted && (laws.mu_by_step.size() != n || laws.wear_factor_by_step.size() != n))
+    throw std::invalid_argument(fmt::format("cam wear: the friction and wear factor per angle step have {} and {} "
+                                            "values for {} steps", laws.mu_by_step.size(),
+                                            laws.wear_factor_by_step.size(), n));
+  const auto weight = [&](const std::optional<wear::WearLaw>& law, std::size_t k) {
+    if (!law) return 0.0;
+    const double f = laws.wear_factor_by_step[k], mu_k = laws.mu_by_step[k];
+    if (!(f >= 0) || !std::isfinite(f) || !(mu_k > 0) || !std::isfinite(mu_k))
+      throw std::invalid_argument(fmt::format("cam wear: step {}: the wear factor must be >= 0 and the friction > 0, "
+                                              "got {} and {}", k, f, mu_k));
+    return law->law == wear::WearLawKind::Archard ? f * laws.mu / mu_k : f;
+  };
+  Eigen::ArrayXd roller_step = Eigen::ArrayXd::Zero(weighted ? g.roller_cells : 0);
   for (std::size_t k = 0; k < n; ++k) {
     const AngleDissipation& a = rev[k];
+    const double w_cam = weighted ? weight(laws.cam, k) : 1.0, w_roller = weighted ? weight(laws.roller, k) : 1.0;
+    // a weight of exactly 1 deposits the step's energy as the unweighted record does (the same sums, to the bit)
+    const bool roller_weighted = weighted && w_roller != 1.0;
+    if (roller_weighted) roller_step.setZero();
     const double arc_lo = a.cam_arc_m, arc_hi = k + 1 < n ? rev[k + 1].cam_arc_m : rev.front().cam_arc_m + L;
     const Eigen::ArrayXd edges = strip_edges(a.y_m);
     // the step's energy per strip (J), deposited laterally onto the track's and the roller's cells
@@ -197,11 +216,14 @@ CamWearRate wear_per_revolution(const RevolutionDissipation& rev, const CamWearG
       const double y0 = edges(j) + 0.5 * g.track_width_m, y1 = edges(j + 1) + 0.5 * g.track_width_m;
       r.track_energy_J += deposit(y0, y1, energy, g.track_cell_m(), g.track_cells, false, lateral.data());
       const double r0 = edges(j) + 0.5 * g.roller_width_m, r1 = edges(j + 1) + 0.5 * g.roller_width_m;
-      r.roller_energy_J += deposit(r0, r1, energy, g.roller_cell_m(), g.roller_cells, false, roller_energy.data());
+      r.roller_energy_J += deposit(r0, r1, energy, g.roller_cell_m(), g.roller_cells, false,
+                                   roller_weighted ? roller_step.data() : roller_energy.data());
     }
+    if (roller_weighted) roller_energy += w_roller * roller_step;
     // then along the arc the step's contact swept, per lateral cell
     for (int j = 0; j < g.track_cells; ++j)
-      if (lateral(j) > 0) deposit(arc_lo, arc_hi, lateral(j), g.arc_cell_m(), g.arc_cells, true, &track_energy(0, j));
+      if (lateral(j) > 0)
+        deposit(arc_lo, arc_hi, w_cam * lateral(j), g.arc_cell_m(), g.arc_cells, true, &track_energy(0, j));
   }
   // energies (J per cell) -> per unit width of the cell, then the wear law
   track_energy /= g.track_cell_m();

@@ -76,9 +76,14 @@ void check_grid(const CamWearGrid& g);
 Eigen::ArrayXd cell_angles_rad(const CamWearGrid& g, const RevolutionDissipation& rev);
 
 // which bodies wear, and by which law (archard reads mu, the roller-cam friction)
+// With the lubricant's regime law fed back (cam/cam_lubrication.h, regime_wear_laws), per angle step k of the
+// revolution's record: the friction mu_k its solves used and the factor f_k on the wear coefficient; the step's
+// energy then wears f_k times as much, and under archard (k_E = K/(H mu)) with its own mu_k: its energy is weighted
+// by f_k mu / mu_k before the law's k_E at mu. Empty: mu and factor 1 at every step.
 struct CamWearLaws {
   std::optional<wear::WearLaw> cam, roller;
   double mu = 0;
+  std::vector<double> mu_by_step, wear_factor_by_step;  // both empty, or one per angle step of the record
 };
 
 // the worn state: depths (m, into the material) on the grid's cells

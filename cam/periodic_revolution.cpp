@@ -40,7 +40,9 @@ void lubricate(CamRun& run, const CamModel& m, const CamSolverSettings& s) {
 }
 }  // namespace
 
-CamRun run_cam(const CamModel& m, const CamSolverSettings& s, const CamLubricationSpec& lubrication) {
+CamRun run_cam(const CamModel& dry, const CamSolverSettings& s, const CamLubricationSpec& lubrication) {
+  // with cam.lubricant.friction_by_regime, the regime law's friction per angle step (cam/cam_lubrication.h)
+  const CamModel m = with_regime_friction(lubrication, dry, roller_dynamics_of(s));
   CamRun run;
   run.lubrication_spec = lubrication;
   run.revolution = run_revolution(m);
@@ -54,6 +56,7 @@ CamRun run_cam(const CamModel& m, const CamSolverSettings& s, const CamLubricati
                                        run.motion.tolerance_rad_per_s));
   double t1 = cpu_s();
   run.mu = m.mu;
+  run.mu_by_step = m.mu_by_step;
   for (std::size_t i = 0; i < run.revolution.rows.size(); ++i) {
     const RollerAngle& a = run.motion.motion.angles[i];
     run.loads.push_back(cam_loads_with_tangential(m.train, m.geometry, run.revolution.rows[i].kin, m.omega_rad_per_s,
@@ -146,7 +149,7 @@ std::string revolution_csv(const CamRun& run) {
     w.contact.b_m = run.transient.b_m[i];
     w.contact.p0_Pa = run.transient.p0_Pa[i];
     w.contact.xi = a.xi;
-    w.contact.linear_range = std::abs(a.tangential_N) <= kLinearRangeFraction * run.mu * a.normal_N;
+    w.contact.linear_range = std::abs(a.tangential_N) <= kLinearRangeFraction * (run.mu_by_step.empty() ? run.mu : run.mu_by_step[i]) * a.normal_N;
     w.kin.roller_omega_rad_per_s = a.omega_r_rad_per_s;
   }
   const std::string base = revolution_csv(copy);

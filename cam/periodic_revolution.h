@@ -38,6 +38,7 @@ struct CamRun {
   PeriodicMotion motion;               // empty on Jump
   std::vector<CamLoads> loads;         // per row with the motion's creep force (cam_loads_with_tangential)
   double mu = 0;
+  std::vector<double> mu_by_step;      // the friction per angle step (CamModel::mu_by_step), empty: mu
   TransientRevolution transient;       // with the skip (as the settings ask)
   TransientRevolution full;            // without it (compare_full_transient), else empty
   SkipComparison skip;                 // transient against full

@@ -14,8 +14,23 @@ namespace cam {
 
 const char* to_string(RevolutionStatus s) { return s == RevolutionStatus::Complete ? "complete" : "jump"; }
 
+double mu_at(const CamModel& m, std::size_t i) {
+  if (m.mu_by_step.empty()) return m.mu;
+  if (m.mu_by_step.size() != static_cast<std::size_t>(m.angle_steps) || i >= m.mu_by_step.size())
+    throw std::invalid_argument(fmt::format("the friction per angle step: {} values for {} angle steps (step {})",
+                                            m.mu_by_step.size(), m.angle_steps, i));
+  return m.mu_by_step[i];
+}
+
 Revolution run_revolution(const CamModel& m) {
   check_geometry(m.geometry, m.omega_rad_per_s);
+  if (!m.mu_by_step.empty()) {
+    if (m.mu_by_step.size() != static_cast<std::size_t>(m.angle_steps))
+      throw std::invalid_argument(fmt::format("the friction per angle step: {} values for {} angle steps",
+                                              m.mu_by_step.size(), m.angle_steps));
+    for (const double mu : m.mu_by_step)
+      if (!(mu >= 0 && mu <= 2)) throw std::invalid_argument("the friction per angle step must be in [0, 2]");
+  }
   check_train(m.train);
   if (m.angle_steps < 8) throw std::invalid_argument("angle_steps must be >= 8");
   Revolution r;
@@ -49,14 +64,14 @@ Revolution run_revolution(const CamModel& m) {
                                  "longer rise",
                                  theta * kDegPerRad, k.pressure_angle_rad * kDegPerRad, m.max_pressure_angle_rad,
                                  m.max_pressure_angle_rad * kDegPerRad));
-    row.loads = cam_loads(m.train, m.geometry, k, m.omega_rad_per_s, m.mu);
+    row.loads = cam_loads(m.train, m.geometry, k, m.omega_rad_per_s, mu_at(m, i));
     if (row.loads.contact_lost) {  // the guide or the roller's friction can lose contact below omega_jump
       r.status = RevolutionStatus::Jump;
       r.jump_at_theta_rad = theta;
       r.rows.clear();
       return r;
     }
-    row.contact = roller_contact(m.bodies, profiles, Rr, k, row.loads, m.mu);
+    row.contact = roller_contact(m.bodies, profiles, Rr, k, row.loads, mu_at(m, i));
     if (row.loads.regime == RollerRegime::Sliding) ++r.sliding_steps;
     else if (!row.contact.linear_range) ++r.outside_linear_steps;
     if (row.contact.reaches_edge) ++r.edge_steps;

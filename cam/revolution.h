@@ -20,10 +20,17 @@ struct CamModel {
   RollerAndTrack bodies;
   double omega_rad_per_s = 0;
   double mu = 0;                     // roller-cam friction
+  // the friction per angle step (cam.lubricant.friction_by_regime: the regime law's mu at each angle's film,
+  // cam/cam_lubrication.h); empty: mu at every angle
+  std::vector<double> mu_by_step;
   double min_radius_m = 0;           // convex pitch curve: rho_pitch - R_r must be >= this
   double max_pressure_angle_rad = 0; // |phi| must be <= this
   int angle_steps = 720;
 };
+
+// the friction at angle step i: mu_by_step[i], or mu when it is empty. Throws std::invalid_argument when
+// mu_by_step is neither empty nor one per angle step.
+double mu_at(const CamModel& m, std::size_t i);
 
 struct RevolutionRow {
   CamKinematics kin;

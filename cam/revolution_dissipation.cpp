@@ -55,7 +55,7 @@ RevolutionDissipation revolution_dissipation(const CamModel& m, const Revolution
   out.reserve(r.rows.size());
   for (std::size_t i = 0; i < r.rows.size(); ++i) {
     const AngleContact c = angle_contact(m.bodies, profiles, m.geometry.roller_radius_m, r.rows[i].kin,
-                                         motion.angles[i].normal_N, m.mu, s);
+                                         motion.angles[i].normal_N, mu_at(m, i), s);
     RollerAngle roller = motion.angles[i];
     if (!own_creepage) {  // the creepage that carries the motion's F_t with this law, on this contact
       const CreepageForForce xi = creepage_for_force(c, roller.tangential_N);

@@ -233,7 +233,7 @@ TransientRevolution transient_revolution(const CamModel& m, const Revolution& r,
   std::vector<AngleContact> contacts(n);
   for (std::size_t i = 0; i < n; ++i)
     contacts[i] =
-        contact_from_hertz(m.bodies, profiles, f, Rr, r.rows[i].kin, hertz[i], m.mu, s.heathcote_slip, g, s.scheme);
+        contact_from_hertz(m.bodies, profiles, f, Rr, r.rows[i].kin, hertz[i], mu_at(m, i), s.heathcote_slip, g, s.scheme);
   if (contact::tangential_traits(s.scheme).relaxes_steady_law) {  // the relaxed model: its rows' steady solves
     relaxed_rows(contacts, r, motion.angles, dt_row, s, out);
     return out;
@@ -374,7 +374,7 @@ TransientRevolution worn_transient_revolution(const CamModel& m, const Revolutio
   for (std::size_t i = 0; i < n; ++i) {
     const RevolutionRow& row = r.rows[i];
     const contact::Profiles profiles = worn_profiles_at(unworn, g, worn, row.contact_arc_m);
-    contacts[i] = angle_contact(m.bodies, profiles, m.geometry.roller_radius_m, row.kin, rollers[i].normal_N, m.mu,
+    contacts[i] = angle_contact(m.bodies, profiles, m.geometry.roller_radius_m, row.kin, rollers[i].normal_N, mu_at(m, i),
                                 fixed);
     const CreepageForForce xi = creepage_for_force(contacts[i], rollers[i].tangential_N);
     if (xi.found) {
@@ -408,7 +408,7 @@ TransientRevolution quasi_steady_revolution(const CamModel& m, const Revolution&
   for (std::size_t i = 0; i < n; ++i) {
     const RevolutionRow& row = r.rows[i];
     RollerAngle a = motion.angles[i];
-    const AngleContact c = angle_contact(m.bodies, profiles, m.geometry.roller_radius_m, row.kin, a.normal_N, m.mu, law);
+    const AngleContact c = angle_contact(m.bodies, profiles, m.geometry.roller_radius_m, row.kin, a.normal_N, mu_at(m, i), law);
     if (!own_creepage) {
       const CreepageForForce xi = creepage_for_force(c, a.tangential_N);
       out.creep_evaluations += xi.evaluations;

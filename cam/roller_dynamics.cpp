@@ -100,7 +100,7 @@ PeriodicMotion periodic_motion(const CamModel& m, const Revolution& r, const Rol
   // the start: the quasi-static slip at row 0 where the law can give the force rolling needs, else none
   double delta0 = 0;
   {
-    const AngleContact c0 = angle_contact(m.bodies, profiles, Rr, r.rows[0].kin, normal[0], m.mu, law);
+    const AngleContact c0 = angle_contact(m.bodies, profiles, Rr, r.rows[0].kin, normal[0], mu_at(m, 0), law);
     const CreepageForForce q = creepage_for_force(c0, r.rows[0].loads.required_tangential_N);
     evaluations += q.evaluations;
     if (q.found) {
@@ -112,7 +112,7 @@ PeriodicMotion periodic_motion(const CamModel& m, const Revolution& r, const Rol
   double previous_last = 0;  // delta at row n-1 of the previous revolution
   for (int rev = 1; rev <= s.max_revolutions; ++rev) {
     for (std::size_t i = 0; i < n; ++i)
-      contacts[i] = angle_contact(m.bodies, profiles, Rr, r.rows[i].kin, normal[i], m.mu, law);
+      contacts[i] = angle_contact(m.bodies, profiles, Rr, r.rows[i].kin, normal[i], mu_at(m, i), law);
     // row 0 holds the start; rows 1..n-1 and row 0 again (2 pi) are step ends
     // BDF2 but for the very first step (no history yet); later revolutions take the step before 0 from the
     // previous one's last row

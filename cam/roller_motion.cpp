@@ -19,19 +19,20 @@ RollerMotion quasi_static_motion(const CamModel& m, const Revolution& r, const C
   const double Rr = m.geometry.roller_radius_m;
   RollerMotion motion;
   motion.angles.reserve(r.rows.size());
-  for (const RevolutionRow& row : r.rows) {
+  for (std::size_t i = 0; i < r.rows.size(); ++i) {
+    const RevolutionRow& row = r.rows[i];
     if (row.loads.regime == RollerRegime::Sliding)
       throw std::invalid_argument(fmt::format("the roller slides at cam angle {:.6g} deg: its slip comes from its "
                                               "dynamics, not from the quasi-static law",
                                               row.kin.theta_rad * kDegPerRad));
-    const AngleContact c = angle_contact(m.bodies, profiles, Rr, row.kin, row.loads.normal_N, m.mu, s);
+    const AngleContact c = angle_contact(m.bodies, profiles, Rr, row.kin, row.loads.normal_N, mu_at(m, i), s);
     const CreepageForForce inv = creepage_for_force(c, row.loads.tangential_N);
     motion.creep_law_evaluations += inv.evaluations + 1;
     if (!inv.found)
       throw std::invalid_argument(fmt::format("at cam angle {:.6g} deg the steady creep law cannot give F_t = {:.6g} N "
                                               "(mu F_n = {:.6g} N): the roller slides",
                                               row.kin.theta_rad * kDegPerRad, row.loads.tangential_N,
-                                              m.mu * row.loads.normal_N));
+                                              mu_at(m, i) * row.loads.normal_N));
     RollerAngle a;
     a.xi = inv.xi;
     // w = xi V with V = V_cam - w/2

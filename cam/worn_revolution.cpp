@@ -51,7 +51,8 @@ WornRevolution::WornRevolution(const CamModel& m, const Revolution& r, const Rol
                                   same(x.tangential_N, y.tangential_N) && same(x.xi, y.xi) &&
                                   same(x.speed_m_per_s, y.speed_m_per_s) &&
                                   same(x.slip_speed_m_per_s, y.slip_speed_m_per_s) &&
-                                  same(a.row.kin.rolling_speed_m_per_s, p.row.kin.rolling_speed_m_per_s);
+                                  same(a.row.kin.rolling_speed_m_per_s, p.row.kin.rolling_speed_m_per_s) &&
+                                  same(mu_at(model_, i), mu_at(model_, i - 1));
       if (a.same_inputs_as_previous) ++stats_.same_input_angles;
     }
   }
@@ -179,7 +180,7 @@ RevolutionDissipation WornRevolution::operator()(const CamWearState& s) {
     }
     AngleContact c;
     try {
-      c = angle_contact(model_.bodies, worn, model_.geometry.roller_radius_m, a.row.kin, a.roller.normal_N, model_.mu,
+      c = angle_contact(model_.bodies, worn, model_.geometry.roller_radius_m, a.row.kin, a.roller.normal_N, mu_at(model_, i),
                         law);
     } catch (const contact::NormalSolveError&) {
       // a warm-started search that does not converge (F(delta) bends or jumps between the start and the
@@ -188,7 +189,7 @@ RevolutionDissipation WornRevolution::operator()(const CamWearState& s) {
       ++stats_.cold_retries;
       law.initial_approach_m = 0;
       law.initial_slope = 0;
-      c = angle_contact(model_.bodies, worn, model_.geometry.roller_radius_m, a.row.kin, a.roller.normal_N, model_.mu,
+      c = angle_contact(model_.bodies, worn, model_.geometry.roller_radius_m, a.row.kin, a.roller.normal_N, mu_at(model_, i),
                         law);
     }
     ++stats_.contacts_solved;

@@ -135,7 +135,8 @@ std::unique_ptr<cam::CamLifeSetup> set_up_life(const cam::CamCase& c) {
   const cam::CamModel& m = c.model;
   std::unique_ptr<cam::CamLifeSetup> setup;
   try {
-    setup = cam::set_up_cam_life(c.name, m, *c.wear, cam::roller_dynamics_of(c.solver));
+    // with cam.lubricant.friction_by_regime the regime law's friction and wear factor per angle (cam/cam_lubrication.h)
+    setup = cam::set_up_lubricated_cam_life(c.name, c.lubrication, m, *c.wear, cam::roller_dynamics_of(c.solver));
   } catch (const cam::CamError& e) {
     throw cam::case_error_of(c, e);
   }
@@ -297,11 +298,11 @@ LifeRunEnd run_cam_life_in_folder(const LifeRunOptions& o) {
                                                        o.resume, earlier_cpu_s + cpu_seconds() - cpu0) +
                              cam::cam_damage_report_text(life_model, life) +
                              cam::lubrication_report_text(c.lubrication, lubrication) +
-                             (life.ended_by == wear::LifeEnd::Fatigue ? std::string() :  // not a margin's mode
                              cam::first_failure_text(c.lubrication, lubrication,
                                                      life.ended_by == wear::LifeEnd::MaxDepth ||
                                                          life.ended_by == wear::LifeEnd::LiftLoss,
-                                                     wear::to_string(life.ended_by), life.N));
+                                                     wear::to_string(life.ended_by), life.N,
+                                                     life.ended_by == wear::LifeEnd::Fatigue);
   if (life.ended_by == wear::LifeEnd::Failed && life.steps > 0 && last.x.size() > 0) {
     save({});  // the last accepted step: --resume continues from there (e.g. with other settings)
     spdlog::error("run: the life failed after step {}; its state is saved in {}", last.steps,

@@ -180,6 +180,19 @@ TEST_F(CamFatigue, FirstFailureNamesTheExceededMode) {
   EXPECT_EQ(first(-0.1, 20, true), "first_failure: surface-fatigue");
   EXPECT_EQ(first(-0.1, -5, true), "first_failure: scuffing");
   EXPECT_EQ(first(0.5, -5, false), "first_failure: scuffing");
+  // a life ended by fatigue damage 1: named after the margins exceeded from the start, in place of the wear life
+  const auto by_damage = [&](double shakedown, double scuffing) {
+    l.min_shakedown_margin = shakedown;
+    l.angles[1].scuffing_margin_K = scuffing;
+    return lines_of(cam::first_failure_text(spec, l, false, "fatigue", 2e9, true));
+  };
+  EXPECT_EQ(by_damage(0.5, 20).at(0), "first_failure: fatigue");
+  EXPECT_EQ(by_damage(0.5, 20).at(2), "other_margins: shakedown margin 0.5 (cam at 114.6 deg); scuffing margin 20 K "
+                                      "at 57.3 deg; no wear limit before fatigue at 2e+09 revolutions");
+  EXPECT_EQ(by_damage(-0.1, 20).at(0), "first_failure: surface-fatigue");
+  EXPECT_EQ(by_damage(0.5, -5).at(0), "first_failure: scuffing");
+  EXPECT_EQ(lines_of(cam::first_failure_text(cam::CamLubricationSpec{}, l, false, "fatigue", 2e9, true)).at(0),
+            "first_failure: fatigue");
   const std::string t = cam::first_failure_text(spec, l, true, "max-depth", 3e9);
   EXPECT_NE(t.find("other_margins: shakedown margin 0.5 (cam at 114.6 deg); wear life 3e+09 revolutions (max-depth)"),
             std::string::npos) << t;

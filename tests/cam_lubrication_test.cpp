@@ -86,9 +86,11 @@ TEST_F(CamLubrication, DryOutputsUnchangedAndTheLubricatedColumnsChangeNoOther) 
   // the same solve with no spec at all (the call every other caller makes): the same bytes
   EXPECT_EQ(cam::revolution_csv(cam::run_cam(dry.model, dry.solver)), dry_csv);
 
+  // the shipped lubricated case feeds the regime law back (friction_by_regime): boundary at every angle, mu_b = cam.mu,
+  // so its columns are still the dry run's to the byte
   const std::string lubricated_text = coarse("cam-follower-lubricated.yaml");
   const cam::CamCase lub = cam::read_cam_case(write(dir_ / "lub.yaml", lubricated_text).string());
-  ASSERT_TRUE(lub.lubrication.lubricant && lub.lubrication.thermal);
+  ASSERT_TRUE(lub.lubrication.lubricant && lub.lubrication.thermal && lub.lubrication.friction_by_regime);
   const cam::CamRun l = cam::run_cam(lub.model, lub.solver, lub.lubrication);
   const cam::CamRun l_dry = cam::run_cam(lub.model, lub.solver);
   const std::string with = cam::revolution_csv(l), without = cam::revolution_csv(l_dry);
@@ -96,10 +98,11 @@ TEST_F(CamLubrication, DryOutputsUnchangedAndTheLubricatedColumnsChangeNoOther) 
   EXPECT_EQ(first_columns(with, base_columns), without);
   EXPECT_EQ(lines_of(with).at(0).substr(lines_of(without).at(0).size()),
             ",cam_surface_speed_m_per_s,roller_surface_speed_m_per_s,entrainment_m_per_s,Rx_m,ellipticity_k,h_min_m,"
-            "h_central_m,lambda,lubrication_regime,regime_mu,regime_wear_factor,heat_W,flash_max_K,heat_share_roller,"
+            "h_central_m,lambda,lubrication_regime,regime_mu,regime_wear_factor,asperity_share,law_mu,mu_used,"
+            "wear_factor_used,heat_W,flash_max_K,heat_share_roller,"
             "peclet_roller,peclet_cam,transit_s,contact_temperature_C,scuffing_margin_K,traction_coefficient,p0_Pa,"
             "shakedown_contact,shakedown_margin_roller,fi_surf_roller,shakedown_margin_cam,fi_surf_cam");
-  for (const std::string& line : lines_of(with)) EXPECT_EQ(cells_in(line), base_columns + 26) << line;
+  for (const std::string& line : lines_of(with)) EXPECT_EQ(cells_in(line), base_columns + 30) << line;
   // the summary's lines come after the dry summary's, which they leave as it was
   const std::regex cpu("[0-9.e+-]+ s CPU");
   const std::string summary = std::regex_replace(cam::cam_summary(l), cpu, "s CPU"),
@@ -234,14 +237,19 @@ TEST_F(CamLubrication, BadKeysNameFileLineAndKey) {
   write(p, t);
   e = error_of(p);
   EXPECT_NE(e.find("cam.thermal.critical_temperature_C: Blok's criterion is on bulk + flash"), std::string::npos) << e;
-  // the regime's friction asked for the solves: refused at its line, saying what the revolution does instead
-  t = coarse("cam-follower-lubricated.yaml", "    viscosity_Pa_s: 0.009",
-             "    friction_by_regime: true\n    viscosity_Pa_s: 0.009");
+  // the regime's friction fed back: not a bool at its line; a full-film mu of 0 (the solves' mu and archard's
+  // K/(H mu) need mu > 0) at the friction's line
+  t = coarse("cam-follower-lubricated.yaml", "    friction_by_regime: true ", "    friction_by_regime: yes please ");
   write(p, t);
   e = error_of(p);
-  EXPECT_EQ(e.rfind(fmt::format("{}:{}:", p.string(), line_of(t, "friction_by_regime: true")), 0), 0u) << e;
-  EXPECT_NE(e.find("cam.lubricant.friction_by_regime: not built: the revolution's solves and the wear use cam.mu"),
-            std::string::npos) << e;
+  EXPECT_EQ(e.rfind(fmt::format("{}:{}:", p.string(), line_of(t, "friction_by_regime: yes please")), 0), 0u) << e;
+  EXPECT_NE(e.find("cam.lubricant.friction_by_regime: expected true or false"), std::string::npos) << e;
+  t = coarse("cam-follower-lubricated.yaml", "full_film: 0.03 }", "full_film: 0 }");
+  write(p, t);
+  e = error_of(p);
+  EXPECT_EQ(e.rfind(fmt::format("{}:{}:", p.string(), line_of(t, "    friction: ")), 0), 0u) << e;
+  EXPECT_NE(e.find("cam.lubricant.friction: full_film: with friction_by_regime the solves use it as cam.mu: must be in "
+                   "(0, 2], got 0"), std::string::npos) << e;
   // a thermal body's property missing: at the body's mapping
   t = coarse("cam-follower-lubricated.yaml", "    body2: { conductivity_W_per_m_K: 46, ", "    body2: { ");
   write(p, t);

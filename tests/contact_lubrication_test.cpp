@@ -125,9 +125,12 @@ TEST(ContactLubrication, TransientRefusesTheSectionsItDoesNotUse) {
   }
 }
 
-TEST(ContactLubrication, WearRunRefusesTheSectionsItDoesNotUse) {
-  // the lubricated case with the wear section of cases/paper-wear.yaml (profiles left out: radii only)
+TEST(ContactLubrication, WearRunRefusesTheLubricantWithATransientDutyCycle) {
+  // the lubricated case with the wear section of cases/paper-wear.yaml (profiles left out: radii only) and a
+  // transient duty cycle: the film needs one entrainment speed (a steady duty cycle takes the lubricant,
+  // tests/wear_lubrication_test.cpp)
   const std::string text = text_of(kCase) +
+                           "transient: { scheme: shift, t_end_s: 1.0e-4 }\n"
                            "wear:\n"
                            "  body1: { law: archard, archard_k: 1.0e-4, hardness_Pa: 6.0e9 }\n"
                            "  revolutions: 1.0e10\n";
@@ -135,7 +138,7 @@ TEST(ContactLubrication, WearRunRefusesTheSectionsItDoesNotUse) {
     wear::read_wear_case_text(text, "case.yaml", ".");
     ADD_FAILURE() << "no error";
   } catch (const CaseError& e) {
-    EXPECT_NE(std::string(e.what()).find("lubricant: the 'run' command does not use this section"),
+    EXPECT_NE(std::string(e.what()).find("lubricant, transient: a wear run takes the film of a steady duty cycle"),
               std::string::npos) << e.what();
   }
 }

@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 namespace contact {
@@ -121,6 +122,58 @@ TEST(LubricationRegime, FilmParameterAndRegimeFollowTheThresholds) {
   EXPECT_EQ(regime_of(1.5, {2, 4}), LubricationRegime::Boundary);
   EXPECT_THROW(regime_of(1, {3, 2}), std::invalid_argument);
   EXPECT_THROW(film_parameter(1e-6, -1e-7, 0), std::invalid_argument);
+}
+
+// The regime law (Johnson, Greenwood and Poon's load sharing with the cubic share across the mixed band,
+// docs/lubrication-and-temperature.md §2): its limits are the case's boundary and full-film values exactly, it is
+// continuous at both thresholds with a zero slope (C1), and in between the share is the cubic's (a closed form).
+TEST(LubricationRegime, LoadSharingLawGivesTheBoundaryAndFullFilmValuesInTheirLimits) {
+  RegimeCoefficients c;
+  c.mu = {0.12, 0.07, 0.02};
+  c.wear_factor = {1.0, 0.3, 0.05};
+  // lambda -> 0 and up to lambda_mixed: the boundary values, to the bit
+  for (const double lambda : {0.0, 1e-9, 0.5, 1.0}) {
+    const RegimeFriction r = regime_friction(lambda, c);
+    EXPECT_EQ(r.asperity_share, 1.0) << lambda;
+    EXPECT_EQ(r.mu, 0.12) << lambda;
+    EXPECT_EQ(r.wear_factor, 1.0) << lambda;
+  }
+  // lambda large (from lambda_full_film on, and smooth surfaces' infinite lambda): the full-film values
+  for (const double lambda : {3.0, 3.5, 100.0, std::numeric_limits<double>::infinity()}) {
+    const RegimeFriction r = regime_friction(lambda, c);
+    EXPECT_EQ(r.asperity_share, 0.0) << lambda;
+    EXPECT_EQ(r.mu, 0.02) << lambda;
+    EXPECT_EQ(r.wear_factor, 0.05) << lambda;
+  }
+  // the middle of the mixed band: share 1/2, the mean of the two values (the cubic is symmetric)
+  const RegimeFriction m = regime_friction(2.0, c);
+  EXPECT_NEAR(m.asperity_share, 0.5, 1e-15);
+  EXPECT_NEAR(m.mu, 0.07, 1e-15);
+  EXPECT_NEAR(m.wear_factor, 0.525, 1e-15);
+  // t = 1/4 of the band: 1 - 3/16 + 2/64 = 0.84375
+  EXPECT_NEAR(asperity_load_share(1.5), 0.84375, 1e-15);
+  EXPECT_NEAR(asperity_load_share(3.0, {2, 4}), 0.5, 1e-15);
+  // C1 at both thresholds: the share's slope over 1e-6 of lambda is of order 1e-6
+  for (const double at : {1.0, 3.0}) {
+    EXPECT_LT(std::abs(asperity_load_share(at + 1e-6) - asperity_load_share(at - 1e-6)), 1e-11) << at;
+  }
+  // monotone: the asperities' share falls as the film thickens
+  double previous = 1;
+  for (double lambda = 0; lambda <= 4; lambda += 0.01) {
+    const double f = asperity_load_share(lambda);
+    EXPECT_LE(f, previous) << lambda;
+    previous = f;
+  }
+  // the library's checks: lambda, thresholds, coefficients
+  EXPECT_THROW(asperity_load_share(-0.1), std::invalid_argument);
+  EXPECT_THROW(asperity_load_share(std::nan("")), std::invalid_argument);
+  EXPECT_THROW(asperity_load_share(1, {3, 2}), std::invalid_argument);
+  RegimeCoefficients bad = c;
+  bad.mu[2] = -0.1;
+  EXPECT_THROW(regime_friction(1, bad), std::invalid_argument);
+  bad = c;
+  bad.wear_factor[0] = std::numeric_limits<double>::infinity();
+  EXPECT_THROW(regime_friction(1, bad), std::invalid_argument);
 }
 
 }  // namespace

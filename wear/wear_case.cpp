@@ -189,11 +189,21 @@ void validate(const WearCase& c) {
   using contact::where;
   const contact::ContactCase& k = c.contact;
   const WearSection& w = c.wear;
-  // the wear loop does not take the lubrication regime yet; the flash temperature (thermal:) it computes per
-  // evaluation of a steady duty cycle (the scuffing margin, docs/fatigue.md)
+  // the lubricant's regime law sets the life's mu and wear factor from the film of the steady unworn contact
+  // (docs/lubrication-and-temperature.md §2); the flash temperature (thermal:) it computes per evaluation of a steady
+  // duty cycle (the scuffing margin, docs/fatigue.md)
+  if (k.lubricant && k.transient)
+    throw key_error(k, "lubricant", "lubricant, transient: a wear run takes the film of a steady duty cycle (one "
+                    "entrainment speed); remove the lubricant: section or the transient: one");
   if (k.lubricant)
-    throw key_error(k, "lubricant", "lubricant: the 'run' command does not use this section yet (the film, the regime "
-                    "and the flash temperature are reported by 'contact'); remove it");
+    for (const auto& [key, law] : {std::pair{"wear.body1.law", &w.body1}, std::pair{"wear.body2.law", &w.body2}})
+      if (*law && ((*law)->law == WearLawKind::Kth || (*law)->law == WearLawKind::Usfd))
+        throw key_error(k, key, std::string(key) + ", lubricant: the " + to_string((*law)->law) + " law's map is "
+                        "measured on dry contacts; with a lubricant use energy or archard (their coefficient is "
+                        "scaled by the regime's wear factor)");
+  if (k.lubricant && !(contact::speed_of(k) > 0))
+    throw key_error(k, "kinematics.speed_m_per_s", "kinematics.speed_m_per_s, lubricant: the film needs an "
+                    "entrainment speed V > 0");
   if (k.thermal && k.transient)
     throw key_error(k, "thermal", "thermal, transient: a wear run computes the flash temperature of a steady duty "
                     "cycle; remove the thermal: section or the transient: one");

@@ -110,7 +110,8 @@ Eigen::ArrayXd node_depth_per_cycle(const WearModel& m, int body, const WearLaw&
   duty.mu = m.mu;
   duty.strip_energy_J_per_m = d.strip_energy_J_per_m;
   duty.stretches = d.stretches;
-  const Eigen::ArrayXd strips = depth_per_duty_cycle(law, duty);
+  const Eigen::ArrayXd strips =
+      m.lubrication ? Eigen::ArrayXd(m.wear_factor * depth_per_duty_cycle(law, duty)) : depth_per_duty_cycle(law, duty);
   const contact::Profile& p = profile_of(m, body);
   return smooth_conserving(strips_to_nodes(strips, strip_y0_m, dy_m, p.y_m), body == 1 ? m.smoothing1 : m.smoothing2);
 }
@@ -180,6 +181,14 @@ WearModel make_own_model(const WearCase& c) {
   m.normal_choice = k.solver.normal;  // auto, semi-hertz or halfspace (validate)
   m.normal_load_N = k.load.normal_load_N.value.front();
   m.mu = k.friction.mu;
+  if (k.lubricant) {  // the regime law's mu and wear factor on the unworn contact's film (validate: steady running)
+    contact::ContactCase unworn = k;
+    unworn.solver.normal = contact::NormalChoice::Auto;  // the same film for the exact physics' models
+    m.lubrication = contact::lubrication_of(k, contact::solve_normal_of(unworn).patch);
+    m.regime = contact::regime_friction(m.lubrication->lambda, k.lubricant->by_regime, k.lubricant->thresholds);
+    m.mu = m.regime.mu;
+    m.wear_factor = m.regime.wear_factor;
+  }
   m.scheme = k.solver.tangential;  // one the duty cycle can run (validate)
   m.steady_options.grid_extrapolation = k.solver.grid_extrapolation && m.scheme == contact::TangentialScheme::Exact;
   if (k.solver.grid_extrapolation && k.transient)

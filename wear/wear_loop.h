@@ -35,6 +35,8 @@
 #include "lib/tangential/tangential.h"
 #include "lib/fidelity.h"
 #include "lib/io/case.h"
+#include "lib/io/case_run.h"
+#include "lib/lubrication/regime.h"
 #include "lib/model/contact_model.h"
 #include "wear/dang_van_life.h"
 #include "wear/fatigue.h"
@@ -109,6 +111,12 @@ struct WearModel {
   double damage_scale_m = 0;
   // the shakedown limit (wear.limits.shakedown): the reference body's shear yield stress k; 0 = not given
   double shear_yield_Pa = 0;
+  // with the case's lubricant: (docs/lubrication-and-temperature.md §2, "In a life"): the film of the unworn contact
+  // (the case's speed, load and profiles, the normal solver auto's patch), the regime law at its lambda; its mu is mu
+  // above, and its wear factor multiplies the laws' depths per duty cycle. A collective's conditions each their own.
+  std::optional<contact::ContactLubrication> lubrication;
+  contact::RegimeFriction regime;
+  double wear_factor = 1;
   // the flash temperature of a steady duty cycle (the case's thermal: section; lib/thermal), and the surfaces' speeds
   std::optional<contact::ThermalSection> thermal;
   double v1_m_per_s = 0, v2_m_per_s = 0;

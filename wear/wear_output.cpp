@@ -230,6 +230,17 @@ std::string wear_report_text(const WearModel& m, const WearReport& r) {
   own.emplace_back("a_m", round_trip(l.contact.a_m));
   own.emplace_back("b_m", round_trip(l.contact.b_m));
   own.emplace_back("normal_solver", contact::to_string(l.contact.normal_solver));
+  // the lubricant's film and the regime law's mu and wear factor the life used: the case's, or each condition's
+  const auto lubrication = [&own](const WearModel& c, const std::string& prefix) {
+    if (!c.lubrication) return;
+    own.emplace_back(prefix + "lambda", round_trip(c.lubrication->lambda));
+    own.emplace_back(prefix + "lubrication_regime", contact::to_string(c.lubrication->regime));
+    own.emplace_back(prefix + "asperity_share", round_trip(c.regime.asperity_share));
+    own.emplace_back(prefix + "mu_used", round_trip(c.mu));
+    own.emplace_back(prefix + "wear_factor_used", round_trip(c.wear_factor));
+  };
+  if (m.conditions.empty()) lubrication(m, "");
+  for (std::size_t k = 0; k < m.conditions.size(); ++k) lubrication(m.conditions[k], fmt::format("condition{}_", k + 1));
   for (const auto& [key, value] : failure_margins(m, l)) own.emplace_back(key, value);
   for (const auto& [key, value] : fidelity_report(m, l)) own.emplace_back(key, value);
   const LifeCounters& n = l.counters;

@@ -132,6 +132,8 @@ struct InertiaSection {  // the roller spins up under the creep force (lib/tange
 //     lambda_full_film: 3.0                 # optional: full film above (default kLambdaFullFilm)
 //     friction: { boundary: 0.1, mixed: 0.06, full_film: 0.03 }       # required: mu per regime
 //     wear_factor: { boundary: 1, mixed: 0.1, full_film: 0 }         # required: factor on K per regime
+// The regime law (lib/lubrication/regime.h regime_friction) reads the boundary and full-film values and the
+// thresholds; a life takes its mu and wear factor (wear/wear_loop.h, cam/cam_lubrication.h).
 struct LubricantSection {
   Lubricant lubricant;
   double Rq1_m = 0, Rq2_m = 0;   // RMS roughness of body 1 and body 2
@@ -214,8 +216,8 @@ void validate(const ContactCase& c);
 // run's steady condition (it points to the condition's transient: section, its duty cycle)
 enum class SteadyRunner { ContactCommand, WearRun };
 void validate_steady(const ContactCase& c, SteadyRunner runner = SteadyRunner::ContactCommand);
-// the commands that do not use the lubricant: and thermal: sections yet (transient, the wear and cam
-// lives) refuse them, naming the section, rather than ignoring them
+// the commands that do not use the lubricant: and thermal: sections (transient) refuse them, naming the section,
+// rather than ignoring them
 void refuse_lubrication_and_thermal(const ContactCase& c, const std::string& command);
 // what the 'transient' command needs besides: a transient: section
 void validate_transient(const ContactCase& c);

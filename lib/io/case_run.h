@@ -30,7 +30,8 @@ struct ContactLubrication {
   bool within_fit_range = true;  // k in Hamrock and Dowson's [1, 8]
   double lambda = 0;             // h_min / sqrt(Rq1^2 + Rq2^2)
   LubricationRegime regime = LubricationRegime::Boundary;
-  double mu = 0;                 // the case's friction coefficient of the regime (reported; the solve uses friction.mu)
+  double mu = 0;                 // the case's friction coefficient of the regime (reported; the contact's solve uses
+                                 // friction.mu, a life the regime law's, lib/lubrication/regime.h)
   double wear_factor = 0;        // the case's factor on the wear coefficient in the regime
 };
 ContactLubrication lubrication_of(const ContactCase& c, const ContactPatch& patch);
