@@ -18,12 +18,15 @@ std::vector<LifeDangVan> dang_van_on_worn(const WearModel& m, const WearCase& c,
   if (!has_dang_van(c)) return out;
   const contact::Profiles worn = worn_profiles(m, state);
   // the case's own running condition, or each of a collective's (its load, kinematics and friction)
-  std::vector<const contact::ContactCase*> cases;
-  if (c.wear.collective.empty()) cases.push_back(&c.contact);
-  for (const WearCondition& k : c.wear.collective) cases.push_back(&k.contact);
+  // and its model's friction coefficient: with a lubricant: section the regime law's (WearModel::regime), not friction.mu
+  std::vector<std::pair<const contact::ContactCase*, double>> cases;
+  if (c.wear.collective.empty()) cases.emplace_back(&c.contact, m.mu);
+  for (std::size_t i = 0; i < c.wear.collective.size(); ++i)
+    cases.emplace_back(&c.wear.collective[i].contact, m.conditions.at(i).mu);
   for (std::size_t i = 0; i < cases.size(); ++i) {
-    contact::ContactCase worn_case = *cases[i];
+    contact::ContactCase worn_case = *cases[i].first;
     worn_case.profiles->profiles = worn;  // a wear case has profiles (validate)
+    worn_case.friction.mu = cases[i].second;
     const contact::ContactRun run = contact::solve_contact_case(worn_case, true);  // the tractions' fields
     const std::array<contact::BodySubsurface, 2> below = contact::subsurface_of_contact(worn_case, run);
     for (int k = 0; k < 2; ++k) {

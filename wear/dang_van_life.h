@@ -1,8 +1,9 @@
 // Dang Van's index on a wear life's final worn contact (docs/fatigue.md §4c): for each body with
 // bodies.bodyN.dang_van: { a, b_Pa }, the case's steady contact is solved once more on the life's final worn
 // profiles, with the case's own models and running condition (lib/io/case_run.h solve_contact_case, as
-// `rollwear contact` solves it), and Dang Van's criterion is evaluated over one rolling pass below that body
-// (lib/subsurface/dang_van.h, subsurface_of_contact). A load collective: each condition's contact, the largest
+// `rollwear contact` solves it, but with the life's friction coefficient: with a lubricant: section the regime
+// law's, where `rollwear contact` solves with friction.mu), and Dang Van's criterion is evaluated over one
+// rolling pass below that body (lib/subsurface/dang_van.h, subsurface_of_contact). A load collective: each condition's contact, the largest
 // index of each body and the condition it comes from. At the end of the life only: one evaluation costs
 // about as much as `rollwear contact` with dang_van (seconds), too much for every step or a located limit.
 #pragma once
