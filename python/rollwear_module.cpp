@@ -600,7 +600,7 @@ py::dict run_result(const CaseSource& source) {
   summary["error_power_l1"] = life.error.power_l1;
   // which failure mode is how far at the end (wear::failure_margins, docs/fatigue.md): with wear.fatigue or
   // wear.limits.shakedown, the numbers report.txt writes
-  const bool margins = m->fatigue || m->limits.shakedown || m->limits.scuffing || m->thermal;
+  const bool margins = m->fatigue || m->limits.shakedown || m->limits.scuffing || m->thermal || !life.dang_van.empty();
   if (m->limits.max_depth_m > 0 && margins)
     summary["depth_fraction"] = wear::max_depth_m(*m, life.state) / m->limits.max_depth_m;
   if (m->fatigue) {
@@ -613,6 +613,13 @@ py::dict run_result(const CaseSource& source) {
   if (m->thermal) {
     summary["flash_rise_K"] = life.contact.flash_rise_K;
     if (m->thermal->critical_temperature_C) summary["scuffing_margin_K"] = life.contact.scuffing_margin_K;
+  }
+  for (const wear::LifeDangVan& d : life.dang_van) {  // on the final worn contact (wear/dang_van_life.h)
+    const std::string body = fmt::format("dang_van_body{}_", d.body);
+    summary[(body + "index").c_str()] = d.field.index_max;
+    summary[(body + "depth_m").c_str()] = d.field.z_m;
+    summary[(body + "y_m").c_str()] = d.field.y_m;
+    if (d.condition > 0) summary[(body + "condition").c_str()] = d.condition;
   }
   py::dict out;
   out["summary"] = summary;

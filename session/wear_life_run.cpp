@@ -59,6 +59,13 @@ wear::LifeResult drive_wear_life(const WearModel& m, const WearCase& c, const Li
     end.contact = life.contact;
     if (o.on_row) o.on_row(end);
   }
+  if (has_dang_van(c) && life.ended_by != LifeEnd::Failed && life.ended_by != LifeEnd::NotRun &&
+      life.ended_by != LifeEnd::Stopped) {
+    const auto t0 = std::chrono::steady_clock::now();
+    life.dang_van = dang_van_on_worn(m, c, life.state);
+    spdlog::info("Dang Van's index on the final worn contact: {:.3f} s",
+                 std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+  }
   return life;
 }
 

@@ -26,7 +26,9 @@ struct WearLifeObserver {
 // of that first solve
 wear::LifeStart fresh_wear_start(const wear::WearModel& m, wear::WearCache& cache, const WearLifeObserver& o);
 
-// the life from `start` to the limit, the budget or a failure (wear::run_life), its rows handed out
+// the life from `start` to the limit, the budget or a failure (wear::run_life), its rows handed out; with
+// bodies.bodyN.dang_van and a life that did not fail, Dang Van's index on its final worn contact in
+// LifeResult::dang_van (wear/dang_van_life.h: one more contact solve and its subsurface field, at the end)
 wear::LifeResult drive_wear_life(const wear::WearModel& m, const wear::WearCase& c, const wear::LifeStart& start,
                                  wear::WearCache& cache, const WearLifeObserver& o);
 

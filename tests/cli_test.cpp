@@ -1545,6 +1545,82 @@ TEST_F(CommandLine, CorrectedFatigueRunKilledAndResumedEndsBitIdentical) {
     EXPECT_EQ(report_value(a, key), report_value(b, key)) << key;
 }
 
+// ---- run with bodies.bodyN.dang_van (docs/fatigue.md §4c) ----
+
+// Dang Van's index on a life's final worn contact, by two routes: the life's report.txt, and `rollwear contact` on
+// the same case with the worn roller's final profile read from the life's last snapshot file (its z_m column) and
+// the wear: section removed. Both solve the case's models on the same profile: equal to rounding. A life without
+// the key reports no such field; a bad key is bad input naming file, line and key.
+TEST_F(CommandLine, RunWithDangVanReportsTheIndexOfTheFinalWornContact) {
+  const fs::path c = fatigue_case(dir_, "dv.yaml", "stepping: { method: fixed-depth, max_depth_step_m: 1.0e-5 }",
+                                  "solver:     { normal: auto, nx: 24, ny: 24 }");
+  const std::string plain = read_text(c);
+  const std::string roller = "body1: { Rx_m: 0.020, E_Pa: 210.0e9, nu: 0.28";
+  std::string text = plain;
+  ASSERT_NE(text.find(roller), std::string::npos);
+  text.insert(text.find(roller) + roller.size(), ", dang_van: { a: 0.3, b_Pa: 300.0e6 }");
+  std::ofstream(c) << text;
+  const fs::path life = dir_ / "life";
+  const ProcessResult r = rollwear("run " + quoted(c) + " -o " + quoted(life) + " --log-level error", dir_);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string report = read_text(life / "report.txt");
+  const double index = std::stod(report_value(report, "dang_van_body1_index"));
+  EXPECT_GT(index, 0);
+  EXPECT_GT(std::stod(report_value(report, "max_depth_m")), 0);  // a worn profile, not the unworn one
+  EXPECT_EQ(report.find("dang_van_body2"), std::string::npos) << report;  // body 2 has no key
+
+  // the final worn roller as a profile file: the last snapshot's y_m and z_m
+  fs::path last;
+  for (const auto& f : fs::directory_iterator(life / "snapshots"))
+    if (f.path().filename().string().find("_body1.csv") != std::string::npos && f.path() > last) last = f.path();
+  ASSERT_FALSE(last.empty());
+  std::string profile = "y_m,z_m\n";
+  for (const std::string& line : lines_of(read_text(last))) {
+    if (line.empty() || line[0] == '#' || line.rfind("y_m,", 0) == 0) continue;
+    const std::vector<std::string> v = split(line);  // y_m, z_original_m, z_m, depth_m, damage
+    profile += v[0] + "," + v[2] + "\n";
+  }
+  std::ofstream(dir_ / "final_body1.csv") << profile;
+  std::string contact_text = with_solver(text, "body1: { crowned: { Ry_m: 0.500, width_m: 0.020 } }",
+                                         "body1: { file: final_body1.csv }");
+  contact_text = contact_text.substr(0, contact_text.find("\nwear:\n") + 1) +
+                 contact_text.substr(contact_text.find("\noutput:") + 1);
+  std::ofstream(dir_ / "final.yaml") << contact_text;
+  const fs::path out = dir_ / "contact";
+  const ProcessResult k = rollwear("contact " + quoted(dir_ / "final.yaml") + " -o " + quoted(out) + " --log-level warn", dir_);
+  ASSERT_EQ(k.exit_code, 0) << k.err << contact_text;
+  const std::vector<std::string> rows = lines_of(read_text(out / "dang_van.csv"));
+  ASSERT_EQ(rows.size(), 2u);  // body,a,b_Pa,index_max,x_m,y_m,z_m,...
+  const std::vector<std::string> row = split(rows[1]);
+  EXPECT_EQ(row[0], "1");
+  EXPECT_NEAR(std::stod(row[3]), index, 1e-12 * index);
+  EXPECT_NEAR(std::stod(row[5]), std::stod(report_value(report, "dang_van_body1_y_m")), 1e-12);
+  EXPECT_NEAR(std::stod(row[6]), std::stod(report_value(report, "dang_van_body1_depth_m")), 1e-12);
+  // the contact solved there is the life's final one (its models on its profile): a, b and p0 as the report's
+  const std::vector<std::string> summary = lines_of(read_text(out / "summary.csv"));  // name,a_m,b_m,p0_Pa,...
+  ASSERT_GE(summary.size(), 2u);
+  const std::vector<std::string> contact = split(summary[1]);
+  for (const auto& [column, key] : {std::pair{1, "a_m"}, std::pair{2, "b_m"}, std::pair{3, "p0_Pa"}}) {
+    const double life_value = std::stod(report_value(report, key));
+    EXPECT_NEAR(std::stod(contact[static_cast<std::size_t>(column)]), life_value, 1e-12 * life_value) << key;
+  }
+
+  // without the key: no such field
+  std::ofstream(c) << plain;
+  ASSERT_EQ(rollwear("run " + quoted(c) + " -o " + quoted(dir_ / "plain") + " --log-level error", dir_).exit_code, 0);
+  EXPECT_EQ(read_text(dir_ / "plain" / "report.txt").find("dang_van"), std::string::npos);
+
+  // a bad key: file, line and key
+  std::string bad = text;
+  bad.replace(bad.find("b_Pa: 300.0e6"), 13, "b_Pa: 0");
+  std::ofstream(c) << bad;
+  const ProcessResult b = rollwear("run " + quoted(c) + " -o " + quoted(dir_ / "bad"), dir_);
+  EXPECT_EQ(b.exit_code, 2);
+  EXPECT_NE(b.err.find(c.string() + ":15:"), std::string::npos) << b.err;
+  EXPECT_NE(b.err.find("bodies.body1.dang_van.b_Pa"), std::string::npos) << b.err;
+  EXPECT_EQ(b.err.find("terminate"), std::string::npos);
+}
+
 TEST_F(CommandLine, RunWithBadFatigueKeyExitsTwoNamingFileLineAndKey) {
   const fs::path c = fatigue_case(dir_, "bad.yaml", "stepping: { method: adaptive }");
   std::string text = read_text(c);

@@ -16,6 +16,7 @@
 #include "lib/errors.h"
 #include "lib/io/case_run.h"
 #include "lib/subsurface/shakedown.h"
+#include "wear/dang_van_life.h"
 #include "wear/wear_case.h"
 #include "wear/wear_loop.h"
 #include "wear/wear_output.h"
@@ -248,6 +249,52 @@ TEST(Fatigue, BadKeysNameFileLineAndKey) {
                                 "limits: { max_depth_m: 1.0e-4, edge: true, shakedown: true }"));
   EXPECT_NE(m.find("fatigue.yaml:24:"), std::string::npos) << m;
   EXPECT_NE(m.find("wear.limits.shakedown, bodies.body1.shear_yield_Pa"), std::string::npos) << m;
+}
+
+// A load collective's Dang Van index is its conditions' largest, with that condition (1-based): each condition's own
+// contact solved alone (solve_contact_case) gives the indices; the heavy condition (2500 N against 1500 N) the larger
+TEST(Fatigue, DangVanOfACollectiveIsItsWorstConditions) {
+  std::string text = read_text(kSource / "cases" / "collective-duty-mix.yaml");
+  const auto replace = [&](const std::string& from, const std::string& to) {
+    const std::size_t at = text.find(from);
+    ASSERT_NE(at, std::string::npos) << from;
+    text.replace(at, from.size(), to);
+  };
+  replace("body1: { Rx_m: 0.020, E_Pa: 210.0e9, nu: 0.28", "body1: { Rx_m: 0.020, E_Pa: 210.0e9, nu: 0.28, dang_van: { a: 0.3, b_Pa: 300.0e6 }");
+  replace("nx: 40, ny: 40", "nx: 24, ny: 24");
+  replace("{ weight: 0.70 }", "{ weight: 0.75 }");
+  text = text.substr(0, text.find("    - weight: 0.05")) + text.substr(text.find("output:"));  // the transient condition
+  const WearCase c = read_wear_case_text(text, "collective.yaml", kSource / "cases");
+  ASSERT_EQ(c.wear.collective.size(), 2u);
+  const WearModel m = make_wear_model(c);
+  const std::vector<LifeDangVan> got = dang_van_on_worn(m, c, initial_state(m));
+  ASSERT_EQ(got.size(), 1u);
+  EXPECT_EQ(got[0].body, 1);
+  std::vector<double> alone;
+  for (const WearCondition& k : c.wear.collective) {
+    const contact::ContactRun run = contact::solve_contact_case(k.contact, true);
+    alone.push_back(contact::subsurface_of_contact(k.contact, run)[0].dang_van->index_max);
+  }
+  EXPECT_GT(alone[1], alone[0]);
+  EXPECT_EQ(got[0].condition, 2);
+  EXPECT_EQ(got[0].field.index_max, alone[1]);
+}
+
+// Dang Van's index on a life's final worn contact is of steady rolling: with a transient duty cycle the key is
+// refused at its line (wear/dang_van_life.h)
+TEST(Fatigue, DangVanWithATransientDutyCycleIsRefusedAtItsKey) {
+  std::string text = read_text(kSource / "cases" / "start-stop-wear.yaml");
+  const std::string path = "body2: { Rx_m: 0.025, E_Pa: 210.0e9, nu: 0.28";
+  ASSERT_NE(text.find(path), std::string::npos);
+  text.insert(text.find(path) + path.size(), ", dang_van: { a: 0.3, b_Pa: 300.0e6 }");
+  try {
+    read_wear_case_text(text, "transient.yaml", kSource / "cases");
+    ADD_FAILURE() << "a transient life with dang_van was read";
+  } catch (const contact::CaseError& e) {
+    EXPECT_EQ(e.location.key, "bodies.body2.dang_van");
+    EXPECT_NE(std::string(e.what()).find("transient.yaml:17:"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("steady rolling"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 // its inverse, to the integrator's tolerance); each condition takes the law at its own film; bad sections refused.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -14,6 +15,7 @@
 #include "tests/temp_dir.h"
 #include "tests/test_text.h"
 #include "wear/collective.h"
+#include "wear/dang_van_life.h"
 #include "wear/wear_loop.h"
 #include "wear/wear_output.h"
 
@@ -85,6 +87,33 @@ TEST_F(WearLubrication, BoundaryFilmIsTheDryLifeWithTheBoundaryFriction) {
   EXPECT_NE(text.find("lubrication_regime: boundary\n"), std::string::npos) << text;
   EXPECT_NE(text.find("mu_used: 0.3\n"), std::string::npos) << text;
   EXPECT_NE(text.find("wear_factor_used: 1\n"), std::string::npos) << text;
+}
+
+// Dang Van's index on the final worn contact (wear/dang_van_life.h) is solved with the friction the life ran on: the
+// boundary regime's mu 0.3 of the lubricated case whose friction.mu is 0.1 gives the dry mu-0.3 life's index to the
+// bit, and not the index at friction.mu 0.1 on the same worn state
+TEST_F(WearLubrication, DangVanOnTheFinalContactTakesTheRegimesFriction) {
+  const auto with_dang_van = [](std::string t) {
+    const std::string roller = "body1: { Rx_m: 0.020, E_Pa: 210.0e9, nu: 0.28";
+    const std::size_t at = t.find(roller);
+    EXPECT_NE(at, std::string::npos);
+    if (at != std::string::npos) t.insert(at + roller.size(), ", dang_van: { a: 0.3, b_Pa: 300.0e6 }");
+    return t;
+  };
+  const WearCase lub = read("lub.yaml", with_dang_van(paper_wear(lubricant("0.3e-6"), "0.1")));
+  const WearCase dry = read("dry.yaml", with_dang_van(paper_wear("", "0.3")));
+  const WearCase dry_01 = read("dry01.yaml", with_dang_van(paper_wear("", "0.1")));
+  const LifeResult a = life_of(lub), b = life_of(dry);
+  ASSERT_TRUE((a.state.array() == b.state.array()).all());
+  const std::vector<LifeDangVan> da = dang_van_on_worn(make_wear_model(lub), lub, a.state);
+  const std::vector<LifeDangVan> db = dang_van_on_worn(make_wear_model(dry), dry, b.state);
+  const std::vector<LifeDangVan> d01 = dang_van_on_worn(make_wear_model(dry_01), dry_01, a.state);
+  ASSERT_EQ(da.size(), 1u);
+  ASSERT_EQ(db.size(), 1u);
+  ASSERT_EQ(d01.size(), 1u);
+  EXPECT_EQ(da[0].field.index_max, db[0].field.index_max);
+  EXPECT_GT(std::abs(da[0].field.index_max / d01[0].field.index_max - 1), 0.01)
+      << da[0].field.index_max << " " << d01[0].field.index_max;
 }
 
 // Smooth surfaces (Rq 1 nm: lambda 60): full film, mu_f = 0.05 and the factor 0.25: four times the life with mu 0.05

@@ -207,6 +207,11 @@ void validate(const WearCase& c) {
   if (k.thermal && k.transient)
     throw key_error(k, "thermal", "thermal, transient: a wear run computes the flash temperature of a steady duty "
                     "cycle; remove the thermal: section or the transient: one");
+  // Dang Van's index on the final worn contact is of a steady rolling pass (wear/dang_van_life.h)
+  for (const auto& [key, body] : {std::pair{"bodies.body1.dang_van", &k.bodies.body1}, std::pair{"bodies.body2.dang_van", &k.bodies.body2}})
+    if (body->dang_van && k.transient)
+      throw key_error(k, key, std::string(key) + ", transient: a wear run evaluates Dang Van's index on its final worn "
+                      "contact in steady rolling; remove the dang_van key or the transient: section");
   if (w.limits.scuffing && !(k.thermal && k.thermal->critical_temperature_C && k.thermal->bulk_temperature_C))
     throw key_error(k, "wear.limits.scuffing", "wear.limits.scuffing, thermal: the scuffing limit needs the flash "
                     "temperature's thermal: section with bulk_temperature_C and critical_temperature_C (Blok's criterion)");

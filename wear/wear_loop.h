@@ -38,6 +38,7 @@
 #include "lib/io/case_run.h"
 #include "lib/lubrication/regime.h"
 #include "lib/model/contact_model.h"
+#include "wear/dang_van_life.h"
 #include "wear/fatigue.h"
 #include "wear/integrator.h"
 #include "wear/life.h"
@@ -344,6 +345,9 @@ struct LifeResult : LifeOutcome {
   // state (fast), NaN for the exact fidelity and where there is no exact physics (docs/fidelity.md)
   FidelityError error;
   long exact_solves = 0;  // exact-physics solves over the life (corrections; the fast life's estimate)
+  // Dang Van's index on the final worn contact, per body with bodies.bodyN.dang_van (wear/dang_van_life.h): set by
+  // session::drive_wear_life when asked, empty otherwise
+  std::vector<LifeDangVan> dang_van;
 };
 
 // integrates from start to the first lifetime limit (located by root finding) or the budget

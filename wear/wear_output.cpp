@@ -178,7 +178,7 @@ std::vector<std::pair<std::string, std::string>> fidelity_report(const WearModel
 
 std::vector<std::pair<std::string, std::string>> failure_margins(const WearModel& m, const LifeResult& l) {
   std::vector<std::pair<std::string, std::string>> out;
-  if (!m.fatigue && !m.limits.shakedown && !m.limits.scuffing && !m.thermal) return out;
+  if (!m.fatigue && !m.limits.shakedown && !m.limits.scuffing && !m.thermal && l.dang_van.empty()) return out;
   if (m.limits.max_depth_m > 0)
     out.emplace_back("depth_fraction", round_trip(max_depth_m(m, l.state) / m.limits.max_depth_m));
   if (m.fatigue) {
@@ -191,6 +191,13 @@ std::vector<std::pair<std::string, std::string>> failure_margins(const WearModel
   if (m.thermal) {
     out.emplace_back("flash_rise_K", round_trip(l.contact.flash_rise_K));
     if (m.thermal->critical_temperature_C) out.emplace_back("scuffing_margin_K", round_trip(l.contact.scuffing_margin_K));
+  }
+  for (const LifeDangVan& d : l.dang_van) {  // on the final worn contact (wear/dang_van_life.h)
+    const std::string body = fmt::format("dang_van_body{}_", d.body);
+    out.emplace_back(body + "index", round_trip(d.field.index_max));
+    out.emplace_back(body + "depth_m", round_trip(d.field.z_m));
+    out.emplace_back(body + "y_m", round_trip(d.field.y_m));
+    if (d.condition > 0) out.emplace_back(body + "condition", std::to_string(d.condition));
   }
   return out;
 }

@@ -77,9 +77,10 @@ std::vector<std::pair<std::string, std::string>> fidelity_report(const WearModel
 // part, a collective's conditions, or "not estimated: WHY"
 std::string error_estimate_of(const WearModel& m);
 // which failure mode is how far at the end of the life (docs/fatigue.md), with wear.fatigue, wear.limits.shakedown,
-// wear.limits.scuffing or a thermal: section only: report.txt's keys depth_fraction (max depth /
+// wear.limits.scuffing, a thermal: section or Dang Van's index only: report.txt's keys depth_fraction (max depth /
 // wear.limits.max_depth_m, with a depth limit), fatigue_law, max_damage, max_damage_y_m, max_tgamma_N (with fatigue),
-// shakedown_margin (with the reference body's k), flash_rise_K and scuffing_margin_K (with thermal:)
+// shakedown_margin (with the reference body's k), flash_rise_K and scuffing_margin_K (with thermal:); with
+// bodies.bodyN.dang_van (LifeResult::dang_van), dang_van_bodyN_index, _depth_m, _y_m (and a collective's _condition)
 std::vector<std::pair<std::string, std::string>> failure_margins(const WearModel& m, const LifeResult& l);
 // the same as a comment line of summary.csv, written above its header row at the end of the run
 std::string wear_summary_error_line(const WearModel& m, const LifeResult& l);

@@ -179,6 +179,27 @@ def test_run_with_fatigue_equals_the_command_line(source, cli, tmp_path):
     for key in ("revolutions", "depth_fraction", "max_damage", "max_damage_y_m", "max_tgamma_N"):
         assert r["summary"][key] == float(report[key]), key
     assert 0 < r["summary"]["depth_fraction"] < 1
+    assert not any(key.startswith("dang_van") for key in r["summary"])  # no bodies.bodyN.dang_van
+
+
+def test_run_with_dang_van_equals_the_command_line(source, cli, tmp_path):
+    # Dang Van's index on the final worn contact (docs/fatigue.md §4c): report.txt's keys are the Python result's
+    text = (source / "cases" / "paper-wear-fatigue.yaml").read_text()
+    text = text.replace("nx: 80, ny: 80", "nx: 24, ny: 24")
+    roller = "body1: { Rx_m: 0.020, E_Pa: 210.0e9, nu: 0.28"
+    assert roller in text
+    text = text.replace(roller, roller + ", dang_van: { a: 0.3, b_Pa: 300.0e6 }")
+    case = tmp_path / "dv.yaml"
+    case.write_text(text)
+    p = cli("run", case, "-o", tmp_path / "out", "-q")
+    assert p.returncode == 0, p.stderr
+    r = rollwear.run(case)
+    report = dict(line.split(": ", 1) for line in (tmp_path / "out" / "report.txt").read_text().splitlines()
+                  if ": " in line)
+    for key in ("dang_van_body1_index", "dang_van_body1_depth_m", "dang_van_body1_y_m"):
+        assert r["summary"][key] == float(report[key]), key
+    assert r["summary"]["dang_van_body1_index"] > 0
+    assert "dang_van_body2_index" not in r["summary"]
 
 
 def test_run_equals_the_command_line(source, cli, tmp_path):
