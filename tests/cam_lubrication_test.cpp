@@ -39,17 +39,12 @@ const fs::path kSource = ROLLWEAR_SOURCE_DIR;
 // a shipped case on 180 angle steps and a 16 x 16 grid without the full transient's comparison (the work is
 // checked, not the resolution), with one more replacement (old -> new) if given
 std::string coarse(const std::string& case_name, const std::string& old_text = "", const std::string& new_text = "") {
-  std::string t = read_text(kSource / "cases" / case_name);
-  const auto replace = [&t](const std::string& from, const std::string& to) {
-    const std::size_t at = t.find(from);
-    EXPECT_NE(at, std::string::npos) << from;
-    if (at != std::string::npos) t.replace(at, from.size(), to);
-  };
-  replace("  angle_steps: 720", "  angle_steps: 180");
-  replace("  tangential: { scheme: consistent }",
-          "  tangential: { scheme: consistent, nx: 16, ny: 16, compare_full_transient: false }");
-  if (!old_text.empty()) replace(old_text, new_text);
-  return t;
+  const std::string t = rollwear_test::replaced(
+      read_text(kSource / "cases" / case_name),
+      {{"  angle_steps: 720", "  angle_steps: 180"},
+       {"  tangential: { scheme: consistent }",
+        "  tangential: { scheme: consistent, nx: 16, ny: 16, compare_full_transient: false }"}});
+  return old_text.empty() ? t : rollwear_test::replaced(t, {{old_text, new_text}});
 }
 
 fs::path write(const fs::path& p, const std::string& text) {

@@ -28,17 +28,12 @@ const fs::path kSource = ROLLWEAR_SOURCE_DIR;
 
 // the shipped lubricated case on 180 angle steps and a 16 x 16 grid, with the replacements (old -> new) given
 std::string lubricated(std::initializer_list<std::pair<std::string, std::string>> replacements) {
-  std::string t = read_text(kSource / "cases" / "cam-follower-lubricated.yaml");
-  const auto replace = [&t](const std::string& from, const std::string& to) {
-    const std::size_t at = t.find(from);
-    EXPECT_NE(at, std::string::npos) << from;
-    if (at != std::string::npos) t.replace(at, from.size(), to);
-  };
-  replace("  angle_steps: 720", "  angle_steps: 180");
-  replace("  tangential: { scheme: consistent }",
-          "  tangential: { scheme: consistent, nx: 16, ny: 16, compare_full_transient: false }");
-  for (const auto& [from, to] : replacements) replace(from, to);
-  return t;
+  const std::string t = rollwear_test::replaced(
+      read_text(kSource / "cases" / "cam-follower-lubricated.yaml"),
+      {{"  angle_steps: 720", "  angle_steps: 180"},
+       {"  tangential: { scheme: consistent }",
+        "  tangential: { scheme: consistent, nx: 16, ny: 16, compare_full_transient: false }"}});
+  return rollwear_test::replaced(t, replacements);
 }
 
 // the case's friction_by_regime line (the shipped case may carry it or not)

@@ -4,10 +4,14 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <initializer_list>
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
+
+#include <gtest/gtest.h>
 
 namespace rollwear_test {
 
@@ -34,6 +38,17 @@ inline std::string message_of(const std::function<void()>& f) {
     return e.what();
   }
   return "no exception";
+}
+
+// text with each (from, to) applied once, in order: the first occurrence of from becomes to; a from that is not in
+// the text fails the test that asked (a case file changed under the test)
+inline std::string replaced(std::string text, std::initializer_list<std::pair<std::string, std::string>> swaps) {
+  for (const auto& [from, to] : swaps) {
+    const std::size_t at = text.find(from);
+    EXPECT_NE(at, std::string::npos) << from;
+    if (at != std::string::npos) text.replace(at, from.size(), to);
+  }
+  return text;
 }
 
 }  // namespace rollwear_test

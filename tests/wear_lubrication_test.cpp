@@ -37,17 +37,11 @@ class WearLubrication : public rollwear_test::TempDirTest {
 // the shipped paper-wear case on a 40 x 40 grid to a 10 um depth, with `lubricant` (a section, or empty) and the
 // friction mu given; its film is h_min 0.09 um at 1 m/s
 std::string paper_wear(const std::string& lubricant, const std::string& mu = "0.3", const std::string& extra = "") {
-  std::string t = rollwear_test::read_text(kSource / "cases" / "paper-wear.yaml");
-  const auto replace = [&t](const std::string& from, const std::string& to) {
-    const std::size_t at = t.find(from);
-    EXPECT_NE(at, std::string::npos) << from;
-    if (at != std::string::npos) t.replace(at, from.size(), to);
-  };
-  replace("nx: 80, ny: 80", "nx: 40, ny: 40");
-  replace("max_depth_m: 1.0e-4", "max_depth_m: 1.0e-5");
-  replace("friction:   { mu: 0.3 }", "friction:   { mu: " + mu + " }\n" + lubricant);
-  replace("  snapshots_revolutions: [1.0e7, 3.0e7, 1.0e8]\n", extra);
-  return t;
+  return rollwear_test::replaced(rollwear_test::read_text(kSource / "cases" / "paper-wear.yaml"),
+                                 {{"nx: 80, ny: 80", "nx: 40, ny: 40"},
+                                  {"max_depth_m: 1.0e-4", "max_depth_m: 1.0e-5"},
+                                  {"friction:   { mu: 0.3 }", "friction:   { mu: " + mu + " }\n" + lubricant},
+                                  {"  snapshots_revolutions: [1.0e7, 3.0e7, 1.0e8]\n", extra}});
 }
 
 std::string lubricant(const std::string& Rq, const std::string& full_film_factor = "0.0") {
