@@ -1281,11 +1281,26 @@ constexpr int kColdNewtonBudget = 12;
 // attempt is cut short.
 constexpr int kWarmNewtonBudget = 3;
 
-// the patch on half the cells each way (2 x 2 cells merged: their mean pressure; a strip pair's mean
-// Heathcote offset)
-ContactPatch coarsened(const ContactPatch& p) {
-  ContactPatch c = coarsened_along_x(p);
+// a coarse field (nx/2 x ny) on the fine cells, linear between the coarse cell centres (constant
+// beyond the first and last)
+Eigen::ArrayXXd prolonged_along_x(const Eigen::ArrayXXd& c, int nx) {
+  Eigen::ArrayXXd f(nx, c.cols());
+  const int nc = static_cast<int>(c.rows());
+  for (int k = 0; k < nc; ++k) {
+    f.row(2 * k) = k > 0 ? (0.75 * c.row(k) + 0.25 * c.row(k - 1)).eval() : c.row(k).eval();
+    f.row(2 * k + 1) = k + 1 < nc ? (0.75 * c.row(k) + 0.25 * c.row(k + 1)).eval() : c.row(k).eval();
+  }
+  return f;
+}
+
+}  // namespace
+
+ContactPatch halved_patch(const ContactPatch& p) {
   const Grid& g = p.grid;
+  if (g.nx < 4 || g.ny < 4 || g.nx % 2 != 0 || g.ny % 2 != 0)
+    throw std::invalid_argument("the patch on half the cells needs an even number of cells each way, at least 4 (" +
+                                std::to_string(g.nx) + " x " + std::to_string(g.ny) + ")");
+  ContactPatch c = coarsened_along_x(p);
   const int ny = g.ny / 2;
   c.grid.ny = ny;
   c.grid.dy_m = 2 * g.dy_m;
@@ -1304,20 +1319,6 @@ ContactPatch coarsened(const ContactPatch& p) {
   c.strip_peak_Pa.resize(0);
   return c;
 }
-
-// a coarse field (nx/2 x ny) on the fine cells, linear between the coarse cell centres (constant
-// beyond the first and last)
-Eigen::ArrayXXd prolonged_along_x(const Eigen::ArrayXXd& c, int nx) {
-  Eigen::ArrayXXd f(nx, c.cols());
-  const int nc = static_cast<int>(c.rows());
-  for (int k = 0; k < nc; ++k) {
-    f.row(2 * k) = k > 0 ? (0.75 * c.row(k) + 0.25 * c.row(k - 1)).eval() : c.row(k).eval();
-    f.row(2 * k + 1) = k + 1 < nc ? (0.75 * c.row(k) + 0.25 * c.row(k + 1)).eval() : c.row(k).eval();
-  }
-  return f;
-}
-
-}  // namespace
 
 ExactSolution solve_exact_steady(const ContactPatch& patch, double G_Pa, double nu, const Creepages& creepages,
                                  double mu, double speed_m_per_s, const ExactOptions& opt, const ExactSolution* start) {
@@ -1356,7 +1357,7 @@ ExactSolution solve_exact_steady(const ContactPatch& patch, double G_Pa, double 
         spdlog::warn("exact steady ({} x {}): not converged: {}", nx, ny, first.status.message);
       return first;
     }
-    const ExactSolution coarse = solve_exact_steady(coarsened(patch), G_Pa, nu, creepages, mu, speed_m_per_s, opt);
+    const ExactSolution coarse = solve_exact_steady(halved_patch(patch), G_Pa, nu, creepages, mu, speed_m_per_s, opt);
     if (coarse.status.converged()) {
       // prolonged along x, then along y (the transposed field along its rows)
       const Eigen::ArrayXXd tx =

@@ -91,6 +91,13 @@ struct ExactSolution {
                                          // rolling step's first guess of its own change
 };
 
+// The patch on half the cells each way: 2 x 2 cells merged (their mean pressure, so the same load; the mean
+// Heathcote offset of each pair of strips, exact for an offset linear in y). nx and ny even and at least 4,
+// else std::invalid_argument. The fields of the semi-elliptic strips (half_length_m, strip_peak_Pa, the
+// moment and edge pressures) are not carried: the exact theory reads the cell pressures only. The coarse grid
+// of the grid sequencing below and of the grid extrapolation (grid_extrapolation.h).
+ContactPatch halved_patch(const ContactPatch& patch);
+
 // Steady rolling on the patch's grid. G_Pa, nu: combined constants (combined_shear_modulus_Pa,
 // combined_poisson). mu > 0; speed_m_per_s >= 0 scales only the slip velocities and the power.
 // A patch with a cell of non-finite or negative pressure, G <= 0, nu outside [0, 0.5), mu <= 0,

@@ -8,40 +8,6 @@
 
 namespace contact {
 
-ContactPatch halved_patch(const ContactPatch& p) {
-  const Grid& g = p.grid;
-  if (g.nx < 4 || g.ny < 4 || g.nx % 2 != 0 || g.ny % 2 != 0)
-    throw std::invalid_argument("grid extrapolation: the grid needs an even number of cells each way, at least 4 (" +
-                                std::to_string(g.nx) + " x " + std::to_string(g.ny) + ")");
-  ContactPatch c;
-  c.a_m = p.a_m;
-  c.b_m = p.b_m;
-  c.p0_Pa = p.p0_Pa;
-  c.normal_load_N = p.normal_load_N;
-  c.approach_m = p.approach_m;
-  c.grid = g;
-  c.grid.nx = g.nx / 2;
-  c.grid.ny = g.ny / 2;
-  c.grid.dx_m = 2 * g.dx_m;
-  c.grid.dy_m = 2 * g.dy_m;
-  c.grid.x_m = Eigen::ArrayXd(c.grid.nx);
-  c.grid.y_m = Eigen::ArrayXd(c.grid.ny);
-  for (int i = 0; i < c.grid.nx; ++i) c.grid.x_m(i) = 0.5 * (g.x_m(2 * i) + g.x_m(2 * i + 1));
-  for (int j = 0; j < c.grid.ny; ++j) c.grid.y_m(j) = 0.5 * (g.y_m(2 * j) + g.y_m(2 * j + 1));
-  // the mean pressure of each 2 x 2 block: the block's load
-  c.pressure_Pa = Eigen::ArrayXXd(c.grid.nx, c.grid.ny);
-  for (int j = 0; j < c.grid.ny; ++j)
-    for (int i = 0; i < c.grid.nx; ++i)
-      c.pressure_Pa(i, j) = 0.25 * (p.pressure_Pa(2 * i, 2 * j) + p.pressure_Pa(2 * i + 1, 2 * j) +
-                                    p.pressure_Pa(2 * i, 2 * j + 1) + p.pressure_Pa(2 * i + 1, 2 * j + 1));
-  if (p.strip_xi_offset.size() == g.ny) {
-    c.strip_xi_offset = Eigen::ArrayXd(c.grid.ny);
-    for (int j = 0; j < c.grid.ny; ++j) c.strip_xi_offset(j) = 0.5 * (p.strip_xi_offset(2 * j) + p.strip_xi_offset(2 * j + 1));
-  }
-  // the strips' semi-ellipses (half_length_m, strip_peak_Pa) are not defined on merged cells: left empty
-  return c;
-}
-
 ExtrapolatedExactSolution solve_exact_steady_extrapolated(const ContactPatch& patch, double G_Pa, double nu,
                                                           const Creepages& creepages, double mu, double speed_m_per_s,
                                                           double order, const ExactOptions& opt) {

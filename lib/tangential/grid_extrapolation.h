@@ -20,12 +20,6 @@ namespace contact {
 // the order p of the exact steady solution's leading grid error (docs/exact-theory.md §4)
 constexpr double kExactGridOrder = 1.0;
 
-// The patch on half the cells each way: 2 x 2 cells merged (their mean pressure, so the same load; the mean
-// Heathcote offset of each pair of strips, exact for an offset linear in y). nx and ny even and at least 4,
-// else std::invalid_argument. The fields of the semi-elliptic strips (half_length_m, strip_peak_Pa, the
-// moment and edge pressures) are not carried: the exact theory reads the cell pressures only.
-ContactPatch halved_patch(const ContactPatch& patch);
-
 struct ExtrapolatedExactSolution {
   // the fine grid's fields with Fx, Fy, Mz, creep_work_W and power_W extrapolated, strip_power_W_per_m and
   // power_W_per_m2 scaled to the extrapolated power; tractions, slips, strip forces and the stick fraction are
