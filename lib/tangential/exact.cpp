@@ -1305,12 +1305,13 @@ ContactPatch halved_patch(const ContactPatch& p) {
   c.grid.ny = ny;
   c.grid.dy_m = 2 * g.dy_m;
   c.grid.y_m = Eigen::ArrayXd(ny);
-  Eigen::ArrayXXd pr(c.grid.nx, ny);
+  c.pressure_Pa = Eigen::ArrayXXd(c.grid.nx, ny);
   for (int j = 0; j < ny; ++j) {
     c.grid.y_m(j) = 0.5 * (g.y_m(2 * j) + g.y_m(2 * j + 1));
-    pr.col(j) = 0.5 * (c.pressure_Pa.col(2 * j) + c.pressure_Pa.col(2 * j + 1));
+    for (int i = 0; i < c.grid.nx; ++i)  // the mean of the 2 x 2 block (the block's load)
+      c.pressure_Pa(i, j) = 0.25 * (p.pressure_Pa(2 * i, 2 * j) + p.pressure_Pa(2 * i + 1, 2 * j) +
+                                    p.pressure_Pa(2 * i, 2 * j + 1) + p.pressure_Pa(2 * i + 1, 2 * j + 1));
   }
-  c.pressure_Pa = pr;
   if (p.strip_xi_offset.size() == g.ny) {
     c.strip_xi_offset = Eigen::ArrayXd(ny);
     for (int j = 0; j < ny; ++j) c.strip_xi_offset(j) = 0.5 * (p.strip_xi_offset(2 * j) + p.strip_xi_offset(2 * j + 1));
