@@ -110,8 +110,7 @@ Eigen::ArrayXd node_depth_per_cycle(const WearModel& m, int body, const WearLaw&
   duty.mu = m.mu;
   duty.strip_energy_J_per_m = d.strip_energy_J_per_m;
   duty.stretches = d.stretches;
-  const Eigen::ArrayXd strips =
-      m.lubrication ? Eigen::ArrayXd(m.wear_factor * depth_per_duty_cycle(law, duty)) : depth_per_duty_cycle(law, duty);
+  const Eigen::ArrayXd strips = m.wear_factor * depth_per_duty_cycle(law, duty);  // 1 without a lubricant
   const contact::Profile& p = profile_of(m, body);
   return smooth_conserving(strips_to_nodes(strips, strip_y0_m, dy_m, p.y_m), body == 1 ? m.smoothing1 : m.smoothing2);
 }
